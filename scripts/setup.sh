@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian packages rollnoise needs (if missing) and builds it into build/.
+# Usage: bash scripts/setup.sh [cmake build type, default Release]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+PACKAGES=(g++ cmake make pkg-config libeigen3-dev libfftw3-dev libgsl-dev libhdf5-dev libcli11-dev
+          libtomlplusplus-dev libgtest-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib)
+missing=()
+for p in "${PACKAGES[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+BUILD_TYPE=${1:-Release}
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+cmake --build build -j"$(nproc)"

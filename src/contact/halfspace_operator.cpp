@@ -1,0 +1,161 @@
+#include "contact/halfspace_operator.hpp"
+
+#include <fftw3.h>
+
+#include <Eigen/Dense>
+#include <complex>
+#include <vector>
+
+namespace rollnoise::contact {
+namespace {
+
+// Kernel blocks of the problem: for Normal {zz}; for Tangential {xx, xy; xy, yy} row-major.
+std::vector<Component> blocks(Problem problem) {
+  if (problem == Problem::Normal) return {Component::zz};
+  return {Component::xx, Component::xy, Component::xy, Component::yy};
+}
+
+}  // namespace
+
+class HalfSpaceOperator::Impl {
+ public:
+  virtual ~Impl() = default;
+  virtual void apply(const double* p, double* u) const = 0;
+  int ncomp = 1;
+  int n = 0;
+  Backend backend = Backend::Dense;
+};
+
+namespace {
+
+class DenseImpl final : public HalfSpaceOperator::Impl {
+ public:
+  DenseImpl(const InfluenceTable& t, Problem problem, int shift) {
+    const Grid& g = t.grid();
+    n = g.size();
+    ncomp = problem == Problem::Normal ? 1 : 2;
+    backend = Backend::Dense;
+    const auto comps = blocks(problem);
+    M_.resize(ncomp * n, ncomp * n);
+    for (int a = 0; a < ncomp; ++a)
+      for (int b = 0; b < ncomp; ++b) {
+        const Component c = comps[a * ncomp + b];
+        for (int jI = 0; jI < g.ny; ++jI)
+          for (int iI = 0; iI < g.nx; ++iI)
+            for (int jJ = 0; jJ < g.ny; ++jJ)
+              for (int iJ = 0; iJ < g.nx; ++iJ)
+                M_(a * n + g.index(iI, jI), b * n + g.index(iJ, jJ)) =
+                    t(c, iI - iJ + shift, jI - jJ);
+      }
+  }
+  void apply(const double* p, double* u) const override {
+    Eigen::Map<Eigen::VectorXd>(u, ncomp * n).noalias() =
+        M_ * Eigen::Map<const Eigen::VectorXd>(p, ncomp * n);
+  }
+
+ private:
+  Eigen::MatrixXd M_;
+};
+
+// Circulant embedding on the zero-padded 2nx by 2ny array: u(i) = sum_k c(i-k mod N) p(k) for
+// i, k < n has no wrap-around because |i - k| < n <= N/2.
+class FftImpl final : public HalfSpaceOperator::Impl {
+ public:
+  FftImpl(const InfluenceTable& t, Problem problem, int shift) : g_(t.grid()) {
+    n = g_.size();
+    ncomp = problem == Problem::Normal ? 1 : 2;
+    backend = Backend::Fft;
+    Nx_ = 2 * g_.nx;
+    Ny_ = 2 * g_.ny;
+    Nc_ = Nx_ / 2 + 1;  // r2c halves the last (x) dimension
+    const size_t nreal = static_cast<size_t>(Nx_) * Ny_, ncplx = static_cast<size_t>(Nc_) * Ny_;
+    real_ = fftw_alloc_real(nreal);
+    spec_.resize(ncomp);
+    for (auto& s : spec_) s = fftw_alloc_complex(ncplx);
+    fwd_ = fftw_plan_dft_r2c_2d(Ny_, Nx_, real_, spec_[0], FFTW_ESTIMATE);
+    bwd_ = fftw_plan_dft_c2r_2d(Ny_, Nx_, spec_[0], real_, FFTW_ESTIMATE);
+
+    // Kernel spectra, scaled by 1/(Nx Ny) so that the unnormalised inverse transform is exact.
+    const auto comps = blocks(problem);
+    kernel_.assign(comps.size(), std::vector<std::complex<double>>(ncplx));
+    for (size_t b = 0; b < comps.size(); ++b) {
+      std::fill(real_, real_ + nreal, 0.0);
+      for (int m = 0; m < Ny_; ++m) {
+        const int dj = m < g_.ny ? m : m - Ny_;
+        if (dj <= -g_.ny) continue;
+        for (int l = 0; l < Nx_; ++l) {
+          const int di = l < g_.nx ? l : l - Nx_;
+          if (di <= -g_.nx) continue;
+          real_[static_cast<size_t>(m) * Nx_ + l] = t(comps[b], di + shift, dj) / nreal;
+        }
+      }
+      fftw_execute_dft_r2c(fwd_, real_, spec_[0]);
+      for (size_t k = 0; k < ncplx; ++k)
+        kernel_[b][k] = {spec_[0][k][0], spec_[0][k][1]};
+    }
+  }
+  ~FftImpl() override {
+    fftw_destroy_plan(fwd_);
+    fftw_destroy_plan(bwd_);
+    fftw_free(real_);
+    for (auto* s : spec_) fftw_free(s);
+  }
+  void apply(const double* p, double* u) const override {
+    const size_t ncplx = static_cast<size_t>(Nc_) * Ny_;
+    for (int c = 0; c < ncomp; ++c) {  // forward transforms of each traction component
+      std::fill(real_, real_ + static_cast<size_t>(Nx_) * Ny_, 0.0);
+      for (int j = 0; j < g_.ny; ++j)
+        for (int i = 0; i < g_.nx; ++i)
+          real_[static_cast<size_t>(j) * Nx_ + i] = p[c * n + g_.index(i, j)];
+      fftw_execute_dft_r2c(fwd_, real_, spec_[c]);
+    }
+    std::vector<std::complex<double>> out(ncplx);
+    for (int a = 0; a < ncomp; ++a) {
+      std::fill(out.begin(), out.end(), 0.0);
+      for (int b = 0; b < ncomp; ++b) {
+        const auto& K = kernel_[a * ncomp + b];
+        const auto* P = reinterpret_cast<const std::complex<double>*>(spec_[b]);
+        for (size_t k = 0; k < ncplx; ++k) out[k] += K[k] * P[k];
+      }
+      fftw_execute_dft_c2r(bwd_, reinterpret_cast<fftw_complex*>(out.data()), real_);
+      for (int j = 0; j < g_.ny; ++j)
+        for (int i = 0; i < g_.nx; ++i)
+          u[a * n + g_.index(i, j)] = real_[static_cast<size_t>(j) * Nx_ + i];
+    }
+  }
+
+ private:
+  Grid g_;
+  int Nx_ = 0, Ny_ = 0, Nc_ = 0;
+  double* real_ = nullptr;
+  std::vector<fftw_complex*> spec_;
+  fftw_plan fwd_ = nullptr, bwd_ = nullptr;
+  std::vector<std::vector<std::complex<double>>> kernel_;
+};
+
+}  // namespace
+
+Backend HalfSpaceOperator::auto_backend(int unknowns) {
+  // Crossover measured with `rollnoise_bench --benchmark_filter=HalfSpace` (README, Benchmarks).
+  return unknowns <= 1200 ? Backend::Dense : Backend::Fft;
+}
+
+HalfSpaceOperator::HalfSpaceOperator(const InfluenceTable& table, Problem problem,
+                                     int column_shift, Backend backend) {
+  const int unknowns = table.grid().size() * (problem == Problem::Normal ? 1 : 2);
+  if (backend == Backend::Auto) backend = auto_backend(unknowns);
+  if (backend == Backend::Dense)
+    impl_ = std::make_unique<DenseImpl>(table, problem, column_shift);
+  else
+    impl_ = std::make_unique<FftImpl>(table, problem, column_shift);
+}
+
+HalfSpaceOperator::~HalfSpaceOperator() = default;
+HalfSpaceOperator::HalfSpaceOperator(HalfSpaceOperator&&) noexcept = default;
+HalfSpaceOperator& HalfSpaceOperator::operator=(HalfSpaceOperator&&) noexcept = default;
+
+int HalfSpaceOperator::size() const { return impl_->ncomp * impl_->n; }
+Backend HalfSpaceOperator::backend() const { return impl_->backend; }
+void HalfSpaceOperator::apply(const double* p, double* u) const { impl_->apply(p, u); }
+
+}  // namespace rollnoise::contact

@@ -1,0 +1,47 @@
+// The product u = A p of the half-space influence matrix with a traction field, behind one `apply`.
+//
+// A is block-Toeplitz (InfluenceTable), so A p is a discrete convolution. Two backends compute it:
+//   Fft    zero-pad the nx by ny grid to 2nx by 2ny, embed the kernel as a circulant and multiply
+//          in Fourier space (FFTW, real-to-complex): O(N log N) per product, exact to round-off.
+//   Dense  assemble the full matrix once (Eigen) and multiply: O(N^2), faster for small grids.
+// Auto picks Dense up to a size measured with bench/ (see README, "Benchmarks").
+//
+// `column_shift` = 1 gives the matrix A0 of the rolling step (Kalker 1990, Sec. 5.3;
+// DESIGN.md Sec. 2): the influence at x_I + dx of the previous position, A0(I,J) = A(di + 1, dj).
+#pragma once
+
+#include <memory>
+
+#include "contact/influence.hpp"
+
+namespace rollnoise::contact {
+
+enum class Backend { Auto, Fft, Dense };
+
+/// Normal: u_z = A_zz p_z, one component. Tangential: (u_x, u_y) = [A_xx A_xy; A_xy A_yy](p_x, p_y).
+enum class Problem { Normal, Tangential };
+
+class HalfSpaceOperator {
+ public:
+  HalfSpaceOperator(const InfluenceTable& table, Problem problem, int column_shift = 0,
+                    Backend backend = Backend::Auto);
+  ~HalfSpaceOperator();
+  HalfSpaceOperator(HalfSpaceOperator&&) noexcept;
+  HalfSpaceOperator& operator=(HalfSpaceOperator&&) noexcept;
+
+  /// Number of values in p and u: components x elements, component-major ([c][iy][ix]).
+  int size() const;
+  Backend backend() const;
+  /// u = A p. p and u hold size() values; they may not alias.
+  void apply(const double* p, double* u) const;
+
+  /// The backend Auto chooses for this many unknowns (components x elements).
+  static Backend auto_backend(int unknowns);
+
+  class Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rollnoise::contact

@@ -1,0 +1,29 @@
+// A contact patch: the grid, the elastic constants, their influence coefficients and the solved
+// normal problem. Everything downstream (steady rolling, transient rolling, the linear NSS model)
+// starts from a ContactPatch.
+#pragma once
+
+#include "contact/hertz.hpp"
+#include "contact/influence.hpp"
+#include "contact/normal_solver.hpp"
+
+namespace rollnoise::contact {
+
+struct ContactPatch {
+  Grid grid;
+  Material material;
+  InfluenceTable influence;
+  GridField undeformed_distance;  ///< h without the approach (m)
+  NormalSolution normal;
+
+  ContactPatch(const Grid& g, const Material& m) : grid(g), material(m), influence(g, m) {}
+};
+
+/// Undeformed distance h = A x^2 + B y^2 of a Hertzian contact at the element centres.
+GridField quadratic_distance(const Grid& g, double A, double B);
+
+/// Solve the normal problem for the undeformed distance h and load N on the grid.
+ContactPatch solve_patch(const Grid& g, const Material& m, GridField h, double normal_force,
+                         Backend backend = Backend::Auto, const NormalSolverSettings& s = {});
+
+}  // namespace rollnoise::contact
