@@ -1,0 +1,158 @@
+// rollnoise steady: the normal problem and steady rolling at the mean creepage, or a sweep of
+// steady solutions over any case key (--sweep).
+#include <chrono>
+#include <memory>
+#include <cstdio>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "contact/forces.hpp"
+#include "contact/steady_rolling.hpp"
+#include "core/errors.hpp"
+#include "io/contact_case.hpp"
+#include "io/contact_output.hpp"
+
+namespace rollnoise::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// "--sweep KEY=[v1, v2, ...]" (one TOML value per point), "KEY=lo:hi:n" (scalar key, linear),
+// or "KEY[i]=lo:hi:n" (component i of an array key, the others from the case). Returns the
+// overrides "KEY=value", one per point, and the swept values for the output.
+std::vector<std::string> expand_sweep(const std::string& spec, const io::CaseReader& base,
+                                      std::vector<double>& values) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos) throw InputError("--sweep", "--sweep expects KEY=VALUES, got '" + spec + "'");
+  std::string key = spec.substr(0, eq);
+  const std::string rhs = spec.substr(eq + 1);
+  int component = -1;
+  if (const auto br = key.find('['); br != std::string::npos) {
+    component = std::stoi(key.substr(br + 1));
+    key = key.substr(0, br);
+    if (component < 0 || component > 2)
+      throw InputError("--sweep", "--sweep " + key + ": component index must be 0, 1 or 2");
+  }
+  std::vector<std::string> out;
+  if (!rhs.empty() && rhs.front() == '[') {
+    if (component >= 0) throw InputError("--sweep", "--sweep KEY[i] takes lo:hi:n");
+    for (const auto& v : io::split_toml_array(rhs, "--sweep " + key)) {
+      values.push_back(double(out.size()));
+      out.push_back(key + "=" + v);
+    }
+    return out;
+  }
+  double lo, hi;
+  long n;
+  char c1, c2;
+  std::istringstream is(rhs);
+  if (!(is >> lo >> c1 >> hi >> c2 >> n) || c1 != ':' || c2 != ':' || n < 1)
+    throw InputError("--sweep", "--sweep " + key + ": expected lo:hi:n or a TOML array, got '" + rhs + "'");
+  for (long i = 0; i < n; ++i) {
+    const double v = n == 1 ? lo : lo + (hi - lo) * double(i) / double(n - 1);
+    values.push_back(v);
+    std::ostringstream val;
+    val.precision(17);
+    if (component >= 0) {
+      auto arr = base.real3(key);
+      arr[component] = v;
+      val << "[" << arr[0] << ", " << arr[1] << ", " << arr[2] << "]";
+    } else {
+      val << v;
+    }
+    out.push_back(key + "=" + val.str());
+  }
+  return out;
+}
+
+void print_solution(const contact::Grid& g, const contact::TangentialSolution& s, double ms) {
+  const auto f = contact::total_forces(g, s.px, s.py);
+  std::printf("  Fx = %.6g N   Fy = %.6g N   Mz = %.6g N m\n", f.Fx, f.Fy, f.Mz);
+  std::printf("  adhesion %d, slip %d elements; %d Newton iterations, residual %.2g; %.1f ms\n",
+              s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip),
+              s.iterations, s.residual, ms);
+}
+
+}  // namespace
+
+int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
+  const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
+  const io::ContactCase cc = io::read_contact_case(reader);
+  if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
+  // Read every sweep point before any work, so that bad input fails early.
+  std::vector<double> values;
+  std::vector<io::CaseReader> points;
+  std::vector<io::ContactCase> point_cases;
+  if (!sweeps.empty())
+    for (const auto& kv : expand_sweep(sweeps[0], reader, values)) {
+      points.push_back(reader.with(kv));
+      point_cases.push_back(io::read_contact_case(points.back()));
+    }
+  const std::string out = output_path(o, reader.name());
+  io::Hdf5Writer w(out);
+  io::write_case(w, reader);
+
+  auto t0 = Clock::now();
+  const contact::ContactPatch patch = io::solve_case_patch(cc);
+  std::printf("%s: normal problem on %d x %d elements (dx = %.4g mm, dy = %.4g mm)\n",
+              reader.name().c_str(), cc.grid.nx, cc.grid.ny, cc.grid.dx * 1e3, cc.grid.dy * 1e3);
+  std::printf("  N = %.6g N, %d elements in contact, p_max = %.6g MPa, approach = %.6g mm; %d "
+              "iterations, %.1f ms\n",
+              patch.normal.force, patch.normal.contact_elements(), patch.normal.max_pressure() * 1e-6,
+              patch.normal.approach * 1e3, patch.normal.iterations, ms_since(t0));
+  io::write_patch(w, patch);
+
+  if (sweeps.empty()) {
+    t0 = Clock::now();
+    const auto s = contact::solve_steady_rolling(patch.influence, patch.normal.pn, cc.steady_input(),
+                                                 cc.tangential);
+    std::printf("steady rolling at creepage (%g, %g, %g rad/m), mu = %g, V = %g m/s:\n",
+                cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, cc.mu, cc.speed);
+    print_solution(cc.grid, s, ms_since(t0));
+    io::write_tangential(w, "/steady", cc.grid, cc.creepage, s);
+  } else {
+    std::vector<double> force, creep;
+    std::vector<int> n_adh, n_slip, iters;
+    std::printf("sweep %s (%zu points):\n%12s %12s %12s %12s %8s %8s\n", sweeps[0].c_str(),
+                points.size(), "value", "Fx [N]", "Fy [N]", "Mz [N m]", "adhesion", "slip");
+    contact::TangentialSolution previous;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const io::ContactCase& pc = point_cases[i];
+      // The normal problem is reused unless the sweep changes it.
+      const bool same_normal = pc.grid.nx == cc.grid.nx && pc.grid.ny == cc.grid.ny &&
+                               pc.grid.dx == cc.grid.dx && pc.grid.dy == cc.grid.dy &&
+                               pc.material.E == cc.material.E && pc.material.nu == cc.material.nu &&
+                               pc.normal_force == cc.normal_force && pc.a == cc.a && pc.b == cc.b;
+      std::unique_ptr<contact::ContactPatch> own;
+      if (!same_normal) own = std::make_unique<contact::ContactPatch>(io::solve_case_patch(pc));
+      const contact::ContactPatch& local = same_normal ? patch : *own;
+      const auto s = contact::solve_steady_rolling(local.influence, local.normal.pn, pc.steady_input(),
+                                                   pc.tangential, same_normal && i ? &previous : nullptr);
+      const auto f = contact::total_forces(pc.grid, s.px, s.py);
+      std::printf("%12.6g %12.6g %12.6g %12.6g %8d %8d\n", values[i], f.Fx, f.Fy, f.Mz,
+                  s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip));
+      force.insert(force.end(), {f.Fx, f.Fy, f.Mz});
+      creep.insert(creep.end(), {pc.creepage.xi_x, pc.creepage.xi_y, pc.creepage.phi});
+      n_adh.push_back(s.count(contact::ElementState::adhesion));
+      n_slip.push_back(s.count(contact::ElementState::slip));
+      iters.push_back(s.iterations);
+      previous = s;
+    }
+    const std::size_t n = points.size();
+    w.attribute("/sweep", "spec", sweeps[0]);
+    w.write("/sweep/value", values, {n}, "as the swept key (index for TOML-array sweeps)");
+    w.write("/sweep/creepage", creep, {n, 3}, "-, -, rad/m");
+    w.write("/sweep/force", force, {n, 3}, "N, N, N m");
+    w.write("/sweep/n_adhesion", n_adh, {n}, "-");
+    w.write("/sweep/n_slip", n_slip, {n}, "-");
+    w.write("/sweep/iterations", iters, {n}, "-");
+  }
+  w.commit();
+  std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
+
+}  // namespace rollnoise::cli

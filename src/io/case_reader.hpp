@@ -1,0 +1,61 @@
+// Reading case files (TOML) against the declared schema (case_schema.hpp).
+//
+// Every value is checked when it is read: its type, finiteness, sign and allowed values; every
+// error names the file and the dotted key. `--set key=value` overrides are merged before reading,
+// and toml_text() gives the case as run (stored in the output as /case).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rollnoise::io {
+
+class CaseReader {
+ public:
+  /// Parse `path` and apply `overrides` ("key=value", value in TOML syntax or a bare string).
+  /// Unknown keys, malformed TOML and malformed overrides throw InputError.
+  static CaseReader from_file(const std::string& path, const std::vector<std::string>& overrides = {});
+  static CaseReader from_string(const std::string& toml, const std::string& name,
+                                const std::vector<std::string>& overrides = {});
+  CaseReader(const CaseReader&);
+  CaseReader& operator=(const CaseReader&);
+  ~CaseReader();
+
+  /// Case name: the file name without folder and extension.
+  const std::string& name() const { return name_; }
+  /// The file the case came from (for messages).
+  const std::string& source() const { return source_; }
+  /// The folder of the case file (relative file keys are resolved against it).
+  std::string folder() const;
+  /// The case as run, after overrides, as TOML text.
+  std::string toml_text() const;
+
+  /// A copy with one more override applied (used by sweeps).
+  CaseReader with(const std::string& override_kv) const;
+
+  bool has(const std::string& key) const;
+  double real(const std::string& key) const;
+  long integer(const std::string& key) const;
+  std::string string(const std::string& key) const;
+  std::array<double, 3> real3(const std::string& key) const;
+  std::vector<double> real_list(const std::string& key) const;
+
+  /// Throw InputError for `key` with the file name in front of `message`.
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+ private:
+  CaseReader() = default;
+  void apply_override(const std::string& kv);
+  void check_keys() const;
+  struct Doc;
+  std::unique_ptr<Doc> doc_;
+  std::string name_, source_;
+};
+
+/// The elements of a TOML array given as text ("[1, 2]" or "[[0,0,0],[1,0,0]]"), each as TOML text.
+/// `what` names the option in error messages.
+std::vector<std::string> split_toml_array(const std::string& text, const std::string& what);
+
+}  // namespace rollnoise::io

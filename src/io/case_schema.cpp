@@ -1,0 +1,100 @@
+#include "io/case_schema.hpp"
+
+#include <sstream>
+
+namespace rollnoise::io {
+
+const std::vector<KeySpec>& case_schema() {
+  using T = KeyType;
+  static const std::vector<KeySpec> schema = {
+      // material, friction, rolling
+      {"material.E", T::PositiveReal, "210e9", "Pa", "Young's modulus of wheel and rail"},
+      {"material.nu", T::Real, "0.28", "-", "Poisson's ratio of wheel and rail (0 <= nu < 0.5)"},
+      {"friction.mu", T::PositiveReal, "0.3", "-", "Coulomb friction coefficient"},
+      {"rolling.speed", T::PositiveReal, "13.8888888888889", "m/s", "rolling speed V"},
+      // contact geometry and load
+      {"contact.geometry", T::String, "\"hertz\"", "-",
+       "\"hertz\": quadratic undeformed distance from the semi-axes a, b; \"profiles\": "
+       "wheel and rail profiles",
+       {"hertz", "profiles"}},
+      {"contact.normal_force", T::PositiveReal, "", "N", "prescribed total normal force N"},
+      {"contact.a", T::PositiveReal, "", "m", "hertz: semi-axis in the rolling direction x"},
+      {"contact.b", T::PositiveReal, "", "m", "hertz: lateral semi-axis y"},
+      // grid
+      {"grid.nx", T::Integer, "34", "-", "elements in x (rolling direction)", {}, 2},
+      {"grid.ny", T::Integer, "25", "-", "elements in y (lateral)", {}, 2},
+      {"grid.scale", T::PositiveReal, "1.1333333333333333", "-",
+       "hertz: the potential contact area spans +-scale*a by +-scale*b (CONTACT's IPOTCN = -3)"},
+      {"grid.x_min", T::Real, "", "m", "explicit grid: left edge (with x_max, y_min, y_max)"},
+      {"grid.x_max", T::Real, "", "m", "explicit grid: right edge"},
+      {"grid.y_min", T::Real, "", "m", "explicit grid: lower edge"},
+      {"grid.y_max", T::Real, "", "m", "explicit grid: upper edge"},
+      {"grid.spin_offset", T::Real, "0.0", "-",
+       "spin term of the rigid slip taken at x + spin_offset*dx: 0 = paper Eq. 21, "
+       "1/6 = CONTACT's default"},
+      // creepage
+      {"creepage.mean", T::Real3, "[0.0, 0.0, 0.0]", "-, -, rad/m",
+       "mean creepages xi_x, xi_y, phi"},
+      // solver settings
+      {"solver.influence", T::String, "\"auto\"", "-",
+       "products A*p: \"fft\", \"dense\" or \"auto\" (by size)", {"auto", "fft", "dense"}},
+      {"solver.normal_tolerance", T::PositiveReal, "1e-12", "-",
+       "normal solver: relative change of the pressure"},
+      {"solver.tangential_tolerance", T::PositiveReal, "1e-12", "-",
+       "tangential solvers: relative residual of the tractions"},
+      {"solver.max_iterations", T::Integer, "200", "-", "tangential solver iterations", {}, 1},
+      // excitation (transient / response / validate)
+      {"excitation.type", T::String, "\"harmonic\"", "-", "creepage variation",
+       {"none", "harmonic", "multiharmonic", "csv"}},
+      {"excitation.amplitude", T::Real3, "[0.0, 0.0, 0.0]", "-, -, rad/m",
+       "amplitude per creepage component (harmonic, multiharmonic)"},
+      {"excitation.phase", T::Real3, "[0.0, 0.0, 0.0]", "deg", "harmonic: phase per component"},
+      {"excitation.frequency", T::PositiveReal, "1000.0", "Hz", "harmonic: frequency"},
+      {"excitation.f_min", T::PositiveReal, "100.0", "Hz", "multiharmonic: lowest frequency"},
+      {"excitation.f_max", T::PositiveReal, "5000.0", "Hz", "multiharmonic: highest frequency"},
+      {"excitation.count", T::Integer, "1000", "-", "multiharmonic: number of frequencies", {}, 1},
+      {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0},
+      {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi"},
+      // transient
+      {"transient.duration", T::PositiveReal, "0.01", "s", "simulated time"},
+      {"transient.start", T::String, "\"steady\"", "-",
+       "initial tractions: steady solution at the mean creepage, or zero", {"steady", "zero"}},
+      {"transient.snapshots", T::RealList, "[]", "s", "times at which tractions are written"},
+      // frequency axis (creep, noise, receptance)
+      {"frequency.f_min", T::NonNegReal, "10.0", "Hz", "lowest frequency"},
+      {"frequency.f_max", T::PositiveReal, "5000.0", "Hz", "highest frequency"},
+      {"frequency.count", T::Integer, "500", "-", "number of frequencies", {}, 1},
+      {"frequency.spacing", T::String, "\"log\"", "-", "frequency spacing",
+       {"linear", "log", "third-octave"}},
+      {"frequency.list", T::RealList, "", "Hz", "explicit list of frequencies (overrides the rest)"},
+  };
+  return schema;
+}
+
+const KeySpec* find_key(const std::string& key) {
+  for (const auto& k : case_schema())
+    if (k.key == key) return &k;
+  return nullptr;
+}
+
+std::string describe_schema() {
+  std::ostringstream os;
+  std::string section;
+  for (const auto& k : case_schema()) {
+    const std::string s = k.key.substr(0, k.key.find('.'));
+    if (s != section) os << "\n[" << (section = s) << "]\n";
+    os << "  " << k.key.substr(k.key.find('.') + 1) << " = "
+       << (k.default_value.empty() ? "(required where used)" : k.default_value);
+    if (k.units != "-") os << "   [" << k.units << "]";
+    os << "\n      " << k.help;
+    if (!k.allowed.empty()) {
+      os << " (one of:";
+      for (const auto& a : k.allowed) os << " \"" << a << "\"";
+      os << ")";
+    }
+    os << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace rollnoise::io

@@ -1,0 +1,39 @@
+// The declared case-file schema: every key a case file may hold, with its type, default, allowed
+// values, units and help text (in the spirit of deal.II's ParameterHandler). `rollnoise keys` prints
+// it; the reader rejects any key not declared here, naming it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rollnoise::io {
+
+enum class KeyType {
+  Real,          ///< finite real number
+  PositiveReal,  ///< finite, > 0
+  NonNegReal,    ///< finite, >= 0
+  Integer,       ///< integer >= minimum
+  String,        ///< one of `allowed` (any string if empty)
+  Real3,         ///< array of three finite reals
+  RealList,      ///< array of finite reals
+  StringList,    ///< array of strings
+};
+
+struct KeySpec {
+  std::string key;            ///< dotted TOML key, e.g. "grid.nx"
+  KeyType type;
+  std::string default_value;  ///< TOML text of the default; empty: required where used
+  std::string units;
+  std::string help;
+  std::vector<std::string> allowed = {};
+  long minimum = 0;           ///< for Integer
+};
+
+/// All declared keys, in the order they are documented.
+const std::vector<KeySpec>& case_schema();
+/// The spec of `key`, or nullptr if the key is not declared.
+const KeySpec* find_key(const std::string& key);
+/// Human-readable listing of the schema (for `rollnoise keys`).
+std::string describe_schema();
+
+}  // namespace rollnoise::io
