@@ -8,6 +8,7 @@
 #include "contact/coulomb.hpp"
 #include "contact/slip_operator.hpp"
 #include "core/errors.hpp"
+#include "linalg/gmres.hpp"
 
 namespace rollnoise::contact {
 namespace {
@@ -77,6 +78,9 @@ TangentialSolution solve_steady_rolling(const InfluenceTable& A, const GridField
   TangentialSolution sol;
   FixedPointResidual r = residual(p);
   Eigen::MatrixXd J(n, n);
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  bool have_lu = false;
+  sol.residual = 1.0;
   bool converged = false;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     // Jacobian I - dPi/db (S - D), row block by row block
@@ -89,15 +93,41 @@ TangentialSolution solve_steady_rolling(const InfluenceTable& A, const GridField
       J(2 * a + 1, 2 * a) += G[2] * d1;
       J(2 * a + 1, 2 * a + 1) += 1.0 + G[3] * d2;
     }
-    const Eigen::VectorXd dp = -J.partialPivLu().solve(r.R);
-    // backtracking on max |R|
-    double t = 1.0;
-    FixedPointResidual trial = residual(p + dp);
-    for (int k = 0; k < 30 && !(trial.norm <= (1.0 - 1e-4 * t) * r.norm); ++k) {
-      t *= 0.5;
-      trial = residual(p + t * dp);
+    // Newton step J dp = -R. The LU factors of an earlier Jacobian precondition GMRES; they are
+    // renewed when GMRES needs many iterations (the Jacobian changed much since).
+    Eigen::VectorXd dp = Eigen::VectorXd::Zero(n);
+    bool solved = false;
+    if (have_lu) {
+      const double forcing = std::min(1e-2, std::max(1e-13, sol.residual * 1e-2));
+      const auto g = linalg::gmres([&](const Eigen::VectorXd& v) { return Eigen::VectorXd(J * v); },
+                                   [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); },
+                                   -r.R, dp, forcing, 60);
+      solved = g.converged;
     }
-    p += t * dp;
+    if (!solved) {
+      lu.compute(J);
+      have_lu = true;
+      dp = -lu.solve(r.R);
+    }
+    // Step: the Newton point projected onto the traction bounds |p_I| <= mu pn_I (an
+    // admissible traction field), accepted if it reduces |R|_2; else backtracking on |R|_2.
+    auto project = [&](Eigen::VectorXd q) {
+      for (int a = 0; a < m; ++a) {
+        const double len = std::hypot(q(2 * a), q(2 * a + 1));
+        if (len > bound[a]) q.segment<2>(2 * a) *= bound[a] / len;
+      }
+      return q;
+    };
+    const double r2 = r.R.norm();
+    Eigen::VectorXd next = project(p + dp);
+    FixedPointResidual trial = residual(next);
+    double t = 1.0;
+    for (int k = 0; k < 30 && !(trial.R.norm() <= (1.0 - 1e-4 * t) * r2); ++k) {
+      t *= 0.5;
+      next = project(p + t * dp);
+      trial = residual(next);
+    }
+    p = std::move(next);
     r = std::move(trial);
     sol.iterations = it;
     // relative to the tractions present (creepage 1e-8 gives tractions ~1e-5 mu pn)

@@ -1,0 +1,225 @@
+#include "dynamics/track.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "dynamics/parameter_file.hpp"
+
+namespace rollnoise::dynamics {
+
+// ---------------------------------------------------------------------------------------------
+// Support
+// ---------------------------------------------------------------------------------------------
+
+cdouble Support::dynamic_stiffness(double omega) const {
+  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
+  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
+  const cdouble below = kb - sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
+  return kp * below / (kp + below);                          // Eq. (1): pad in series
+}
+
+void Support::validate(const std::string& prefix) const {
+  auto check = [&](double v, const char* name, bool allow_zero) {
+    const bool ok = std::isfinite(v) && (allow_zero ? v >= 0.0 : v > 0.0);
+    if (!ok)
+      throw InputError(prefix + "." + name, prefix + "." + name + " must be " +
+                                                (allow_zero ? "non-negative" : "positive") +
+                                                ", got " + std::to_string(v));
+  };
+  check(pad_stiffness, "pad_stiffness", false);
+  check(pad_loss_factor, "pad_loss_factor", true);
+  check(sleeper_mass, "sleeper_mass", true);
+  check(ballast_stiffness, "ballast_stiffness", false);
+  check(ballast_loss_factor, "ballast_loss_factor", true);
+}
+
+void TrackParameters::validate() const {
+  vertical.validate("rail.vertical");
+  lateral.validate("rail.lateral");
+  vertical_support.validate("support.vertical");
+  lateral_support.validate("support.lateral");
+  longitudinal_support.validate("support.longitudinal");
+  if (!(sleeper_spacing > 0.0) || !std::isfinite(sleeper_spacing))
+    throw InputError("sleeper_spacing",
+                     "sleeper_spacing must be positive, got " + std::to_string(sleeper_spacing));
+  if (!(head_height >= 0.0) || !std::isfinite(head_height))
+    throw InputError("head_height",
+                     "head_height must be non-negative, got " + std::to_string(head_height));
+  if (supports_each_side < 1)
+    throw InputError("supports_each_side", "supports_each_side must be at least 1, got " +
+                                               std::to_string(supports_each_side));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Parameters: built-in UIC60 track and the file reader
+// ---------------------------------------------------------------------------------------------
+
+TrackParameters uic60_ballasted() {
+  TrackParameters t;
+  BeamSection rail;
+  rail.youngs_modulus = 210e9;
+  rail.shear_modulus = 81e9;
+  rail.area = 7.69e-3;
+  rail.mass_per_length = 60.3;
+  rail.loss_factor = 0.02;
+  t.vertical = rail;
+  t.vertical.second_moment = 3.055e-5;
+  t.vertical.shear_coefficient = 0.4;
+  t.lateral = rail;
+  t.lateral.second_moment = 5.13e-6;
+  t.lateral.shear_coefficient = 0.5;
+  t.vertical_support = {350e6, 0.25, 140.0, 100e6, 1.0};
+  t.lateral_support = {50e6, 0.25, 140.0, 35e6, 1.0};
+  t.longitudinal_support = {50e6, 0.25, 140.0, 35e6, 1.0};
+  t.sleeper_spacing = 0.6;
+  t.head_height = 0.091;
+  t.supports_each_side = 60;
+  return t;
+}
+
+TrackParameters read_track_parameters(const std::string& path) {
+  return track_parameters_from(ParameterFile::read(path));
+}
+
+TrackParameters track_parameters_from(const ParameterFile& f) {
+  TrackParameters t;
+  BeamSection rail;
+  rail.youngs_modulus = f.positive("rail.youngs_modulus");
+  rail.shear_modulus = f.positive("rail.shear_modulus");
+  rail.area = f.positive("rail.area");
+  rail.mass_per_length = f.positive("rail.mass_per_length");
+  rail.loss_factor = f.positive("rail.loss_factor", true);
+  rail.timoshenko = f.get_or("rail.timoshenko", 1.0) != 0.0;
+  t.vertical = rail;
+  t.vertical.second_moment = f.positive("rail.vertical.second_moment");
+  t.vertical.shear_coefficient = f.positive("rail.vertical.shear_coefficient");
+  t.lateral = rail;
+  t.lateral.second_moment = f.positive("rail.lateral.second_moment");
+  t.lateral.shear_coefficient = f.positive("rail.lateral.shear_coefficient");
+  auto support = [&](const std::string& p) {
+    Support s;
+    s.pad_stiffness = f.positive(p + ".pad_stiffness");
+    s.pad_loss_factor = f.positive(p + ".pad_loss_factor", true);
+    s.sleeper_mass = f.positive(p + ".sleeper_mass", true);
+    s.ballast_stiffness = f.positive(p + ".ballast_stiffness");
+    s.ballast_loss_factor = f.positive(p + ".ballast_loss_factor", true);
+    return s;
+  };
+  t.vertical_support = support("support.vertical");
+  t.lateral_support = support("support.lateral");
+  t.longitudinal_support = support("support.longitudinal");
+  t.sleeper_spacing = f.positive("sleeper_spacing");
+  t.head_height = f.positive("head_height", true);
+  const double n = f.get_or("supports_each_side", 60.0);
+  if (!(n >= 1.0) || n != std::floor(n) || n > 100000.0)
+    throw InputError(f.origin() + ":supports_each_side",
+                     f.origin() + ": supports_each_side must be a positive integer");
+  t.supports_each_side = static_cast<int>(n);
+  t.validate();
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Continuous and discrete support
+// ---------------------------------------------------------------------------------------------
+
+Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& support,
+                                     double sleeper_spacing, double frequency, double x) {
+  const double omega = angular(frequency);
+  const cdouble s = support.dynamic_stiffness(omega) / sleeper_spacing;  // N/m^2
+  return InfiniteBeam(rail, omega, s).transfer(x);
+}
+
+DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const Support& support,
+                                                 double sleeper_spacing, int supports_each_side)
+    : rail_(rail), support_(support), spacing_(sleeper_spacing), n_(supports_each_side) {
+  rail_.validate("rail");
+  support_.validate("support");
+  if (!(spacing_ > 0.0)) throw InputError("sleeper_spacing", "sleeper_spacing must be positive");
+  if (n_ < 1) throw InputError("supports_each_side", "supports_each_side must be at least 1");
+}
+
+Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r,
+                                                   double x_e) const {
+  const double omega = angular(frequency);
+  const InfiniteBeam free_rail(rail_, omega, 0.0);
+  const cdouble K = support_.dynamic_stiffness(omega);
+  const int m = 2 * n_ + 1;
+  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
+
+  // Toeplitz column of A: g_wF(d L), d = 0 .. 2N.
+  std::vector<cdouble> g(m);
+  for (int d = 0; d < m; ++d) g[d] = free_rail.transfer(d * spacing_)(0, 0);
+
+  // S = A + K^{-1} I, B_e and B_r (rows: g_wF, g_wM of the free rail at x_n - x).
+  Eigen::MatrixXcd S(m, m);
+  Eigen::MatrixXcd Be(m, 2), Br(m, 2);
+  const cdouble compliance = 1.0 / K;
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) S(i, j) = g[std::abs(i - j)];
+    S(i, i) += compliance;
+    const double xn = (n0 - n_ + i) * spacing_;
+    Be.row(i) = free_rail.transfer(xn - x_e).row(0);
+    Br.row(i) = free_rail.transfer(xn - x_r).row(0);
+  }
+  const Eigen::MatrixXcd X = S.partialPivLu().solve(Be);
+  Eigen::Matrix2cd H = free_rail.transfer(x_r - x_e) - Br.transpose() * X;
+  if (!H.allFinite())
+    throw NumericalError("DiscretelySupportedRail: non-finite receptance at f = " +
+                         std::to_string(frequency) + " Hz");
+  return H;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The rail's 4x4 contact-point receptance
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+const TrackParameters& validated(const TrackParameters& t) {
+  t.validate();
+  return t;
+}
+}  // namespace
+
+RailModel::RailModel(const TrackParameters& track, TrackSupport support, double contact_position)
+    : track_(validated(track)),
+      support_(support),
+      x_(contact_position),
+      vertical_(track.vertical, track.vertical_support, track.sleeper_spacing,
+                track.supports_each_side),
+      lateral_(track.lateral, track.lateral_support, track.sleeper_spacing,
+               track.supports_each_side) {
+  if (!std::isfinite(x_)) throw InputError("contact_position", "contact position must be finite");
+}
+
+Receptance4 RailModel::receptance(double frequency) const {
+  const double omega = angular(frequency);
+  Eigen::Matrix2cd Hv, Hl;
+  if (support_ == TrackSupport::kDiscrete) {
+    Hv = vertical_.point(frequency, x_);
+    Hl = lateral_.point(frequency, x_);
+  } else {
+    Hv = continuous_transfer(track_.vertical, track_.vertical_support, track_.sleeper_spacing,
+                             frequency, 0.0);
+    Hl = continuous_transfer(track_.lateral, track_.lateral_support, track_.sleeper_spacing,
+                             frequency, 0.0);
+  }
+  const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / track_.sleeper_spacing;
+  const cdouble rod = rod_receptance(track_.vertical, omega, s_x, 0.0);
+  const double h = track_.head_height;
+
+  Receptance4 R = Receptance4::Zero();
+  R(kZ, kZ) = Hv(0, 0);
+  R(kZ, kX) = -h * Hv(0, 1);
+  R(kX, kZ) = -h * Hv(1, 0);
+  R(kX, kX) = rod + h * h * Hv(1, 1);
+  R(kY, kY) = Hl(0, 0);
+  R(kY, kRotZ) = Hl(0, 1);
+  R(kRotZ, kY) = Hl(1, 0);
+  R(kRotZ, kRotZ) = Hl(1, 1);
+  return R;
+}
+
+}  // namespace rollnoise::dynamics

@@ -1,0 +1,132 @@
+// Track models: the rail (Timoshenko beam, track_beam.hpp) on a two-layer support of rail pads,
+// sleepers and ballast, continuous or discrete, and the rail's 4x4 receptance at the contact point.
+//
+// Support of one rail seat (Thompson 2009, Sec. 3.4, Fig. 3.9; Knothe & Grassie 1993): pad
+// k_p(1 + i eta_p) in series with the sleeper mass m_s on the ballast k_b(1 + i eta_b). Its dynamic
+// stiffness, the force on the rail per unit rail displacement at the seat, is
+//
+//   K(omega) = k_p* (k_b* - m_s omega^2) / (k_p* + k_b* - m_s omega^2).                    (1)
+//
+// Continuous support (Thompson 2009, Sec. 3.4): the support smeared along the rail, foundation
+// stiffness per length s = K(omega)/L with L the sleeper spacing, solved in closed form by
+// InfiniteBeam.
+//
+// Discrete support (receptance superposition; Heckl, Acustica 81, 1995; Thompson 2009, Sec. 3.5;
+// Wu & Thompson, JSV 224, 1999): supports at x_n = n L act on the free rail with forces
+// R_n = -K w(x_n). With g(x) the free rail's Green's function (InfiniteBeam with s = 0) and the
+// load u = (F, M) at x_e,
+//
+//   w(x_n) = G_w(x_n - x_e) u + sum_m g_wF(x_n - x_m) R_m   =>   (A + K^{-1} I) R = -B_e u,
+//
+// A_nm = g_wF(x_n - x_m) (symmetric Toeplitz), B_e rows (g_wF, g_wM)(x_n - x_e). The response at
+// x_r is then
+//
+//   H(x_r, x_e) = G(x_r - x_e) - B_r^T (A + K^{-1} I)^{-1} B_e,                              (2)
+//
+// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T). The infinite periodic track is truncated
+// to the 2N + 1 supports nearest the load; beyond them the rail is free. Waves reflected at the ends
+// of the supported stretch return attenuated by the track decay over 2 N L (N = 60: 72 m of
+// track); the tests check convergence in N.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "dynamics/receptance.hpp"
+#include "dynamics/track_beam.hpp"
+
+namespace rollnoise::dynamics {
+
+class ParameterFile;
+
+/// One rail seat: rail pad, sleeper (the share of one rail), ballast.
+struct Support {
+  double pad_stiffness = 0.0;        ///< k_p (N/m)
+  double pad_loss_factor = 0.0;      ///< eta_p (-)
+  double sleeper_mass = 0.0;         ///< m_s (kg), 0 for pads directly on the ballast spring
+  double ballast_stiffness = 0.0;    ///< k_b (N/m)
+  double ballast_loss_factor = 0.0;  ///< eta_b (-)
+
+  /// K(omega) of Eq. (1) (N/m).
+  cdouble dynamic_stiffness(double omega) const;
+  void validate(const std::string& prefix) const;
+};
+
+/// A ballasted track: the rail in both planes of bending and the supports in the three directions.
+struct TrackParameters {
+  BeamSection vertical;            ///< bending in the x-z plane (I about the horizontal axis)
+  BeamSection lateral;             ///< bending in the x-y plane (I about the vertical axis)
+  Support vertical_support;
+  Support lateral_support;
+  Support longitudinal_support;    ///< pad shear / sleeper / ballast in x
+  double sleeper_spacing = 0.6;    ///< L (m)
+  double head_height = 0.0;        ///< running surface above the vertical-bending neutral axis (m)
+  int supports_each_side = 60;     ///< N of the discrete model (2N + 1 supports)
+
+  void validate() const;
+};
+
+/// The built-in UIC60 ballasted track, identical to models/track/uic60_ballasted.toml
+/// (values and sources in docs/models.md).
+TrackParameters uic60_ballasted();
+
+/// Reads a track parameter file (ParameterFile syntax; keys as in models/track/uic60_ballasted.toml).
+TrackParameters read_track_parameters(const std::string& path);
+TrackParameters track_parameters_from(const ParameterFile& file);
+
+/// Rail on a continuous support s = K(omega)/L: (w, psi) at x per (F, M) at 0 (see InfiniteBeam).
+Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& support,
+                                     double sleeper_spacing, double frequency, double x);
+
+/// Rail on discrete supports at x_n = n L, Eq. (2).
+class DiscretelySupportedRail {
+ public:
+  DiscretelySupportedRail(const BeamSection& rail, const Support& support, double sleeper_spacing,
+                          int supports_each_side);
+
+  /// (w, psi) at x_response per (F, M) at x_load; positions along the rail measured from a sleeper
+  /// (x = 0 over a sleeper, x = L/2 at mid-span). The 2N + 1 supports are centred on the midpoint
+  /// of the two positions.
+  Eigen::Matrix2cd transfer(double frequency, double x_response, double x_load) const;
+
+  /// Point receptance matrix at x.
+  Eigen::Matrix2cd point(double frequency, double x) const { return transfer(frequency, x, x); }
+
+  int supports_each_side() const { return n_; }
+
+ private:
+  BeamSection rail_;
+  Support support_;
+  double spacing_;
+  int n_;
+};
+
+enum class TrackSupport { kContinuous, kDiscrete };
+
+/// The rail's receptance at the contact point as the noise loop uses it.
+///
+///   z, rot z  : vertical bending (z) and lateral bending (y, rotation about z = lateral slope),
+///               from the continuous or discrete model;
+///   x         : rod on the smeared longitudinal support plus the rotation of the cross-section
+///               under the moment -h Fx of a force at the running surface, h = head_height:
+///               u_head = u_rod - h psi_vert, so H_xx = H_rod + h^2 H_psiM, H_zx = -h H_wM;
+///   y, rot z  : H_yy = H_wF, H_{y,rotz} = H_wM, H_{rotz,rotz} = H_psiM of the lateral model.
+/// Torsion of the rail and cross-section deformation are not modelled (docs/models.md).
+class RailModel {
+ public:
+  /// `contact_position`: distance of the contact from a sleeper along the rail (m); 0 is over a
+  /// sleeper, L/2 mid-span. Ignored by the continuous model.
+  RailModel(const TrackParameters& track, TrackSupport support, double contact_position);
+
+  Receptance4 receptance(double frequency) const;
+
+  const TrackParameters& track() const { return track_; }
+
+ private:
+  TrackParameters track_;
+  TrackSupport support_;
+  double x_;
+  DiscretelySupportedRail vertical_, lateral_;
+};
+
+}  // namespace rollnoise::dynamics

@@ -1,0 +1,91 @@
+// An infinite rail as a Timoshenko (or Euler-Bernoulli) beam, free or on a continuous foundation:
+// its Green's function (transfer receptance) at one frequency, in closed form from the roots of the
+// dispersion relation.
+//
+// Equations of motion for harmonic motion e^{i omega t} (Thompson, Railway Noise and Vibration,
+// 2009, Sec. 3.3, Eq. 3.9-3.10; Graff, Wave Motion in Elastic Solids, 1975, Sec. 3.4), deflection
+// w(x), rotation of the cross-section psi(x), loads F delta(x) and M delta(x):
+//
+//   kGA (w'' - psi') + (m' omega^2 - s) w = -F delta(x)        (shear force balance)
+//   EI psi''  + kGA (w' - psi) + rho I omega^2 psi = -M delta(x) (moment balance)
+//
+// with m' = rho A the mass per length, rho I = m' I / A the rotary inertia per length, k the shear
+// coefficient and s(omega) the complex dynamic stiffness of the foundation per unit length (N/m^2).
+// Losses of the rail itself enter as E(1 + i eta), G(1 + i eta).
+//
+// Fourier transform w(x) = (1/2pi) Int W(k) e^{-ikx} dk (so d/dx -> -ik) turns this into
+//
+//   [ kGA k^2 + s - m' omega^2        -i k kGA             ] [W  ]   [F]
+//   [ i k kGA                  EI k^2 + kGA - rho I omega^2] [Psi] = [M],
+//
+// whose determinant is the dispersion polynomial, quadratic in k^2 (Thompson 2009 Eq. 3.12):
+//
+//   P(k) = EI kGA k^4 + [ (s - m' omega^2) EI - kGA rho I omega^2 ] k^2
+//          + (s - m' omega^2)(kGA - rho I omega^2).
+//
+// Its four roots are +-k_1, +-k_2 (k_j^2 = lambda_j). The inverse transform is done by residues:
+// for x > 0 the contour closes in the lower half plane, where the decaying (or outgoing, Re k > 0)
+// roots lie, so for a numerator N(k) of the inverse matrix
+//
+//   g(x) = -i sum_{j=1,2} N(k_j) e^{-i k_j x} / P'(k_j),   P'(k_j) = 2 a k_j (lambda_j - lambda_other),
+//
+// with a = EI kGA; numerators even in k give g(-x) = g(x), odd ones g(-x) = -g(x) and g(0) = 0
+// (Knothe & Grassie, Veh. Syst. Dyn. 22, 1993; Grassie et al., J. Mech. Eng. Sci. 24, 1982).
+//
+// Euler-Bernoulli limit (kGA -> infinity, rho I = 0): P(k)/kGA -> EI k^4 + s - m' omega^2 with the
+// numerators W/F: 1, Psi/F: -ik, W/M: ik, Psi/M: k^2.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+
+#include "dynamics/receptance.hpp"
+
+namespace rollnoise::dynamics {
+
+/// Bending (and axial) properties of a rail for one plane of bending.
+struct BeamSection {
+  double youngs_modulus = 210e9;   ///< E (Pa)
+  double shear_modulus = 81e9;     ///< G (Pa)
+  double area = 0.0;               ///< cross-section A (m^2)
+  double second_moment = 0.0;      ///< I about the bending axis (m^4)
+  double mass_per_length = 0.0;    ///< m' = rho A (kg/m)
+  double shear_coefficient = 0.4;  ///< Timoshenko's k (-)
+  double loss_factor = 0.0;        ///< rail material loss factor eta_r (-)
+  bool timoshenko = true;          ///< false: Euler-Bernoulli (no shear deformation, no rotary inertia)
+
+  /// Throws InputError naming `prefix`.field for a non-physical value.
+  void validate(const std::string& prefix) const;
+};
+
+/// Green's function of an infinite beam on a continuous foundation at one angular frequency.
+class InfiniteBeam {
+ public:
+  /// `foundation` is the complex dynamic stiffness per unit length s (N/m^2); 0 for a free beam.
+  InfiniteBeam(const BeamSection& section, double omega, cdouble foundation);
+
+  /// (w(x), psi(x)) per (F, M) applied at 0: [[w/F, w/M], [psi/F, psi/M]] (m/N, m/(N m), rad/N,
+  /// rad/(N m)). Reciprocity: transfer(x)^T = transfer(-x).
+  Eigen::Matrix2cd transfer(double x) const;
+
+  /// Point receptance w/F at the load.
+  cdouble point_receptance() const { return transfer(0.0)(0, 0); }
+
+  /// The two roots k_1, k_2 of the dispersion relation with Im k < 0 (decaying towards +x), or
+  /// Re k > 0 for a propagating wave without damping (rad/m).
+  const std::array<cdouble, 2>& wavenumbers() const { return k_; }
+
+ private:
+  std::array<cdouble, 2> k_;          // roots in the lower half plane
+  std::array<cdouble, 2> inv_dp_;     // 1 / P'(k_j)
+  cdouble d2_, d0_, e2_, e0_, g_;     // numerators: W/F = d2 k^2 + d0, Psi/M = e2 k^2 + e0, odd: g k
+};
+
+/// Longitudinal receptance u/F of an infinite rod (axial stiffness EA(1 + i eta), mass m') on a
+/// continuous foundation of stiffness s per length, at distance x from the load:
+///   u(x) = -i e^{-i k0 |x|} / (2 EA k0),  k0^2 = (m' omega^2 - s) / EA,  Im k0 < 0
+/// (Graff 1975 Sec. 2.1 for the free rod; the foundation only shifts k0^2).
+cdouble rod_receptance(const BeamSection& section, double omega, cdouble foundation, double x);
+
+}  // namespace rollnoise::dynamics

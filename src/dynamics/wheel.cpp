@@ -1,0 +1,206 @@
+#include "dynamics/wheel.hpp"
+
+#include <Eigen/Dense>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "dynamics/parameter_file.hpp"
+
+namespace rollnoise::dynamics {
+namespace {
+
+// 6-vector order of the rigid body: u_x, u_y, u_z, theta_x, theta_y, theta_z; the contact Dofs in it.
+constexpr int kSixOf[4] = {2, 0, 1, 5};  // kZ, kX, kY, kRotZ
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
+  Eigen::Matrix3d S;
+  S << 0.0, -r.z(), r.y(),  //
+      r.z(), 0.0, -r.x(),   //
+      -r.y(), r.x(), 0.0;
+  return S;
+}
+
+std::string trim(const std::string& s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+  return s.substr(b, e - b);
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') out.push_back("");
+  return out;
+}
+
+const char* const kColumns[] = {"frequency_Hz", "damping_ratio", "modal_mass_kg", "phi_z",
+                                "phi_x",        "phi_y",         "phi_rz"};
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Rigid wheelset
+// ---------------------------------------------------------------------------------------------
+
+void RigidWheelset::validate(const std::string& prefix) const {
+  auto positive = [&](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw InputError(prefix + "." + name,
+                       prefix + "." + name + " must be positive, got " + std::to_string(v));
+  };
+  positive(mass, "mass");
+  positive(roll_inertia, "roll_inertia");
+  positive(spin_inertia, "spin_inertia");
+  positive(yaw_inertia, "yaw_inertia");
+  positive(wheel_radius, "wheel_radius");
+  if (!std::isfinite(contact_offset_y))
+    throw InputError(prefix + ".contact_offset_y", prefix + ".contact_offset_y must be finite");
+}
+
+Receptance4 RigidWheelset::receptance(double frequency) const {
+  const double omega = angular(frequency);
+  if (!(omega > 0.0))
+    throw InputError("frequency", "rigid wheelset receptance needs a positive frequency");
+  const Eigen::Vector3d r(0.0, contact_offset_y, -wheel_radius);
+  const Eigen::Matrix3d S = cross_matrix(r);
+  const Eigen::Matrix3d Jinv =
+      Eigen::Vector3d(1.0 / roll_inertia, 1.0 / spin_inertia, 1.0 / yaw_inertia).asDiagonal();
+  Eigen::Matrix<double, 6, 6> C;  // -omega^2 times the receptance
+  C.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() / mass - S * Jinv * S;
+  C.topRightCorner<3, 3>() = -S * Jinv;
+  C.bottomLeftCorner<3, 3>() = Jinv * S;
+  C.bottomRightCorner<3, 3>() = Jinv;
+  Receptance4 R;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) R(i, j) = -C(kSixOf[i], kSixOf[j]) / (omega * omega);
+  return R;
+}
+
+RigidWheelset read_wheelset(const std::string& path) {
+  return wheelset_from(ParameterFile::read(path));
+}
+
+RigidWheelset wheelset_from(const ParameterFile& f) {
+  RigidWheelset w;
+  w.mass = f.positive("mass");
+  w.roll_inertia = f.positive("roll_inertia");
+  w.spin_inertia = f.positive("spin_inertia");
+  w.yaw_inertia = f.positive("yaw_inertia");
+  w.contact_offset_y = f.get("contact_offset_y");
+  w.wheel_radius = f.positive("wheel_radius");
+  w.validate(f.origin());
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Modes
+// ---------------------------------------------------------------------------------------------
+
+void validate_mode(const WheelMode& m, const std::string& where) {
+  auto fail = [&](const char* field, const std::string& why) {
+    throw InputError(where + ":" + field, where + ": field '" + field + "' " + why);
+  };
+  if (!std::isfinite(m.frequency) || !(m.frequency > 0.0))
+    fail("frequency_Hz", "must be a positive frequency, got " + std::to_string(m.frequency));
+  if (!std::isfinite(m.damping_ratio) || m.damping_ratio < 0.0 || m.damping_ratio >= 1.0)
+    fail("damping_ratio", "must be in [0, 1), got " + std::to_string(m.damping_ratio));
+  if (!std::isfinite(m.modal_mass) || !(m.modal_mass > 0.0))
+    fail("modal_mass_kg", "must be positive, got " + std::to_string(m.modal_mass));
+  for (int j = 0; j < 4; ++j)
+    if (!std::isfinite(m.shape[j])) fail(kColumns[3 + j], "must be a finite number");
+  if (m.shape.cwiseAbs().maxCoeff() == 0.0)
+    fail("phi_z", "and phi_x, phi_y, phi_rz are all zero: the mode is not excited at the contact");
+}
+
+std::vector<WheelMode> read_wheel_modes(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "cannot open wheel mode file '" + path + "'");
+  std::vector<WheelMode> modes;
+  std::string line;
+  int line_no = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string where = path + ":" + std::to_string(line_no);
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const auto cells = split_csv(t);
+    if (!header) {  // the header must name the columns in order
+      for (int c = 0; c < 7; ++c)
+        if (static_cast<int>(cells.size()) <= c || cells[c] != kColumns[c])
+          throw InputError(where + ":" + kColumns[c],
+                           where + ": header must be '" + std::string("frequency_Hz,damping_ratio,"
+                                                                      "modal_mass_kg,phi_z,phi_x,"
+                                                                      "phi_y,phi_rz[,label]") +
+                               "'; column " + std::to_string(c + 1) + " should be '" +
+                               kColumns[c] + "'");
+      header = true;
+      continue;
+    }
+    double v[7];
+    for (int c = 0; c < 7; ++c) {
+      if (static_cast<int>(cells.size()) <= c || cells[c].empty())
+        throw InputError(where + ":" + kColumns[c],
+                         where + ": missing field '" + kColumns[c] + "'");
+      std::size_t used = 0;
+      try {
+        v[c] = std::stod(cells[c], &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != cells[c].size() || used == 0 || !std::isfinite(v[c]))
+        throw InputError(where + ":" + kColumns[c], where + ": field '" + kColumns[c] +
+                                                        "' is not a finite number: '" +
+                                                        cells[c] + "'");
+    }
+    if (cells.size() > 8)
+      throw InputError(where, where + ": too many fields (" + std::to_string(cells.size()) +
+                                  "), expected 7 or 8");
+    WheelMode m;
+    m.frequency = v[0];
+    m.damping_ratio = v[1];
+    m.modal_mass = v[2];
+    m.shape << v[3], v[4], v[5], v[6];
+    if (cells.size() == 8) m.label = cells[7];
+    validate_mode(m, where);
+    modes.push_back(m);
+  }
+  if (!header) throw InputError(path, path + ": no header line (empty wheel mode file)");
+  return modes;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Wheel model
+// ---------------------------------------------------------------------------------------------
+
+WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes)
+    : wheelset_(wheelset), modes_(std::move(modes)) {
+  wheelset_.validate("wheelset");
+  for (std::size_t n = 0; n < modes_.size(); ++n)
+    validate_mode(modes_[n], "wheel.modes[" + std::to_string(n) + "]");
+}
+
+Receptance4 WheelModel::modal_receptance(double frequency) const {
+  const double omega = angular(frequency);
+  Receptance4 H = Receptance4::Zero();
+  for (const WheelMode& m : modes_) {
+    const double wn = angular(m.frequency);
+    // 1 / (m_n (omega_n^2 - omega^2 + 2 i zeta omega_n omega))
+    const cdouble q =
+        1.0 / (m.modal_mass * cdouble(wn * wn - omega * omega, 2.0 * m.damping_ratio * wn * omega));
+    H += (m.shape * m.shape.transpose()).cast<cdouble>() * q;
+  }
+  return H;
+}
+
+Receptance4 WheelModel::receptance(double frequency) const {
+  return wheelset_.receptance(frequency) + modal_receptance(frequency);
+}
+
+}  // namespace rollnoise::dynamics

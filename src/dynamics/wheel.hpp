@@ -1,0 +1,93 @@
+// Wheel model: a rigid wheelset plus the flexible modes of the wheel, as receptances at the
+// wheel/rail contact point (Thompson, Railway Noise and Vibration, 2009, Sec. 5.3-5.4;
+// Thompson, JSV 161, 1993, "Wheel-rail noise generation, part II: wheel vibration").
+//
+// Flexible modes n with natural frequency omega_n, damping ratio zeta_n, modal mass m_n and mode
+// shape phi_n at the contact point (one entry per contact degree of freedom z, x, y, rot z; the
+// normalisation is free as long as m_n matches it):
+//
+//   H_jk(omega) = sum_n phi_{j,n} phi_{k,n} / ( m_n (omega_n^2 - omega^2 + 2 i zeta_n omega_n omega) ).
+//
+// Rigid wheelset: mass M and principal moments of inertia J = diag(I_xx roll, I_yy spin about the
+// axle, I_zz yaw) about its centre, contact point at r = (0, y_c, -R) from the centre (x forward,
+// y lateral towards this wheel, z up, R the rolling radius). A force F and moment M at the contact
+// give, with S the cross-product matrix of r (S v = r x v) and the free-body accelerations
+// -omega^2 (u, theta),
+//
+//   theta = -(1/omega^2) J^{-1} (S F + M),   u_contact = u_centre + theta x r
+//         = -(1/omega^2) [ (1/M - S J^{-1} S) F - S J^{-1} M ],
+//
+// a symmetric 6x6 receptance of which the rows and columns z, x, y, rot z are kept. The mass-line
+// asymptote of the translational receptances is -1/(M_eff omega^2); vertically the roll adds to the
+// bounce (M_eff = M / (1 + M y_c^2 / I_xx), about half the wheelset mass for I_xx ~ M y_c^2).
+// The wheel's rotation about the axle is free (no drive or brake torque).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "dynamics/receptance.hpp"
+
+namespace rollnoise::dynamics {
+
+class ParameterFile;
+
+/// One flexible mode of the wheel.
+struct WheelMode {
+  double frequency = 0.0;       ///< natural frequency (Hz)
+  double damping_ratio = 0.0;   ///< zeta (-)
+  double modal_mass = 0.0;      ///< m_n for the normalisation of `shape` (kg)
+  Eigen::Vector4d shape = Eigen::Vector4d::Zero();  ///< phi at the contact: z, x, y (-), rot z (1/m)
+  std::string label;            ///< e.g. "axial n=2"
+};
+
+/// The rigid wheelset.
+struct RigidWheelset {
+  double mass = 0.0;              ///< M (kg)
+  double roll_inertia = 0.0;      ///< I_xx about the longitudinal axis (kg m^2)
+  double spin_inertia = 0.0;      ///< I_yy about the axle (kg m^2)
+  double yaw_inertia = 0.0;       ///< I_zz about the vertical axis (kg m^2)
+  double contact_offset_y = 0.0;  ///< y_c, lateral position of the contact from the centre (m)
+  double wheel_radius = 0.0;      ///< R (m)
+
+  void validate(const std::string& prefix) const;
+
+  /// The 4x4 rigid-body receptance at the contact point (z, x, y, rot z); omega > 0.
+  Receptance4 receptance(double frequency) const;
+};
+
+/// Reads the wheelset parameters (keys: mass, roll_inertia, spin_inertia, yaw_inertia,
+/// contact_offset_y, wheel_radius) from a ParameterFile, e.g. models/wheel/wheelset_920mm.toml.
+RigidWheelset read_wheelset(const std::string& path);
+RigidWheelset wheelset_from(const ParameterFile& file);
+
+/// Reads a mode table. CSV with the header
+///   frequency_Hz,damping_ratio,modal_mass_kg,phi_z,phi_x,phi_y,phi_rz[,label]
+/// ('#' starts a comment line). Any bad line is an InputError whose key is "<path>:<line>:<field>"
+/// and whose message names the field.
+std::vector<WheelMode> read_wheel_modes(const std::string& path);
+
+/// Checks one mode; throws InputError(`where`:field, ...).
+void validate_mode(const WheelMode& mode, const std::string& where);
+
+/// Rigid wheelset plus flexible modes.
+class WheelModel {
+ public:
+  WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes);
+
+  /// Rigid + modal receptance at the contact point.
+  Receptance4 receptance(double frequency) const;
+
+  /// The modal sum alone.
+  Receptance4 modal_receptance(double frequency) const;
+
+  const RigidWheelset& wheelset() const { return wheelset_; }
+  const std::vector<WheelMode>& modes() const { return modes_; }
+
+ private:
+  RigidWheelset wheelset_;
+  std::vector<WheelMode> modes_;
+};
+
+}  // namespace rollnoise::dynamics
