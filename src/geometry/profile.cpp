@@ -15,7 +15,9 @@
 
 namespace rollnoise::geometry {
 
-const char* to_string(ProfileKind kind) { return kind == ProfileKind::Rail ? "rail" : "wheel"; }
+const char* to_string(ProfileKind kind) {
+  return kind == ProfileKind::Rail ? "rail" : "wheel";
+}
 
 // ---------------------------------------------------------------------------------------------
 // The spline: GSL's Steffen interpolation. gsl_interp_eval* is called only inside [y_min, y_max]
@@ -27,8 +29,8 @@ struct Profile::Spline {
   ~Spline() { gsl_interp_free(interp); }
 };
 
-Profile::Profile(std::vector<double> y, std::vector<double> z, ProfileKind kind,
-                 std::string source, bool canted)
+Profile::Profile(std::vector<double> y, std::vector<double> z, ProfileKind kind, std::string source,
+                 bool canted)
     : y_(std::move(y)), z_(std::move(z)), kind_(kind), source_(std::move(source)), canted_(canted) {
   const std::string key = source_.empty() ? "profile" : source_;
   if (y_.size() != z_.size())
@@ -196,8 +198,8 @@ void parse_point(const std::string& path, int line_no, const std::vector<std::st
 
 // Sorted y is required; a strictly decreasing file is accepted and reversed. Reports the first
 // line that breaks the order.
-void check_order(const std::string& path, const std::vector<double>& y, const std::vector<int>& lines,
-                 const char* what) {
+void check_order(const std::string& path, const std::vector<double>& y,
+                 const std::vector<int>& lines, const char* what) {
   if (y.size() < 2) return;
   const bool increasing = y[1] > y[0];
   for (std::size_t i = 1; i < y.size(); ++i) {
@@ -256,7 +258,8 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
     std::string t = trim(raw);
     const auto bang = t.find('!');
     const auto quote = t.find('\'');
-    if (bang != std::string::npos && (quote == std::string::npos || bang < quote)) t = t.substr(0, bang);
+    if (bang != std::string::npos && (quote == std::string::npos || bang < quote))
+      t = t.substr(0, bang);
     t = trim(t);
     if (t.empty()) continue;
     const std::string tl = lower(t);
@@ -319,8 +322,10 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
   std::optional<ProfileKind> file_kind;
   if (setting.count("header.type")) {
     const double t = number("header.type", -1.0);
-    if (t == 0.0) file_kind = ProfileKind::Rail;
-    else if (t == 1.0) file_kind = ProfileKind::Wheel;
+    if (t == 0.0)
+      file_kind = ProfileKind::Rail;
+    else if (t == 1.0)
+      file_kind = ProfileKind::Wheel;
     else
       fail(path, setting["header.type"].second,
            "header type = " + setting["header.type"].first + " (expected 0 rail or 1 wheel)");
@@ -328,7 +333,8 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
   if (!file_kind) file_kind = kind_from_extension(path);
   if (!file_kind) file_kind = kind;
   if (!file_kind)
-    fail(path, 1, "cannot tell a wheel from a rail profile: no header type, extension or caller hint");
+    fail(path, 1,
+         "cannot tell a wheel from a rail profile: no header type, extension or caller hint");
   if (kind && *kind != *file_kind)
     fail(path, setting.count("header.type") ? setting["header.type"].second : 1,
          std::string("the file is a ") + to_string(*file_kind) + " profile, a " + to_string(*kind) +
@@ -366,7 +372,8 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
   }
   finish_points(path, begin_line, py, pz, pl, "after the file's processing flags, point");
 
-  const std::string comment = lower(setting.count("spline.comment") ? setting["spline.comment"].first : "");
+  const std::string comment =
+      lower(setting.count("spline.comment") ? setting["spline.comment"].first : "");
   const bool canted = comment.find("already canted") != std::string::npos ||
                       (comment.find("canted") != std::string::npos &&
                        comment.find("not canted") == std::string::npos &&
@@ -417,8 +424,9 @@ Profile read_profile(const std::string& path, std::optional<ProfileKind> kind) {
   }
   if (simpack) return read_simpack_profile(path, kind);
   if (!kind)
-    throw InputError(path, path + ":1: a CSV profile file does not say whether it is a wheel or a "
-                                  "rail profile: give the kind");
+    throw InputError(path, path +
+                               ":1: a CSV profile file does not say whether it is a wheel or a "
+                               "rail profile: give the kind");
   return read_csv_profile(path, *kind);
 }
 

@@ -79,9 +79,10 @@ class Profile {
 Profile read_profile(const std::string& path, std::optional<ProfileKind> kind = std::nullopt);
 
 /// The SIMPACK profile point format used by the Manchester contact benchmark. Applied processing
-/// flags: shift.y/z, rotate, bound.y/z, mirror.y/z, inversion, units.len.f (lengths unit per metre).
-/// A `comment` saying the rail is "already canted" sets Profile::canted().
-Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind> kind = std::nullopt);
+/// flags: shift.y/z, rotate, bound.y/z, mirror.y/z, inversion, units.len.f (lengths unit per
+/// metre). A `comment` saying the rail is "already canted" sets Profile::canted().
+Profile read_simpack_profile(const std::string& path,
+                             std::optional<ProfileKind> kind = std::nullopt);
 
 /// Plain CSV: y, z in mm per line (separators ',', ';', tab or spaces), one optional header line.
 Profile read_csv_profile(const std::string& path, ProfileKind kind);

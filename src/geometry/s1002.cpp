@@ -37,10 +37,16 @@ double arc(double a, double sign, double r, double c, double s) {
 // F(s) in mm for s in mm.
 double s1002_mm(double s) {
   if (s >= kBA) return 1.364323640 - 0.066666667 * s;  // A
-  if (s >= kCB) {                                        // B (Horner, alternating signs)
-    constexpr std::array<double, 9> c = {0.0,           -3.358537058e-02, 1.565681624e-03,
-                                         -2.810427944e-05, 5.844240864e-08, -1.562379023e-08,
-                                         5.309217349e-15,  -5.957839843e-12, 2.646656573e-13};
+  if (s >= kCB) {                                      // B (Horner, alternating signs)
+    constexpr std::array<double, 9> c = {0.0,
+                                         -3.358537058e-02,
+                                         1.565681624e-03,
+                                         -2.810427944e-05,
+                                         5.844240864e-08,
+                                         -1.562379023e-08,
+                                         5.309217349e-15,
+                                         -5.957839843e-12,
+                                         2.646656573e-13};
     double f = 0.0;
     for (int k = 8; k >= 0; --k) f = f * s + c[k];
     return f;

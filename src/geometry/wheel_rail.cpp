@@ -97,8 +97,10 @@ struct ContactFrameCurve {
     for (int it = 0; it < 100 && std::abs(pb - pa) > 1e-15; ++it) {
       const double pm = 0.5 * (pa + pb);
       const double fm = local(pm).first - t;
-      if ((fm < 0.0) == (fa < 0.0)) pa = pm;
-      else pb = pm;
+      if ((fm < 0.0) == (fa < 0.0))
+        pa = pm;
+      else
+        pb = pm;
     }
     return 0.5 * (pa + pb);
   }
@@ -140,7 +142,9 @@ Strip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
   const auto a = wheel.local(std::max(*pw - e, pair.wheel().y_min()));
   const auto b = wheel.local(std::min(*pw + e, pair.wheel().y_max()));
   const double slope_w = (b.second - a.second) / (b.first - a.first);
-  st.k = c + s * slope_w;
+  // The wheel's rise along -e_r, seen in the contact frame: k = e_z - e_y dz_w/dy_c.
+  const double ey = wp.radial_y * c - wp.radial_z * s, ez = wp.radial_y * s + wp.radial_z * c;
+  st.k = ez - ey * slope_w;
   return st;
 }
 
@@ -151,9 +155,11 @@ WheelRailPair::WheelRailPair(Profile wheel, Profile rail, const TrackParameters&
                              const WheelsetParameters& wheelset)
     : wheel_(std::move(wheel)), rail_(std::move(rail)), track_(track), wheelset_(wheelset) {
   if (wheel_.kind() != ProfileKind::Wheel)
-    throw InputError(wheel_.source(), wheel_.source() + ": is a rail profile, a wheel profile was expected");
+    throw InputError(wheel_.source(),
+                     wheel_.source() + ": is a rail profile, a wheel profile was expected");
   if (rail_.kind() != ProfileKind::Rail)
-    throw InputError(rail_.source(), rail_.source() + ": is a wheel profile, a rail profile was expected");
+    throw InputError(rail_.source(),
+                     rail_.source() + ": is a wheel profile, a rail profile was expected");
   if (!(track_.gauge > 0.5 && track_.gauge < 3.0))
     throw InputError("track.gauge", "the track gauge must be between 0.5 and 3 m");
   if (!(wheelset_.nominal_radius > 0.05))
@@ -221,6 +227,8 @@ WheelPoint WheelRailPair::wheel_point(double s, const WheelsetPose& pose) const 
   p.y = pose.lateral + xi * ay + r * (ct * d1y + st * d2y);
   p.z = pose.vertical + xi * az + r * (ct * d1z + st * d2z);
   p.radius = r;
+  p.radial_y = ct * d1y + st * d2y;
+  p.radial_z = ct * d1z + st * d2z;
   return p;
 }
 
@@ -242,8 +250,9 @@ double WheelRailPair::minimum_gap(const WheelsetPose& pose, double* s_at_minimum
     }
   }
   if (!std::isfinite(best))
-    throw InputError("geometry", "the wheel and the rail profile do not overlap laterally "
-                                 "(lateral displacement too large?)");
+    throw InputError("geometry",
+                     "the wheel and the rail profile do not overlap laterally "
+                     "(lateral displacement too large?)");
   const double h = (s_hi - s_lo) / n;
   const double s_min = golden_minimum(gap, std::max(s_lo, s_best - h), std::min(s_hi, s_best + h));
   const double g_min = gap(s_min);
@@ -304,7 +313,7 @@ ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& 
   c.rolling_radius = p.radius;
   c.rail_curvature = pair.rail().curvature(c.rail_y, options.curvature_window);
   c.wheel_curvature = pair.wheel().curvature(s, options.curvature_window);
-  c.A = std::cos(c.contact_angle) / (2.0 * c.rolling_radius);
+  c.A = strip_at(pair, c, 0.0).k / (2.0 * c.rolling_radius);
   c.B = quadratic_coefficient([&](double t) { return lateral_gap(pair, c, t); },
                               options.curvature_window);
   return c;
@@ -332,7 +341,8 @@ contact::GridField undeformed_distance(const WheelRailPair& pair, const ContactG
 }
 
 contact::HertzContact hertz_estimate(const ContactGeometry& c, double normal_force,
-                                     const contact::Material& material, const GridOptions& options) {
+                                     const contact::Material& material,
+                                     const GridOptions& options) {
   const double B = std::max(c.B, options.min_curvature_ratio * c.A);
   return contact::hertz_from_curvatures(c.A, B, normal_force, material);
 }
@@ -349,8 +359,10 @@ contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, d
   for (double dir : {-1.0, 1.0}) {
     for (double t = step; t < 0.06; t += step) {
       if (!(lateral_gap(pair, c, dir * t) <= limit)) break;
-      if (dir < 0) y_lo = std::min(y_lo, -t - step);
-      else y_hi = std::max(y_hi, t + step);
+      if (dir < 0)
+        y_lo = std::min(y_lo, -t - step);
+      else
+        y_hi = std::max(y_hi, t + step);
     }
   }
   contact::Grid g;

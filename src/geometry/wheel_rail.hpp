@@ -1,5 +1,6 @@
 // Wheel-rail contact geometry: a wheelset on a track, the contact point of a wheel on its rail, and
-// the undeformed distance h(x, y) on a contact grid around it (non-Hertzian contact, paper Sec. 3.5).
+// the undeformed distance h(x, y) on a contact grid around it (non-Hertzian contact, paper
+// Sec. 3.5).
 //
 // Frames (docs/geometry.md has the figures in words):
 //   Track frame: x along the track in the direction of travel, y lateral to the right, z vertical
@@ -43,9 +44,10 @@ struct TrackParameters {
 };
 
 struct WheelsetParameters {
-  double nominal_radius = 0.46;      ///< rolling radius r0 at the taping line (m)
-  double back_to_back = 1.360;       ///< between the flange backs (m), EN 13715 / S1002 wheelsets
-  double taping_line_offset = 0.070; ///< from the flange back to the taping line = profile origin (m)
+  double nominal_radius = 0.46;  ///< rolling radius r0 at the taping line (m)
+  double back_to_back = 1.360;   ///< between the flange backs (m), EN 13715 / S1002 wheelsets
+  double taping_line_offset =
+      0.070;  ///< from the flange back to the taping line = profile origin (m)
 };
 
 struct WheelsetPosition {
@@ -72,6 +74,9 @@ struct WheelPoint {
   double y = 0.0;       ///< m
   double z = 0.0;       ///< m, downwards
   double radius = 0.0;  ///< wheel radius r(s) there (m)
+  /// y and z components of the unit radial direction e_r (from the axle to the point): moving
+  /// along the wheel's circle by x, the point rises by x^2 / (2 r) along -e_r.
+  double radial_y = 0.0, radial_z = 1.0;
 };
 
 /// A wheel profile and a rail profile placed on the track: the right wheel of the wheelset on the
@@ -129,21 +134,22 @@ struct ContactOptions {
 /// quantities are in the mirrored frame (y to the left).
 struct ContactGeometry {
   Side side = Side::Right;
-  WheelsetPose pose;          ///< of the wheelset (track frame, not mirrored)
-  double x = 0.0;             ///< contact point, track frame (m): lead of a yawed wheelset
-  double y = 0.0;             ///< m
-  double z = 0.0;             ///< m
-  double rail_y = 0.0;        ///< lateral coordinate on the rail profile (m)
-  double wheel_s = 0.0;       ///< lateral coordinate on the wheel profile (m), S1002's s
-  double contact_angle = 0.0; ///< δ (rad)
-  double rolling_radius = 0.0;  ///< r(s) at the contact point (m)
-  double rail_curvature = 0.0;  ///< lateral curvature of the rail profile (1/m), > 0 convex crown
-  double wheel_curvature = 0.0; ///< lateral curvature of the wheel profile (1/m), > 0 hollow tread
-  /// h ≈ A x^2 + B y^2 at the contact point (1/m): A = cos δ / (2 r), B = g''(0)/2 of the
-  /// lateral undeformed distance g (least-squares over ContactOptions::curvature_window).
+  WheelsetPose pose;             ///< of the wheelset (track frame, not mirrored)
+  double x = 0.0;                ///< contact point, track frame (m): lead of a yawed wheelset
+  double y = 0.0;                ///< m
+  double z = 0.0;                ///< m
+  double rail_y = 0.0;           ///< lateral coordinate on the rail profile (m)
+  double wheel_s = 0.0;          ///< lateral coordinate on the wheel profile (m), S1002's s
+  double contact_angle = 0.0;    ///< δ (rad)
+  double rolling_radius = 0.0;   ///< r(s) at the contact point (m)
+  double rail_curvature = 0.0;   ///< lateral curvature of the rail profile (1/m), > 0 convex crown
+  double wheel_curvature = 0.0;  ///< lateral curvature of the wheel profile (1/m), > 0 hollow tread
+  /// h ≈ A x^2 + B y^2 at the contact point (1/m): A = cos(δ + φ) / (2 r) (the wheel's circle
+  /// is tilted by the roll φ; k(0) of undeformed_distance), B = g''(0)/2 of the lateral
+  /// undeformed distance g (least-squares over ContactOptions::curvature_window).
   double A = 0.0;
   double B = 0.0;
-  WheelsetPose local_pose;    ///< the pose as seen from this side (mirrored for the left wheel)
+  WheelsetPose local_pose;  ///< the pose as seen from this side (mirrored for the left wheel)
 };
 
 /// Find the contact point of the wheel on `side` for the wheelset position.
@@ -160,9 +166,11 @@ constexpr double far_distance = 1e-2;
 /// the contact point), layout [iy][ix] (contact::GridField):
 ///   h(x, y) = g(y) + k(y) (x - x_w(y))^2 / (2 r(y)),
 /// with g the lateral gap above, r(y) the rolling radius of the wheel point under y, x_w(y) its
-/// lead relative to the contact point (0 without yaw) and k(y) = cos δ + sin δ dz_w/dy_c the
-/// projection on the contact normal of the wheel's rise x^2/(2r) (Meusnier; k = cos δ at the
-/// contact point). The rail is straight along x.
+/// lead relative to the contact point (0 without yaw) and k(y) the projection on the contact
+/// normal of the wheel's rise x^2/(2r) along -e_r: with e_r = (e_y, e_z) in the contact frame and
+/// the wheel's lateral slope dz_w/dy_c, k = e_z - e_y dz_w/dy_c; without yaw this is
+/// k = cos(δ + φ) + sin(δ + φ) dz_w/dy_c, i.e. cos(δ + φ) at the contact point (Meusnier's
+/// theorem for the normal curvature of the rolling circle). The rail is straight along x.
 contact::GridField undeformed_distance(const WheelRailPair& pair, const ContactGeometry& c,
                                        const contact::Grid& grid);
 
@@ -171,7 +179,8 @@ struct GridOptions {
   double gap_factor = 1.5;   ///< also cover the y-range where g(y) <= gap_factor x Hertz approach
   int nx = 40;               ///< elements in x over the extent; dy = dx (square elements)
   int max_elements = 20000;  ///< cap on nx * ny (dy grows beyond it)
-  /// Floor on B / A for the Hertz estimate of a (nearly) conformal contact (B <= 0 is not Hertzian).
+  /// Floor on B / A for the Hertz estimate of a (nearly) conformal contact (B <= 0 is not
+  /// Hertzian).
   double min_curvature_ratio = 0.02;
 };
 
@@ -194,12 +203,12 @@ contact::ContactPatch solve_wheel_rail_patch(const WheelRailPair& pair, const Co
 /// Size and shape of a solved patch (elements with pn > 0).
 struct PatchShape {
   int elements = 0;
-  double area = 0.0;         ///< m^2
+  double area = 0.0;                                          ///< m^2
   double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;  ///< outer element edges (m)
-  double length() const { return x_max - x_min; }  ///< extent in x (m)
-  double width() const { return y_max - y_min; }   ///< extent in y (m)
-  double peak_pressure = 0.0;  ///< Pa
-  double force = 0.0;          ///< N
+  double length() const { return x_max - x_min; }             ///< extent in x (m)
+  double width() const { return y_max - y_min; }              ///< extent in y (m)
+  double peak_pressure = 0.0;                                 ///< Pa
+  double force = 0.0;                                         ///< N
   /// Area / (π length width / 4): 1 for an ellipse, 4/π for a rectangle, below 1 for a patch
   /// with re-entrant or tapering sides.
   double ellipse_fill() const { return area / (M_PI * length() * width() / 4.0); }

@@ -22,10 +22,10 @@ const std::string kRailFile = kProfiles + "MBench_UIC60_v3.prr";
 
 // A fresh temporary folder for bad files.
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() /
-                     ("rollnoise_geometry_" + std::to_string(::testing::UnitTest::GetInstance()
-                                                                  ->random_seed()) +
-                      "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const fs::path d =
+      fs::temp_directory_path() /
+      ("rollnoise_geometry_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   fs::create_directories(d);
   return d;
 }
@@ -67,9 +67,9 @@ TEST(ProfileReader, S1002FileIsAWheelWithFlangeOnTheGaugeSide) {
   EXPECT_EQ(w.y_points().size(), 399u);  // the commented first line '!7.0E+01 ...' is skipped
   EXPECT_NEAR(w.y_min(), -69.612628e-3, 1e-12);
   EXPECT_NEAR(w.y_max(), 60e-3, 1e-12);
-  EXPECT_NEAR(w.z(0.0), 0.0, 1e-9);              // taping line: nominal radius
+  EXPECT_NEAR(w.z(0.0), 0.0, 1e-9);       // taping line: nominal radius
   EXPECT_NEAR(w.z(-55e-3), 28e-3, 1e-6);  // flange tip (arc G centre): 28 mm high
-  EXPECT_LT(w.slope(0.03), 0.0);                  // the radius falls towards the field side
+  EXPECT_LT(w.slope(0.03), 0.0);          // the radius falls towards the field side
 }
 
 // The UIC60 file is a rail, already canted (its comment says so), with the crown on top (z = 0),
@@ -110,8 +110,8 @@ TEST(S1002, AnalyticDefinitionMatchesPointFileOnTreadWithin10Micrometres) {
 // The eight sections join: the analytic profile is continuous at every section boundary
 // (a wrong coefficient or sign shows up as a jump).
 TEST(S1002, SectionsJoinContinuously) {
-  for (double b : {-62.764705882, -49.662510381, -39.764473993, -38.426669071, -35.0, -26.0,
-                   32.15796}) {
+  for (double b :
+       {-62.764705882, -49.662510381, -39.764473993, -38.426669071, -35.0, -26.0, 32.15796}) {
     const double s = b * 1e-3, e = 1e-9;
     EXPECT_NEAR(s1002_height(s - e), s1002_height(s + e), 2e-7) << "boundary s = " << b << " mm";
   }
@@ -202,12 +202,16 @@ TEST(ProfileReader, BadFilesGiveInputErrorsWithFileAndLine) {
   // no point block, or an unclosed one
   expect_input_error(write(d, "noblock.prw", "  header.begin\n    type = 1\n  header.end\n"), 3,
                      "no point block");
-  expect_input_error(write(d, "open.prr", "  header.begin\n    type = 0\n  header.end\n"
-                                          "  point.begin\n" + ok),
+  expect_input_error(write(d, "open.prr",
+                           "  header.begin\n    type = 0\n  header.end\n"
+                           "  point.begin\n" +
+                               ok),
                      9, "no closing 'point.end'");
   // a bad header type, and a wheel where a rail is expected
-  expect_input_error(write(d, "type.prw", "  header.begin\n    type = 7\n  header.end\n"
-                                          "  point.begin\n" + ok + "  point.end\n"),
+  expect_input_error(write(d, "type.prw",
+                           "  header.begin\n    type = 7\n  header.end\n"
+                           "  point.begin\n" +
+                               ok + "  point.end\n"),
                      2, "expected 0 rail or 1 wheel");
   expect_input_error(write(d, "kind.prw", simpack_wheel(ok)), 4, "a rail profile was expected",
                      ProfileKind::Rail);
