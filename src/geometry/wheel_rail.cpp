@@ -369,7 +369,7 @@ contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, d
   g.nx = options.nx;
   g.dx = 2.0 * ex / g.nx;
   g.x_min = -ex;
-  g.dy = g.dx;
+  g.dy = std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across));
   g.ny = static_cast<int>(std::ceil((y_hi - y_lo) / g.dy));
   if (g.nx * g.ny > options.max_elements) {
     g.ny = std::max(4, options.max_elements / g.nx);

@@ -175,9 +175,12 @@ contact::GridField undeformed_distance(const WheelRailPair& pair, const ContactG
                                        const contact::Grid& grid);
 
 struct GridOptions {
-  double scale = 1.25;       ///< extent = scale x the Hertz semi-axes (at least)
-  double gap_factor = 1.5;   ///< also cover the y-range where g(y) <= gap_factor x Hertz approach
-  int nx = 40;               ///< elements in x over the extent; dy = dx (square elements)
+  double scale = 1.25;      ///< extent = scale x the Hertz semi-axes (at least)
+  double gap_factor = 1.5;  ///< also cover the y-range where g(y) <= gap_factor x Hertz approach
+  int nx = 40;              ///< elements in x over the extent
+  /// At least this many elements across the lateral Hertz width 2b: dy = min(dx, 2b / n). Square
+  /// elements unless the patch is much narrower than long (flange contact).
+  int min_elements_across = 16;
   int max_elements = 20000;  ///< cap on nx * ny (dy grows beyond it)
   /// Floor on B / A for the Hertz estimate of a (nearly) conformal contact (B <= 0 is not
   /// Hertzian).
@@ -190,7 +193,8 @@ contact::HertzContact hertz_estimate(const ContactGeometry& c, double normal_for
                                      const GridOptions& options = {});
 
 /// A grid around the contact point for the load: x in [-scale a, scale a], y covering
-/// [-scale b, scale b] and the y-range where g <= gap_factor x approach (Hertz estimates).
+/// [-scale b, scale b] and the y-range where g <= gap_factor x approach (Hertz estimates);
+/// dx = 2 scale a / nx, dy = min(dx, 2b / min_elements_across).
 contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, double normal_force,
                           const contact::Material& material, const GridOptions& options = {});
 
