@@ -1,5 +1,6 @@
 // Profiles: readers (SIMPACK point files, CSV), the Steffen spline and the analytic S1002.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -20,12 +21,11 @@ const std::string kProfiles = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profi
 const std::string kWheelFile = kProfiles + "MBench_S1002_v3.prw";
 const std::string kRailFile = kProfiles + "MBench_UIC60_v3.prr";
 
-// A fresh temporary folder for bad files.
+// A fresh temporary folder for bad files (per process and test: ctest runs tests in parallel).
 fs::path temp_dir() {
   const fs::path d =
-      fs::temp_directory_path() /
-      ("rollnoise_geometry_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+      fs::temp_directory_path() / ("rollnoise_geometry_" + std::to_string(::getpid()) + "_" +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
   fs::create_directories(d);
   return d;
 }
