@@ -17,7 +17,7 @@ cdouble Support::dynamic_stiffness(double omega) const {
   const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
   const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
   const cdouble below = kb - sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
-  return kp * below / (kp + below);                          // Eq. (1): pad in series
+  return kp * below / (kp + below);                         // Eq. (1): pad in series
 }
 
 void Support::validate(const std::string& prefix) const {
@@ -141,8 +141,7 @@ DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const 
   if (n_ < 1) throw InputError("supports_each_side", "supports_each_side must be at least 1");
 }
 
-Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r,
-                                                   double x_e) const {
+Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r, double x_e) const {
   const double omega = angular(frequency);
   const InfiniteBeam free_rail(rail_, omega, 0.0);
   const cdouble K = support_.dynamic_stiffness(omega);

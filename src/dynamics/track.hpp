@@ -23,10 +23,10 @@
 //
 //   H(x_r, x_e) = G(x_r - x_e) - B_r^T (A + K^{-1} I)^{-1} B_e,                              (2)
 //
-// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T). The infinite periodic track is truncated
-// to the 2N + 1 supports nearest the load; beyond them the rail is free. Waves reflected at the ends
-// of the supported stretch return attenuated by the track decay over 2 N L (N = 60: 72 m of
-// track); the tests check convergence in N.
+// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T). The infinite periodic track is
+// truncated to the 2N + 1 supports nearest the load; beyond them the rail is free. Waves reflected
+// at the ends of the supported stretch return attenuated by the track decay over 2 N L (N = 60: 72
+// m of track); the tests check convergence in N.
 #pragma once
 
 #include <Eigen/Core>
@@ -54,14 +54,14 @@ struct Support {
 
 /// A ballasted track: the rail in both planes of bending and the supports in the three directions.
 struct TrackParameters {
-  BeamSection vertical;            ///< bending in the x-z plane (I about the horizontal axis)
-  BeamSection lateral;             ///< bending in the x-y plane (I about the vertical axis)
+  BeamSection vertical;  ///< bending in the x-z plane (I about the horizontal axis)
+  BeamSection lateral;   ///< bending in the x-y plane (I about the vertical axis)
   Support vertical_support;
   Support lateral_support;
-  Support longitudinal_support;    ///< pad shear / sleeper / ballast in x
-  double sleeper_spacing = 0.6;    ///< L (m)
-  double head_height = 0.0;        ///< running surface above the vertical-bending neutral axis (m)
-  int supports_each_side = 60;     ///< N of the discrete model (2N + 1 supports)
+  Support longitudinal_support;  ///< pad shear / sleeper / ballast in x
+  double sleeper_spacing = 0.6;  ///< L (m)
+  double head_height = 0.0;      ///< running surface above the vertical-bending neutral axis (m)
+  int supports_each_side = 60;   ///< N of the discrete model (2N + 1 supports)
 
   void validate() const;
 };
@@ -70,7 +70,8 @@ struct TrackParameters {
 /// (values and sources in docs/models.md).
 TrackParameters uic60_ballasted();
 
-/// Reads a track parameter file (ParameterFile syntax; keys as in models/track/uic60_ballasted.toml).
+/// Reads a track parameter file (ParameterFile syntax; keys as in
+/// models/track/uic60_ballasted.toml).
 TrackParameters read_track_parameters(const std::string& path);
 TrackParameters track_parameters_from(const ParameterFile& file);
 

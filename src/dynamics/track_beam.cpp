@@ -18,8 +18,8 @@ cdouble decaying_root(cdouble lambda) {
 
 void require_positive(double v, const std::string& key, const char* what) {
   if (!(v > 0.0) || !std::isfinite(v))
-    throw InputError(key, key + ": " + what + " must be positive and finite, got " +
-                              std::to_string(v));
+    throw InputError(key,
+                     key + ": " + what + " must be positive and finite, got " + std::to_string(v));
 }
 
 }  // namespace
@@ -34,8 +34,8 @@ void BeamSection::validate(const std::string& prefix) const {
     require_positive(shear_coefficient, prefix + ".shear_coefficient", "shear coefficient");
   }
   if (!(loss_factor >= 0.0) || !std::isfinite(loss_factor))
-    throw InputError(prefix + ".loss_factor", prefix + ".loss_factor must be >= 0, got " +
-                                                  std::to_string(loss_factor));
+    throw InputError(prefix + ".loss_factor",
+                     prefix + ".loss_factor must be >= 0, got " + std::to_string(loss_factor));
 }
 
 InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
@@ -67,8 +67,9 @@ InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
   const cdouble disc = std::sqrt(bb * bb - 4.0 * a * c);
   const cdouble qq = -0.5 * (std::real(std::conj(bb) * disc) >= 0.0 ? bb + disc : bb - disc);
   if (std::abs(qq) == 0.0)
-    throw NumericalError("InfiniteBeam: dispersion relation degenerate (k = 0 double root) at omega = " +
-                         std::to_string(omega) + " rad/s; add damping");
+    throw NumericalError(
+        "InfiniteBeam: dispersion relation degenerate (k = 0 double root) at omega = " +
+        std::to_string(omega) + " rad/s; add damping");
   const std::array<cdouble, 2> lambda = {qq / a, c / qq};
   const double sep = std::abs(lambda[0] - lambda[1]);
   if (!(sep > 1e-13 * (std::abs(lambda[0]) + std::abs(lambda[1]))))

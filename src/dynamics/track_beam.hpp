@@ -27,7 +27,8 @@
 // for x > 0 the contour closes in the lower half plane, where the decaying (or outgoing, Re k > 0)
 // roots lie, so for a numerator N(k) of the inverse matrix
 //
-//   g(x) = -i sum_{j=1,2} N(k_j) e^{-i k_j x} / P'(k_j),   P'(k_j) = 2 a k_j (lambda_j - lambda_other),
+//   g(x) = -i sum_{j=1,2} N(k_j) e^{-i k_j x} / P'(k_j),   P'(k_j) = 2 a k_j (lambda_j -
+//   lambda_other),
 //
 // with a = EI kGA; numerators even in k give g(-x) = g(x), odd ones g(-x) = -g(x) and g(0) = 0
 // (Knothe & Grassie, Veh. Syst. Dyn. 22, 1993; Grassie et al., J. Mech. Eng. Sci. 24, 1982).
@@ -53,7 +54,7 @@ struct BeamSection {
   double mass_per_length = 0.0;    ///< m' = rho A (kg/m)
   double shear_coefficient = 0.4;  ///< Timoshenko's k (-)
   double loss_factor = 0.0;        ///< rail material loss factor eta_r (-)
-  bool timoshenko = true;          ///< false: Euler-Bernoulli (no shear deformation, no rotary inertia)
+  bool timoshenko = true;  ///< false: Euler-Bernoulli (no shear deformation, no rotary inertia)
 
   /// Throws InputError naming `prefix`.field for a non-physical value.
   void validate(const std::string& prefix) const;
@@ -77,9 +78,9 @@ class InfiniteBeam {
   const std::array<cdouble, 2>& wavenumbers() const { return k_; }
 
  private:
-  std::array<cdouble, 2> k_;          // roots in the lower half plane
-  std::array<cdouble, 2> inv_dp_;     // 1 / P'(k_j)
-  cdouble d2_, d0_, e2_, e0_, g_;     // numerators: W/F = d2 k^2 + d0, Psi/M = e2 k^2 + e0, odd: g k
+  std::array<cdouble, 2> k_;       // roots in the lower half plane
+  std::array<cdouble, 2> inv_dp_;  // 1 / P'(k_j)
+  cdouble d2_, d0_, e2_, e0_, g_;  // numerators: W/F = d2 k^2 + d0, Psi/M = e2 k^2 + e0, odd: g k
 };
 
 /// Longitudinal receptance u/F of an infinite rod (axial stiffness EA(1 + i eta), mass m') on a

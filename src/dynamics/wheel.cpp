@@ -12,7 +12,8 @@
 namespace rollnoise::dynamics {
 namespace {
 
-// 6-vector order of the rigid body: u_x, u_y, u_z, theta_x, theta_y, theta_z; the contact Dofs in it.
+// 6-vector order of the rigid body: u_x, u_y, u_z, theta_x, theta_y, theta_z; the contact Dofs in
+// it.
 constexpr int kSixOf[4] = {2, 0, 1, 5};  // kZ, kX, kY, kRotZ
 
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
@@ -134,12 +135,12 @@ std::vector<WheelMode> read_wheel_modes(const std::string& path) {
     if (!header) {  // the header must name the columns in order
       for (int c = 0; c < 7; ++c)
         if (static_cast<int>(cells.size()) <= c || cells[c] != kColumns[c])
-          throw InputError(where + ":" + kColumns[c],
-                           where + ": header must be '" + std::string("frequency_Hz,damping_ratio,"
+          throw InputError(where + ":" + kColumns[c], where + ": header must be '" +
+                                                          std::string("frequency_Hz,damping_ratio,"
                                                                       "modal_mass_kg,phi_z,phi_x,"
                                                                       "phi_y,phi_rz[,label]") +
-                               "'; column " + std::to_string(c + 1) + " should be '" +
-                               kColumns[c] + "'");
+                                                          "'; column " + std::to_string(c + 1) +
+                                                          " should be '" + kColumns[c] + "'");
       header = true;
       continue;
     }
@@ -155,9 +156,9 @@ std::vector<WheelMode> read_wheel_modes(const std::string& path) {
         used = 0;
       }
       if (used != cells[c].size() || used == 0 || !std::isfinite(v[c]))
-        throw InputError(where + ":" + kColumns[c], where + ": field '" + kColumns[c] +
-                                                        "' is not a finite number: '" +
-                                                        cells[c] + "'");
+        throw InputError(
+            where + ":" + kColumns[c],
+            where + ": field '" + kColumns[c] + "' is not a finite number: '" + cells[c] + "'");
     }
     if (cells.size() > 8)
       throw InputError(where, where + ": too many fields (" + std::to_string(cells.size()) +

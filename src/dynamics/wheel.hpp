@@ -6,7 +6,8 @@
 // shape phi_n at the contact point (one entry per contact degree of freedom z, x, y, rot z; the
 // normalisation is free as long as m_n matches it):
 //
-//   H_jk(omega) = sum_n phi_{j,n} phi_{k,n} / ( m_n (omega_n^2 - omega^2 + 2 i zeta_n omega_n omega) ).
+//   H_jk(omega) = sum_n phi_{j,n} phi_{k,n} / ( m_n (omega_n^2 - omega^2 + 2 i zeta_n omega_n
+//   omega) ).
 //
 // Rigid wheelset: mass M and principal moments of inertia J = diag(I_xx roll, I_yy spin about the
 // axle, I_zz yaw) about its centre, contact point at r = (0, y_c, -R) from the centre (x forward,
@@ -35,10 +36,11 @@ class ParameterFile;
 
 /// One flexible mode of the wheel.
 struct WheelMode {
-  double frequency = 0.0;       ///< natural frequency (Hz)
-  double damping_ratio = 0.0;   ///< zeta (-)
-  double modal_mass = 0.0;      ///< m_n for the normalisation of `shape` (kg)
-  Eigen::Vector4d shape = Eigen::Vector4d::Zero();  ///< phi at the contact: z, x, y (-), rot z (1/m)
+  double frequency = 0.0;      ///< natural frequency (Hz)
+  double damping_ratio = 0.0;  ///< zeta (-)
+  double modal_mass = 0.0;     ///< m_n for the normalisation of `shape` (kg)
+  Eigen::Vector4d shape =
+      Eigen::Vector4d::Zero();  ///< phi at the contact: z, x, y (-), rot z (1/m)
   std::string label;            ///< e.g. "axial n=2"
 };
 

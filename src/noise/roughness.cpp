@@ -14,9 +14,9 @@ namespace {
 
 // The 35 nominal 1/3-octave wavelength band centres of CNOSSOS-EU Appendix G, 2000 mm to 0.8 mm
 // (exact centres 2000 mm * 10^{-i/10}; the nominal values are what the tables print).
-constexpr double kBandsMm[35] = {2000, 1600, 1250, 1000, 800, 630, 500, 400, 315, 250, 200, 160,
-                                 125,  100,  80,   63,   50,  40,  31.5, 25, 20, 16, 12.5, 10,
-                                 8,    6.3,  5,    4,    3.15, 2.5, 2,  1.6, 1.25, 1, 0.8};
+constexpr double kBandsMm[35] = {2000, 1600, 1250, 1000, 800,  630, 500,  400, 315,  250, 200,  160,
+                                 125,  100,  80,   63,   50,   40,  31.5, 25,  20,   16,  12.5, 10,
+                                 8,    6.3,  5,    4,    3.15, 2.5, 2,    1.6, 1.25, 1,   0.8};
 
 RoughnessSpectrum table(const char* name, const double (&levels)[35]) {
   RoughnessSpectrum s;
@@ -47,7 +47,8 @@ double RoughnessSpectrum::level_at(double lambda) const {
   if (lambda <= wavelength.back()) return level.back();
   const auto it = std::lower_bound(wavelength.begin(), wavelength.end(), lambda,
                                    [](double w, double l) { return w > l; });
-  const std::size_t j = static_cast<std::size_t>(it - wavelength.begin());  // wavelength[j] <= lambda
+  const std::size_t j =
+      static_cast<std::size_t>(it - wavelength.begin());  // wavelength[j] <= lambda
   const std::size_t i = j - 1;
   const double t = std::log(lambda / wavelength[i]) / std::log(wavelength[j] / wavelength[i]);
   return level[i] + t * (level[j] - level[i]);
@@ -59,8 +60,8 @@ void RoughnessSpectrum::validate(const std::string& key) const {
   if (wavelength.size() < 2) throw InputError(key, key + ": a spectrum needs at least two bands");
   for (std::size_t i = 0; i < wavelength.size(); ++i) {
     if (!(wavelength[i] > 0.0) || !std::isfinite(wavelength[i]))
-      throw InputError(key, key + ": wavelength must be positive, got " +
-                                std::to_string(wavelength[i]));
+      throw InputError(key,
+                       key + ": wavelength must be positive, got " + std::to_string(wavelength[i]));
     if (!std::isfinite(level[i]))
       throw InputError(key, key + ": level must be a finite number (dB re 1 um)");
     if (i > 0 && !(wavelength[i] < wavelength[i - 1]))
@@ -73,25 +74,24 @@ RoughnessSpectrum iso3095_2013_rail_limit() {
   // dB re 1 um; 2000 mm ... 0.8 mm. Flat at 17.1 dB above 400 mm and at -14.0 dB below 1 mm as in
   // the CNOSSOS-EU table.
   static constexpr double kLevels[35] = {
-      17.1, 17.1, 17.1, 17.1, 17.1, 17.1,  17.1,  17.1,  15.0,  13.0,  11.0,  9.0,
-      7.0,  4.9,  2.9,  0.9,  -1.1, -3.2,  -5.0,  -5.6,  -6.2,  -6.8,  -7.4,  -8.0,
+      17.1, 17.1, 17.1, 17.1,  17.1,  17.1,  17.1,  17.1,  15.0,  13.0,  11.0, 9.0,
+      7.0,  4.9,  2.9,  0.9,   -1.1,  -3.2,  -5.0,  -5.6,  -6.2,  -6.8,  -7.4, -8.0,
       -8.6, -9.2, -9.8, -10.4, -11.0, -11.6, -12.2, -12.8, -13.4, -14.0, -14.0};
   return table("EN ISO 3095:2013 rail roughness limit", kLevels);
 }
 
 RoughnessSpectrum wheel_roughness_cast_iron_block() {
   static constexpr double kLevels[35] = {
-      2.2, 2.2, 2.2,  2.2,  2.2,  2.2,  2.2,  2.2,  2.2,  2.2,  2.2,  2.4,
-      0.6, 2.6, 5.8,  8.8,  11.1, 11.0, 9.8,  7.5,  5.1,  3.0,  1.3,  0.2,
-      -0.7, -1.2, -1.0, 0.3, 0.2, 1.3,  3.1,  3.1,  3.1,  3.1,  3.1};
+      2.2, 2.2, 2.2, 2.2, 2.2, 2.2, 2.2,  2.2,  2.2,  2.2, 2.2, 2.4, 0.6, 2.6, 5.8, 8.8, 11.1, 11.0,
+      9.8, 7.5, 5.1, 3.0, 1.3, 0.2, -0.7, -1.2, -1.0, 0.3, 0.2, 1.3, 3.1, 3.1, 3.1, 3.1, 3.1};
   return table("wheel roughness, cast-iron block-braked tread", kLevels);
 }
 
 RoughnessSpectrum wheel_roughness_disc_braked() {
-  static constexpr double kLevels[35] = {
-      -5.9, -5.9, -5.9,  -5.9,  -5.9,  -5.9,  -5.9,  -5.9,  -5.9, 2.3,  2.8,  2.6,
-      1.2,  2.1,  0.9,   -0.3,  -1.6,  -2.9,  -4.9,  -7.0,  -8.6, -9.3, -9.5, -10.1,
-      -10.3, -10.3, -10.8, -10.9, -9.5, -9.5, -9.5, -9.5, -9.5, -9.5, -9.5};
+  static constexpr double kLevels[35] = {-5.9,  -5.9, -5.9, -5.9, -5.9, -5.9,  -5.9,  -5.9,  -5.9,
+                                         2.3,   2.8,  2.6,  1.2,  2.1,  0.9,   -0.3,  -1.6,  -2.9,
+                                         -4.9,  -7.0, -8.6, -9.3, -9.5, -10.1, -10.3, -10.3, -10.8,
+                                         -10.9, -9.5, -9.5, -9.5, -9.5, -9.5,  -9.5,  -9.5};
   return table("wheel roughness, disc-braked tread", kLevels);
 }
 
@@ -181,8 +181,8 @@ ContactRoughness::ContactRoughness(RoughnessSpectrum wheel, RoughnessSpectrum ra
   wheel_.validate("roughness.wheel");
   rail_.validate("roughness.rail");
   if (!(speed_ > 0.0) || !std::isfinite(speed_))
-    throw InputError("rolling.speed", "roughness: speed must be positive, got " +
-                                          std::to_string(speed_));
+    throw InputError("rolling.speed",
+                     "roughness: speed must be positive, got " + std::to_string(speed_));
   filter_.validate();
 }
 

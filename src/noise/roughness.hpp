@@ -5,8 +5,8 @@
 //
 // A roughness level is L = 10 log10(r_rms^2 / r_0^2), r_0 = 1 um, of the roughness r(x) in one
 // 1/3-octave wavelength band. A wavelength lambda passes the contact at frequency f = V / lambda,
-// and a 1/3-octave band in wavelength maps onto a 1/3-octave band in frequency, so the band level is
-// unchanged by the conversion: L_f(V / lambda) = L_lambda(lambda).
+// and a 1/3-octave band in wavelength maps onto a 1/3-octave band in frequency, so the band level
+// is unchanged by the conversion: L_f(V / lambda) = L_lambda(lambda).
 //
 // Wheel and rail roughness are incoherent, so their mean squares add (energy sum):
 //   L_total = 10 log10(10^{L_wheel/10} + 10^{L_rail/10}).
@@ -57,7 +57,7 @@ double energy_sum_db(double a, double b);
 /// Exact 1/3-octave band centres 1000 * 10^{n/10} Hz within [f_min, f_max] (IEC 61260 base 10).
 std::vector<double> third_octave_centres(double f_min, double f_max);
 
-/// Width of the 1/3-octave band centred at f: f (10^{1/20} - 10^{-1/20}) ~= 0.2316 f.
+/// Width of the 1/3-octave band centred at f: f (10^{1/20} - 10^{-1/20}) ~= 0.2308 f.
 double third_octave_bandwidth(double centre);
 
 /// Combined wheel + rail roughness at a train speed, with the contact filter.

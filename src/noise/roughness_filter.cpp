@@ -34,11 +34,11 @@ double isotropic_integrand(double u, void* p) {
 void ContactFilter::validate() const {
   if (model == ContactFilterModel::kNone) return;
   if (!(a > 0.0) || !std::isfinite(a))
-    throw InputError("contact_filter.a", "contact filter: semi-axis a must be positive, got " +
-                                             std::to_string(a));
+    throw InputError("contact_filter.a",
+                     "contact filter: semi-axis a must be positive, got " + std::to_string(a));
   if (model == ContactFilterModel::kIsotropic && (!(b >= 0.0) || !std::isfinite(b)))
-    throw InputError("contact_filter.b", "contact filter: semi-axis b must be >= 0, got " +
-                                             std::to_string(b));
+    throw InputError("contact_filter.b",
+                     "contact filter: semi-axis b must be >= 0, got " + std::to_string(b));
   if (!(spectral_exponent > 0.0) || !(spectral_exponent < 10.0))
     throw InputError("contact_filter.spectral_exponent",
                      "contact filter: spectral exponent n must be in (0, 10), got " +
@@ -56,8 +56,8 @@ double ContactFilter::squared(double k) const {
   const double n = spectral_exponent;
   IsotropicArgs args{ka, std::abs(k) * b, 0.5 * (n + 1.0)};
   // Int_0^inf (1 + u^2)^{-(n+1)/2} du = sqrt(pi) Gamma(n/2) / (2 Gamma((n+1)/2))
-  const double norm = 0.5 * std::sqrt(M_PI) * std::exp(gsl_sf_lngamma(0.5 * n) -
-                                                      gsl_sf_lngamma(0.5 * (n + 1.0)));
+  const double norm =
+      0.5 * std::sqrt(M_PI) * std::exp(gsl_sf_lngamma(0.5 * n) - gsl_sf_lngamma(0.5 * (n + 1.0)));
   gsl_function F{&isotropic_integrand, &args};
   constexpr std::size_t kLimit = 200;
   gsl_integration_workspace* ws = gsl_integration_workspace_alloc(kLimit);
@@ -67,9 +67,8 @@ double ContactFilter::squared(double k) const {
   gsl_set_error_handler(old);
   gsl_integration_workspace_free(ws);
   if (status != GSL_SUCCESS && !(error <= 1e-6 * std::abs(result)))
-    throw NumericalError("contact filter: QAGIU failed at k = " + std::to_string(k) +
-                         " rad/m (" + gsl_strerror(status) + "), estimated error " +
-                         std::to_string(error));
+    throw NumericalError("contact filter: QAGIU failed at k = " + std::to_string(k) + " rad/m (" +
+                         gsl_strerror(status) + "), estimated error " + std::to_string(error));
   return result / norm;
 }
 

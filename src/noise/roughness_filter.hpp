@@ -9,16 +9,18 @@
 //
 //   W(kx, ky) = 2 J1(rho) / rho,   rho = sqrt((kx a)^2 + (ky b)^2),                           (1)
 //
-// so a roughness component of wavenumber k = 2 pi / lambda along the rail is filtered with |H(k)|^2:
+// so a roughness component of wavenumber k = 2 pi / lambda along the rail is filtered with
+// |H(k)|^2:
 //
 //  * kCorrelated: roughness fully correlated across the patch width (r = r(x), the "1D" model):
 //      |H(k)|^2 = [2 J1(k a) / (k a)]^2,                                                     (2)
 //    which falls off as 8/(pi (ka)^3) for ka >> 1 (Thompson 2009 Sec. 5.5.2 for the circle).
 //
-//  * kIsotropic: statistically isotropic roughness whose line spectrum along the rail is a power law
+//  * kIsotropic: statistically isotropic roughness whose line spectrum along the rail is a power
+//  law
 //    S1(k) ~ k^{-n} (Remington 1987 uses this idea). Its 2D spectrum is then ~ kappa^{-(n+1)} and,
 //    with ky = u k,
-//      |H(k)|^2 = Int (1 + u^2)^{-(n+1)/2} |W(k a, u k b)|^2 du / Int (1 + u^2)^{-(n+1)/2} du,   (3)
+//      |H(k)|^2 = Int (1 + u^2)^{-(n+1)/2} |W(k a, u k b)|^2 du / Int (1 + u^2)^{-(n+1)/2} du, (3)
 //    integrated with GSL (QAGIU). The lateral averaging adds attenuation; b -> 0 gives Eq. (2).
 //
 // In 1/3-octave bands the filter is averaged over the band, weighting |H|^2 with the roughness

@@ -1,0 +1,194 @@
+// Checks of the roughness spectra, their conversion to frequency and the contact filter
+// (src/noise/roughness*.hpp).
+#include "noise/roughness.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace rn = rollnoise::noise;
+
+namespace {
+
+std::string model_path(const std::string& rel) {
+  return std::string(ROLLNOISE_SOURCE_DIR) + "/models/roughness/" + rel;
+}
+
+rn::ContactFilter no_filter() {
+  rn::ContactFilter f;
+  f.model = rn::ContactFilterModel::kNone;
+  return f;
+}
+
+rn::ContactFilter filter(rn::ContactFilterModel model, double a, double b) {
+  rn::ContactFilter f;
+  f.model = model;
+  f.a = a;
+  f.b = b;
+  return f;
+}
+
+}  // namespace
+
+TEST(RoughnessSpectra, Iso3095LimitValuesAtSelectedBands) {
+  const rn::RoughnessSpectrum iso = rn::iso3095_2013_rail_limit();
+  ASSERT_EQ(iso.wavelength.size(), 35u);
+  // (wavelength m, dB re 1 um) from the CNOSSOS-EU table of the EN ISO 3095:2013 limit
+  const double expect[][2] = {{0.25, 13.0}, {0.1, 4.9},       {0.04, -3.2},   {0.0315, -5.0},
+                              {0.01, -8.0}, {0.00315, -11.0}, {0.001, -14.0}, {1.0, 17.1}};
+  for (const auto& e : expect) EXPECT_NEAR(iso.level_at(e[0]), e[1], 1e-12) << e[0] << " m";
+  // Between band centres: linear in log(wavelength) -> 5 cm to 4 cm halfway in log is the mean.
+  EXPECT_NEAR(iso.level_at(std::sqrt(0.05 * 0.04)), 0.5 * (-1.1 - 3.2), 1e-12);
+  // Held constant beyond the table.
+  EXPECT_EQ(iso.level_at(10.0), 17.1);
+  EXPECT_EQ(iso.level_at(1e-5), -14.0);
+}
+
+TEST(RoughnessSpectra, CsvFilesEqualBuiltInTables) {
+  const std::pair<const char*, rn::RoughnessSpectrum> files[] = {
+      {"iso3095_2013_limit.csv", rn::iso3095_2013_rail_limit()},
+      {"wheel_cast_iron_block.csv", rn::wheel_roughness_cast_iron_block()},
+      {"wheel_disc_braked.csv", rn::wheel_roughness_disc_braked()}};
+  for (const auto& [name, builtin] : files) {
+    const rn::RoughnessSpectrum s = rn::read_roughness_csv(model_path(name));
+    ASSERT_EQ(s.wavelength.size(), builtin.wavelength.size()) << name;
+    for (std::size_t i = 0; i < s.wavelength.size(); ++i) {
+      EXPECT_NEAR(s.wavelength[i], builtin.wavelength[i], 1e-15) << name;
+      EXPECT_EQ(s.level[i], builtin.level[i]) << name << " band " << i;
+    }
+  }
+  // Block-braked treads are rougher than disc-braked ones at 2-10 cm (what makes them noisier).
+  const auto ci = rn::wheel_roughness_cast_iron_block(), disc = rn::wheel_roughness_disc_braked();
+  for (double l : {0.05, 0.0315, 0.02}) EXPECT_GT(ci.level_at(l), disc.level_at(l) + 5.0) << l;
+}
+
+TEST(RoughnessSpectra, BadCsvNamesFileLineAndField) {
+  using rollnoise::InputError;
+  const struct {
+    const char* text;
+    const char* key;
+  } cases[] = {
+      {"wavelength_m,level_dB\n0.1,3\n0.05\n", ":3:level_dB"},
+      {"wavelength_m,level_dB\n0.1,3\nabc,2\n", ":3:wavelength_m"},
+      {"wavelength_m,level_dB\n-0.1,3\n0.05,2\n", ":2:wavelength_m"},
+      {"# comment\nlambda,L\n0.1,3\n", ":2:header"},
+      {"wavelength_m,level_dB\n0.1,3\n0.1,2\n", ".csv"},  // repeated band
+  };
+  int i = 0;
+  for (const auto& c : cases) {
+    const std::string path = ::testing::TempDir() + "rough" + std::to_string(i++) + ".csv";
+    std::ofstream(path) << c.text;
+    try {
+      rn::read_roughness_csv(path);
+      ADD_FAILURE() << "no InputError for " << c.text;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.key().find(path), std::string::npos) << e.key();
+      EXPECT_NE(e.key().find(c.key), std::string::npos) << e.key();
+    }
+    std::remove(path.c_str());
+  }
+}
+
+TEST(RoughnessConversion, FrequencyIsSpeedOverWavelength) {
+  const rn::RoughnessSpectrum iso = rn::iso3095_2013_rail_limit();
+  rn::RoughnessSpectrum quiet{"quiet", {1.0, 1e-3}, {-80.0, -80.0}};  // negligible wheel
+  const double V = 100.0 / 3.6;
+  const rn::ContactRoughness r(quiet, iso, V, no_filter());
+  for (double lambda : {0.25, 0.05, 0.008}) {
+    const double f = V / lambda;
+    EXPECT_NEAR(r.combined_level(f), iso.level_at(lambda), 1e-6) << lambda;
+    EXPECT_NEAR(r.level(f), iso.level_at(lambda), 1e-6) << lambda;
+  }
+  // Doubling the speed moves the spectrum up by one octave in frequency.
+  const rn::ContactRoughness fast(quiet, iso, 2.0 * V, no_filter());
+  for (double f : {200.0, 630.0, 2000.0}) EXPECT_NEAR(fast.level(2.0 * f), r.level(f), 1e-6);
+}
+
+TEST(RoughnessConversion, WheelAndRailAddByEnergy) {
+  EXPECT_NEAR(rn::energy_sum_db(0.0, 0.0), 10.0 * std::log10(2.0), 1e-12);
+  EXPECT_NEAR(rn::energy_sum_db(5.0, -5.0), 5.0 + 10.0 * std::log10(1.1), 1e-12);
+  EXPECT_NEAR(rn::energy_sum_db(400.0, 400.0), 400.0 + 10.0 * std::log10(2.0),
+              1e-9);  // no overflow
+  rn::RoughnessSpectrum a{"a", {1.0, 1e-3}, {3.0, 3.0}}, b{"b", {1.0, 1e-3}, {-7.0, -7.0}};
+  const rn::ContactRoughness r(a, b, 20.0, no_filter());
+  EXPECT_NEAR(r.level(500.0), 3.0 + 10.0 * std::log10(1.1), 1e-12);
+}
+
+TEST(ContactFilter, CorrelatedModelIsBesselClosedForm) {
+  const rn::ContactFilter f = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 4e-3);
+  for (double ka : {0.05, 0.5, 1.0, 2.5, 5.0, 12.0}) {
+    const double h = 2.0 * std::cyl_bessel_j(1.0, ka) / ka;
+    EXPECT_NEAR(f.squared(ka / 6e-3), h * h, 1e-12) << "ka = " << ka;
+  }
+}
+
+TEST(ContactFilter, UnityAtLongWavelengthsStrongAttenuationBelowPatchSize) {
+  const double a = 7.18e-3, b = 5.29e-3;  // the paper's Hertzian patch
+  for (auto model : {rn::ContactFilterModel::kCorrelated, rn::ContactFilterModel::kIsotropic}) {
+    const rn::ContactFilter f = filter(model, a, b);
+    EXPECT_GT(f.band_db(2.0 * M_PI / 1.0), -0.01);    // 1 m: 0 dB
+    EXPECT_GT(f.band_db(2.0 * M_PI / 0.25), -0.2);    // 25 cm
+    EXPECT_LT(f.band_db(2.0 * M_PI / 0.005), -15.0);  // 5 mm, shorter than the patch 2a
+    // Band levels fall from octave to octave between 10 cm and 2 mm (within an octave they may
+    // ripple: the zeros of J1 of the uniform-averaging model).
+    for (double lambda = 0.1; lambda > 0.002; lambda /= std::pow(10.0, 0.1)) {
+      const double here = f.band_db(2.0 * M_PI / lambda);
+      const double octave_shorter = f.band_db(2.0 * M_PI / (0.5 * lambda));
+      EXPECT_LT(octave_shorter, here - 0.01) << "lambda = " << lambda;
+    }
+  }
+  // Lateral averaging of isotropic roughness attenuates more than the correlated model.
+  const rn::ContactFilter iso = filter(rn::ContactFilterModel::kIsotropic, a, b);
+  const rn::ContactFilter cor = filter(rn::ContactFilterModel::kCorrelated, a, b);
+  for (double lambda : {0.04, 0.02}) {  // first lobe, ka < 3.8
+    const double k = 2.0 * M_PI / lambda;
+    EXPECT_LT(iso.band_db(k), cor.band_db(k) - 0.3) << lambda;
+  }
+}
+
+TEST(ContactFilter, IsotropicTendsToCorrelatedForNarrowPatch) {
+  const rn::ContactFilter iso = filter(rn::ContactFilterModel::kIsotropic, 6e-3, 1e-7);
+  const rn::ContactFilter cor = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 0.0);
+  for (double k : {50.0, 500.0, 3000.0}) EXPECT_NEAR(iso.squared(k), cor.squared(k), 1e-6);
+}
+
+TEST(ContactRoughness, PsdIntegratesToBandMeanSquare) {
+  const rn::ContactRoughness r(rn::wheel_roughness_cast_iron_block(), rn::iso3095_2013_rail_limit(),
+                               80.0 / 3.6, no_filter());
+  for (double fc : rn::third_octave_centres(100.0, 5000.0)) {
+    // Integrate the PSD over the band (trapezoid in log f) and compare with r0^2 10^{L/10}.
+    const double lo = fc * std::pow(10.0, -0.05), hi = fc * std::pow(10.0, 0.05);
+    const int n = 200;
+    double sum = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      const double f = lo * std::pow(hi / lo, double(i) / n);
+      const double w = (i == 0 || i == n) ? 0.5 : 1.0;
+      sum += w * r.psd(f) * f * std::log(hi / lo) / n;
+    }
+    const double band = 1e-12 * std::pow(10.0, r.level(fc) / 10.0);
+    EXPECT_NEAR(10.0 * std::log10(sum / band), 0.0, 0.15) << "band " << fc << " Hz";
+  }
+  EXPECT_NEAR(r.line_amplitude(1000.0, 2.0), std::sqrt(2.0 * r.psd(1000.0) * 2.0), 1e-20);
+  // With the filter the PSD carries the band-averaged filter of the band centred at f.
+  const rn::ContactRoughness filtered(rn::wheel_roughness_cast_iron_block(),
+                                      rn::iso3095_2013_rail_limit(), 80.0 / 3.6,
+                                      filter(rn::ContactFilterModel::kCorrelated, 6e-3, 0.0));
+  const double k = 2.0 * M_PI * 2000.0 / (80.0 / 3.6);
+  EXPECT_NEAR(10.0 * std::log10(filtered.psd(2000.0) / r.psd(2000.0)), filtered.filter().band_db(k),
+              1e-9);
+}
+
+TEST(ThirdOctaveBands, CentresAreExactBase10) {
+  const auto c = rn::third_octave_centres(100.0, 5000.0);
+  ASSERT_EQ(c.size(), 17u);  // 100 ... 3981 Hz (5012 > 5000)
+  EXPECT_DOUBLE_EQ(c.front(), 100.0);
+  EXPECT_NEAR(c[10], 1000.0, 1e-9);
+  for (std::size_t i = 1; i < c.size(); ++i)
+    EXPECT_NEAR(c[i] / c[i - 1], std::pow(10.0, 0.1), 1e-12);
+  EXPECT_NEAR(rn::third_octave_bandwidth(1000.0), 230.77, 0.01);
+}
