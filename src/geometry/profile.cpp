@@ -22,10 +22,10 @@ const char* to_string(ProfileKind kind) {
 // ---------------------------------------------------------------------------------------------
 // The spline: GSL's Steffen interpolation. gsl_interp_eval* is called only inside [y_min, y_max]
 // (GSL's error handler would abort otherwise) and without an accelerator (thread safe).
+// The Steffen state holds only the knot slopes, which depend on the values of y_ and z_ alone; the
+// arrays are passed at each evaluation, so copies of a Profile share the state.
 struct Profile::Spline {
   gsl_interp* interp = nullptr;
-  const double* y = nullptr;
-  const double* z = nullptr;
   ~Spline() { gsl_interp_free(interp); }
 };
 
@@ -48,8 +48,6 @@ Profile::Profile(std::vector<double> y, std::vector<double> z, ProfileKind kind,
   }
   auto s = std::make_shared<Spline>();
   s->interp = gsl_interp_alloc(gsl_interp_steffen, y_.size());
-  s->y = y_.data();
-  s->z = z_.data();
   gsl_interp_init(s->interp, y_.data(), z_.data(), y_.size());
   spline_ = std::move(s);
 }
