@@ -14,19 +14,31 @@
 namespace rollnoise::noise {
 namespace {
 
-// Eq. (1): 2 J1(rho)/rho, -> 1 - rho^2/8 for small rho.
-double airy(double rho) {
+// Eq. (1a) sin(rho)/rho and Eq. (1b) 2 J1(rho)/rho; both 1 - O(rho^2) for small rho.
+double transform(ContactWeighting w, double rho) {
+  if (w == ContactWeighting::kElasticHalfSpace) {
+    if (rho < 1e-4) return 1.0 - rho * rho / 6.0;
+    return std::sin(rho) / rho;
+  }
   if (rho < 1e-4) return 1.0 - rho * rho / 8.0;
   return 2.0 * gsl_sf_bessel_J1(rho) / rho;
 }
 
+// Envelope of |W|^2 for large rho: 1/(2 rho^2) resp. 4/(pi rho^3) (mean of the oscillation).
+double envelope(ContactWeighting w, double rho) {
+  const double e =
+      w == ContactWeighting::kElasticHalfSpace ? 1.0 / (rho * rho) : 8.0 / (M_PI * rho * rho * rho);
+  return std::min(1.0, e);
+}
+
 struct IsotropicArgs {
+  ContactWeighting weighting;
   double ka, kb, half_power;  // half_power = (n + 1)/2
 };
 
 double isotropic_integrand(double u, void* p) {
   const auto* q = static_cast<const IsotropicArgs*>(p);
-  const double w = airy(std::hypot(q->ka, u * q->kb));
+  const double w = transform(q->weighting, std::hypot(q->ka, u * q->kb));
   return std::pow(1.0 + u * u, -q->half_power) * w * w;
 }
 
@@ -50,20 +62,19 @@ double ContactFilter::squared(double k) const {
   if (model == ContactFilterModel::kNone) return 1.0;
   const double ka = std::abs(k) * a;
   if (model == ContactFilterModel::kCorrelated || b == 0.0) {
-    const double h = airy(ka);  // Eq. (2)
+    const double h = transform(weighting, ka);  // Eq. (2)
     return h * h;
   }
   // Eq. (3): both integrals over u in [0, inf) (the integrands are even in u).
   const double n = spectral_exponent;
-  IsotropicArgs args{ka, std::abs(k) * b, 0.5 * (n + 1.0)};
+  IsotropicArgs args{weighting, ka, std::abs(k) * b, 0.5 * (n + 1.0)};
   // Int_0^inf (1 + u^2)^{-(n+1)/2} du = sqrt(pi) Gamma(n/2) / (2 Gamma((n+1)/2))
   const double norm =
       0.5 * std::sqrt(M_PI) * std::exp(gsl_sf_lngamma(0.5 * n) - gsl_sf_lngamma(0.5 * (n + 1.0)));
   gsl_function F{&isotropic_integrand, &args};
-  // Absolute tolerance from the envelope of Eq. (2), min(1, 8/(pi (ka)^3)): the integral is of
-  // that order, and 1e-7 of it is far below what any band level resolves.
-  const double envelope = std::min(1.0, 8.0 / (M_PI * ka * ka * ka));
-  const double epsabs = 1e-7 * envelope * norm;
+  // Absolute tolerance from the envelope of |W(ka)|^2: the integral is at most of that order, and
+  // 1e-7 of it is far below what any band level resolves.
+  const double epsabs = 1e-7 * envelope(weighting, ka) * norm;
   constexpr std::size_t kLimit = 1000;
   gsl_integration_workspace* ws = gsl_integration_workspace_alloc(kLimit);
   double result = 0.0, error = 0.0;
@@ -72,9 +83,9 @@ double ContactFilter::squared(double k) const {
   gsl_set_error_handler(old);
   gsl_integration_workspace_free(ws);
   if (status != GSL_SUCCESS && !(error <= 1e-4 * std::abs(result) + 10.0 * epsabs))
-    throw NumericalError("contact filter: QAGIU failed at k = " + std::to_string(k) +
-                         " rad/m (" + gsl_strerror(status) + "), result " +
-                         std::to_string(result) + ", estimated error " + std::to_string(error));
+    throw NumericalError("contact filter: QAGIU failed at k = " + std::to_string(k) + " rad/m (" +
+                         gsl_strerror(status) + "), result " + std::to_string(result) +
+                         ", estimated error " + std::to_string(error));
   return result / norm;
 }
 

@@ -25,9 +25,11 @@ rn::ContactFilter no_filter() {
   return f;
 }
 
-rn::ContactFilter filter(rn::ContactFilterModel model, double a, double b) {
+rn::ContactFilter filter(rn::ContactFilterModel model, double a, double b,
+                         rn::ContactWeighting w = rn::ContactWeighting::kElasticHalfSpace) {
   rn::ContactFilter f;
   f.model = model;
+  f.weighting = w;
   f.a = a;
   f.b = b;
   return f;
@@ -119,42 +121,66 @@ TEST(RoughnessConversion, WheelAndRailAddByEnergy) {
   EXPECT_NEAR(r.level(500.0), 3.0 + 10.0 * std::log10(1.1), 1e-12);
 }
 
-TEST(ContactFilter, CorrelatedModelIsBesselClosedForm) {
-  const rn::ContactFilter f = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 4e-3);
+TEST(ContactFilter, CorrelatedModelsAreClosedForms) {
+  const rn::ContactFilter uniform =
+      filter(rn::ContactFilterModel::kCorrelated, 6e-3, 4e-3, rn::ContactWeighting::kUniform);
+  const rn::ContactFilter punch = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 4e-3);
   for (double ka : {0.05, 0.5, 1.0, 2.5, 5.0, 12.0}) {
-    const double h = 2.0 * std::cyl_bessel_j(1.0, ka) / ka;
-    EXPECT_NEAR(f.squared(ka / 6e-3), h * h, 1e-12) << "ka = " << ka;
+    const double h = 2.0 * std::cyl_bessel_j(1.0, ka) / ka;  // area average, Thompson 2009
+    EXPECT_NEAR(uniform.squared(ka / 6e-3), h * h, 1e-12) << "ka = " << ka;
+    const double p = std::sin(ka) / ka;  // rigid-punch weighting
+    EXPECT_NEAR(punch.squared(ka / 6e-3), p * p, 1e-12) << "ka = " << ka;
   }
 }
 
 TEST(ContactFilter, UnityAtLongWavelengthsStrongAttenuationBelowPatchSize) {
   const double a = 7.18e-3, b = 5.29e-3;  // the paper's Hertzian patch
-  for (auto model : {rn::ContactFilterModel::kCorrelated, rn::ContactFilterModel::kIsotropic}) {
-    const rn::ContactFilter f = filter(model, a, b);
-    EXPECT_GT(f.band_db(2.0 * M_PI / 1.0), -0.01);    // 1 m: 0 dB
-    EXPECT_GT(f.band_db(2.0 * M_PI / 0.25), -0.2);    // 25 cm
-    EXPECT_LT(f.band_db(2.0 * M_PI / 0.005), -15.0);  // 5 mm, shorter than the patch 2a
-    // Band levels fall from octave to octave between 10 cm and 2 mm (within an octave they may
-    // ripple: the zeros of J1 of the uniform-averaging model).
-    for (double lambda = 0.1; lambda > 0.002; lambda /= std::pow(10.0, 0.1)) {
-      const double here = f.band_db(2.0 * M_PI / lambda);
-      const double octave_shorter = f.band_db(2.0 * M_PI / (0.5 * lambda));
-      EXPECT_LT(octave_shorter, here - 0.01) << "lambda = " << lambda;
+  for (auto weighting : {rn::ContactWeighting::kElasticHalfSpace, rn::ContactWeighting::kUniform})
+    for (auto model : {rn::ContactFilterModel::kCorrelated, rn::ContactFilterModel::kIsotropic}) {
+      const rn::ContactFilter f = filter(model, a, b, weighting);
+      EXPECT_GT(f.band_db(2.0 * M_PI / 1.0), -0.05);    // 1 m: 0 dB
+      EXPECT_GT(f.band_db(2.0 * M_PI / 0.25), -0.2);    // 25 cm
+      EXPECT_LT(f.band_db(2.0 * M_PI / 0.005), -15.0);  // 5 mm, shorter than the patch 2a
+      // Band levels fall from octave to octave between 10 cm and 2 mm (within an octave they may
+      // ripple: the zeros of W).
+      for (double lambda = 0.1; lambda > 0.002; lambda /= std::pow(10.0, 0.1)) {
+        const double here = f.band_db(2.0 * M_PI / lambda);
+        const double octave_shorter = f.band_db(2.0 * M_PI / (0.5 * lambda));
+        EXPECT_LT(octave_shorter, here - 0.01) << "lambda = " << lambda;
+      }
     }
-  }
-  // Lateral averaging of isotropic roughness attenuates more than the correlated model.
+  // Lateral averaging of isotropic roughness attenuates more than the correlated model (first
+  // lobe of W, ka < pi).
   const rn::ContactFilter iso = filter(rn::ContactFilterModel::kIsotropic, a, b);
   const rn::ContactFilter cor = filter(rn::ContactFilterModel::kCorrelated, a, b);
-  for (double lambda : {0.04, 0.02}) {  // first lobe, ka < 3.8
+  for (double lambda : {0.04, 0.02}) {
     const double k = 2.0 * M_PI / lambda;
     EXPECT_LT(iso.band_db(k), cor.band_db(k) - 0.3) << lambda;
   }
 }
 
 TEST(ContactFilter, IsotropicTendsToCorrelatedForNarrowPatch) {
-  const rn::ContactFilter iso = filter(rn::ContactFilterModel::kIsotropic, 6e-3, 1e-7);
-  const rn::ContactFilter cor = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 0.0);
-  for (double k : {50.0, 500.0, 3000.0}) EXPECT_NEAR(iso.squared(k), cor.squared(k), 1e-6);
+  for (auto weighting : {rn::ContactWeighting::kElasticHalfSpace, rn::ContactWeighting::kUniform}) {
+    const rn::ContactFilter iso = filter(rn::ContactFilterModel::kIsotropic, 6e-3, 1e-7, weighting);
+    const rn::ContactFilter cor = filter(rn::ContactFilterModel::kCorrelated, 6e-3, 0.0, weighting);
+    for (double k : {50.0, 500.0, 3000.0}) EXPECT_NEAR(iso.squared(k), cor.squared(k), 1e-6);
+  }
+}
+
+TEST(ContactFilter, DefaultModelWithin3dBOfCnossosTableFor920mmWheel) {
+  // CNOSSOS-EU Appendix G Table G-3, wheel load 100 kN, wheel diameter 920 mm (dB), against the
+  // default filter (elastic half-space weighting, isotropic roughness, n = 2) for the Hertzian
+  // patch of the paper's 98.1 kN case. Agreement within 3 dB from 63 mm to 3.15 mm; below that the
+  // table levels off at -25 ... -30 dB while the model keeps falling (docs/models.md).
+  const double lambda_mm[] = {63, 50, 40, 31.5, 25, 20, 16, 12.5, 10, 8, 6.3, 5, 4, 3.15};
+  const double cnossos[] = {-1.0,  -1.8,  -3.2,  -5.4,  -8.7,  -12.2, -16.7,
+                            -17.7, -17.8, -20.7, -22.1, -22.8, -24.0, -24.5};
+  rn::ContactFilter f;  // defaults
+  f.a = 7.18e-3;
+  f.b = 5.29e-3;
+  for (int i = 0; i < 14; ++i)
+    EXPECT_NEAR(f.band_db(2.0 * M_PI / (lambda_mm[i] * 1e-3)), cnossos[i], 3.0)
+        << lambda_mm[i] << " mm";
 }
 
 TEST(ContactRoughness, PsdIntegratesToBandMeanSquare) {
@@ -178,6 +204,7 @@ TEST(ContactRoughness, PsdIntegratesToBandMeanSquare) {
   const rn::ContactRoughness filtered(rn::wheel_roughness_cast_iron_block(),
                                       rn::iso3095_2013_rail_limit(), 80.0 / 3.6,
                                       filter(rn::ContactFilterModel::kCorrelated, 6e-3, 0.0));
+  // (the correlated model is cheap; the isotropic one costs a quadrature per point)
   const double k = 2.0 * M_PI * 2000.0 / (80.0 / 3.6);
   EXPECT_NEAR(10.0 * std::log10(filtered.psd(2000.0) / r.psd(2000.0)), filtered.filter().band_db(k),
               1e-9);
