@@ -1,0 +1,140 @@
+// The rollnoise program end to end: a steady run writes the INTERFACE.md layout with units, and bad
+// input gives exit status 2, a message naming the key, and no output file.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Invocation {
+  int status;
+  std::string output;  // stdout + stderr
+};
+
+Invocation run(const std::string& args) {
+  const std::string cmd = std::string(ROLLNOISE_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int st = pclose(p);
+  return {WEXITSTATUS(st), out};
+}
+
+fs::path temp_dir() {
+  const fs::path d = fs::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string paper_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/cases/hertz_paper.toml"; }
+
+std::string read_units(hid_t file, const char* path) {
+  const hid_t set = H5Dopen2(file, path, H5P_DEFAULT);
+  if (set < 0) return "(missing)";
+  const hid_t attr = H5Aopen(set, "units", H5P_DEFAULT);
+  const hid_t type = H5Aget_type(attr);
+  std::string s(H5Tget_size(type), '\0');
+  H5Aread(attr, type, s.data());
+  H5Tclose(type);
+  H5Aclose(attr);
+  H5Dclose(set);
+  return s.c_str();
+}
+
+}  // namespace
+
+TEST(SteadyCommand, WritesForcesTractionsAndUnitsInTheInterfaceLayout) {
+  const fs::path out = temp_dir() / "steady.h5";
+  const Invocation r = run("steady " + paper_case() + " -o " + out.string() + " --set grid.nx=20 --set grid.ny=15");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Fx ="), std::string::npos);
+  EXPECT_NE(r.output.find("adhesion"), std::string::npos);
+  ASSERT_TRUE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/grid/x"), "m");
+  EXPECT_EQ(read_units(f, "/normal/pn"), "Pa");
+  EXPECT_EQ(read_units(f, "/steady/force"), "N, N, N m");
+  EXPECT_EQ(read_units(f, "/steady/px"), "Pa");
+  EXPECT_NE(read_units(f, "/steady/state"), "(missing)");
+  // the case as run, with the override
+  const hid_t g = H5Oopen(f, "/case", H5P_DEFAULT);
+  const hid_t a = H5Aopen(g, "toml", H5P_DEFAULT);
+  const hid_t t = H5Aget_type(a);
+  std::string toml(H5Tget_size(t), '\0');
+  H5Aread(a, t, toml.data());
+  EXPECT_NE(toml.find("nx = 20"), std::string::npos) << toml;
+  H5Tclose(t), H5Aclose(a), H5Oclose(g), H5Fclose(f);
+}
+
+TEST(SteadyCommand, SweepGivesAForceCreepageCurveInOneRun) {
+  const fs::path out = temp_dir() / "sweep.h5";
+  const Invocation r = run("steady " + paper_case() + " -o " + out.string() +
+                    " --set grid.nx=20 --set grid.ny=15 --sweep 'creepage.mean[0]=0:0.01:5'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const hid_t set = H5Dopen2(f, "/sweep/force", H5P_DEFAULT);
+  ASSERT_GE(set, 0);
+  std::array<double, 15> F;
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, F.data());
+  H5Dclose(set), H5Fclose(f);
+  for (int i = 1; i < 5; ++i) EXPECT_LT(F[3 * i], F[3 * (i - 1)]) << "Fx falls with creepage";
+  EXPECT_NEAR(F[12], -0.3 * 98100, 0.01 * 0.3 * 98100);  // saturates at mu N
+}
+
+struct BadInput {
+  std::string name, toml_or_set, key;
+};
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputTest, ExitsWithStatus2NamingTheKeyAndWritesNoFile) {
+  const BadInput& b = GetParam();
+  const fs::path dir = temp_dir();
+  const fs::path out = dir / (b.name + ".h5");
+  std::string args;
+  if (b.toml_or_set.rfind("--set", 0) == 0) {
+    args = "steady " + paper_case() + " " + b.toml_or_set;
+  } else {
+    const fs::path file = dir / (b.name + ".toml");
+    std::ofstream(file) << b.toml_or_set;
+    args = "steady " + file.string();
+  }
+  const Invocation r = run(args + " -o " + out.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(b.key), std::string::npos) << "message must name '" << b.key << "': " << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadInputTest,
+    ::testing::Values(
+        BadInput{"malformed", "[contact\nnormal_force = 1", "malformed TOML"},
+        BadInput{"unknown_key", "[contact]\nnormal_force = 98100\na = 7e-3\nb = 5e-3\nwidth = 3\n", "contact.width"},
+        BadInput{"negative_load", "--set contact.normal_force=-98100", "contact.normal_force"},
+        BadInput{"nan_creepage", "--set 'creepage.mean=[nan, 0.0, 0.0]'", "creepage.mean"},
+        BadInput{"coarse_grid", "--set grid.nx=3", "grid.nx"},
+        BadInput{"wrong_type", "--set grid.nx=2.5", "grid.nx"},
+        BadInput{"bad_geometry", "--set contact.geometry=ellipse", "contact.geometry"},
+        BadInput{"missing_load", "[contact]\na = 7e-3\nb = 5e-3\n", "contact.normal_force"},
+        BadInput{"small_potential_area", "--set grid.scale=0.9", "grid.scale"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(Program, KeysListsTheSchemaWithDefaults) {
+  const Invocation r = run("keys");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.output.find("spin_offset"), std::string::npos);
+  EXPECT_NE(r.output.find("[creepage]"), std::string::npos);
+}
