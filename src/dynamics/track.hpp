@@ -1,17 +1,17 @@
 // Track models: the rail (Timoshenko beam, track_beam.hpp) on a two-layer support of rail pads,
 // sleepers and ballast, continuous or discrete, and the rail's 4x4 receptance at the contact point.
 //
-// Support of one rail seat (Thompson 2009, Sec. 3.4, Fig. 3.9; Knothe & Grassie 1993): pad
+// Support of one rail seat (Thompson 2009, Ch. 3; Knothe & Grassie 1993): pad
 // k_p(1 + i eta_p) in series with the sleeper mass m_s on the ballast k_b(1 + i eta_b). Its dynamic
 // stiffness, the force on the rail per unit rail displacement at the seat, is
 //
 //   K(omega) = k_p* (k_b* - m_s omega^2) / (k_p* + k_b* - m_s omega^2).                    (1)
 //
-// Continuous support (Thompson 2009, Sec. 3.4): the support smeared along the rail, foundation
+// Continuous support (Thompson 2009, Ch. 3; Grassie et al. 1982): the support smeared along the rail, foundation
 // stiffness per length s = K(omega)/L with L the sleeper spacing, solved in closed form by
 // InfiniteBeam.
 //
-// Discrete support (receptance superposition; Heckl, Acustica 81, 1995; Thompson 2009, Sec. 3.5;
+// Discrete support (receptance superposition; Heckl, Acustica 81, 1995; Thompson 2009, Ch. 3;
 // Wu & Thompson, JSV 224, 1999): supports at x_n = n L act on the free rail with forces
 // R_n = -K w(x_n). With g(x) the free rail's Green's function (InfiniteBeam with s = 0) and the
 // load u = (F, M) at x_e,

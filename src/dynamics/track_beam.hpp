@@ -3,7 +3,7 @@
 // dispersion relation.
 //
 // Equations of motion for harmonic motion e^{i omega t} (Thompson, Railway Noise and Vibration,
-// 2009, Sec. 3.3, Eq. 3.9-3.10; Graff, Wave Motion in Elastic Solids, 1975, Sec. 3.4), deflection
+// 2009, Ch. 3; Graff, Wave Motion in Elastic Solids, 1975, Ch. 3), deflection
 // w(x), rotation of the cross-section psi(x), loads F delta(x) and M delta(x):
 //
 //   kGA (w'' - psi') + (m' omega^2 - s) w = -F delta(x)        (shear force balance)
@@ -18,7 +18,7 @@
 //   [ kGA k^2 + s - m' omega^2        -i k kGA             ] [W  ]   [F]
 //   [ i k kGA                  EI k^2 + kGA - rho I omega^2] [Psi] = [M],
 //
-// whose determinant is the dispersion polynomial, quadratic in k^2 (Thompson 2009 Eq. 3.12):
+// whose determinant is the dispersion polynomial, quadratic in k^2 (docs/models.md Eq. T3):
 //
 //   P(k) = EI kGA k^4 + [ (s - m' omega^2) EI - kGA rho I omega^2 ] k^2
 //          + (s - m' omega^2)(kGA - rho I omega^2).
@@ -86,7 +86,7 @@ class InfiniteBeam {
 /// Longitudinal receptance u/F of an infinite rod (axial stiffness EA(1 + i eta), mass m') on a
 /// continuous foundation of stiffness s per length, at distance x from the load:
 ///   u(x) = -i e^{-i k0 |x|} / (2 EA k0),  k0^2 = (m' omega^2 - s) / EA,  Im k0 < 0
-/// (Graff 1975 Sec. 2.1 for the free rod; the foundation only shifts k0^2).
+/// (Graff 1975, Ch. 2, for the free rod; the foundation only shifts k0^2).
 cdouble rod_receptance(const BeamSection& section, double omega, cdouble foundation, double x);
 
 }  // namespace rollnoise::dynamics

@@ -1,7 +1,7 @@
 // The contact filter: the contact patch averages the roughness over its area, so roughness of
 // wavelengths comparable with or shorter than the patch excites the wheel and rail less
 // (Remington, JASA 81, 1987; Remington & Webb, JSV 193, 1996; Thompson, Railway Noise and
-// Vibration, 2009, Sec. 5.5; Ford & Thompson, JSV 293, 2006).
+// Vibration, 2009, section on the contact filter; Ford & Thompson, JSV 293, 2006).
 //
 // Model. The effective (excitation) roughness is a weighted mean of the roughness r(x, y) over the
 // elliptic contact area (semi-axes a along the rolling direction x, b laterally),
@@ -15,7 +15,7 @@
 //    exactly d p_Hertz / d(approach), so a uniform r reproduces the Hertz contact stiffness
 //    (Johnson, Contact Mechanics, 1985, Sec. 3.5 and 4.2). Fourier transform:
 //      W(kx, ky) = sin(rho) / rho,   rho = sqrt((kx a)^2 + (ky b)^2).                        (1a)
-//  * kUniform: the plain area average of Remington (1976) and Thompson (2009, Sec. 5.5.2):
+//  * kUniform: the plain area average of Remington (JSV 46, 1976) and Thompson (2009):
 //      W(kx, ky) = 2 J1(rho) / rho.                                                          (1b)
 //
 // A roughness component of wavenumber k = 2 pi / lambda along the rail is filtered by |H(k)|^2:

@@ -30,7 +30,7 @@ rd::BeamSection euler_bernoulli(rd::BeamSection s) {
 }
 
 // Closed form for an infinite Euler-Bernoulli beam on a Winkler foundation of complex stiffness s
-// per length (Thompson 2009 Eq. 3.7 for the free beam; the foundation only changes the wavenumber):
+// per length (Hetenyi, Beams on Elastic Foundation, 1946; docs/models.md Eq. T6):
 //   w(x)/F = -[ i e^{-i kappa |x|} + e^{-kappa |x|} ] / (4 EI kappa^3),
 //   kappa^4 = (m' omega^2 - s) / EI, the fourth root with arg in (-pi/4, 0].
 // With damping kappa^4 lies in the lower half plane; this root decays (Im < 0) and, above the
