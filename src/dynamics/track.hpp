@@ -7,9 +7,9 @@
 //
 //   K(omega) = k_p* (k_b* - m_s omega^2) / (k_p* + k_b* - m_s omega^2).                    (1)
 //
-// Continuous support (Thompson 2009, Ch. 3; Grassie et al. 1982): the support smeared along the rail, foundation
-// stiffness per length s = K(omega)/L with L the sleeper spacing, solved in closed form by
-// InfiniteBeam.
+// Continuous support (Thompson 2009, Ch. 3; Grassie et al. 1982): the support smeared along the
+// rail, foundation stiffness per length s = K(omega)/L with L the sleeper spacing, solved in closed
+// form by InfiniteBeam.
 //
 // Discrete support (receptance superposition; Heckl, Acustica 81, 1995; Thompson 2009, Ch. 3;
 // Wu & Thompson, JSV 224, 1999): supports at x_n = n L act on the free rail with forces

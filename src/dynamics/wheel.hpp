@@ -1,6 +1,6 @@
 // Wheel model: a rigid wheelset plus the flexible modes of the wheel, as receptances at the
-// wheel/rail contact point (Thompson, Railway Noise and Vibration, 2009, chapter on wheel vibration;
-// Thompson, JSV 161, 1993, "Wheel-rail noise generation, part II: wheel vibration").
+// wheel/rail contact point (Thompson, Railway Noise and Vibration, 2009, chapter on wheel
+// vibration; Thompson, JSV 161, 1993, "Wheel-rail noise generation, part II: wheel vibration").
 //
 // Flexible modes n with natural frequency omega_n, damping ratio zeta_n, modal mass m_n and mode
 // shape phi_n at the contact point (one entry per contact degree of freedom z, x, y, rot z; the

@@ -1,7 +1,8 @@
 // Wheel and rail roughness: 1/3-octave wavelength spectra, conversion to frequency at the train
 // speed, the wheel + rail energy sum and the contact filter (Thompson, Railway Noise and Vibration,
-// 2009, chapters on roughness and wheel/rail interaction; EN 15610:2019 for the spectra; CNOSSOS-EU, Directive (EU) 2015/996,
-// Annex II Sec. 2.3.2 and Appendix G, for the tabulated spectra used as defaults).
+// 2009, chapters on roughness and wheel/rail interaction; EN 15610:2019 for the spectra;
+// CNOSSOS-EU, Directive (EU) 2015/996, Annex II Sec. 2.3 and Appendix G, for the tabulated
+// spectra used as defaults).
 //
 // A roughness level is L = 10 log10(r_rms^2 / r_0^2), r_0 = 1 um, of the roughness r(x) in one
 // 1/3-octave wavelength band. A wavelength lambda passes the contact at frequency f = V / lambda,
