@@ -8,6 +8,16 @@
 #include "dynamics/parameter_file.hpp"
 
 namespace rollnoise::dynamics {
+namespace {
+
+double checked_omega(double frequency) {
+  if (!(frequency > 0.0) || !std::isfinite(frequency))
+    throw InputError("frequency", "track receptance needs a positive, finite frequency, got " +
+                                      std::to_string(frequency) + " Hz");
+  return angular(frequency);
+}
+
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Support
@@ -127,7 +137,7 @@ TrackParameters track_parameters_from(const ParameterFile& f) {
 
 Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& support,
                                      double sleeper_spacing, double frequency, double x) {
-  const double omega = angular(frequency);
+  const double omega = checked_omega(frequency);
   const cdouble s = support.dynamic_stiffness(omega) / sleeper_spacing;  // N/m^2
   return InfiniteBeam(rail, omega, s).transfer(x);
 }
@@ -142,7 +152,7 @@ DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const 
 }
 
 Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r, double x_e) const {
-  const double omega = angular(frequency);
+  const double omega = checked_omega(frequency);
   const InfiniteBeam free_rail(rail_, omega, 0.0);
   const cdouble K = support_.dynamic_stiffness(omega);
   const int m = 2 * n_ + 1;
@@ -194,7 +204,7 @@ RailModel::RailModel(const TrackParameters& track, TrackSupport support, double 
 }
 
 Receptance4 RailModel::receptance(double frequency) const {
-  const double omega = angular(frequency);
+  const double omega = checked_omega(frequency);
   Eigen::Matrix2cd Hv, Hl;
   if (support_ == TrackSupport::kDiscrete) {
     Hv = vertical_.point(frequency, x_);

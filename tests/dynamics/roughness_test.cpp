@@ -3,6 +3,7 @@
 #include "noise/roughness.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -83,7 +84,8 @@ TEST(RoughnessSpectra, BadCsvNamesFileLineAndField) {
   };
   int i = 0;
   for (const auto& c : cases) {
-    const std::string path = ::testing::TempDir() + "rough" + std::to_string(i++) + ".csv";
+    const std::string path = ::testing::TempDir() + "rough" + std::to_string(::getpid()) + "_" +
+                             std::to_string(i++) + ".csv";
     std::ofstream(path) << c.text;
     try {
       rn::read_roughness_csv(path);

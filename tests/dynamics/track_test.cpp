@@ -352,3 +352,15 @@ TEST(TrackParameters, BadFileNamesFileLineAndKey) {
   text.replace(pos, 21, "pad_stiffness = -350e6");
   expect_error(text, "support.vertical.pad_stiffness", "positive");
 }
+
+TEST(RailModel, NonPositiveFrequencyIsInputError) {
+  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
+  for (double f : {0.0, -10.0, std::nan("")}) {
+    try {
+      rail.receptance(f);
+      ADD_FAILURE() << "no InputError at f = " << f;
+    } catch (const rollnoise::InputError& e) {
+      EXPECT_EQ(e.key(), "frequency");
+    }
+  }
+}

@@ -2,6 +2,7 @@
 #include "dynamics/wheel.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -25,7 +26,8 @@ rd::WheelModel default_wheel() {
 
 // Writes `text` to a temporary mode file and returns its path.
 std::string temp_file(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  // per-process names: test programs of several build trees may run at once
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }
