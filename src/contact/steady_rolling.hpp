@@ -1,15 +1,7 @@
 // Steady rolling with Coulomb friction (paper Eq. 3):  s = w + V (A - A0) p / dx  at every contact
 // element, |p| <= mu pn, adhesion s = 0, slip p = -mu pn s/|s|.
 //
-// Solver: a semismooth Newton method on the element-wise Coulomb fixed point. Let Pi_I(p) be the
-// exact solution of Coulomb's law at element I with all other tractions fixed (coulomb.hpp, the
-// Gauss-Seidel element step). The solution is the root of R(p) = p - Pi(p). R is piecewise smooth:
-// its Jacobian is  I - dPi/db (S - D)  with dPi/db = -D^{-1} in adhesion and the tangential
-// projection of coulomb.hpp in slip, so each Newton step re-decides adhesion and slip for every
-// element (Kalker's TANG with Newton on the slip set, in a form that needs no separate set
-// updates). Steps are damped by backtracking on |R| for global robustness; near the solution the
-// convergence is quadratic, so the residual is driven to round-off and the adhesion/slip split is
-// that of the exact discrete solution.
+// Solver: the semismooth Newton method of coulomb_newton.hpp with S = V (A - A0)/dx, rhs = w.
 //
 // Why not Gauss-Seidel: S = V (A - A0)/dx = V (I - T) A/dx (T the shift to the upstream neighbour) is
 // a difference along x. Element Gauss-Seidel marching from the leading edge inverts (I - T), a
