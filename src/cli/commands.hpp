@@ -18,5 +18,6 @@ struct CommonOptions {
 std::string output_path(const CommonOptions& o, const std::string& case_name);
 
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps);
+int run_transient(const CommonOptions& o);
 
 }  // namespace rollnoise::cli

@@ -1,6 +1,7 @@
 // rollnoise: railway rolling-contact and rolling-noise analysis in the frequency domain.
 //
-//   rollnoise steady CASE.toml [-o OUT.h5] [--set key=value]... [--sweep KEY=VALUES]
+//   rollnoise steady    CASE.toml [-o OUT.h5] [--set key=value]... [--sweep KEY=VALUES]
+//   rollnoise transient CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
   steady->add_option("--sweep", sweeps,
                      "steady solutions over a key: KEY=lo:hi:n, KEY[i]=lo:hi:n (component i) or "
                      "KEY=[v1, v2, ...]");
+  auto* transient = app.add_subcommand("transient", "unsteady CONTACT time stepping (paper Eq. 2)");
+  add_common(transient);
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (steady->parsed()) return cli::run_steady(common, sweeps);
+    if (transient->parsed()) return cli::run_transient(common);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;
