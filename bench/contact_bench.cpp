@@ -10,6 +10,8 @@
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
+#include "contact/creepage_history.hpp"
+#include "contact/transient_rolling.hpp"
 
 using namespace rollnoise::contact;
 
@@ -72,6 +74,30 @@ void HalfSpaceProduct(benchmark::State& state) {
   state.SetLabel(backend == Backend::Fft ? "fft" : "dense");
 }
 BENCHMARK(HalfSpaceProduct)->ArgsProduct({{8, 16, 24, 32, 48}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+// Transient rolling (paper Sec. 3.1 excitation, from the steady state): 10 periods at 1 kHz.
+// Reported per step and for the whole run.
+void TransientTenPeriods1kHz(benchmark::State& state) {
+  const int nx = state.range(0), ny = state.range(1);
+  const Grid g = Grid::around_ellipse(nx, ny, 7.18e-3, 5.29e-3, 34.0 / 30.0);
+  const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, 98100, kSteel);
+  const ContactPatch patch = solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), 98100);
+  const double V = 13.8888888888889;
+  const auto history = CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0);
+  const auto steady = solve_steady_rolling(patch.influence, patch.normal.pn, {0.3, V, history.mean(), 0.0});
+  long steps = 0;
+  for (auto _ : state) {
+    TransientRolling rolling(patch.influence, patch.normal.pn, 0.3, V, 0.0);
+    rolling.set_tractions(steady.px, steady.py);
+    steps = static_cast<long>(0.01 / rolling.time_step());
+    for (long k = 1; k <= steps; ++k) rolling.step(history.at(k * rolling.time_step()));
+  }
+  state.counters["grid_elements"] = g.size();
+  state.counters["contact_elements"] = patch.normal.contact_elements();
+  state.counters["steps"] = steps;
+  state.counters["ms_per_step"] = benchmark::Counter(1e3 * steps, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(TransientTenPeriods1kHz)->Args({34, 25})->Args({68, 50})->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 
