@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
+#include <algorithm>
 
 namespace fs = std::filesystem;
 
@@ -131,6 +133,46 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"missing_load", "[contact]\na = 7e-3\nb = 5e-3\n", "contact.normal_force"},
         BadInput{"small_potential_area", "--set grid.scale=0.9", "grid.scale"}),
     [](const auto& info) { return info.param.name; });
+
+TEST(TransientCommand, CsvHistoryWithSnapshotsWritesTimeCreepageAndForce) {
+  const fs::path dir = temp_dir();
+  {
+    std::ofstream csv(dir / "history.csv");
+    csv << "t,xi_x,xi_y,phi\n0,0.001,0,0\n0.001,0.0012,0,0\n0.002,0.001,0,0\n";
+  }
+  const fs::path case_file = dir / "tr.toml";
+  std::ofstream(case_file) << "[contact]\nnormal_force = 98100\na = 7.18e-3\nb = 5.29e-3\n"
+                              "[grid]\nnx = 20\nny = 15\n[creepage]\nmean = [0.001, 0.0, 0.0]\n"
+                              "[excitation]\ntype = \"csv\"\nfile = \"history.csv\"\n"
+                              "[transient]\nduration = 0.002\nsnapshots = [0.001]\n";
+  const fs::path out = dir / "tr.h5";
+  const Invocation r = run("transient " + case_file.string() + " -q -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/transient/time"), "s");
+  EXPECT_EQ(read_units(f, "/transient/force"), "N, N, N m");
+  EXPECT_EQ(read_units(f, "/transient/snapshots/0/px"), "Pa");
+  const hid_t set = H5Dopen2(f, "/transient/creepage", H5P_DEFAULT);
+  const hid_t space = H5Dget_space(set);
+  hsize_t dims[2];
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  std::vector<double> c(dims[0] * dims[1]);
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, c.data());
+  H5Sclose(space), H5Dclose(set), H5Fclose(f);
+  // dt = dx/V = (2 * 1.1333 * 7.18e-3 / 20) / 13.889: the creepage peaks mid-run at 0.0012
+  double peak = 0;
+  for (size_t k = 0; k < dims[0]; ++k) peak = std::max(peak, c[3 * k]);
+  EXPECT_GT(peak, 0.00118);
+  EXPECT_LE(peak, 0.0012 + 1e-15);
+}
+
+TEST(TransientCommand, DurationShorterThanOneStepIsAnInputError) {
+  const Invocation r = run("transient " + paper_case() + " --set transient.duration=1e-6 -o " +
+                           (temp_dir() / "short.h5").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("transient.duration"), std::string::npos) << r.output;
+}
 
 TEST(Program, KeysListsTheSchemaWithDefaults) {
   const Invocation r = run("keys");
