@@ -1,0 +1,239 @@
+// The linear NSS model (paper Eqs. 6-30): its limits (steady tangent at w -> 0, contact stiffness
+// at high w), the agreement of its three evaluations, symmetry, and its time responses against our
+// unsteady solver and CONTACT's unsteady runs (paper Secs. 3.1, 3.2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "../contact/reference_data.hpp"
+#include "contact/creepage_history.hpp"
+#include "contact/forces.hpp"
+#include "contact/hertz.hpp"
+#include "contact/patch.hpp"
+#include "contact/steady_rolling.hpp"
+#include "contact/transient_rolling.hpp"
+#include "core/errors.hpp"
+#include "linalg/harmonic_fit.hpp"
+#include "nss/linear_model.hpp"
+
+using namespace rollnoise;
+using namespace rollnoise::contact;
+using rollnoise::testing::data_path;
+using rollnoise::testing::num;
+using rollnoise::testing::read_csv;
+
+namespace {
+
+const Material kSteel{210e9, 0.28};
+const double kSpeed = 13.8888888888889, kMu = 0.3, kN = 98100;
+
+const ContactPatch& coarse_patch() {
+  static const ContactPatch patch = [] {
+    const Grid g = Grid::around_ellipse(34, 25, 7.18e-3, 5.29e-3, 34.0 / 30.0);
+    const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, kN, kSteel);
+    return solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), kN);
+  }();
+  return patch;
+}
+
+TangentialForces steady_forces(const Creepage& c, double spin_offset = 0.0) {
+  const ContactPatch& p = coarse_patch();
+  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, spin_offset});
+  return total_forces(p.grid, s.px, s.py);
+}
+
+nss::LinearContactModel model_at(const Creepage& c, double spin_offset = 0.0) {
+  const ContactPatch& p = coarse_patch();
+  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, spin_offset});
+  return nss::LinearContactModel(p, s, {kMu, kSpeed, spin_offset});
+}
+
+}  // namespace
+
+TEST(LinearModel, ZeroFrequencyEqualsTheTangentOfTheSteadyForceCreepageLaw) {
+  // Central finite differences of the steady solver around the paper's Sec. 3.2 mean state.
+  const Creepage mean{0.001, 0.001, -0.053};
+  const auto f0 = model_at(mean).creep_coefficients_direct(0.0);
+  const std::array<double, 3> h = {1e-6, 1e-6, 5e-5};
+  for (int k = 0; k < 3; ++k) {
+    Creepage plus = mean, minus = mean;
+    (&plus.xi_x)[k] += h[k];
+    (&minus.xi_x)[k] -= h[k];
+    const auto fp = steady_forces(plus), fm = steady_forces(minus);
+    const Eigen::Vector3d jac = -Eigen::Vector3d(fp.Fx - fm.Fx, fp.Fy - fm.Fy, fp.Mz - fm.Mz) / (2 * h[k]);
+    for (int j = 0; j < 3; ++j) {
+      std::printf("f%d%d(0) = %.5g, finite difference %.5g\n", j + 1, k + 1, f0(j, k).real(), jac(j));
+      EXPECT_NEAR(f0(j, k).imag(), 0.0, 1e-9 * std::abs(f0(j, k)));
+      // within 1 % of the entry, or of its row's largest entry for entries that nearly vanish
+      const double row = f0.row(j).cwiseAbs().maxCoeff() * (j == 2 ? 1.0 : 1.0);
+      EXPECT_NEAR(f0(j, k).real(), jac(j), 0.01 * std::max(std::abs(jac(j)), 0.05 * row));
+    }
+  }
+}
+
+TEST(LinearModel, HighFrequencyContactActsAsATangentialSpring) {
+  // Continuum: f11 ~ V K/(i w), |f11| w/V -> K, arg f11 -> -90 deg. The discrete-time model
+  // differentiates with (1 - z)/dt = i w e^{-i w dt/2} sinc(w dt/2) instead of i w (the rolling
+  // step is a backward difference), so on a grid f11 (1 - z)/(dt V) -> K, real; the half-step
+  // delay w dt/2 vanishes under refinement.
+  const auto m = model_at({0.001, 0, 0});
+  const double fn = m.nyquist_frequency(), dt = m.time_step();
+  const std::vector<double> freqs = {0.2 * fn, 0.3 * fn, 0.5 * fn, 0.7 * fn};
+  const auto f = m.creep_coefficients(freqs);
+  std::vector<double> K;
+  for (size_t i = 0; i < freqs.size(); ++i) {
+    const std::complex<double> D = (1.0 - std::polar(1.0, -2 * M_PI * freqs[i] * dt)) / dt;
+    const std::complex<double> k = f[i](0, 0) * D / kSpeed;
+    K.push_back(std::abs(k));
+    std::printf("f = %.0f Hz: arg f11 = %.2f deg, arg f11 (1-z)/dt = %.2f deg, K = %.4g N/m\n", freqs[i],
+                std::arg(f[i](0, 0)) * 180 / M_PI, std::arg(k) * 180 / M_PI, K.back());
+    if (i >= 1) EXPECT_NEAR(std::arg(k) * 180 / M_PI, 0.0, 2.0) << "arg f11 -> -90 deg (+ half step)";
+  }
+  for (size_t i = 1; i < K.size(); ++i) EXPECT_NEAR(K[i] / K[1], 1.0, 0.02) << "constant stiffness";
+  // Under refinement the plain phase at a fixed frequency approaches -90 degrees.
+  const Grid fine = Grid::around_ellipse(48, 35, 7.18e-3, 5.29e-3, 34.0 / 30.0);
+  const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, kN, kSteel);
+  const ContactPatch pf = solve_patch(fine, kSteel, quadratic_distance(fine, h.A, h.B), kN);
+  const auto sf = solve_steady_rolling(pf.influence, pf.normal.pn, {kMu, kSpeed, {0.001, 0, 0}, 0.0});
+  const double f3k = 3000.0;
+  const double arg_coarse = std::arg(m.creep_coefficients({f3k})[0](0, 0)) * 180 / M_PI;
+  const double arg_fine =
+      std::arg(nss::LinearContactModel(pf, sf, {kMu, kSpeed, 0.0}).creep_coefficients({f3k})[0](0, 0)) * 180 / M_PI;
+  std::printf("arg f11 at 3 kHz: coarse %.2f deg, fine %.2f deg\n", arg_coarse, arg_fine);
+  EXPECT_LT(std::abs(arg_fine + 90), std::abs(arg_coarse + 90));
+}
+
+TEST(LinearModel, FastSweepHessenbergAndDirectSolveAgree) {
+  for (Creepage c : {Creepage{0, 0, 0}, Creepage{0.001, 0.001, -0.053}, Creepage{0.004, 0, 0}}) {
+    const auto m = model_at(c);
+    const std::vector<double> freqs = {0.0, 100.0, 1000.0, 5000.0, m.nyquist_frequency()};
+    const auto fast = m.creep_coefficients(freqs), hess = m.creep_coefficients_hessenberg(freqs);
+    for (size_t i = 0; i < freqs.size(); ++i) {
+      const auto direct = m.creep_coefficients_direct(freqs[i]);
+      EXPECT_LT((fast[i] - direct).norm(), 1e-9 * direct.norm()) << freqs[i] << " Hz";
+      EXPECT_LT((hess[i] - direct).norm(), 1e-9 * direct.norm()) << freqs[i] << " Hz";
+    }
+  }
+}
+
+TEST(LinearModel, SymmetricPatchWithoutSpinOrLateralCreepageDecouplesLongitudinalFromLateral) {
+  const auto m = model_at({0.001, 0, 0});
+  for (const auto& f : m.creep_coefficients({0.0, 500.0, 2000.0})) {
+    const double scale = std::abs(f(0, 0));
+    EXPECT_LT(std::abs(f(0, 1)), 1e-9 * scale);
+    EXPECT_LT(std::abs(f(0, 2)), 1e-9 * scale * 1e-2);
+    EXPECT_LT(std::abs(f(1, 0)), 1e-9 * scale);
+    EXPECT_LT(std::abs(f(2, 0)), 1e-9 * scale * 1e-2);
+  }
+}
+
+TEST(LinearModel, FrequencyAboveNyquistIsAnInputError) {
+  const auto m = model_at({0.001, 0, 0});
+  EXPECT_NO_THROW(m.creep_coefficients({m.nyquist_frequency()}));
+  EXPECT_THROW(m.creep_coefficients({1.01 * m.nyquist_frequency()}), InputError);
+  EXPECT_THROW(m.creep_coefficients_direct(-1.0), InputError);
+}
+
+TEST(LinearModel, RecursionAgreesWithHarmonicSynthesisAfterTheStart) {
+  // M0 Q_k = M1 Q_{k-1} + W_k from rest, against -Re(f xi^ e^{i w t}) (paper Eqs. 33-34).
+  const auto m = model_at({0.001, 0.001, -0.053});
+  const auto h = CreepageHistory::multiharmonic({0.001, 0.001, -0.053}, {1e-6, 1e-6, 5e-6}, 100, 5000, 50, 3);
+  const auto f = m.creep_coefficients(h.frequencies());
+  const double dt = m.time_step();
+  std::vector<Eigen::Vector3d> xi;
+  for (int k = 0; k < 800; ++k) {
+    const auto v = h.variation(k * dt);
+    xi.emplace_back(v[0], v[1], v[2]);
+  }
+  const auto F = m.time_response(xi);
+  double err = 0, ref = 0;
+  for (int k = 500; k < 800; ++k) {  // after 16 contact lengths
+    Eigen::Vector3d syn = Eigen::Vector3d::Zero();
+    for (size_t n = 0; n < h.frequencies().size(); ++n) {
+      Eigen::Vector3cd x;
+      for (int j = 0; j < 3; ++j) x(j) = h.amplitude()[j] * std::polar(1.0, h.phases()[j][n]);
+      syn -= (f[n] * x * std::polar(1.0, 2 * M_PI * h.frequencies()[n] * k * dt)).real();
+    }
+    err = std::max(err, (F[k] - syn).norm());
+    ref = std::max(ref, syn.norm());
+  }
+  EXPECT_LT(err, 1e-8 * ref);
+}
+
+// ---- against the unsteady solver and CONTACT (paper Sec. 3.1) ----
+
+TEST(LinearModel, Section31AmplitudeAndPhaseAgreeWithTheUnsteadySolverAndCONTACT) {
+  // xi_x = 0.001 + 5e-5 cos(2 pi 1000 t); linear model F~ = -f11 xi~.
+  const ContactPatch& p = coarse_patch();
+  const Creepage mean{0.001, 0, 0};
+  const auto steady = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, mean, 0.0});
+  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0});
+  const std::complex<double> F = -m.creep_coefficients({1000.0})[0](0, 0) * 5e-5;
+  const double amp = std::abs(F), phase = std::arg(F) * 180 / M_PI;
+
+  // our unsteady solver, fitted over the last 5 periods of 10 ms (as CONTACT's harmonic_fit.csv)
+  const auto history = CreepageHistory::harmonic(mean, {5e-5, 0, 0}, 1000.0);
+  TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
+  rolling.set_tractions(steady.px, steady.py);
+  std::vector<double> t, fx;
+  for (int k = 1; k <= 291; ++k) {
+    const auto& s = rolling.step(history.at(k * rolling.time_step()));
+    if (k * rolling.time_step() < 0.005029) continue;
+    t.push_back(k * rolling.time_step());
+    fx.push_back(total_forces(p.grid, s.px, s.py).Fx);
+  }
+  const auto fit = linalg::fit_harmonic(t, fx, 1000.0);
+  double ref_amp = 0, ref_phase = 0;
+  for (const auto& row : read_csv(data_path("contact/U1/harmonic_fit.csv")))
+    if (row.at("grid") == "coarse" && row.at("quantity") == "Fx_N")
+      ref_amp = num(row, "amp"), ref_phase = num(row, "phase_deg");
+  std::printf("Fx at 1 kHz: linear %.3f N at %.3f deg; unsteady %.3f N at %.3f deg; CONTACT %.3f N at %.3f deg\n",
+              amp, phase, fit.amplitude, fit.phase * 180 / M_PI, ref_amp, ref_phase);
+  EXPECT_NEAR(amp, fit.amplitude, 0.01 * fit.amplitude);
+  EXPECT_NEAR(phase, fit.phase * 180 / M_PI, 1.0);
+  EXPECT_NEAR(amp, ref_amp, 0.02 * ref_amp);
+  EXPECT_NEAR(phase, ref_phase, 2.0);
+}
+
+TEST(LinearModel, Section32ForcesWithinTwoPercentOfTheVariationAmplitude) {
+  // Mean (0.001, 0.001, -0.053), all varied by 5 % at 1 kHz, against our unsteady solver.
+  const ContactPatch& p = coarse_patch();
+  const Creepage mean{0.001, 0.001, -0.053};
+  const auto history = CreepageHistory::harmonic(mean, {5e-5, 5e-5, 0.0027}, 1000.0);
+  const auto steady = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, mean, 0.0});
+  const TangentialForces fbar = total_forces(p.grid, steady.px, steady.py);
+  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0});
+  const auto f = m.creep_coefficients({1000.0})[0];
+  const Eigen::Vector3cd xhat(5e-5, 5e-5, 0.0027);
+  TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
+  rolling.set_tractions(steady.px, steady.py);
+  double err_x = 0, err_y = 0, amp_x = 0, amp_y = 0;
+  for (int k = 1; k <= 291; ++k) {
+    const double t = k * rolling.time_step();
+    const auto& s = rolling.step(history.at(t));
+    const Eigen::Vector3d lin = -(f * xhat * std::polar(1.0, 2 * M_PI * 1000.0 * t)).real();
+    if (t < 2e-3) continue;
+    const auto F = total_forces(p.grid, s.px, s.py);
+    err_x = std::max(err_x, std::abs(F.Fx - fbar.Fx - lin(0)));
+    err_y = std::max(err_y, std::abs(F.Fy - fbar.Fy - lin(1)));
+    amp_x = std::max(amp_x, std::abs(lin(0)));
+    amp_y = std::max(amp_y, std::abs(lin(1)));
+  }
+  std::printf("Sec. 3.2: max error Fx %.2f N of %.1f N, Fy %.2f N of %.1f N\n", err_x, amp_x, err_y, amp_y);
+  EXPECT_LT(err_x, 0.02 * amp_x);
+  EXPECT_LT(err_y, 0.02 * amp_y);
+}
+
+TEST(LinearModel, Table1MagnitudesOfF11AndF22WithinTwentyPercentOfThePaper) {
+  // Paper Table 1 (1 kHz, mean xi_x = 0.001): f11 = 3.30e5 - 2.31e6 i, f22 = 3.32e5 - 2.53e6 i.
+  const auto f = model_at({0.001, 0, 0}).creep_coefficients({1000.0})[0];
+  const std::complex<double> p11(3.30e5, -2.31e6), p22(3.32e5, -2.53e6);
+  std::printf("Table 1: f11 = %.3g %+.3gi (paper %.3g %+.3gi), f22 = %.3g %+.3gi (paper %.3g %+.3gi)\n",
+              f(0, 0).real(), f(0, 0).imag(), p11.real(), p11.imag(), f(1, 1).real(), f(1, 1).imag(),
+              p22.real(), p22.imag());
+  std::printf("         f23 = %.4g %+.4gi (paper 2462.2 - 1909.1i), f32 = %.4g %+.4gi (paper -9425.7 - 1.88e4i)\n",
+              f(1, 2).real(), f(1, 2).imag(), f(2, 1).real(), f(2, 1).imag());
+  EXPECT_NEAR(std::abs(f(0, 0)), std::abs(p11), 0.2 * std::abs(p11));
+  EXPECT_NEAR(std::abs(f(1, 1)), std::abs(p22), 0.2 * std::abs(p22));
+}
