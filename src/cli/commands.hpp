@@ -19,5 +19,6 @@ std::string output_path(const CommonOptions& o, const std::string& case_name);
 
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps);
 int run_transient(const CommonOptions& o);
+int run_creep(const CommonOptions& o, const std::string& csv, bool direct);
 
 }  // namespace rollnoise::cli

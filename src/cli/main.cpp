@@ -2,6 +2,7 @@
 //
 //   rollnoise steady    CASE.toml [-o OUT.h5] [--set key=value]... [--sweep KEY=VALUES]
 //   rollnoise transient CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
+//   rollnoise creep     CASE.toml [-o OUT.h5] [--set key=value]... [--csv FILE] [--direct]
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -46,6 +47,12 @@ int main(int argc, char** argv) {
                      "KEY=[v1, v2, ...]");
   auto* transient = app.add_subcommand("transient", "unsteady CONTACT time stepping (paper Eq. 2)");
   add_common(transient);
+  std::string creep_csv;
+  bool creep_direct = false;
+  auto* creep = app.add_subcommand("creep", "creep coefficients f_jk(f) of the linear NSS model");
+  add_common(creep);
+  creep->add_option("--csv", creep_csv, "also write the table (f, then Re and Im of each f_jk) as CSV");
+  creep->add_flag("--direct", creep_direct, "a complex LU per frequency (the reference) instead of the fast sweep");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -61,6 +68,7 @@ int main(int argc, char** argv) {
     }
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
+    if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;
