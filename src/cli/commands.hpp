@@ -20,5 +20,7 @@ std::string output_path(const CommonOptions& o, const std::string& case_name);
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps);
 int run_transient(const CommonOptions& o);
 int run_creep(const CommonOptions& o, const std::string& csv, bool direct);
+int run_response(const CommonOptions& o);
+int run_validate(const CommonOptions& o);
 
 }  // namespace rollnoise::cli

@@ -3,6 +3,8 @@
 //   rollnoise steady    CASE.toml [-o OUT.h5] [--set key=value]... [--sweep KEY=VALUES]
 //   rollnoise transient CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
 //   rollnoise creep     CASE.toml [-o OUT.h5] [--set key=value]... [--csv FILE] [--direct]
+//   rollnoise response  CASE.toml [-o OUT.h5] [--set key=value]...
+//   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -53,6 +55,10 @@ int main(int argc, char** argv) {
   add_common(creep);
   creep->add_option("--csv", creep_csv, "also write the table (f, then Re and Im of each f_jk) as CSV");
   creep->add_flag("--direct", creep_direct, "a complex LU per frequency (the reference) instead of the fast sweep");
+  auto* response = app.add_subcommand("response", "linear-model force response to a creepage history");
+  add_common(response);
+  auto* validate = app.add_subcommand("validate", "linear model against the unsteady solver");
+  add_common(validate);
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -69,6 +75,8 @@ int main(int argc, char** argv) {
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
     if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
+    if (response->parsed()) return cli::run_response(common);
+    if (validate->parsed()) return cli::run_validate(common);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

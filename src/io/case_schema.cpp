@@ -60,6 +60,8 @@ const std::vector<KeySpec>& case_schema() {
       {"transient.start", T::String, "\"steady\"", "-",
        "initial tractions: steady solution at the mean creepage, or zero", {"steady", "zero"}},
       {"transient.snapshots", T::RealList, "[]", "s", "times at which tractions are written"},
+      {"transient.analysis_start", T::NonNegReal, "0.002", "s",
+       "validate/response: errors and spectra use t >= analysis_start (after the start transient)"},
       // frequency axis (creep, noise, receptance)
       {"frequency.f_min", T::NonNegReal, "10.0", "Hz", "lowest frequency"},
       {"frequency.f_max", T::PositiveReal, "5000.0", "Hz", "highest frequency"},

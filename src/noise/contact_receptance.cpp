@@ -1,0 +1,104 @@
+#include "noise/contact_receptance.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace rollnoise::noise {
+namespace {
+
+void check_common(double frequency, double normal_stiffness, double speed) {
+  if (!(frequency > 0.0) || !std::isfinite(frequency))
+    throw InputError("frequency", "contact receptance needs a positive frequency");
+  if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness))
+    throw InputError("normal_stiffness", "contact normal stiffness must be positive");
+  if (!(speed > 0.0) || !std::isfinite(speed))
+    throw InputError("rolling.speed", "contact receptance needs a positive rolling speed");
+}
+
+}  // namespace
+
+Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
+                               const Eigen::Matrix3cd& creep) {
+  check_common(frequency, normal_stiffness, speed);
+  const double omega = dynamics::angular(frequency);
+  const Eigen::FullPivLU<Eigen::Matrix3cd> lu(creep);
+  // Reciprocal condition estimate from the pivots (relative to the largest entry).
+  const double biggest = creep.cwiseAbs().maxCoeff();
+  if (!(biggest > 0.0) || !creep.allFinite() || !lu.isInvertible() ||
+      std::abs(lu.matrixLU()(2, 2)) < 1e-14 * biggest) {
+    std::ostringstream s;
+    s << "contact receptance: creep matrix f is singular or not finite at " << frequency
+      << " Hz (f =\n"
+      << creep << ")";
+    throw NumericalError(s.str());
+  }
+  Receptance4 a = Receptance4::Zero();
+  a(0, 0) = 1.0 / normal_stiffness;  // linearised Hertz spring
+  // (C2): alpha_c,t = (V / (i omega)) f^{-1}
+  a.bottomRightCorner<3, 3>() = (speed / (cdouble(0.0, 1.0) * omega)) * lu.inverse();
+  return a;
+}
+
+std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
+                                             double normal_stiffness, double speed,
+                                             const CreepFunction& creep) {
+  if (!creep) throw InputError("creep", "contact receptance: no creep-coefficient model given");
+  std::vector<Receptance4> out;
+  out.reserve(frequencies.size());
+  for (double f : frequencies)
+    out.push_back(contact_receptance(f, normal_stiffness, speed, creep(f)));
+  return out;
+}
+
+std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
+                                             double normal_stiffness, double speed,
+                                             const std::vector<Eigen::Matrix3cd>& creep) {
+  if (creep.size() != frequencies.size())
+    throw InputError("creep", "contact receptance: one creep matrix per frequency is needed");
+  std::vector<Receptance4> out;
+  out.reserve(frequencies.size());
+  for (std::size_t k = 0; k < frequencies.size(); ++k)
+    out.push_back(contact_receptance(frequencies[k], normal_stiffness, speed, creep[k]));
+  return out;
+}
+
+Receptance4 normal_contact_receptance(double normal_stiffness) {
+  if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness))
+    throw InputError("normal_stiffness", "contact normal stiffness must be positive");
+  Receptance4 a = Receptance4::Zero();
+  a(0, 0) = 1.0 / normal_stiffness;
+  return a;
+}
+
+CreepFunction steady_creep(const Eigen::Matrix3d& f) {
+  const Eigen::Matrix3cd fc = f.cast<cdouble>();
+  return [fc](double) { return fc; };
+}
+
+Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double G, double nu) {
+  if (!(a > 0.0) || !(b > 0.0)) throw InputError("a", "semi-axes must be positive");
+  if (!(G > 0.0)) throw InputError("shear_modulus", "shear modulus must be positive");
+  if (!(nu >= 0.0 && nu <= 0.5)) throw InputError("nu", "Poisson's ratio must be in [0, 0.5]");
+  const double c = std::sqrt(a * b);
+  Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
+  K(0, 0) = K(1, 1) = 4.0 * G * c / (2.0 - nu);  // Mindlin, two identical bodies
+  K(2, 2) = 8.0 * G * c * c * c / 3.0;            // Lubkin, two identical bodies
+  return K;
+}
+
+CreepFunction creep_with_tangential_stiffness(const Eigen::Matrix3d& steady,
+                                              const Eigen::Matrix3d& stiffness, double speed) {
+  if (!(speed > 0.0)) throw InputError("rolling.speed", "rolling speed must be positive");
+  const Eigen::Matrix3cd fs_inv = steady.cast<cdouble>().inverse();
+  const Eigen::Matrix3cd K_inv = stiffness.cast<cdouble>().inverse();
+  return [fs_inv, K_inv, speed](double frequency) {
+    const cdouble iw_over_v(0.0, dynamics::angular(frequency) / speed);
+    const Eigen::Matrix3cd compliance = fs_inv + iw_over_v * K_inv;
+    return Eigen::Matrix3cd(compliance.inverse());
+  };
+}
+
+}  // namespace rollnoise::noise

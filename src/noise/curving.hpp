@@ -1,0 +1,115 @@
+// A quasi-static estimate of the mean creepages and the contact position of the leading outer
+// wheel of a two-axle bogie in a curve (docs/noise_loop.md Sec. 6).
+//
+// Model: the classical quasi-static curving analysis of a rigid two-axle bogie (Boocock, J. Mech.
+// Eng. Sci. 11, 1969; Elkins & Gostling, 5th IAVSD Symposium 1977; Wickens, Fundamentals of Rail
+// Vehicle Dynamics, 2003, chapter on curving; Iwnicki (ed.), Handbook of Railway Vehicle Dynamics,
+// 2006, chapter on curving), reduced to what the noise loop needs:
+//
+//  * Frame: x forward, z up, y lateral towards the OUTER rail (the curve turns towards -y; for the
+//    right-handed frame y is to the left, so the curve is a right-hand one and the yaw rate is
+//    -V/R). Axles at x = +a (leading) and -a (trailing), 2a the wheelbase; y_i the lateral
+//    displacement of axle i from the local track centre line; contact points at y = +-l0.
+//  * The bogie frame is rigid (no yaw flexibility between axles and frame) and free in yaw (no
+//    yaw moment from the car body). Its yaw relative to the tangent at its centre is
+//    theta = (y1 - y2)/(2a); the angles of attack relative to the local radial are
+//      psi_1 = theta + a/R,   psi_2 = theta - a/R                                              (K1)
+//    (psi > 0: the axle points outwards; a bogie with both axles at the same y has psi_1 = a/R,
+//    the "yaw angle ~ wheelbase/(2R)").
+//  * Kinematic creepages of axle i (steady state, small angles; Wickens 2003), outer wheel:
+//      xi_x = l0/R - Delta_r(y_i)/(2 r0),  xi_y = -psi_i / cos(gamma),
+//      phi  = -sin(gamma)/r_c - cos(gamma)/R                                                   (K2)
+//    with the rolling-radius difference Delta_r = r_outer - r_inner (2 lambda y for a conical tread
+//    of conicity lambda), r_c the rolling radius at the contact, gamma the contact angle (normal
+//    tilted towards the track centre, the sign convention of loop.hpp). The inner wheel has
+//    -xi_x and the same xi_y. phi is the component along the contact normal of the wheel's rolling
+//    (V/r_c about the axle) and curving (-V/R about z) angular velocities, divided by V.
+//  * Creep forces on the wheels: Kalker's linear law F = -f xi (f11, f22; spin neglected in the
+//    equilibrium) with the cubic saturation of Johnson & Vermeulen (1964) / Shen, Hedrick & Elkins
+//    (1983) on the combined force: |F| = mu Q (u - u^2/3 + u^3/27) for u = |f xi|/(mu Q) < 3, else
+//    mu Q (equal wheel loads Q).
+//  * Equilibrium of the bogie (lateral force, yaw moment about its centre) with the unbalanced
+//    lateral force F_u = 4 Q h_d / (2 l0) of the cant deficiency h_d (positive outwards):
+//      sum_i C_i psi_i + Y_1 + Y_2 + F_u = 0
+//      sum_i l0 f11 S_i xi_x,i + a (C_1 psi_1 - C_2 psi_2) + a (Y_1 - Y_2) = 0                 (K3)
+//    (S_i, C_i = f22 S_i the secant creep stiffnesses of the two wheels of axle i, Y_i the flange
+//    forces on axle i, which vanish unless |y_i| = y_f, the flangeway clearance; a flange force
+//    can only push the axle away from the rail it touches). Solved by enumerating the flange
+//    contacts and iterating on the saturation.
+//
+// Limits of validity: steady curving of a rigid two-axle bogie; radii from about 150 m (small
+// angles, linear kinematics) to tangent track; tread contact (a flange contact enters only as the
+// lateral stop y_f, the creepages are those of the tread contact; in reality the flanging wheel
+// has a second, flange, contact with a large rolling radius); conical tread unless Delta_r(y) is
+// given; no gravitational stiffness, no load transfer, no spin in the force balance, no
+// suspension yaw stiffness, no traction or braking. It gives magnitudes and signs, not a
+// multibody simulation.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <limits>
+
+#include "noise/loop.hpp"
+
+namespace rollnoise::noise {
+
+struct BogieCurvingInput {
+  double radius = 0.0;           ///< R (m); +infinity for tangent track
+  double speed = 0.0;            ///< V (m/s); only for the yaw rate (informational)
+  double cant_deficiency = 0.0;  ///< h_d (m), positive when the unbalanced force points outwards
+  double wheelbase = 2.5;        ///< 2a (m)
+  double wheel_radius = 0.46;    ///< r0 (m), nominal rolling radius
+  double track_gauge = 1.435;    ///< (m)
+  /// l0 (m), half the distance between the nominal contact points; 0: (gauge + 0.065)/2 = 0.75 m
+  /// (running circles 32.5 mm outside the gauge points).
+  double contact_half_distance = 0.0;
+  double conicity = 0.15;          ///< lambda of the conical tread (used when no Delta_r(y) given)
+  /// Optional rolling-radius difference Delta_r(y) = r_outer - r_inner (m) of the wheelset at
+  /// lateral displacement y (m), e.g. from the profiles; odd in y.
+  std::function<double(double)> rolling_radius_difference;
+  /// Contact angle at the tread contact of the outer wheel (rad); NaN: atan(conicity).
+  double contact_angle = std::numeric_limits<double>::quiet_NaN();
+  double flange_clearance = 0.005;  ///< y_f (m): lateral play from the centred position
+  double wheel_load = 50e3;         ///< Q (N) per wheel
+  double friction = 0.3;            ///< mu
+  double f11 = 0.0;                 ///< Kalker's f11 = G c^2 C11 of one wheel (N), > 0
+  double f22 = 0.0;                 ///< f22 = G c^2 C22 (N), > 0
+  bool saturation = true;           ///< cubic creep-force saturation (false: linear creep law)
+
+  double half_distance() const;
+  void validate() const;
+};
+
+struct AxleCurving {
+  double lateral = 0.0;       ///< y_i (m), towards the outer rail
+  double attack_angle = 0.0;  ///< psi_i (rad), (K1)
+  double flange_force = 0.0;  ///< Y_i (N): lateral force of a flange on the axle (< 0 outer flange)
+  int flange = 0;             ///< 0 none, +1 outer flange, -1 inner flange
+  double xi_x_outer = 0.0;    ///< xi_x of the outer wheel (K2)
+};
+
+struct CurvingEstimate {
+  AxleCurving leading, trailing;
+  double bogie_yaw = 0.0;         ///< theta (rad)
+  double unbalanced_force = 0.0;  ///< F_u (N) per bogie
+  double yaw_rate = 0.0;          ///< -V/R (rad/s)
+  // The leading outer wheel's tread contact, contact frame of loop.hpp:
+  double xi_x = 0.0, xi_y = 0.0, phi = 0.0;  ///< creepages (-, -, rad/m)
+  double rolling_radius = 0.0;               ///< r_c (m)
+  double contact_angle = 0.0;                ///< gamma (rad)
+  double contact_shift_on_wheel = 0.0;       ///< lateral shift of the contact on the wheel (m): -y1
+  int iterations = 0;
+
+  /// (xi_x, xi_y, phi) of the leading outer wheel.
+  Eigen::Vector3d creepage() const { return {xi_x, xi_y, phi}; }
+  /// The loop's contact position: wheel shift -y1, rail offset 0 (conical tread on the rail crown),
+  /// the contact angle.
+  ContactPosition position() const { return {contact_shift_on_wheel, 0.0, contact_angle}; }
+};
+
+/// The estimate (K1)-(K3). InputError naming the field for bad input; NumericalError if the
+/// saturation iteration does not converge.
+CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in);
+
+}  // namespace rollnoise::noise

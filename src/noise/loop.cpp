@@ -1,0 +1,187 @@
+#include "noise/loop.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace rollnoise::noise {
+namespace {
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d) {
+  Eigen::Matrix3d S;
+  S << 0.0, -d.z(), d.y(),  //
+      d.z(), 0.0, -d.x(),   //
+      -d.y(), d.x(), 0.0;
+  return S;
+}
+
+void check_frequency(double f) {
+  if (!(f > 0.0) || !std::isfinite(f))
+    throw InputError("frequency", "the noise loop needs positive frequencies");
+}
+
+}  // namespace
+
+Receptance6 embed(const Receptance4& a) {
+  Receptance6 out = Receptance6::Zero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) out(kSixOfFour[i], kSixOfFour[j]) = a(i, j);
+  return out;
+}
+
+Receptance4 reduce(const Receptance6& a) {
+  Receptance4 out;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) out(i, j) = a(kSixOfFour[i], kSixOfFour[j]);
+  return out;
+}
+
+Receptance6 move_point(const Receptance6& a, const Eigen::Vector3d& d) {
+  // u' = u + th x d = u - d x th,  th' = th.
+  Eigen::Matrix<double, 6, 6> L = Eigen::Matrix<double, 6, 6>::Identity();
+  L.topRightCorner<3, 3>() = -cross_matrix(d);
+  const Eigen::Matrix<cdouble, 6, 6> Lc = L.cast<cdouble>();
+  return Lc * a * Lc.transpose();
+}
+
+Eigen::Matrix<double, 6, 4> contact_frame(double gamma) {
+  const double s = std::sin(gamma), c = std::cos(gamma);
+  Eigen::Matrix<double, 6, 4> T = Eigen::Matrix<double, 6, 4>::Zero();
+  T(1, 0) = -s;  // n = (0, -sin g, cos g)
+  T(2, 0) = c;
+  T(0, 1) = 1.0;  // t_x = (1, 0, 0)
+  T(1, 2) = c;    // t_y = (0, cos g, sin g)
+  T(2, 2) = s;
+  T(4, 3) = -s;  // spin about n
+  T(5, 3) = c;
+  return T;
+}
+
+Receptance4 to_contact_frame(const Receptance6& a, double gamma) {
+  const Eigen::Matrix<cdouble, 6, 4> T = contact_frame(gamma).cast<cdouble>();
+  return T.transpose() * a * T;
+}
+
+Receptance6 wheelset_centre_receptance(const dynamics::RigidWheelset& w, double frequency) {
+  check_frequency(frequency);
+  const double omega = dynamics::angular(frequency);
+  Receptance6 a = Receptance6::Zero();
+  const double inv[6] = {1.0 / w.mass,         1.0 / w.mass,         1.0 / w.mass,
+                         1.0 / w.roll_inertia, 1.0 / w.spin_inertia, 1.0 / w.yaw_inertia};
+  for (int i = 0; i < 6; ++i) a(i, i) = -inv[i] / (omega * omega);  // free mass: -1/(m omega^2)
+  return a;
+}
+
+Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency,
+                              double shift_y) {
+  const dynamics::RigidWheelset& w = wheel.wheelset();
+  const Receptance6 rigid = move_point(wheelset_centre_receptance(w, frequency),
+                                       Eigen::Vector3d(0.0, w.contact_offset_y + shift_y,
+                                                       -w.wheel_radius));
+  Receptance6 modal = embed(wheel.modal_receptance(frequency));
+  if (shift_y != 0.0) modal = move_point(modal, Eigen::Vector3d(0.0, shift_y, 0.0));
+  return rigid + modal;
+}
+
+Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y) {
+  check_frequency(frequency);
+  Receptance6 a = embed(rail.receptance(frequency));
+  if (offset_y != 0.0) a = move_point(a, Eigen::Vector3d(0.0, offset_y, 0.0));
+  return a;
+}
+
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
+                                             const dynamics::RailModel& rail,
+                                             const ContactPosition& position,
+                                             const std::vector<double>& frequencies) {
+  StructuralReceptances s;
+  s.frequency = frequencies;
+  s.position = position;
+  for (double f : frequencies) {
+    s.wheel.push_back(wheel_receptance6(wheel, f, position.wheel_shift_y));
+    s.rail.push_back(rail_receptance6(rail, f, position.rail_offset_y));
+    s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
+    s.rail_contact.push_back(to_contact_frame(s.rail.back(), position.contact_angle));
+  }
+  return s;
+}
+
+StructuralReceptances structural_receptances(const std::vector<double>& frequencies,
+                                             const std::vector<Receptance4>& wheel,
+                                             const std::vector<Receptance4>& rail,
+                                             double contact_angle) {
+  if (wheel.size() != frequencies.size() || rail.size() != frequencies.size())
+    throw InputError("receptance", "one wheel and one rail receptance per frequency are needed");
+  StructuralReceptances s;
+  s.frequency = frequencies;
+  s.position.contact_angle = contact_angle;
+  for (std::size_t k = 0; k < frequencies.size(); ++k) {
+    check_frequency(frequencies[k]);
+    s.wheel.push_back(embed(wheel[k]));
+    s.rail.push_back(embed(rail[k]));
+    s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), contact_angle));
+    s.rail_contact.push_back(to_contact_frame(s.rail.back(), contact_angle));
+  }
+  return s;
+}
+
+Vector4c solve_contact_forces(const Receptance4& wheel, const Receptance4& rail,
+                              const Receptance4& contact, const LoopOptions& options) {
+  Vector4c F = Vector4c::Zero();
+  if (options.coupling == Coupling::kVerticalOnly) {
+    // The classic vertical loop: Fz = -r / (alpha_w + alpha_r + alpha_c)_zz.
+    F(0) = -options.roughness / (wheel(0, 0) + rail(0, 0) + contact(0, 0));
+    return F;
+  }
+  const Receptance4 A = wheel + rail + contact;
+  // Diagonal equilibration D A D (D_i = |A_ii|^{-1/2}): the entries mix m/N, rad/N and
+  // rad/(N m) over several decades; the scaled system is solved by a pivoted LU.
+  Eigen::Vector4d d;
+  for (int i = 0; i < 4; ++i) {
+    const double m = std::abs(A(i, i));
+    d(i) = m > 0.0 && std::isfinite(m) ? 1.0 / std::sqrt(m) : 1.0;
+  }
+  const Receptance4 As = d.cast<cdouble>().asDiagonal() * A * d.cast<cdouble>().asDiagonal();
+  Vector4c rhs = Vector4c::Zero();
+  rhs(0) = -options.roughness * d(0);
+  const Eigen::FullPivLU<Receptance4> lu(As);
+  if (!lu.isInvertible() || !As.allFinite()) {
+    std::ostringstream s;
+    s << "noise loop: the total receptance matrix is singular or not finite:\n" << A;
+    throw NumericalError(s.str());
+  }
+  F = d.cast<cdouble>().asDiagonal() * lu.solve(rhs);
+  return F;
+}
+
+LoopResult solve_loop(const StructuralReceptances& s, const std::vector<Receptance4>& contact,
+                      const LoopOptions& options) {
+  const std::size_t n = s.frequency.size();
+  if (contact.size() != n)
+    throw InputError("frequency", "noise loop: one contact receptance per frequency is needed");
+  const Eigen::Matrix<cdouble, 6, 4> T = contact_frame(s.position.contact_angle).cast<cdouble>();
+  LoopResult r;
+  r.frequency = s.frequency;
+  r.force.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vector4c F = solve_contact_forces(s.wheel_contact[k], s.rail_contact[k], contact[k], options);
+    r.force.push_back(F);
+    if (!options.velocities) continue;
+    const cdouble iw(0.0, dynamics::angular(s.frequency[k]));
+    const Eigen::Matrix<cdouble, 6, 1> load = T * F;  // global force and moment on the wheel
+    const Eigen::Matrix<cdouble, 6, 1> vw = iw * (s.wheel[k] * load);
+    const Eigen::Matrix<cdouble, 6, 1> vr = iw * (s.rail[k] * (-load));
+    Vector4c w4, r4;
+    for (int i = 0; i < 4; ++i) {
+      w4(i) = vw(kSixOfFour[i]);
+      r4(i) = vr(kSixOfFour[i]);
+    }
+    r.wheel_velocity.push_back(w4);
+    r.rail_velocity.push_back(r4);
+  }
+  return r;
+}
+
+}  // namespace rollnoise::noise

@@ -1,0 +1,138 @@
+// The closed rolling-noise loop per frequency (../shared/DESIGN.md Sec. 4; docs/noise_loop.md).
+//
+// Unknowns: the contact force variation on the wheel in the contact frame, F = (Fz, Fx, Fy, Mz)
+// (normal, longitudinal, lateral, spin moment; with a contact angle gamma the frame is the tilted
+// contact frame, see below). The wheel's contact point moves by u_w = alpha_w F, the rail's by
+// u_r = alpha_r (-F) (the rail carries -F), the contact deforms by Eq. (C1) of contact_receptance.hpp,
+// e = u_w - u_r = -alpha_c F - r e_z. Hence
+//
+//   (alpha_w + alpha_r + alpha_c) F = -r e_z                                                 (L1)
+//
+// with r the combined (effective) roughness, taken positive for a *depression* of the running
+// surfaces (a dip opens the undeformed gap by r; a bump of height h is r = -h). Only |F/r| enters
+// band levels, so this sign is a phase convention (the one of DESIGN.md Sec. 4).
+// Outputs: F per unit roughness (N/m, N m/m), and the velocities of the wheel's and the rail's
+// contact points, v_w = i omega alpha_w F and v_r = i omega alpha_r (-F), in the global frame
+// (z, x, y, rot z) (m/s and rad/s per m of roughness).
+//
+// Geometry (docs/noise_loop.md Sec. 4). The structures are handled as 6x6 receptances at a point,
+// order (x, y, z, rot x, rot y, rot z) in the global frame (x forward, y lateral, z up), so that
+//  * a lateral shift of the contact point is a rigid lever arm (exact for the rigid wheelset,
+//    whose receptance is rebuilt at the contact point from its centre; for the wheel's modal part
+//    and the rail, which are only known at their reference point in the 4 contact directions, the
+//    missing rotations about x and y are taken as zero - see docs/noise_loop.md), and
+//  * a contact angle gamma (rotation of the contact frame about x; gamma > 0 turns the normal
+//    towards -y, e.g. towards the track centre for a wheel at +y) projects both onto the contact
+//    frame n = (0, -sin g, cos g), t_x = (1, 0, 0), t_y = (0, cos g, sin g), spin about n.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamics/receptance.hpp"
+#include "dynamics/track.hpp"
+#include "dynamics/wheel.hpp"
+
+namespace rollnoise::noise {
+
+using dynamics::cdouble;
+using dynamics::Receptance4;
+
+/// A receptance at a point in 6 degrees of freedom, order (x, y, z, rot x, rot y, rot z).
+using Receptance6 = Eigen::Matrix<cdouble, 6, 6>;
+using Vector4c = Eigen::Matrix<cdouble, 4, 1>;
+
+/// Index in a Receptance6 of each Receptance4 entry (z, x, y, rot z).
+constexpr int kSixOfFour[4] = {2, 0, 1, 5};
+
+/// The 4x4 (z, x, y, rot z) receptance as a 6x6 with zero rows and columns for rot x, rot y.
+Receptance6 embed(const Receptance4& a);
+
+/// The (z, x, y, rot z) rows and columns of a 6x6 receptance.
+Receptance4 reduce(const Receptance6& a);
+
+/// Rigid lever arm: the receptance at P + d of a point rigidly attached to P,
+///   [u'; th'] = L [u; th],  L = [[I, -S(d)], [0, I]],  S(d) v = d x v,   alpha' = L alpha L^T
+/// (a force F at P + d is the force F plus the moment d x F at P). Reciprocity is preserved.
+Receptance6 move_point(const Receptance6& a, const Eigen::Vector3d& d);
+
+/// Columns: the contact directions (n, t_x, t_y, spin about n) in the global 6-dof order.
+Eigen::Matrix<double, 6, 4> contact_frame(double contact_angle);
+
+/// T^T alpha T: the 4x4 receptance in the contact frame (n, x, y, rot n).
+Receptance4 to_contact_frame(const Receptance6& a, double contact_angle);
+
+/// Position of the contact point used by the loop.
+struct ContactPosition {
+  /// Lateral shift (m) of the contact on the wheel from the wheel model's reference point (the
+  /// point (0, y_c, -R) of dynamics::RigidWheelset, where the mode shapes are given); negative
+  /// towards the flange for a wheel at +y.
+  double wheel_shift_y = 0.0;
+  /// Lateral offset (m) of the contact on the rail head from the rail's centre line (where
+  /// dynamics::RailModel gives its receptance).
+  double rail_offset_y = 0.0;
+  /// Contact angle gamma (rad), see above.
+  double contact_angle = 0.0;
+};
+
+/// The rigid wheelset's 6x6 receptance at its centre, -(1/omega^2) diag(1/M, 1/M, 1/M, 1/I_xx,
+/// 1/I_yy, 1/I_zz).
+Receptance6 wheelset_centre_receptance(const dynamics::RigidWheelset& w, double frequency);
+
+/// The wheel at the shifted contact point: the rigid wheelset moved from its centre to
+/// (0, y_c + shift, -R) (exact), plus the modal part moved by (0, shift, 0) with zero modal
+/// rotations about x and y (approximate, see docs/noise_loop.md).
+Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y);
+
+/// The rail at the contact point offset laterally from the centre line (torsion not modelled).
+Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y);
+
+/// Wheel and rail receptances precomputed at a list of frequencies for one contact position:
+/// compute once, then run the loop for as many contact models and roughness spectra as needed.
+struct StructuralReceptances {
+  std::vector<double> frequency;        ///< Hz
+  ContactPosition position;
+  std::vector<Receptance6> wheel, rail;  ///< global 6x6 at the contact point
+  std::vector<Receptance4> wheel_contact, rail_contact;  ///< the same in the contact frame
+};
+
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
+                                             const dynamics::RailModel& rail,
+                                             const ContactPosition& position,
+                                             const std::vector<double>& frequencies);
+
+/// From 4x4 (z, x, y, rot z) receptances at the contact point, e.g. read from files (no lever
+/// arm: the shifts in `position` must be zero; the contact angle is applied).
+StructuralReceptances structural_receptances(const std::vector<double>& frequencies,
+                                             const std::vector<Receptance4>& wheel,
+                                             const std::vector<Receptance4>& rail,
+                                             double contact_angle = 0.0);
+
+enum class Coupling {
+  kFull,          ///< the 4x4 system (L1)
+  kVerticalOnly,  ///< normal direction alone: Fz = -r / (alpha_w + alpha_r + alpha_c)_zz
+};
+
+struct LoopOptions {
+  Coupling coupling = Coupling::kFull;
+  cdouble roughness = 1.0;  ///< r in (L1) (m); 1 gives transfer functions per unit roughness
+  bool velocities = true;   ///< also compute wheel and rail velocities
+};
+
+struct LoopResult {
+  std::vector<double> frequency;                ///< Hz
+  std::vector<Vector4c> force;                  ///< Fz, Fx, Fy, Mz on the wheel, contact frame
+  std::vector<Vector4c> wheel_velocity;         ///< global z, x, y, rot z (m/s, rad/s)
+  std::vector<Vector4c> rail_velocity;          ///< global z, x, y, rot z (m/s, rad/s)
+};
+
+/// Solves (L1) at every frequency of `structures` with the contact receptances `contact` (one per
+/// frequency, in the contact frame; for Coupling::kVerticalOnly only their (0, 0) entry is read).
+LoopResult solve_loop(const StructuralReceptances& structures,
+                      const std::vector<Receptance4>& contact, const LoopOptions& options = {});
+
+/// (L1) at one frequency from contact-frame 4x4 receptances; returns F.
+Vector4c solve_contact_forces(const Receptance4& wheel, const Receptance4& rail,
+                              const Receptance4& contact, const LoopOptions& options = {});
+
+}  // namespace rollnoise::noise
