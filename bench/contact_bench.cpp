@@ -101,4 +101,4 @@ BENCHMARK(TransientTenPeriods1kHz)->Args({34, 25})->Args({68, 50})->Unit(benchma
 
 }  // namespace
 
-BENCHMARK_MAIN();
+
