@@ -174,6 +174,49 @@ TEST(TransientCommand, DurationShorterThanOneStepIsAnInputError) {
   EXPECT_NE(r.output.find("transient.duration"), std::string::npos) << r.output;
 }
 
+TEST(CreepCommand, WritesComplexCoefficientsAndCsvAndRejectsFrequenciesAboveNyquist) {
+  const fs::path dir = temp_dir();
+  const fs::path out = dir / "creep.h5", csv = dir / "creep.csv";
+  const Invocation r = run("creep " + paper_case() + " --set grid.nx=20 --set grid.ny=15 "
+                           "--set 'frequency.list=[0.0, 500.0, 1000.0]' -o " + out.string() + " --csv " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/creep/frequency"), "Hz");
+  EXPECT_NE(read_units(f, "/creep/f").find("rows Fx"), std::string::npos);
+  H5Fclose(f);
+  std::ifstream in(csv);
+  std::string line;
+  int rows = 0;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') ++rows;
+  EXPECT_EQ(rows, 4);  // header + 3 frequencies
+  const Invocation bad = run("creep " + paper_case() + " --set grid.nx=20 --set grid.ny=15 "
+                             "--set 'frequency.list=[1000.0, 40000.0]' -o " + (dir / "bad.h5").string());
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("Nyquist"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("frequency.list"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "bad.h5"));
+}
+
+TEST(ValidateCommand, LinearModelTracksTheUnsteadySolverAtTheMeanState) {
+  const fs::path out = temp_dir() / "validate.h5";
+  const Invocation r = run("validate " + paper_case() + " -q --set grid.nx=20 --set grid.ny=15 "
+                           "--set 'excitation.amplitude=[5e-5, 5e-5, 0.0027]' --set transient.duration=0.004 -o " +
+                           out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  std::array<double, 3> rms;
+  const hid_t set = H5Dopen2(f, "/validate/errors/rms_relative", H5P_DEFAULT);
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rms.data());
+  H5Dclose(set);
+  EXPECT_NE(read_units(f, "/validate/spectrum/frequency"), "(missing)");
+  H5Fclose(f);
+  EXPECT_LT(rms[0], 0.02);
+  EXPECT_LT(rms[1], 0.02);
+}
+
 TEST(Program, KeysListsTheSchemaWithDefaults) {
   const Invocation r = run("keys");
   EXPECT_EQ(r.status, 0);

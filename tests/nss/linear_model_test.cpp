@@ -237,3 +237,23 @@ TEST(LinearModel, Table1MagnitudesOfF11AndF22WithinTwentyPercentOfThePaper) {
   EXPECT_NEAR(std::abs(f(0, 0)), std::abs(p11), 0.2 * std::abs(p11));
   EXPECT_NEAR(std::abs(f(1, 1)), std::abs(p22), 0.2 * std::abs(p22));
 }
+
+TEST(LinearModel, EveryMeanStateFromFullAdhesionToNearFullSlidingGivesFinitePassiveCoefficients) {
+  // S5's force-creepage curve: 538 adhesion elements at 0, 25 at 0.0045, none at 0.006.
+  for (double xi : {0.0, 1e-8, 0.0045, 0.006}) {
+    const auto m = model_at({xi, 0, 0});
+    const std::vector<double> freqs = {0.0, 300.0, 3000.0, m.nyquist_frequency()};
+    const auto fast = m.creep_coefficients(freqs);
+    for (size_t i = 0; i < freqs.size(); ++i) {
+      ASSERT_TRUE(fast[i].allFinite()) << "xi = " << xi;
+      const auto direct = m.creep_coefficients_direct(freqs[i]);
+      EXPECT_LT((fast[i] - direct).norm(), 1e-9 * direct.norm()) << "xi = " << xi << ", " << freqs[i] << " Hz";
+      // the contact dissipates: the creep force is never in phase with the creepage rate reversal
+      EXPECT_GE(fast[i](0, 0).real(), -1e-9 * std::abs(fast[i](0, 0))) << "xi = " << xi;
+      EXPECT_GE(fast[i](1, 1).real(), -1e-9 * std::abs(fast[i](1, 1))) << "xi = " << xi;
+    }
+    std::printf("xi = %g: %d adhesion, %d slip; f11(0) = %.4g N, f11(3 kHz) = %.4g %+.4gi N\n", xi,
+                m.adhesion_elements(), m.slip_elements(), fast[0](0, 0).real(), fast[2](0, 0).real(),
+                fast[2](0, 0).imag());
+  }
+}
