@@ -35,13 +35,17 @@
 //    (S_i, C_i = f22 S_i the secant creep stiffnesses of the two wheels of axle i, Y_i the flange
 //    forces on axle i, which vanish unless |y_i| = y_f, the flangeway clearance; a flange force
 //    can only push the axle away from the rail it touches). Solved by enumerating the flange
-//    contacts and iterating on the saturation.
+//    contacts (fewest first; for each, the lateral equation fixes the flange force or the bogie
+//    yaw and the yaw equation is one scalar equation in the free displacement, solved by
+//    bisection) and a relaxed fixed-point iteration on the saturation. Where a tabulated
+//    Delta_r(y) jumps (the contact jumping across the profile), the axle may settle on the jump:
+//    a two-point contact whose effective rolling-radius difference lies within the jump.
 //
 // Limits of validity: steady curving of a rigid two-axle bogie; radii from about 150 m (small
 // angles, linear kinematics) to tangent track; tread contact (a flange contact enters only as the
 // lateral stop y_f, the creepages are those of the tread contact; in reality the flanging wheel
 // has a second, flange, contact with a large rolling radius); conical tread unless Delta_r(y) is
-// given; no gravitational stiffness, no load transfer, no spin in the force balance, no
+// given (or profiles, ProfileCurvingTable); no gravitational stiffness, no load transfer, no spin in the force balance, no
 // suspension yaw stiffness, no traction or braking. It gives magnitudes and signs, not a
 // multibody simulation.
 #pragma once
@@ -49,10 +53,40 @@
 #include <Eigen/Core>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <vector>
 
 #include "noise/loop.hpp"
 
+namespace rollnoise::geometry {
+class WheelRailPair;
+}
+
 namespace rollnoise::noise {
+
+/// The contact geometry of a wheelset on its track against its lateral displacement, from the
+/// profiles (geometry::find_contact for both wheels): the outer wheel is the geometry layer's
+/// right wheel, and y = u (towards its flange) is the lateral displacement of curving.hpp.
+struct ProfileCurvingTable {
+  std::vector<double> lateral;                    ///< y = u (m), increasing
+  std::vector<double> rolling_radius_difference;  ///< r_outer - r_inner (m)
+  std::vector<double> contact_angle;              ///< of the outer wheel (rad)
+  std::vector<double> rolling_radius;             ///< of the outer wheel (m)
+  std::vector<double> wheel_position;  ///< wheel profile coordinate s of the contact (m), field side > 0
+  std::vector<double> rail_position;   ///< rail profile coordinate of the contact (m), field side > 0
+  /// The largest tabulated y before the outer wheel's contact jumps to the flange (contact angle
+  /// above the threshold of profile_curving_table): the flangeway clearance of the profiles (m).
+  double flange_clearance = 0.0;
+
+  /// Linear interpolation of a column at y (clamped to the table).
+  double at(const std::vector<double>& column, double y) const;
+};
+
+/// Tabulates the geometry for y in [-max_lateral, max_lateral] in steps of `step`; the flange
+/// clearance is the last y > 0 whose contact angle stays below `flange_angle` (rad).
+ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair,
+                                          double max_lateral = 0.010, double step = 0.1e-3,
+                                          double flange_angle = 0.6);
 
 struct BogieCurvingInput {
   double radius = 0.0;           ///< R (m); +infinity for tangent track
@@ -76,6 +110,11 @@ struct BogieCurvingInput {
   double f11 = 0.0;                 ///< Kalker's f11 = G c^2 C11 of one wheel (N), > 0
   double f22 = 0.0;                 ///< f22 = G c^2 C22 (N), > 0
   bool saturation = true;           ///< cubic creep-force saturation (false: linear creep law)
+  /// Optional profile geometry. When set it replaces the conical tread: Delta_r(y), the contact
+  /// angle, the rolling radius and the contact positions on wheel and rail come from the table,
+  /// and the flange clearance is the table's (rolling_radius_difference, contact_angle and
+  /// flange_clearance above are ignored).
+  std::shared_ptr<const ProfileCurvingTable> profiles;
 
   double half_distance() const;
   void validate() const;
@@ -98,14 +137,21 @@ struct CurvingEstimate {
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;  ///< creepages (-, -, rad/m)
   double rolling_radius = 0.0;               ///< r_c (m)
   double contact_angle = 0.0;                ///< gamma (rad)
-  double contact_shift_on_wheel = 0.0;       ///< lateral shift of the contact on the wheel (m): -y1
+  /// Lateral position of the contact on the wheel relative to the wheel model's reference point
+  /// (the nominal running circle) (m): -y1 for the conical tread, the profile coordinate s of the
+  /// contact with profiles.
+  double contact_shift_on_wheel = 0.0;
+  /// Lateral position of the contact on the rail head from the rail's centre line (m): 0 for the
+  /// conical tread, the rail profile coordinate with profiles.
+  double rail_contact_offset = 0.0;
   int iterations = 0;
 
   /// (xi_x, xi_y, phi) of the leading outer wheel.
   Eigen::Vector3d creepage() const { return {xi_x, xi_y, phi}; }
-  /// The loop's contact position: wheel shift -y1, rail offset 0 (conical tread on the rail crown),
-  /// the contact angle.
-  ContactPosition position() const { return {contact_shift_on_wheel, 0.0, contact_angle}; }
+  /// The loop's contact position (wheel shift, rail offset, contact angle).
+  ContactPosition position() const {
+    return {contact_shift_on_wheel, rail_contact_offset, contact_angle};
+  }
 };
 
 /// The estimate (K1)-(K3). InputError naming the field for bad input; NumericalError if the

@@ -6,8 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 #include "core/errors.hpp"
+#include "geometry/profile.hpp"
+#include "geometry/wheel_rail.hpp"
 #include "noise_fixture.hpp"
 
 using namespace noise_test;
@@ -110,4 +113,37 @@ TEST(Curving, BadInputNamesTheKey) {
   } catch (const rollnoise::InputError& e) {
     EXPECT_EQ(e.key(), "curving.f22");
   }
+}
+
+// The S1002 wheel on the UIC60 rail (1:40, 1435 mm) as the profile table: the centred wheelset has
+// no rolling-radius difference and a tread contact; the contact jumps to the flange within
+// 5-8 mm; in a 300 m curve the leading axle runs at that clearance and the loop's contact position
+// is the table's there.
+TEST(Curving, ProfileTableFromS1002OnUic60) {
+  namespace rg = rollnoise::geometry;
+  const rg::WheelRailPair pair(rg::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
+                               rg::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
+  auto table = std::make_shared<rn::ProfileCurvingTable>(rn::profile_curving_table(pair, 0.01, 0.5e-3));
+  const std::size_t centre = table->lateral.size() / 2;
+  EXPECT_EQ(table->lateral[centre], 0.0);
+  EXPECT_NEAR(table->rolling_radius_difference[centre], 0.0, 1e-9);
+  EXPECT_LT(table->contact_angle[centre], 0.1);
+  EXPECT_GT(table->flange_clearance, 5e-3);
+  EXPECT_LT(table->flange_clearance, 8e-3);
+  rn::BogieCurvingInput in = bogie(300.0, 0.05);
+  in.profiles = table;
+  const rn::CurvingEstimate e = rn::estimate_bogie_curving(in);
+  std::printf("S1002/UIC60: flange clearance %.2f mm; R = 300 m, h_d = 50 mm: y1 %.2f mm, psi1 "
+              "%.2f mrad, xi = (%.2e, %.2e, %.3f 1/m), contact angle %.3f rad, on the wheel at "
+              "s = %.1f mm, on the rail at %.1f mm\n",
+              1e3 * table->flange_clearance, 1e3 * e.leading.lateral, 1e3 * e.leading.attack_angle,
+              e.xi_x, e.xi_y, e.phi, e.contact_angle, 1e3 * e.contact_shift_on_wheel,
+              1e3 * e.rail_contact_offset);
+  EXPECT_EQ(e.leading.flange, 1);
+  EXPECT_NEAR(e.leading.lateral, table->flange_clearance, 1e-12);
+  EXPECT_NEAR(e.contact_angle, table->at(table->contact_angle, table->flange_clearance), 1e-12);
+  EXPECT_NEAR(e.position().wheel_shift_y, table->at(table->wheel_position, e.leading.lateral), 1e-12);
+  EXPECT_NEAR(e.position().rail_offset_y, table->at(table->rail_position, e.leading.lateral), 1e-12);
+  EXPECT_LT(e.xi_y, 0.0);
+  EXPECT_LT(e.phi, 0.0);
 }
