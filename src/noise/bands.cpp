@@ -87,8 +87,8 @@ std::vector<double> covered_centres(const std::vector<double>& f, int min_points
     const double c = 1000.0 * std::pow(10.0, n / 10.0);
     const auto e = third_octave_edges(c);
     if (e[0] < lo * (1 - 1e-12) || e[1] > hi * (1 + 1e-12)) continue;
-    const auto count = std::count_if(f.begin(), f.end(),
-                                     [&](double x) { return x >= e[0] && x < e[1]; });
+    const auto count =
+        std::count_if(f.begin(), f.end(), [&](double x) { return x >= e[0] && x < e[1]; });
     if (count >= min_points) out.push_back(c);
   }
   return out;
@@ -117,8 +117,8 @@ std::vector<double> transfer_band_levels(const std::vector<double>& f,
   for (std::size_t b = 0; b < centres.size(); ++b) {
     const double mean = weighted_mean(f, h2, centres[b], nullptr);
     const double ratio = mean * kRoughnessReference * kRoughnessReference / (reference * reference);
-    out.push_back(roughness_levels[b] +
-                  (ratio > 0.0 ? 10.0 * std::log10(ratio) : -std::numeric_limits<double>::infinity()));
+    out.push_back(roughness_levels[b] + (ratio > 0.0 ? 10.0 * std::log10(ratio)
+                                                     : -std::numeric_limits<double>::infinity()));
   }
   return out;
 }
@@ -156,6 +156,11 @@ BandLevels band_levels(const LoopResult& r, const std::vector<double>& centres,
         r.frequency.begin(), r.frequency.end(), [&](double x) { return x >= e[0] && x < e[1]; })));
   }
   return out;
+}
+
+BandLevels band_levels(const LoopResult& r, const std::vector<double>& centres,
+                       const ContactRoughness& roughness) {
+  return band_levels(r, centres, roughness.levels(centres));
 }
 
 }  // namespace rollnoise::noise

@@ -2,26 +2,28 @@
 //
 // The effective roughness in the band b has the mean square r_b^2 = r0^2 10^{L_r(b)/10}
 // (r0 = 1 um, L_r from ContactRoughness::level), spread evenly over the band (the flat PSD of
-// ContactRoughness::psd, Eq. R7 of docs/models.md). A transfer function H(f) = X/r of the loop (N/m,
-// m/s per m, ...) then gives the band mean square of X
+// ContactRoughness::psd, Eq. R7 of docs/models.md). A transfer function H(f) = X/r of the loop
+// (N/m, m/s per m, ...) then gives the band mean square of X
 //
-//   X_b^2 = Int_band |H|^2 S_r df = r_b^2 <|H|^2>_b,   <|H|^2>_b = (1/Delta f) Int_band |H(f)|^2 df,
+//   X_b^2 = Int_band |H|^2 S_r df = r_b^2 <|H|^2>_b,   <|H|^2>_b = (1/Delta f) Int_band |H(f)|^2
+//   df,
 //
 //   L_X(b) = L_r(b) + 10 log10( <|H|^2>_b r0^2 / X_ref^2 )                                   (B1)
 //
 // with X_ref = 1 N (forces), 1 N m (Mz), 1e-9 m/s (translational velocities) and 1e-9 rad/s
 // (rotational velocity about z). <|H|^2>_b, the *linear-frequency* mean over the band edges
-// f_c 10^{-1/20} ... f_c 10^{1/20}, is evaluated from the narrow-band samples inside the band by the
-// midpoint rule on cells: the samples split the band at the midpoints between neighbours and the
-// outer cells reach the band edges (equal weights, an exact midpoint rule, for band_frequencies()
-// grids). A band needs at least one sample; lightly damped resonances need many samples per band
-// (band_frequencies), otherwise the mean is only as good as the sampling.
+// f_c 10^{-1/20} ... f_c 10^{1/20}, is evaluated from the narrow-band samples inside the band by
+// the midpoint rule on cells: the samples split the band at the midpoints between neighbours and
+// the outer cells reach the band edges (equal weights, an exact midpoint rule, for
+// band_frequencies() grids). A band needs at least one sample; lightly damped resonances need many
+// samples per band (band_frequencies), otherwise the mean is only as good as the sampling.
 #pragma once
 
 #include <array>
 #include <vector>
 
 #include "noise/loop.hpp"
+#include "noise/roughness.hpp"
 
 namespace rollnoise::noise {
 
@@ -55,11 +57,11 @@ std::vector<double> transfer_band_levels(const std::vector<double>& f,
 
 /// All band levels of a loop result.
 struct BandLevels {
-  std::vector<double> centre;                           ///< Hz
-  std::vector<double> roughness_level;                  ///< dB re 1 um (effective)
-  std::vector<std::array<double, 4>> force_level;       ///< Fz, Fx, Fy (dB re 1 N), Mz (re 1 N m)
-  std::vector<std::array<std::array<double, 4>, 2>> velocity_level;  ///< [wheel, rail][z, x, y, rot z]
-                                                                      ///< dB re 1e-9 m/s, rad/s
+  std::vector<double> centre;                      ///< Hz
+  std::vector<double> roughness_level;             ///< dB re 1 um (effective)
+  std::vector<std::array<double, 4>> force_level;  ///< Fz, Fx, Fy (dB re 1 N), Mz (re 1 N m)
+  std::vector<std::array<std::array<double, 4>, 2>> velocity_level;  ///< [wheel, rail][z, x, y, rot
+                                                                     ///< z] dB re 1e-9 m/s, rad/s
   std::vector<int> samples;  ///< narrow-band samples in each band
 };
 
@@ -67,5 +69,9 @@ struct BandLevels {
 /// effective roughness levels in those bands (e.g. ContactRoughness::levels(centres)).
 BandLevels band_levels(const LoopResult& result, const std::vector<double>& centres,
                        const std::vector<double>& roughness_levels);
+
+/// The same with the effective roughness levels of `roughness` in those bands.
+BandLevels band_levels(const LoopResult& result, const std::vector<double>& centres,
+                       const ContactRoughness& roughness);
 
 }  // namespace rollnoise::noise

@@ -85,7 +85,7 @@ Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double G, doubl
   const double c = std::sqrt(a * b);
   Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
   K(0, 0) = K(1, 1) = 4.0 * G * c / (2.0 - nu);  // Mindlin, two identical bodies
-  K(2, 2) = 8.0 * G * c * c * c / 3.0;            // Lubkin, two identical bodies
+  K(2, 2) = 8.0 * G * c * c * c / 3.0;           // Lubkin, two identical bodies
   return K;
 }
 

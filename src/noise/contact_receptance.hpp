@@ -15,8 +15,8 @@
 //  * Normal: the linearised Hertz spring, alpha_c,zz = 1/k_H, k_H = dN/d(approach) = 3N/(2 delta)
 //    (contact::HertzContact::normal_stiffness(); Johnson 1985, Ch. 4).
 //  * Tangential and spin: a creepage variation is the relative velocity of the contact points over
-//    the rolling speed, xi~ = (xi_x, xi_y, phi)~ = i omega (e_x, e_y, e_rotz) / V. With the creep law
-//    F~t = -f(omega) xi~ (rows Fx, Fy, Mz; columns xi_x, xi_y, phi):
+//    the rolling speed, xi~ = (xi_x, xi_y, phi)~ = i omega (e_x, e_y, e_rotz) / V. With the creep
+//    law F~t = -f(omega) xi~ (rows Fx, Fy, Mz; columns xi_x, xi_y, phi):
 //
 //      F~t = -(i omega / V) f e_t   =>   e_t = -(V / (i omega)) f^{-1} F~t,
 //      alpha_c,t = (V / (i omega)) f(omega)^{-1}          (3x3 block for x, y, rot z)        (C2)
@@ -65,9 +65,9 @@ Receptance4 normal_contact_receptance(double normal_stiffness);
 CreepFunction steady_creep(const Eigen::Matrix3d& f);
 
 /// Tangential contact stiffness of an elliptic contact in full adhesion, diag(K_x, K_y, K_rot),
-/// approximated by the circular contact of radius c = sqrt(a b) (Mindlin; Johnson 1985, Sec. 7.2:
+/// approximated by the circular contact of radius c = sqrt(a b) (Mindlin; Johnson 1985, Ch. 7:
 /// compliance (2 - nu1)/(8 G1 a) + (2 - nu2)/(8 G2 a); Lubkin's torsion of the stuck circular
-/// contact, Johnson 1985, Sec. 7.3: M = (16/3) G1 a^3 beta1 per body). For two identical bodies
+/// contact, Johnson 1985, Ch. 7: M = (16/3) G1 a^3 beta1 per body). For two identical bodies
 /// with the combined G:  K_x = K_y = 4 G c / (2 - nu),  K_rot = 8 G c^3 / 3.  Approximate (the
 /// elliptic shape and the x-y difference are neglected).
 Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double shear_modulus, double nu);
@@ -75,7 +75,8 @@ Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double shear_mo
 /// A simple frequency-dependent creep law: the steady creep damper f_s/V in series with the
 /// tangential contact spring K,
 ///
-///   alpha_c,t = (V/(i omega)) f_s^{-1} + K^{-1}   <=>   f(omega) = (f_s^{-1} + (i omega / V) K^{-1})^{-1},
+///   alpha_c,t = (V/(i omega)) f_s^{-1} + K^{-1}   <=>   f(omega) = (f_s^{-1} + (i omega / V)
+///   K^{-1})^{-1},
 ///
 /// which tends to f_s as omega -> 0 and to (V/(i omega)) K (a spring, |f| ~ 1/omega, phase -90 deg)
 /// at high frequency; the corner lies near omega ~ V K / f_s, i.e. a few hundred Hz for a

@@ -34,7 +34,8 @@ struct State {
   double Y[2] = {0.0, 0.0};  // flange forces Y1, Y2
 };
 
-// Residuals of (K3) for given secant sums S_i of axle i, with (K1) and xi_x,i = l0/R - Delta_r/(2 r0):
+// Residuals of (K3) for given secant sums S_i of axle i, with (K1) and xi_x,i = l0/R - Delta_r/(2
+// r0):
 //   lateral = C1 psi1 + C2 psi2 + Y1 + Y2 + Fu,
 //   yaw     = sum_i l0 f11 S_i xi_x,i + a (C1 psi1 - C2 psi2) + a (Y1 - Y2).
 struct Residual {
@@ -193,8 +194,9 @@ ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair, d
     }
   }
   if (!(t.flange_clearance > 0.0))
-    throw InputError("curving.profiles",
-                     "profile table: the contact is on the flange already for the centred wheelset");
+    throw InputError(
+        "curving.profiles",
+        "profile table: the contact is on the flange already for the centred wheelset");
   return t;
 }
 
@@ -244,15 +246,8 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   g.delta_r = delta_r;
 
   // Flange-contact choices, fewest contacts first.
-  const std::array<std::array<int, 2>, 9> sets = {{{0, 0},
-                                                   {1, 0},
-                                                   {0, -1},
-                                                   {-1, 0},
-                                                   {0, 1},
-                                                   {1, -1},
-                                                   {1, 1},
-                                                   {-1, -1},
-                                                   {-1, 1}}};
+  const std::array<std::array<int, 2>, 9> sets = {
+      {{0, 0}, {1, 0}, {0, -1}, {-1, 0}, {0, 1}, {1, -1}, {1, 1}, {-1, -1}, {-1, 1}}};
   std::array<double, 4> s = {1.0, 1.0, 1.0, 1.0};  // secant factors: 1 outer, 1 inner, 2 o, 2 i
   State x;
   std::array<int, 2> active = {0, 0};

@@ -45,9 +45,9 @@
 // angles, linear kinematics) to tangent track; tread contact (a flange contact enters only as the
 // lateral stop y_f, the creepages are those of the tread contact; in reality the flanging wheel
 // has a second, flange, contact with a large rolling radius); conical tread unless Delta_r(y) is
-// given (or profiles, ProfileCurvingTable); no gravitational stiffness, no load transfer, no spin in the force balance, no
-// suspension yaw stiffness, no traction or braking. It gives magnitudes and signs, not a
-// multibody simulation.
+// given (or profiles, ProfileCurvingTable); no gravitational stiffness, no load transfer, no spin
+// in the force balance, no suspension yaw stiffness, no traction or braking. It gives magnitudes
+// and signs, not a multibody simulation.
 #pragma once
 
 #include <Eigen/Core>
@@ -72,8 +72,10 @@ struct ProfileCurvingTable {
   std::vector<double> rolling_radius_difference;  ///< r_outer - r_inner (m)
   std::vector<double> contact_angle;              ///< of the outer wheel (rad)
   std::vector<double> rolling_radius;             ///< of the outer wheel (m)
-  std::vector<double> wheel_position;  ///< wheel profile coordinate s of the contact (m), field side > 0
-  std::vector<double> rail_position;   ///< rail profile coordinate of the contact (m), field side > 0
+  std::vector<double>
+      wheel_position;  ///< wheel profile coordinate s of the contact (m), field side > 0
+  std::vector<double>
+      rail_position;  ///< rail profile coordinate of the contact (m), field side > 0
   /// The largest tabulated y before the outer wheel's contact jumps to the flange (contact angle
   /// above the threshold of profile_curving_table): the flangeway clearance of the profiles (m).
   double flange_clearance = 0.0;
@@ -98,7 +100,7 @@ struct BogieCurvingInput {
   /// l0 (m), half the distance between the nominal contact points; 0: (gauge + 0.065)/2 = 0.75 m
   /// (running circles 32.5 mm outside the gauge points).
   double contact_half_distance = 0.0;
-  double conicity = 0.15;          ///< lambda of the conical tread (used when no Delta_r(y) given)
+  double conicity = 0.15;  ///< lambda of the conical tread (used when no Delta_r(y) given)
   /// Optional rolling-radius difference Delta_r(y) = r_outer - r_inner (m) of the wheelset at
   /// lateral displacement y (m), e.g. from the profiles; odd in y.
   std::function<double(double)> rolling_radius_difference;

@@ -15,14 +15,15 @@
 //         [     0       -G c^3 C23    G c^4 C33   ]
 //
 // The coefficients C_ij(a/b, nu) are Kalker's table (Kalker, Three-Dimensional Elastic Bodies in
-// Rolling Contact, Kluwer 1990, Table E.3; first published in Kalker's thesis, Delft 1967), embedded
-// below as constants for a/b = 0.1 ... 1 and b/a = 0.9 ... 0.1, nu = 0, 0.25, 0.5. C11, C22 and C23
-// are identical to tests/data/kalker/kalker_linear_theory.csv (a test checks every entry). C33 is
-// not in that file: it is transcribed from the same table as reproduced in the textbooks (Johnson,
-// Contact Mechanics 1985, Table 8.1; Knothe & Stichel, Rail Vehicle Dynamics 2017; Iwnicki (ed.),
-// Handbook of Railway Vehicle Dynamics 2006, chapter on wheel-rail contact). The transcription could
-// not be compared with a printed copy here; a test checks C33 against the project's own CONTACT
-// solver in the full-adhesion limit (tests/noise/kalker_linear_test.cpp, within a few per cent).
+// Rolling Contact, Kluwer 1990, Table E.3; first published in Kalker's thesis, Delft 1967),
+// embedded below as constants for a/b = 0.1 ... 1 and b/a = 0.9 ... 0.1, nu = 0, 0.25, 0.5. C11,
+// C22 and C23 are identical to tests/data/kalker/kalker_linear_theory.csv (a test checks every
+// entry). C33 is not in that file: it is transcribed from the same table as reproduced in the
+// textbooks (Johnson, Contact Mechanics 1985, Ch. 8; Knothe & Stichel, Rail Vehicle Dynamics 2017;
+// Iwnicki (ed.), Handbook of Railway Vehicle Dynamics 2006, chapter on wheel-rail contact). The
+// transcription could not be compared with a printed copy here; a test checks C33 against the
+// project's own CONTACT solver in the full-adhesion limit (tests/noise/kalker_linear_test.cpp,
+// within a few per cent).
 //
 // Interpolation (the usual practice, see tests/data/kalker/README.md): linear in g = a/b for
 // a <= b and in g = b/a for a >= b (the two halves meet at the circle), and quadratic (Lagrange

@@ -74,12 +74,11 @@ Receptance6 wheelset_centre_receptance(const dynamics::RigidWheelset& w, double 
   return a;
 }
 
-Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency,
-                              double shift_y) {
+Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y) {
   const dynamics::RigidWheelset& w = wheel.wheelset();
-  const Receptance6 rigid = move_point(wheelset_centre_receptance(w, frequency),
-                                       Eigen::Vector3d(0.0, w.contact_offset_y + shift_y,
-                                                       -w.wheel_radius));
+  const Receptance6 rigid =
+      move_point(wheelset_centre_receptance(w, frequency),
+                 Eigen::Vector3d(0.0, w.contact_offset_y + shift_y, -w.wheel_radius));
   Receptance6 modal = embed(wheel.modal_receptance(frequency));
   if (shift_y != 0.0) modal = move_point(modal, Eigen::Vector3d(0.0, shift_y, 0.0));
   return rigid + modal;
@@ -166,7 +165,8 @@ LoopResult solve_loop(const StructuralReceptances& s, const std::vector<Receptan
   r.frequency = s.frequency;
   r.force.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const Vector4c F = solve_contact_forces(s.wheel_contact[k], s.rail_contact[k], contact[k], options);
+    const Vector4c F =
+        solve_contact_forces(s.wheel_contact[k], s.rail_contact[k], contact[k], options);
     r.force.push_back(F);
     if (!options.velocities) continue;
     const cdouble iw(0.0, dynamics::angular(s.frequency[k]));

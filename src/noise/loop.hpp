@@ -3,8 +3,8 @@
 // Unknowns: the contact force variation on the wheel in the contact frame, F = (Fz, Fx, Fy, Mz)
 // (normal, longitudinal, lateral, spin moment; with a contact angle gamma the frame is the tilted
 // contact frame, see below). The wheel's contact point moves by u_w = alpha_w F, the rail's by
-// u_r = alpha_r (-F) (the rail carries -F), the contact deforms by Eq. (C1) of contact_receptance.hpp,
-// e = u_w - u_r = -alpha_c F - r e_z. Hence
+// u_r = alpha_r (-F) (the rail carries -F), the contact deforms by Eq. (C1) of
+// contact_receptance.hpp, e = u_w - u_r = -alpha_c F - r e_z. Hence
 //
 //   (alpha_w + alpha_r + alpha_c) F = -r e_z                                                 (L1)
 //
@@ -90,9 +90,9 @@ Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, 
 /// Wheel and rail receptances precomputed at a list of frequencies for one contact position:
 /// compute once, then run the loop for as many contact models and roughness spectra as needed.
 struct StructuralReceptances {
-  std::vector<double> frequency;        ///< Hz
+  std::vector<double> frequency;  ///< Hz
   ContactPosition position;
-  std::vector<Receptance6> wheel, rail;  ///< global 6x6 at the contact point
+  std::vector<Receptance6> wheel, rail;                  ///< global 6x6 at the contact point
   std::vector<Receptance4> wheel_contact, rail_contact;  ///< the same in the contact frame
 };
 
@@ -120,10 +120,10 @@ struct LoopOptions {
 };
 
 struct LoopResult {
-  std::vector<double> frequency;                ///< Hz
-  std::vector<Vector4c> force;                  ///< Fz, Fx, Fy, Mz on the wheel, contact frame
-  std::vector<Vector4c> wheel_velocity;         ///< global z, x, y, rot z (m/s, rad/s)
-  std::vector<Vector4c> rail_velocity;          ///< global z, x, y, rot z (m/s, rad/s)
+  std::vector<double> frequency;         ///< Hz
+  std::vector<Vector4c> force;           ///< Fz, Fx, Fy, Mz on the wheel, contact frame
+  std::vector<Vector4c> wheel_velocity;  ///< global z, x, y, rot z (m/s, rad/s)
+  std::vector<Vector4c> rail_velocity;   ///< global z, x, y, rot z (m/s, rad/s)
 };
 
 /// Solves (L1) at every frequency of `structures` with the contact receptances `contact` (one per

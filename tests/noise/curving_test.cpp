@@ -22,7 +22,8 @@ rn::BogieCurvingInput bogie(double radius, double cant_deficiency = 0.0) {
   in.radius = radius;
   in.speed = kSpeed;
   in.cant_deficiency = cant_deficiency;
-  in.wheel_load = kN / 2;  // the paper's normal force is 10 t; here a 5 t wheel (same patch: approx.)
+  in.wheel_load =
+      kN / 2;  // the paper's normal force is 10 t; here a 5 t wheel (same patch: approx.)
   const Eigen::Matrix3d f = kalker();
   in.f11 = f(0, 0);
   in.f22 = f(1, 1);
@@ -61,14 +62,17 @@ TEST(Curving, FreeCurvingYawAndCreepagesScaleAsOneOverRadius) {
 // positive contact angle; in a sharp curve the leading axle runs against the outer rail (flange
 // force inwards), more so with more cant deficiency.
 TEST(Curving, SignConventionsAndFlangeContactInSharpCurves) {
-  std::printf("   R (m)  h_d (m)  flange  y1 (mm)  psi1 (mrad)  psi2 (mrad)  Y1 (kN)   xi_x      xi_y      phi (1/m)\n");
+  std::printf(
+      "   R (m)  h_d (m)  flange  y1 (mm)  psi1 (mrad)  psi2 (mrad)  Y1 (kN)   xi_x      xi_y      "
+      "phi (1/m)\n");
   double previous_flange_force = 0.0;
   for (double hd : {0.0, 0.05, 0.1}) {
     for (double R : {300.0, 500.0, 1000.0}) {
       const rn::CurvingEstimate e = rn::estimate_bogie_curving(bogie(R, hd));
       std::printf("  %6.0f  %6.2f  %6d  %7.2f  %10.3f  %10.3f  %8.2f  %+.2e %+.2e %+.4f\n", R, hd,
                   e.leading.flange, 1e3 * e.leading.lateral, 1e3 * e.leading.attack_angle,
-                  1e3 * e.trailing.attack_angle, 1e-3 * e.leading.flange_force, e.xi_x, e.xi_y, e.phi);
+                  1e3 * e.trailing.attack_angle, 1e-3 * e.leading.flange_force, e.xi_x, e.xi_y,
+                  e.phi);
       EXPECT_GT(e.leading.attack_angle, 0.0);
       EXPECT_LT(e.xi_y, 0.0);
       EXPECT_LT(e.trailing.attack_angle, e.leading.attack_angle);
@@ -123,7 +127,8 @@ TEST(Curving, ProfileTableFromS1002OnUic60) {
   namespace rg = rollnoise::geometry;
   const rg::WheelRailPair pair(rg::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
                                rg::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
-  auto table = std::make_shared<rn::ProfileCurvingTable>(rn::profile_curving_table(pair, 0.01, 0.5e-3));
+  auto table =
+      std::make_shared<rn::ProfileCurvingTable>(rn::profile_curving_table(pair, 0.01, 0.5e-3));
   const std::size_t centre = table->lateral.size() / 2;
   EXPECT_EQ(table->lateral[centre], 0.0);
   EXPECT_NEAR(table->rolling_radius_difference[centre], 0.0, 1e-9);
@@ -133,17 +138,19 @@ TEST(Curving, ProfileTableFromS1002OnUic60) {
   rn::BogieCurvingInput in = bogie(300.0, 0.05);
   in.profiles = table;
   const rn::CurvingEstimate e = rn::estimate_bogie_curving(in);
-  std::printf("S1002/UIC60: flange clearance %.2f mm; R = 300 m, h_d = 50 mm: y1 %.2f mm, psi1 "
-              "%.2f mrad, xi = (%.2e, %.2e, %.3f 1/m), contact angle %.3f rad, on the wheel at "
-              "s = %.1f mm, on the rail at %.1f mm\n",
-              1e3 * table->flange_clearance, 1e3 * e.leading.lateral, 1e3 * e.leading.attack_angle,
-              e.xi_x, e.xi_y, e.phi, e.contact_angle, 1e3 * e.contact_shift_on_wheel,
-              1e3 * e.rail_contact_offset);
+  std::printf(
+      "S1002/UIC60: flange clearance %.2f mm; R = 300 m, h_d = 50 mm: y1 %.2f mm, psi1 "
+      "%.2f mrad, xi = (%.2e, %.2e, %.3f 1/m), contact angle %.3f rad, on the wheel at "
+      "s = %.1f mm, on the rail at %.1f mm\n",
+      1e3 * table->flange_clearance, 1e3 * e.leading.lateral, 1e3 * e.leading.attack_angle, e.xi_x,
+      e.xi_y, e.phi, e.contact_angle, 1e3 * e.contact_shift_on_wheel, 1e3 * e.rail_contact_offset);
   EXPECT_EQ(e.leading.flange, 1);
   EXPECT_NEAR(e.leading.lateral, table->flange_clearance, 1e-12);
   EXPECT_NEAR(e.contact_angle, table->at(table->contact_angle, table->flange_clearance), 1e-12);
-  EXPECT_NEAR(e.position().wheel_shift_y, table->at(table->wheel_position, e.leading.lateral), 1e-12);
-  EXPECT_NEAR(e.position().rail_offset_y, table->at(table->rail_position, e.leading.lateral), 1e-12);
+  EXPECT_NEAR(e.position().wheel_shift_y, table->at(table->wheel_position, e.leading.lateral),
+              1e-12);
+  EXPECT_NEAR(e.position().rail_offset_y, table->at(table->rail_position, e.leading.lateral),
+              1e-12);
   EXPECT_LT(e.xi_y, 0.0);
   EXPECT_LT(e.phi, 0.0);
 }

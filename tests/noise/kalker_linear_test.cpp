@@ -83,7 +83,7 @@ TEST(KalkerTable, InterpolatesMonotonicallyAndContinuously) {
   auto get = [](const rn::KalkerCoefficients& c, int k) {
     return k == 0 ? c.C11 : k == 1 ? c.C22 : k == 2 ? c.C23 : c.C33;
   };
-  for (int j = 0; j < 3; ++j) {          // nu column
+  for (int j = 0; j < 3; ++j) {            // nu column
     for (int i = 0; i + 1 < n / 3; ++i) {  // aspect rows i, i+1
       const auto& lo = t[3 * i + j];
       const auto& hi = t[3 * (i + 1) + j];
@@ -109,7 +109,9 @@ TEST(KalkerTable, InterpolatesMonotonicallyAndContinuously) {
       const double nu = 0.5 * s / 50.0;
       const auto c = rn::kalker_coefficients(ratio, nu);
       for (int k = 0; k < 3; ++k) {  // C11, C22, C23 grow with nu in the table; C33 may not
-        if (s > 0) EXPECT_GE(get(c, k), prev[k] - 1e-12) << "k " << k << " nu " << nu;
+        if (s > 0) {
+          EXPECT_GE(get(c, k), prev[k] - 1e-12) << "k " << k << " nu " << nu;
+        }
         prev[k] = get(c, k);
       }
     }
@@ -142,15 +144,17 @@ TEST(KalkerCreepMatrix, SignsAndScalingOfDesignSec2) {
   const Eigen::Vector3d xi(1e-4, 2e-4, 0.05);
   const Eigen::Vector3d F = -f * xi;
   EXPECT_NEAR(F(0), -G * c * c * C.C11 * xi(0), 1e-9 * std::abs(F(0)));
-  EXPECT_NEAR(F(1), -G * c * c * C.C22 * xi(1) - G * c * c * c * C.C23 * xi(2), 1e-9 * std::abs(F(1)));
+  EXPECT_NEAR(F(1), -G * c * c * C.C22 * xi(1) - G * c * c * c * C.C23 * xi(2),
+              1e-9 * std::abs(F(1)));
   EXPECT_NEAR(F(2), G * c * c * c * C.C23 * xi(1) - G * std::pow(c, 4) * C.C33 * xi(2),
               1e-9 * std::abs(F(2)));
   EXPECT_GT(f(1, 2), 0.0);
   EXPECT_EQ(f(1, 2), -f(2, 1));
   EXPECT_EQ(f(0, 1), 0.0);
-  std::printf("paper patch a/b = %.4f, nu = 0.28: C11 %.4f C22 %.4f C23 %.4f C33 %.4f; "
-              "f11 %.4e N, f22 %.4e N, f23 %.4e N m, f33 %.4e N m^2\n",
-              a / b, C.C11, C.C22, C.C23, C.C33, f(0, 0), f(1, 1), f(1, 2), f(2, 2));
+  std::printf(
+      "paper patch a/b = %.4f, nu = 0.28: C11 %.4f C22 %.4f C23 %.4f C33 %.4f; "
+      "f11 %.4e N, f22 %.4e N, f23 %.4e N m, f33 %.4e N m^2\n",
+      a / b, C.C11, C.C22, C.C23, C.C33, f(0, 0), f(1, 1), f(1, 2), f(2, 2));
 }
 
 // C33 is not in tests/data/kalker: check the transcribed column against the project's own steady
@@ -167,7 +171,8 @@ TEST(KalkerTable, C33AgreesWithTheContactSolverInFullAdhesion) {
       const int n = static_cast<int>(std::ceil(across * scale));
       const rc::Grid g = rc::Grid::around_ellipse(n, n, a, b, scale);
       const rc::HertzContact h = rc::hertz_from_semi_axes(a, b, 1e5, m);
-      const rc::ContactPatch patch = rc::solve_patch(g, m, rc::quadratic_distance(g, h.A, h.B), 1e5);
+      const rc::ContactPatch patch =
+          rc::solve_patch(g, m, rc::quadratic_distance(g, h.A, h.B), 1e5);
       const double G = m.shear_modulus(), phi = 1e-6 / c;
       const auto s = rc::solve_steady_rolling(patch.influence, patch.normal.pn,
                                               {0.3, 30.0, {0.0, 0.0, phi}, 0.0});
@@ -177,9 +182,10 @@ TEST(KalkerTable, C33AgreesWithTheContactSolverInFullAdhesion) {
     const double c20 = discrete(20), c30 = discrete(30);
     const double extrapolated = c30 - (c20 - c30) / (1.0 / 20 - 1.0 / 30) / 30.0;
     const double table = rn::kalker_coefficients(ratio, 0.25).C33;
-    std::printf("a/b %.1f nu 0.25: C33 table %.3f, CONTACT 20 across %.4f, 30 across %.4f, "
-                "extrapolated %.4f (%+.1f %%)\n",
-                ratio, table, c20, c30, extrapolated, 100 * (extrapolated / table - 1));
+    std::printf(
+        "a/b %.1f nu 0.25: C33 table %.3f, CONTACT 20 across %.4f, 30 across %.4f, "
+        "extrapolated %.4f (%+.1f %%)\n",
+        ratio, table, c20, c30, extrapolated, 100 * (extrapolated / table - 1));
     EXPECT_LT(std::abs(extrapolated / table - 1), 0.05) << "a/b " << ratio;
     EXPECT_LT(std::abs(c30 / table - 1), std::abs(c20 / table - 1)) << "a/b " << ratio;
   }

@@ -81,8 +81,10 @@ inline std::vector<double> log_frequencies(double f_min, double f_max, int n) {
 template <int N>
 double relative_min_dissipation(const Eigen::Matrix<std::complex<double>, N, N>& A) {
   Eigen::Matrix<double, N, 1> d;
-  for (int i = 0; i < N; ++i) d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
-  const Eigen::Matrix<std::complex<double>, N, N> Ds = d.template cast<std::complex<double>>().asDiagonal();
+  for (int i = 0; i < N; ++i)
+    d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
+  const Eigen::Matrix<std::complex<double>, N, N> Ds =
+      d.template cast<std::complex<double>>().asDiagonal();
   const Eigen::Matrix<std::complex<double>, N, N> D =
       Ds * (-(A - A.adjoint()) / std::complex<double>(0.0, 2.0)) * Ds;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<std::complex<double>, N, N>> es(D);
