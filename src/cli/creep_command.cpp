@@ -38,9 +38,7 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
-  io::write_case(w, reader);
-  io::write_patch(w, *ms.patch);
-  io::write_tangential(w, "/steady", ms.contact.grid, ms.contact.creepage, ms.steady);
+  io::write_mean_state(w, reader, *ms.patch, ms.contact.creepage, ms.steady);
   std::vector<std::complex<double>> flat;
   for (const auto& m : f)
     for (int j = 0; j < 3; ++j)

@@ -76,6 +76,15 @@ void write_linear(io::Hdf5Writer& w, const std::string& g, const LinearRun& r) {
   if (r.has_synthesis) w.write(g + "/force_synthesis", flatten(r.synthesis), {n, 3}, "N, N, N m");
 }
 
+void check_excitation_resolved(const io::CaseReader& r, const contact::CreepageHistory& h,
+                               const nss::LinearContactModel& m) {
+  for (double f : h.frequencies())
+    if (f > m.nyquist_frequency())
+      r.fail(h.frequencies().size() == 1 ? "excitation.frequency" : "excitation.f_max",
+             std::to_string(f) + " Hz is above the grid's Nyquist limit V/(2 dx) = " +
+                 std::to_string(m.nyquist_frequency()) + " Hz");
+}
+
 long steps_of(const io::CaseReader& reader, double dt) {
   const double duration = reader.real("transient.duration");
   const long steps = std::lround(std::floor(duration / dt + 1e-9));
@@ -89,17 +98,14 @@ int run_response(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const contact::CreepageHistory h = io::read_excitation(reader);
   MeanState ms = solve_mean_state(reader, true);
-  for (double f : h.frequencies())
-    if (f > ms.model->nyquist_frequency()) reader.fail("excitation.frequency", "above the grid's Nyquist limit");
+  check_excitation_resolved(reader, h, *ms.model);
   const long steps = steps_of(reader, ms.model->time_step());
   const auto t0 = std::chrono::steady_clock::now();
   const LinearRun r = linear_response(ms, h, steps);
   const double ms_run = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
-  io::write_case(w, reader);
-  io::write_patch(w, *ms.patch);
-  io::write_tangential(w, "/steady", ms.contact.grid, ms.contact.creepage, ms.steady);
+  io::write_mean_state(w, reader, *ms.patch, ms.contact.creepage, ms.steady);
   write_linear(w, "/response", r);
   io::write_excitation(w, "/response/excitation", h);
   w.commit();
@@ -124,8 +130,7 @@ int run_validate(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const contact::CreepageHistory h = io::read_excitation(reader);
   MeanState ms = solve_mean_state(reader, true);
-  for (double f : h.frequencies())
-    if (f > ms.model->nyquist_frequency()) reader.fail("excitation.frequency", "above the grid's Nyquist limit");
+  check_excitation_resolved(reader, h, *ms.model);
   const double dt = ms.model->time_step();
   const long steps = steps_of(reader, dt);
   const double t_start = reader.real("transient.analysis_start");
@@ -173,9 +178,7 @@ int run_validate(const CommonOptions& o) {
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
-  io::write_case(w, reader);
-  io::write_patch(w, *ms.patch);
-  io::write_tangential(w, "/steady", ms.contact.grid, ms.contact.creepage, ms.steady);
+  io::write_mean_state(w, reader, *ms.patch, ms.contact.creepage, ms.steady);
   write_linear(w, "/validate/linear", lin);
   io::write_excitation(w, "/validate/excitation", h);
   const std::size_t n = lin.time.size();

@@ -36,4 +36,11 @@ void write_tangential(Hdf5Writer& w, const std::string& group, const contact::Gr
   w.write(group + "/state", s.state, field, "0 exterior, 1 adhesion, 2 slip");
 }
 
+void write_mean_state(Hdf5Writer& w, const CaseReader& r, const contact::ContactPatch& patch,
+                      const contact::Creepage& mean, const contact::TangentialSolution& steady) {
+  write_case(w, r);
+  write_patch(w, patch);
+  write_tangential(w, "/steady", patch.grid, mean, steady);
+}
+
 }  // namespace rollnoise::io

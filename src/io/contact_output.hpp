@@ -17,4 +17,9 @@ void write_patch(Hdf5Writer& w, const contact::ContactPatch& patch);
 void write_tangential(Hdf5Writer& w, const std::string& group, const contact::Grid& g,
                       const contact::Creepage& c, const contact::TangentialSolution& s);
 
+/// /case, the patch and the steady state at the mean creepage under /steady: what every command
+/// that linearises or time-steps around a mean state writes first.
+void write_mean_state(Hdf5Writer& w, const CaseReader& r, const contact::ContactPatch& patch,
+                      const contact::Creepage& mean, const contact::TangentialSolution& steady);
+
 }  // namespace rollnoise::io

@@ -12,30 +12,16 @@
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
+#include "paper_case.hpp"
 #include "reference_data.hpp"
 
 using namespace rollnoise::contact;
 using rollnoise::testing::data_path;
 using rollnoise::testing::num;
 using rollnoise::testing::read_csv;
+using namespace rollnoise::testing;
 
 namespace {
-
-const Material kSteel{210e9, 0.28};
-const double kSpeed = 13.8888888888889, kMu = 0.3, kN = 98100;
-
-// The paper's Hertzian patch on CONTACT's coarse (34 x 25) or fine (68 x 50) grid, solved once.
-const ContactPatch& paper_patch(const std::string& grid) {
-  static std::map<std::string, std::unique_ptr<ContactPatch>> cache;
-  auto& p = cache[grid];
-  if (!p) {
-    const bool fine = grid == "fine";
-    const Grid g = Grid::around_ellipse(fine ? 68 : 34, fine ? 50 : 25, 7.18e-3, 5.29e-3, 34.0 / 30.0);
-    const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, kN, kSteel);
-    p = std::make_unique<ContactPatch>(solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), kN));
-  }
-  return *p;
-}
 
 struct ContactCase {
   std::string folder, grid;

@@ -12,28 +12,23 @@
 #include "contact/steady_rolling.hpp"
 #include "contact/transient_rolling.hpp"
 #include "linalg/harmonic_fit.hpp"
+#include "paper_case.hpp"
 #include "reference_data.hpp"
 
 using namespace rollnoise::contact;
 using rollnoise::testing::data_path;
 using rollnoise::testing::num;
 using rollnoise::testing::read_csv;
+using namespace rollnoise::testing;
 
 namespace {
 
-const Material kSteel{210e9, 0.28};
-const double kSpeed = 13.8888888888889, kMu = 0.3, kN = 98100;
-
-ContactPatch coarse_patch() {
-  const Grid g = Grid::around_ellipse(34, 25, 7.18e-3, 5.29e-3, 34.0 / 30.0);
-  const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, kN, kSteel);
-  return solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), kN);
-}
+const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
 
 }  // namespace
 
 TEST(TransientRolling, ConstantCreepageFromZeroTractionsConvergesToSteadyRolling) {
-  const ContactPatch patch = coarse_patch();
+  const ContactPatch& patch = coarse_patch();
   const Creepage c{0.001, 0.001, -0.053};
   const auto steady = solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, c, 0.0});
   const TangentialForces fs = total_forces(patch.grid, steady.px, steady.py);
@@ -75,7 +70,7 @@ TEST_P(AgainstCONTACTUnsteady, ForcesAfterTheStartWithinOnePercentOfTheVariation
   std::map<std::string, double> amplitude;
   for (const auto& row : read_csv(data_path("contact/" + ref.run + "/harmonic_fit.csv")))
     if (row.at("grid") == "coarse") amplitude[row.at("quantity")] = num(row, "amp");
-  const ContactPatch patch = coarse_patch();
+  const ContactPatch& patch = coarse_patch();
   // the creepage of each step as CONTACT used it (t_k = k dt)
   const Creepage mean{num(series[0], "cksi"), num(series[0], "ceta"), num(series[0], "cphi_rad_per_m")};
   const auto steady = solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, mean, ref.spin_offset});
@@ -106,7 +101,7 @@ INSTANTIATE_TEST_SUITE_P(Runs, AgainstCONTACTUnsteady,
 TEST(TransientRolling, QuasiSteadyModelMissesAmplitudeAndPhaseAt1kHz) {
   // Paper Sec. 3.1 / Fig. 3: xi_x = 0.001 + 5e-5 cos(2 pi 1000 t). Over the 6th period, compare the
   // transient solution with steady solutions at the instantaneous creepage.
-  const ContactPatch patch = coarse_patch();
+  const ContactPatch& patch = coarse_patch();
   const auto history = CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0);
   const auto steady = solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, history.mean(), 0.0});
   TransientRolling rolling(patch.influence, patch.normal.pn, kMu, kSpeed, 0.0);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "../contact/paper_case.hpp"
 #include "../contact/reference_data.hpp"
 #include "contact/creepage_history.hpp"
 #include "contact/forces.hpp"
@@ -22,20 +23,11 @@ using namespace rollnoise::contact;
 using rollnoise::testing::data_path;
 using rollnoise::testing::num;
 using rollnoise::testing::read_csv;
+using namespace rollnoise::testing;
 
 namespace {
 
-const Material kSteel{210e9, 0.28};
-const double kSpeed = 13.8888888888889, kMu = 0.3, kN = 98100;
-
-const ContactPatch& coarse_patch() {
-  static const ContactPatch patch = [] {
-    const Grid g = Grid::around_ellipse(34, 25, 7.18e-3, 5.29e-3, 34.0 / 30.0);
-    const HertzContact h = hertz_from_semi_axes(7.18e-3, 5.29e-3, kN, kSteel);
-    return solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), kN);
-  }();
-  return patch;
-}
+const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
 
 TangentialForces steady_forces(const Creepage& c, double spin_offset = 0.0) {
   const ContactPatch& p = coarse_patch();
