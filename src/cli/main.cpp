@@ -5,6 +5,7 @@
 //   rollnoise creep     CASE.toml [-o OUT.h5] [--set key=value]... [--csv FILE] [--direct]
 //   rollnoise response  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
+//   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -59,6 +60,8 @@ int main(int argc, char** argv) {
   add_common(response);
   auto* validate = app.add_subcommand("validate", "linear model against the unsteady solver");
   add_common(validate);
+  auto* noise_cmd = app.add_subcommand("noise", "closed-loop contact-force spectra from roughness");
+  add_common(noise_cmd);
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
     if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
     if (response->parsed()) return cli::run_response(common);
     if (validate->parsed()) return cli::run_validate(common);
+    if (noise_cmd->parsed()) return cli::run_noise(common);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

@@ -69,6 +69,37 @@ const std::vector<KeySpec>& case_schema() {
       {"frequency.spacing", T::String, "\"log\"", "-", "frequency spacing",
        {"linear", "log", "third-octave"}},
       {"frequency.list", T::RealList, "", "Hz", "explicit list of frequencies (overrides the rest)"},
+      // curving (noise)
+      {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
+      {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
+      {"curve.creepage", T::String, "\"estimate\"", "-",
+       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp) or "
+       "creepage.mean with contact.angle", {"estimate", "case"}},
+      {"curve.wheelbase", T::PositiveReal, "2.5", "m", "bogie wheelbase"},
+      {"curve.wheel_radius", T::PositiveReal, "0.46", "m", "nominal rolling radius"},
+      {"curve.conicity", T::PositiveReal, "0.15", "-", "equivalent conicity of the conical tread"},
+      {"curve.flange_clearance", T::PositiveReal, "0.005", "m", "lateral play to flange contact"},
+      {"contact.angle", T::Real, "0.0", "rad", "contact angle (curve.creepage = \"case\")"},
+      // structures and roughness (noise, receptance)
+      {"track.file", T::String, "\"models/track/uic60_ballasted.toml\"", "-",
+       "track parameter file (relative to the case file, its parent folder or the source tree)"},
+      {"track.support", T::String, "\"discrete\"", "-", "rail support model", {"discrete", "continuous"}},
+      {"track.position", T::NonNegReal, "0.3", "m", "contact position from a sleeper (0.3 = mid-span)"},
+      {"wheel.wheelset", T::String, "\"models/wheel/wheelset_920mm.toml\"", "-", "rigid wheelset file"},
+      {"wheel.modes", T::String, "\"models/wheel/wheel_920mm_modes.csv\"", "-", "wheel modes file"},
+      {"roughness.rail", T::String, "\"iso3095\"", "-",
+       "rail roughness: \"iso3095\" (EN ISO 3095:2013 limit) or a CSV file (wavelength m, level dB re 1 um)"},
+      {"roughness.wheel", T::String, "\"cast-iron\"", "-",
+       "wheel roughness: \"cast-iron\", \"disc-braked\" or a CSV file"},
+      {"roughness.filter", T::String, "\"isotropic\"", "-", "contact filter",
+       {"isotropic", "correlated", "none"}},
+      {"noise.contact_model", T::String, "\"nss\"", "-",
+       "tangential contact: the linear NSS model or Kalker's steady linear theory", {"nss", "kalker"}},
+      {"noise.compare_kalker", T::String, "\"yes\"", "-",
+       "also run the loop with Kalker's steady coefficients", {"yes", "no"}},
+      {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
+      {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
+      {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
   };
   return schema;
 }

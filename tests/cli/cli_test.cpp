@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include <algorithm>
+#include <cmath>
 
 namespace fs = std::filesystem;
 
@@ -215,6 +216,59 @@ TEST(ValidateCommand, LinearModelTracksTheUnsteadySolverAtTheMeanState) {
   H5Fclose(f);
   EXPECT_LT(rms[0], 0.02);
   EXPECT_LT(rms[1], 0.02);
+}
+
+namespace {
+
+std::vector<double> read_doubles(hid_t f, const char* path) {
+  const hid_t set = H5Dopen2(f, path, H5P_DEFAULT);
+  if (set < 0) return {};
+  const hid_t space = H5Dget_space(set);
+  std::vector<double> v(H5Sget_simple_extent_npoints(space));
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  H5Sclose(space), H5Dclose(set);
+  return v;
+}
+
+std::string curve_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml"; }
+
+}  // namespace
+
+TEST(NoiseCommand, CurveCaseGivesBandLevelsAndTheNSSModelChangesTangentialNotVerticalForces) {
+  const fs::path out = temp_dir() / "noise.h5";
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 "
+                           "--set track.support=continuous --set noise.band_max=2000.0 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/noise/frequency"), "Hz");
+  EXPECT_NE(read_units(f, "/noise/force").find("per unit roughness"), std::string::npos);
+  EXPECT_NE(read_units(f, "/noise/bands/velocity_level").find("1e-9 m/s"), std::string::npos);
+  const auto centre = read_doubles(f, "/noise/bands/centre");
+  const auto nss = read_doubles(f, "/noise/bands/force_level");
+  const auto kalker = read_doubles(f, "/noise/kalker/bands/force_level");
+  const auto creep = read_doubles(f, "/steady/creepage");
+  H5Fclose(f);
+  ASSERT_EQ(nss.size(), 4 * centre.size());
+  ASSERT_EQ(kalker.size(), nss.size());
+  EXPECT_LT(creep[1], 0.0) << "the leading outer wheel runs with negative lateral creepage in a curve";
+  double dz = 0, dy = 0;
+  for (size_t i = 0; i < centre.size(); ++i) {
+    EXPECT_TRUE(std::isfinite(nss[4 * i]) && std::isfinite(nss[4 * i + 2]));
+    if (centre[i] < 300) continue;
+    dz = std::max(dz, std::abs(nss[4 * i] - kalker[4 * i]));
+    dy = std::max(dy, std::abs(nss[4 * i + 2] - kalker[4 * i + 2]));
+  }
+  std::printf("above 300 Hz: Fz differs by at most %.2f dB, Fy by up to %.1f dB (NSS vs Kalker)\n", dz, dy);
+  EXPECT_LT(dz, 3.0);
+  EXPECT_GT(dy, 6.0);
+}
+
+TEST(NoiseCommand, BandsAboveTheGridsNyquistLimitAreAnInputError) {
+  const Invocation r = run("noise " + curve_case() + " --set noise.band_max=20000.0 --set noise.points_per_band=4 "
+                           "--set track.support=continuous -o " + (temp_dir() / "nyq.h5").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("noise.band_max"), std::string::npos) << r.output;
 }
 
 TEST(Program, KeysListsTheSchemaWithDefaults) {

@@ -1,0 +1,75 @@
+#include "io/noise_case.hpp"
+
+#include <filesystem>
+
+#include "core/errors.hpp"
+
+#ifndef ROLLNOISE_SOURCE_DIR
+#define ROLLNOISE_SOURCE_DIR "."
+#endif
+
+namespace rollnoise::io {
+
+namespace fs = std::filesystem;
+
+std::string resolve_model_file(const CaseReader& r, const std::string& key) {
+  const fs::path given = r.string(key);
+  if (given.is_absolute()) {
+    if (!fs::exists(given)) r.fail(key, "file " + given.string() + " does not exist");
+    return given.string();
+  }
+  const fs::path folder = r.folder().empty() ? fs::path(".") : fs::path(r.folder());
+  for (const fs::path& base : {folder, folder / "..", fs::path(ROLLNOISE_SOURCE_DIR)})
+    if (fs::exists(base / given)) return (base / given).lexically_normal().string();
+  r.fail(key, "file " + given.string() + " found neither beside the case file, in its parent folder, "
+              "nor in the source tree");
+}
+
+namespace {
+
+noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) {
+  const std::string v = r.string(key);
+  if (v == "iso3095") return noise::iso3095_2013_rail_limit();
+  if (v == "cast-iron") return noise::wheel_roughness_cast_iron_block();
+  if (v == "disc-braked") return noise::wheel_roughness_disc_braked();
+  return noise::read_roughness_csv(resolve_model_file(r, key));
+}
+
+}  // namespace
+
+NoiseCase read_noise_case(const CaseReader& r) {
+  NoiseCase c;
+  c.curve_radius = r.real("curve.radius");
+  c.cant_deficiency = r.real("curve.cant_deficiency");
+  c.estimate_creepage = r.string("curve.creepage") == "estimate";
+  c.wheelbase = r.real("curve.wheelbase");
+  c.wheel_radius = r.real("curve.wheel_radius");
+  c.conicity = r.real("curve.conicity");
+  c.flange_clearance = r.real("curve.flange_clearance");
+  c.contact_angle = r.real("contact.angle");
+  if (c.curve_radius > 0.0 && c.curve_radius < 50.0) r.fail("curve.radius", "below 50 m is outside the curving estimate's range");
+
+  const dynamics::TrackParameters track = dynamics::read_track_parameters(resolve_model_file(r, "track.file"));
+  const bool discrete = r.string("track.support") == "discrete";
+  c.rail = std::make_unique<dynamics::RailModel>(
+      track, discrete ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
+      r.real("track.position"));
+  c.wheel = std::make_unique<dynamics::WheelModel>(
+      dynamics::read_wheelset(resolve_model_file(r, "wheel.wheelset")),
+      dynamics::read_wheel_modes(resolve_model_file(r, "wheel.modes")));
+  c.rail_roughness = roughness(r, "roughness.rail");
+  c.wheel_roughness = roughness(r, "roughness.wheel");
+  const std::string filter = r.string("roughness.filter");
+  c.filter = filter == "none"         ? noise::ContactFilterModel::kNone
+             : filter == "correlated" ? noise::ContactFilterModel::kCorrelated
+                                      : noise::ContactFilterModel::kIsotropic;
+  c.use_nss = r.string("noise.contact_model") == "nss";
+  c.compare_kalker = r.string("noise.compare_kalker") == "yes";
+  c.band_min = r.real("noise.band_min");
+  c.band_max = r.real("noise.band_max");
+  if (c.band_max < c.band_min) r.fail("noise.band_max", "must not be below noise.band_min");
+  c.points_per_band = static_cast<int>(r.integer("noise.points_per_band"));
+  return c;
+}
+
+}  // namespace rollnoise::io

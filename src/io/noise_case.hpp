@@ -1,0 +1,36 @@
+// The structural, roughness and curving parts of a noise case, read and checked: wheel and track
+// models from their files, roughness spectra, the contact filter, the curve.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "dynamics/track.hpp"
+#include "dynamics/wheel.hpp"
+#include "io/case_reader.hpp"
+#include "noise/roughness.hpp"
+
+namespace rollnoise::io {
+
+struct NoiseCase {
+  double curve_radius = 0.0;  ///< m, 0: tangent track
+  double cant_deficiency = 0.0;
+  bool estimate_creepage = true;
+  double wheelbase = 2.5, wheel_radius = 0.46, conicity = 0.15, flange_clearance = 0.005;
+  double contact_angle = 0.0;  ///< when the case gives the creepages
+  std::unique_ptr<dynamics::RailModel> rail;
+  std::unique_ptr<dynamics::WheelModel> wheel;
+  noise::RoughnessSpectrum rail_roughness, wheel_roughness;
+  noise::ContactFilterModel filter = noise::ContactFilterModel::kIsotropic;
+  bool use_nss = true, compare_kalker = true;
+  double band_min = 100.0, band_max = 5000.0;
+  int points_per_band = 48;
+};
+
+/// Resolve a model file: as given if absolute, else relative to the case file's folder, its
+/// parent, or the source tree (in that order). InputError naming `key` if none exists.
+std::string resolve_model_file(const CaseReader& r, const std::string& key);
+
+NoiseCase read_noise_case(const CaseReader& r);
+
+}  // namespace rollnoise::io
