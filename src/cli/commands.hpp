@@ -23,5 +23,6 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct);
 int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);
+int run_receptance(const CommonOptions& o);
 
 }  // namespace rollnoise::cli

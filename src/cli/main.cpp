@@ -6,6 +6,7 @@
 //   rollnoise response  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
+//   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -62,6 +63,8 @@ int main(int argc, char** argv) {
   add_common(validate);
   auto* noise_cmd = app.add_subcommand("noise", "closed-loop contact-force spectra from roughness");
   add_common(noise_cmd);
+  auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
+  add_common(receptance);
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -81,6 +84,7 @@ int main(int argc, char** argv) {
     if (response->parsed()) return cli::run_response(common);
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
+    if (receptance->parsed()) return cli::run_receptance(common);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

@@ -17,6 +17,7 @@
 #include "cli/contact_setup.hpp"
 #include "contact/hertz.hpp"
 #include "io/contact_output.hpp"
+#include "io/frequency_axis.hpp"
 #include "io/noise_case.hpp"
 #include "noise/bands.hpp"
 #include "noise/contact_receptance.hpp"
@@ -51,21 +52,27 @@ std::vector<std::complex<double>> flatten4(const std::vector<noise::Vector4c>& v
   return out;
 }
 
-}  // namespace
-
-int run_noise(const CommonOptions& o) {
-  const auto t0 = Clock::now();
-  io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  const io::NoiseCase nc = io::read_noise_case(reader);
-  io::ContactCase cc = io::read_contact_case(reader);
-  const double G = cc.material.shear_modulus();
-
-  // 1. mean state of the leading outer wheel
-  noise::ContactPosition position{0.0, 0.0, nc.contact_angle};
+// The case, its noise part and the mean state of the leading outer wheel (step 1).
+struct NoiseSetup {
+  io::CaseReader reader;
+  io::NoiseCase noise;
+  io::ContactCase contact;
+  noise::ContactPosition position;
   noise::CurvingEstimate curving;
-  const bool estimated = nc.estimate_creepage && nc.curve_radius > 0.0;
-  if (estimated) {
-    const Eigen::Matrix3d fk = noise::kalker_creep_matrix(cc.a, cc.b, G, cc.material.nu);
+  bool estimated = false;
+};
+
+NoiseSetup prepare(const CommonOptions& o) {
+  NoiseSetup s{io::CaseReader::from_file(o.case_file, o.overrides), {}, {}, {}, {}, false};
+  s.noise = io::read_noise_case(s.reader);
+  s.contact = io::read_contact_case(s.reader);
+  io::ContactCase& cc = s.contact;
+  const io::NoiseCase& nc = s.noise;
+  s.position = {0.0, 0.0, nc.contact_angle};
+  s.estimated = nc.estimate_creepage && nc.curve_radius > 0.0;
+  if (s.estimated) {
+    const Eigen::Matrix3d fk =
+        noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu);
     noise::BogieCurvingInput in;
     in.radius = nc.curve_radius;
     in.speed = cc.speed;
@@ -78,15 +85,30 @@ int run_noise(const CommonOptions& o) {
     in.friction = cc.mu;
     in.f11 = fk(0, 0);
     in.f22 = fk(1, 1);
-    curving = noise::estimate_bogie_curving(in);
-    cc.creepage = {curving.xi_x, curving.xi_y, curving.phi};
-    position = curving.position();
+    s.curving = noise::estimate_bogie_curving(in);
+    cc.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
+    s.position = s.curving.position();
     // the case as run records the creepage used
     std::ostringstream v;
     v.precision(12);
-    v << "creepage.mean=[" << curving.xi_x << ", " << curving.xi_y << ", " << curving.phi << "]";
-    reader = reader.with(v.str());
+    v << "creepage.mean=[" << s.curving.xi_x << ", " << s.curving.xi_y << ", " << s.curving.phi << "]";
+    s.reader = s.reader.with(v.str());
   }
+  return s;
+}
+
+}  // namespace
+
+int run_noise(const CommonOptions& o) {
+  const auto t0 = Clock::now();
+  NoiseSetup setup = prepare(o);
+  const io::CaseReader& reader = setup.reader;
+  const io::NoiseCase& nc = setup.noise;
+  io::ContactCase& cc = setup.contact;
+  const double G = cc.material.shear_modulus();
+  const noise::ContactPosition position = setup.position;
+  const noise::CurvingEstimate& curving = setup.curving;
+  const bool estimated = setup.estimated;
 
   // 2. contact: patch, steady state, linear model, creep coefficients on the narrow-band axis
   const std::vector<double> centres = noise::third_octave_centres(nc.band_min, nc.band_max);
@@ -170,6 +192,51 @@ int run_noise(const CommonOptions& o) {
     std::printf("  %8.0f %9.1f %9.1f %9.1f %9.1f %9.1f\n", centres[i], bands.roughness_level[i],
                 bands.force_level[i][0], bands.force_level[i][1], bands.force_level[i][2], bands.force_level[i][3]);
   std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
+
+// rollnoise receptance: the wheel, rail and contact receptances alone, on the case's frequency axis,
+// at the contact point and mean state of the noise case (contact frame: normal, x, y, rot normal).
+int run_receptance(const CommonOptions& o) {
+  NoiseSetup setup = prepare(o);
+  const io::ContactCase& cc = setup.contact;
+  const std::vector<double> freq = io::read_frequency_axis(setup.reader);
+  for (double f : freq)
+    if (!(f > 0.0)) setup.reader.fail("frequency.f_min", "receptances need positive frequencies");
+  auto patch = std::make_unique<contact::ContactPatch>(io::solve_case_patch(cc));
+  const auto steady = contact::solve_steady_rolling(patch->influence, patch->normal.pn, cc.steady_input(), cc.tangential);
+  const double kH = contact::hertz_from_semi_axes(cc.a, cc.b, cc.normal_force, cc.material).normal_stiffness();
+  std::vector<noise::Receptance4> contact_r;
+  if (setup.noise.use_nss) {
+    const nss::LinearContactModel model(*patch, steady, {cc.mu, cc.speed, cc.spin_offset});
+    if (freq.back() > model.nyquist_frequency())
+      setup.reader.fail("frequency.f_max", "above the grid's Nyquist limit " + std::to_string(model.nyquist_frequency()) + " Hz");
+    contact_r = noise::contact_receptances(freq, kH, cc.speed, model.creep_coefficients(freq));
+  } else {
+    contact_r = noise::contact_receptances(
+        freq, kH, cc.speed,
+        noise::steady_creep(noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu)));
+  }
+  const auto st = noise::structural_receptances(*setup.noise.wheel, *setup.noise.rail, setup.position, freq);
+  auto flat = [](const std::vector<noise::Receptance4>& v) {
+    std::vector<std::complex<double>> out;
+    for (const auto& m : v)
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) out.push_back(m(i, j));
+    return out;
+  };
+  const std::string units = "m/N, m/(N m), rad/N, rad/(N m); order normal, x, y, rotation about the normal (contact frame)";
+  const std::string out = output_path(o, setup.reader.name());
+  io::Hdf5Writer w(out);
+  io::write_mean_state(w, setup.reader, *patch, cc.creepage, steady);
+  const std::size_t nf = freq.size();
+  w.write("/receptance/frequency", freq, {nf}, "Hz");
+  w.write("/receptance/wheel", flat(st.wheel_contact), {nf, 4, 4}, units);
+  w.write("/receptance/rail", flat(st.rail_contact), {nf, 4, 4}, units);
+  w.write("/receptance/contact", flat(contact_r), {nf, 4, 4}, units);
+  w.commit();
+  std::printf("%s: receptances at %zu frequencies (%s contact model)\nwrote %s\n", setup.reader.name().c_str(), nf,
+              setup.noise.use_nss ? "NSS" : "Kalker", out.c_str());
   return 0;
 }
 

@@ -271,6 +271,31 @@ TEST(NoiseCommand, BandsAboveTheGridsNyquistLimitAreAnInputError) {
   EXPECT_NE(r.output.find("noise.band_max"), std::string::npos) << r.output;
 }
 
+TEST(ReceptanceCommand, WritesReciprocalWheelAndRailAndTheContactReceptance) {
+  const fs::path out = temp_dir() / "receptance.h5";
+  const Invocation r = run("receptance " + curve_case() + " --set frequency.count=20 --set track.support=continuous -o " +
+                           out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const char* name : {"/receptance/wheel", "/receptance/rail", "/receptance/contact"})
+    EXPECT_NE(read_units(f, name).find("m/N"), std::string::npos) << name;
+  // complex {r, i} compound, [20][4][4]
+  const hid_t set = H5Dopen2(f, "/receptance/wheel", H5P_DEFAULT);
+  const hid_t type = H5Dget_type(set);
+  std::vector<double> v(20 * 16 * 2);
+  H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  H5Tclose(type), H5Dclose(set), H5Fclose(f);
+  for (int k = 0; k < 20; ++k)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < i; ++j) {
+        const double* a = &v[2 * (16 * k + 4 * i + j)];
+        const double* b = &v[2 * (16 * k + 4 * j + i)];
+        EXPECT_NEAR(a[0], b[0], 1e-9 * (std::abs(a[0]) + 1e-30) + 1e-25);
+        EXPECT_NEAR(a[1], b[1], 1e-9 * (std::abs(a[1]) + 1e-30) + 1e-25);
+      }
+}
+
 TEST(Program, KeysListsTheSchemaWithDefaults) {
   const Invocation r = run("keys");
   EXPECT_EQ(r.status, 0);
