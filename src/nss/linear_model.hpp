@@ -25,12 +25,22 @@
 // Outputs F~x = dx dy U1' P~, F~y = dx dy U2' P~, M~z = dx dy Usp0' P~ with Usp0_e = (-y_e, x_e): the
 // spin offset belongs to the input only. Creep coefficients: F~ = -f xi~ (Eqs. 28-30), rows Fx, Fy,
 // Mz, columns xi_x, xi_y, phi.
+//
+// The reduced, symmetric form used by the fast paths (linear_model.cpp explains it in full). Only
+// P~ = B Q propagates, and P~_e lies along t_e in a slip element, so the traction amplitudes
+// pi (2 per adhesion element, pi_e = -t_e' q_e per slip element; P~ = Pi pi) are the state. The
+// t_e-component of the slip equations and both adhesion equations give
+//   (K0 - z K1) pi = -Pi' W~,  K0 = D + Pi' A Pi/dt (symmetric positive definite),
+//   K1 = Pi' A0 Pi/dt (applied by FFT),  D = diag(0 adhesion, c_e slip),  F~ = dx dy U' Pi pi,
+// of dimension r = 2 (adhesion elements) + (slip elements) instead of n = 2 (contact elements).
 #pragma once
 
 #include <Eigen/Dense>
 #include <complex>
+#include <memory>
 #include <vector>
 
+#include "contact/influence.hpp"
 #include "contact/patch.hpp"
 #include "contact/tangential_solver.hpp"
 
@@ -44,59 +54,110 @@ struct LinearModelInput {
   double spin_offset = 0.0;  ///< as in the steady solution (grid.spin_offset)
 };
 
+/// How creep_coefficients() obtained its Markov parameters (for benchmarks and tests).
+struct SweepInfo {
+  enum class Method { none, krylov, markov, hessenberg };
+  Method method = Method::none;
+  int block_steps = 0;           ///< block Krylov steps (3 vectors each), or Markov recursion steps
+  int reduced_dimension = 0;     ///< dimension of the Krylov reduced model
+  int checks = 0;                ///< a-posteriori checks made
+  double error_estimate = 0.0;   ///< max over the check grid of |f_k - f_{k-s}| / |f_k| (krylov)
+  bool krylov_failed = false;    ///< the Krylov model failed its checks (fell back)
+  double factor_seconds = 0.0;   ///< assembling K0 and its Cholesky factorisation
+  double krylov_seconds = 0.0;   ///< block steps (or recursion steps), checks excluded
+  double check_seconds = 0.0;    ///< Markov parameters of the trial models and their comparison
+};
+
 class LinearContactModel {
  public:
   /// `mean` is the steady solution at the mean creepage on `patch` (same mu, speed, spin offset).
   LinearContactModel(const contact::ContactPatch& patch, const contact::TangentialSolution& mean,
                      const LinearModelInput& in);
+  ~LinearContactModel();
+  LinearContactModel(LinearContactModel&&) noexcept;
+  LinearContactModel& operator=(LinearContactModel&&) noexcept;
 
-  int unknowns() const { return static_cast<int>(M0_.rows()); }
+  /// Unknowns of the paper's formulation, 2 per contact element.
+  int unknowns() const { return 2 * (n_adhesion_ + n_slip_); }
+  /// Unknowns of the reduced symmetric formulation: 2 per adhesion element, 1 per slip element.
+  int reduced_unknowns() const { return r_; }
   int adhesion_elements() const { return n_adhesion_; }
   int slip_elements() const { return n_slip_; }
   double time_step() const { return dt_; }
   /// Highest frequency the grid resolves: V / (2 dx) (w dt = pi) (Hz).
   double nyquist_frequency() const { return 0.5 / dt_; }
 
-  /// f(omega) by a fresh complex LU of M(z) (the reference; O(n^3) per frequency).
+  /// f(omega) by a fresh complex LU of M(z) (the reference; O(n^3) per frequency, in the paper's
+  /// formulation, independent of the reduced one).
   CreepMatrix creep_coefficients_direct(double frequency) const;
 
-  /// f at many frequencies (the default, fast): from the Markov parameters (impulse response) of
-  /// the discrete-time system,  f(w) = -sum_j h_j z^j,  h_j = L' (M0^{-1} M1)^j M0^{-1} W,
-  /// computed with the one real LU of M0 until they have decayed to round-off (the contact
-  /// forgets its past within a few contact lengths: |h_j| falls by ~1e-14 in 16 contact lengths on
-  /// the paper's grid, by ~1e-12 at zero mean creepage), then O(J) per frequency. If they have not
-  /// decayed within `max_contact_lengths`, it falls back to creep_coefficients_hessenberg().
+  /// f at many frequencies (the default, fast):  f(w) = -sum_j h_j z^j  with the Markov parameters
+  /// (impulse response) h_j = L' (M0^{-1} M1)^j M0^{-1} W of the discrete-time system, O(J) per
+  /// frequency. The h_j come from a block Krylov reduced model of dimension ~ 6 contact lengths
+  /// (exact for j below its number of block steps, accurate to ~1e-10 relative beyond, checked a
+  /// posteriori: see linear_model.cpp); if that check fails, from the exact recursion
+  /// (creep_coefficients_markov); if the h_j have not decayed within `max_contact_lengths`, from
+  /// creep_coefficients_hessenberg(). The model is built on the first call and kept.
   /// Throws InputError above the Nyquist limit.
   std::vector<CreepMatrix> creep_coefficients(const std::vector<double>& frequencies,
                                               int max_contact_lengths = 60) const;
 
+  /// f at many frequencies from the exact Markov parameters: the recursion
+  /// K0 X_{j+1} = K1 X_j (one Cholesky factorisation, K1 by FFT) until the h_j have decayed to
+  /// round-off (|h_j| falls by ~1e-14 in 16 contact lengths on the paper's grid), then O(J) per
+  /// frequency. Falls back to creep_coefficients_hessenberg() if they do not decay within
+  /// `max_contact_lengths`. Slower than creep_coefficients() on fine grids (one sequential solve
+  /// per step); kept as its fallback and as an independent check.
+  std::vector<CreepMatrix> creep_coefficients_markov(const std::vector<double>& frequencies,
+                                                     int max_contact_lengths = 60) const;
+
   /// f at many frequencies by the reduced pencil: one Hessenberg reduction of M0^{-1} M1 (real),
-  /// then an O(n^2) Hessenberg solve per frequency. Exact (no truncation), slower.
+  /// then an O(n^2) Hessenberg solve per frequency. Exact (no truncation), slow (O(n^3) set-up).
   std::vector<CreepMatrix> creep_coefficients_hessenberg(const std::vector<double>& frequencies) const;
 
-  /// The Markov parameters used by creep_coefficients (empty until first used).
+  /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
+  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()).
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
+  /// How the last creep_coefficients() built its Markov parameters.
+  const SweepInfo& sweep_info() const { return info_; }
 
   /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations at t_k (k = 0, 1, ...)
-  /// by the discrete-time recursion M0 Q_k = M1 Q_{k-1} + W_k, Q_{-1} = 0 (one factorisation).
+  /// by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
+  /// factorisation of K0, K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
 
   /// Throw InputError (key "frequency") unless 0 <= f <= Nyquist.
   void check_frequency(double frequency) const;
 
  private:
+  struct Dense;    // the paper's formulation, assembled densely on demand
+  struct Reduced;  // the symmetric reduced formulation (Cholesky of K0, FFT operator for K1)
+  const Dense& dense() const;
+  const Reduced& reduced() const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
+  bool krylov_markov(int max_contact_lengths) const;
+  bool exact_markov(int max_contact_lengths) const;
+  std::vector<CreepMatrix> horner(const std::vector<double>& frequencies) const;
 
-  double dt_ = 0.0, speed_ = 0.0;
+  double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   int steps_per_contact_length_ = 1;
+  int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
+  contact::InfluenceTable table_;
+  std::vector<int> el_;                  ///< contact elements in sweep order (grid indices)
+  std::vector<int> offset_;              ///< first reduced unknown of each element
+  std::vector<Eigen::Vector2d> t_;       ///< slip elements: traction direction t_e (unused for adhesion)
+  std::vector<double> c_;                ///< slip elements: c_e = |s_bar|/(mu pn) (0 for adhesion)
+  std::vector<char> slip_;               ///< 1 for slip elements
+  Eigen::MatrixXd W_;   ///< n x 3 inputs per unit creepage: V U1, V U2, V Usp
+  Eigen::MatrixXd L_;   ///< n x 3 outputs: dx dy B' U1, B' U2, B' Usp0
+  Eigen::MatrixXd Wr_;  ///< r x 3 reduced inputs  -Pi' W
+  Eigen::MatrixXd Lr_;  ///< r x 3 reduced outputs  dx dy Pi' U
+  mutable std::unique_ptr<Dense> dense_;
+  mutable std::unique_ptr<Reduced> reduced_;
   mutable std::vector<Eigen::Matrix3d> markov_;
-  int n_adhesion_ = 0, n_slip_ = 0;
-  Eigen::MatrixXd M0_, M1_;
-  Eigen::MatrixXd W_;  ///< n x 3 inputs per unit creepage: V U1, V U2, V Usp
-  Eigen::MatrixXd L_;  ///< n x 3 outputs: dx dy B' U1, B' U2, B' Usp0
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu0_;
-  // reduced pencil: M0^{-1} M1 = Q H Q'
-  mutable bool reduced_ = false;
+  mutable SweepInfo info_;
+  // Hessenberg form of M0^{-1} M1 = Q H Q'
+  mutable bool hessenberg_ = false;
   mutable Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;
   mutable Eigen::MatrixXd Rhat_, Lhat_;  ///< Q' M0^{-1} W, Q' L
 };
