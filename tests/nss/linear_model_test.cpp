@@ -80,7 +80,9 @@ TEST(LinearModel, HighFrequencyContactActsAsATangentialSpring) {
     K.push_back(std::abs(k));
     std::printf("f = %.0f Hz: arg f11 = %.2f deg, arg f11 (1-z)/dt = %.2f deg, K = %.4g N/m\n", freqs[i],
                 std::arg(f[i](0, 0)) * 180 / M_PI, std::arg(k) * 180 / M_PI, K.back());
-    if (i >= 1) EXPECT_NEAR(std::arg(k) * 180 / M_PI, 0.0, 2.0) << "arg f11 -> -90 deg (+ half step)";
+    if (i >= 1) {
+      EXPECT_NEAR(std::arg(k) * 180 / M_PI, 0.0, 2.0) << "arg f11 -> -90 deg (+ half step)";
+    }
   }
   for (size_t i = 1; i < K.size(); ++i) EXPECT_NEAR(K[i] / K[1], 1.0, 0.02) << "constant stiffness";
   // Under refinement the plain phase at a fixed frequency approaches -90 degrees.
@@ -247,5 +249,106 @@ TEST(LinearModel, EveryMeanStateFromFullAdhesionToNearFullSlidingGivesFinitePass
     std::printf("xi = %g: %d adhesion, %d slip; f11(0) = %.4g N, f11(3 kHz) = %.4g %+.4gi N\n", xi,
                 m.adhesion_elements(), m.slip_elements(), fast[0](0, 0).real(), fast[2](0, 0).real(),
                 fast[2](0, 0).imag());
+  }
+}
+
+// ---- the fast sweep (block Krylov reduced model) against the exact evaluations ----
+
+TEST(LinearModel, FastSweepAgreesWithTheExactRecursionAndTheDirectSolveFromZeroToNyquist) {
+  // Mean states from full adhesion to full sliding, with lateral creepage and spin, and a spin
+  // offset. The reduced model must pass its own check (no fallback) and agree to 1e-9 (relative,
+  // Frobenius) with the exact Markov recursion on 241 frequencies over [0, Nyquist] and with the
+  // direct complex LU (the paper's form) at four of them.
+  struct Case {
+    Creepage c;
+    double spin_offset;
+  };
+  const std::vector<Case> cases = {{{0, 0, 0}, 0.0},          {{1e-8, 0, 0}, 0.0},
+                                   {{0.001, 0.001, -0.053}, 0.0}, {{0.001, -0.0005, 0.1}, 1.0 / 6.0},
+                                   {{0.004, 0, 0}, 0.0},      {{0.0045, 0, 0}, 0.0},
+                                   {{0.006, 0, 0}, 0.0}};
+  for (const auto& cs : cases) {
+    const auto m = model_at(cs.c, cs.spin_offset);
+    const double fn = m.nyquist_frequency();
+    std::vector<double> freqs;
+    for (int i = 0; i <= 240; ++i) freqs.push_back(fn * i / 240.0);
+    const auto fast = m.creep_coefficients(freqs);
+    const auto info = m.sweep_info();
+    EXPECT_EQ(info.method, nss::SweepInfo::Method::krylov) << cs.c.xi_x;
+    const auto exact = m.creep_coefficients_markov(freqs);
+    double worst = 0.0;
+    for (size_t i = 0; i < freqs.size(); ++i) {
+      const double e = (fast[i] - exact[i]).norm() / exact[i].norm();
+      worst = std::max(worst, e);
+      EXPECT_LT(e, 1e-9) << "xi = (" << cs.c.xi_x << ", " << cs.c.xi_y << ", " << cs.c.phi << "), " << freqs[i]
+                         << " Hz";
+    }
+    double worst_direct = 0.0;
+    for (double f : {0.0, 0.13 * fn, 0.61 * fn, fn}) {
+      const auto direct = m.creep_coefficients_direct(f);
+      const auto fa = m.creep_coefficients({f})[0];
+      worst_direct = std::max(worst_direct, (fa - direct).norm() / direct.norm());
+      EXPECT_LT((fa - direct).norm(), 1e-9 * direct.norm()) << "xi_x = " << cs.c.xi_x << ", " << f << " Hz";
+    }
+    std::printf("xi = (%g, %g, %g): %d adhesion, %d slip: %d block steps (dimension %d), %zu Markov parameters, "
+                "estimate %.1e; vs exact recursion %.1e, vs direct %.1e\n",
+                cs.c.xi_x, cs.c.xi_y, cs.c.phi, m.adhesion_elements(), m.slip_elements(), info.block_steps,
+                info.reduced_dimension, m.markov_parameters().size(), info.error_estimate, worst, worst_direct);
+  }
+}
+
+TEST(LinearModel, FastSweepFallsBackWhenTheImpulseResponseIsCutShort) {
+  // With the Markov parameters limited to 3 contact lengths neither the Krylov model nor the exact
+  // recursion can decay to round-off: the sweep falls back to the Hessenberg form (exact).
+  const auto m = model_at({0.001, 0.001, -0.053});
+  const std::vector<double> freqs = {0.0, 1000.0, m.nyquist_frequency()};
+  const auto f = m.creep_coefficients(freqs, 3);
+  EXPECT_EQ(m.sweep_info().method, nss::SweepInfo::Method::hessenberg);
+  EXPECT_TRUE(m.markov_parameters().empty());
+  for (size_t i = 0; i < freqs.size(); ++i) {
+    const auto direct = m.creep_coefficients_direct(freqs[i]);
+    EXPECT_LT((f[i] - direct).norm(), 1e-9 * direct.norm()) << freqs[i] << " Hz";
+  }
+}
+
+TEST(LinearModel, KrylovMarkovParametersAreTheExactOnesBeforeTheirExtrapolation) {
+  // Moment matching: the reduced model after k block steps reproduces h_0 .. h_{k-1} exactly.
+  const auto m = model_at({0.001, 0.001, -0.053});
+  (void)m.creep_coefficients({0.0});
+  const auto h = m.markov_parameters();
+  const int k = m.sweep_info().block_steps;
+  ASSERT_GT(k, 10);
+  // the exact h_j from the time response to a unit impulse in each creepage: F_j = h_j e_c
+  for (int c = 0; c < 3; ++c) {
+    std::vector<Eigen::Vector3d> xi(k, Eigen::Vector3d::Zero());
+    xi[0](c) = 1.0;
+    const auto F = m.time_response(xi);
+    for (int j = 0; j < k; ++j)
+      EXPECT_LT((F[j] - h[j].col(c)).norm(), 1e-10 * h[0].norm()) << "h_" << j << ", column " << c;
+  }
+}
+
+#include "linalg/cholesky_solve.hpp"
+
+TEST(LinearModel, TallSkinnyKernelsAgreeWithEigen) {
+  for (int n : {5, 37, 38, 41, 200}) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n);
+    Eigen::MatrixXd K = A * A.transpose() + n * Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd K_copy = K;
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(K);
+    for (int cols : {1, 2, 3, 5}) {
+      const Eigen::MatrixXd B = Eigen::MatrixXd::Random(n, cols);
+      Eigen::MatrixXd X = B;
+      linalg::cholesky_solve_in_place(K, X);
+      EXPECT_LT((K_copy * X - B).norm(), 1e-12 * B.norm() * K_copy.norm() / n) << n << " x " << cols;
+    }
+    const Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, 11), X = Eigen::MatrixXd::Random(n, 3);
+    for (int c : {0, 3, 4, 7, 11}) {
+      const Eigen::MatrixXd C = linalg::transposed_product3(V, c, X);
+      EXPECT_LT((C - V.leftCols(c).transpose() * X).norm(), 1e-13 * (1 + C.norm()));
+      Eigen::MatrixXd Y = X;
+      linalg::subtract_product3(V, n, c, C, Y);
+      EXPECT_LT((Y - (X - V.leftCols(c) * C)).norm(), 1e-13 * (1 + Y.norm()));
+    }
   }
 }
