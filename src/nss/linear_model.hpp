@@ -93,9 +93,10 @@ class LinearContactModel {
 
   /// f at many frequencies (the default, fast):  f(w) = -sum_j h_j z^j  with the Markov parameters
   /// (impulse response) h_j = L' (M0^{-1} M1)^j M0^{-1} W of the discrete-time system, O(J) per
-  /// frequency. The h_j come from a block Krylov reduced model of dimension ~ 6 contact lengths
-  /// (exact for j below its number of block steps, accurate to ~1e-10 relative beyond, checked a
-  /// posteriori: see linear_model.cpp); if that check fails, from the exact recursion
+  /// frequency. The h_j come from a block Krylov reduced model built with 4/3 to 3 contact lengths
+  /// of block steps (3 vectors each; exact for j below the number of steps, the rest extrapolated
+  /// by the reduced dynamics; f checked a posteriori to 1e-10 relative over [0, Nyquist]: see
+  /// linear_model.cpp); if that check fails, from the exact recursion
   /// (creep_coefficients_markov); if the h_j have not decayed within `max_contact_lengths`, from
   /// creep_coefficients_hessenberg(). The model is built on the first call and kept.
   /// Throws InputError above the Nyquist limit.
