@@ -80,7 +80,7 @@ void print_solution(const contact::Grid& g, const contact::TangentialSolution& s
 
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  const io::ContactCase cc = io::read_contact_case(reader);
+  io::ContactCase cc = io::read_contact_case(reader);
   if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
   // Read every sweep point before any work, so that bad input fails early.
   std::vector<double> values;
@@ -97,6 +97,7 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
 
   auto t0 = Clock::now();
   const contact::ContactPatch patch = io::solve_case_patch(cc);
+  cc.grid = patch.grid;  // profiles: the grid may have been enlarged
   std::printf("%s: normal problem on %d x %d elements (dx = %.4g mm, dy = %.4g mm)\n",
               reader.name().c_str(), cc.grid.nx, cc.grid.ny, cc.grid.dx * 1e3, cc.grid.dy * 1e3);
   std::printf("  N = %.6g N, %d elements in contact, p_max = %.6g MPa, approach = %.6g mm; %d "

@@ -18,11 +18,13 @@ namespace rollnoise::cli {
 
 int run_transient(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  const io::ContactCase cc = io::read_contact_case(reader);
+  io::ContactCase cc = io::read_contact_case(reader);
   const contact::CreepageHistory history = io::read_excitation(reader);
   const double duration = reader.real("transient.duration");
   const bool from_steady = reader.string("transient.start") == "steady";
   const std::vector<double> snapshots = reader.real_list("transient.snapshots");
+  const contact::ContactPatch patch = io::solve_case_patch(cc);
+  cc.grid = patch.grid;  // profiles: the grid may have been enlarged
   const double dt = cc.grid.dx / cc.speed;
   const long steps = std::lround(std::floor(duration / dt + 1e-9));
   if (steps < 1) reader.fail("transient.duration", "shorter than one time step dx/V = " + std::to_string(dt) + " s");
@@ -32,7 +34,6 @@ int run_transient(const CommonOptions& o) {
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_case(w, reader);
-  const contact::ContactPatch patch = io::solve_case_patch(cc);
   io::write_patch(w, patch);
   const contact::Grid& g = cc.grid;
 

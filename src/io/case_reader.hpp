@@ -54,6 +54,10 @@ class CaseReader {
   std::string name_, source_;
 };
 
+/// Resolve a model file: as given if absolute, else relative to the case file's folder, its
+/// parent, or the source tree (in that order). InputError naming `key` if none exists.
+std::string resolve_model_file(const CaseReader& r, const std::string& key);
+
 /// The elements of a TOML array given as text ("[1, 2]" or "[[0,0,0],[1,0,0]]"), each as TOML text.
 /// `what` names the option in error messages.
 std::vector<std::string> split_toml_array(const std::string& text, const std::string& what);

@@ -5,6 +5,7 @@
 
 #include "contact/hertz.hpp"
 #include "core/errors.hpp"
+#include "geometry/profile.hpp"
 
 namespace rollnoise::io {
 
@@ -48,8 +49,17 @@ ContactCase read_contact_case(const CaseReader& r) {
       r.fail("grid.nx", "too coarse for the patch: fewer than 4 elements across 2a");
     if (2.0 * c.b / c.grid.dy < 4.0)
       r.fail("grid.ny", "too coarse for the patch: fewer than 4 elements across 2b");
-  } else {
-    r.fail("contact.geometry", "\"profiles\" is not available yet in this build");
+  } else {  // profiles: the right wheel of a wheelset on track (src/geometry, docs/geometry.md)
+    const auto wheel = geometry::read_profile(resolve_model_file(r, "contact.wheel_profile"), geometry::ProfileKind::Wheel);
+    const auto rail = geometry::read_profile(resolve_model_file(r, "contact.rail_profile"), geometry::ProfileKind::Rail);
+    c.profiles = std::make_shared<const geometry::WheelRailPair>(wheel, rail);
+    c.contact_point = geometry::find_contact(
+        *c.profiles, {r.real("contact.lateral_displacement"), r.real("contact.yaw")});
+    c.grid_options.nx = static_cast<int>(nx);
+    c.grid_options.scale = std::max(1.25, r.real("grid.scale"));
+    c.grid = geometry::choose_grid(*c.profiles, c.contact_point, c.normal_force, c.material, c.grid_options);
+    const auto hz = geometry::hertz_estimate(c.contact_point, c.normal_force, c.material, c.grid_options);
+    c.a = hz.a, c.b = hz.b;  // Hertz's estimate from the curvatures at the contact point
   }
 
   const std::string infl = r.string("solver.influence");
@@ -63,6 +73,9 @@ ContactCase read_contact_case(const CaseReader& r) {
 }
 
 contact::ContactPatch solve_case_patch(const ContactCase& c) {
+  if (c.profiles)
+    return geometry::solve_wheel_rail_patch(*c.profiles, c.contact_point, c.normal_force, c.material,
+                                            c.grid_options);
   const contact::HertzContact hz = contact::hertz_from_semi_axes(c.a, c.b, c.normal_force, c.material);
   return contact::solve_patch(c.grid, c.material, contact::quadratic_distance(c.grid, hz.A, hz.B),
                               c.normal_force, c.backend, c.normal);

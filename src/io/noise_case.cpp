@@ -4,26 +4,8 @@
 
 #include "core/errors.hpp"
 
-#ifndef ROLLNOISE_SOURCE_DIR
-#define ROLLNOISE_SOURCE_DIR "."
-#endif
 
 namespace rollnoise::io {
-
-namespace fs = std::filesystem;
-
-std::string resolve_model_file(const CaseReader& r, const std::string& key) {
-  const fs::path given = r.string(key);
-  if (given.is_absolute()) {
-    if (!fs::exists(given)) r.fail(key, "file " + given.string() + " does not exist");
-    return given.string();
-  }
-  const fs::path folder = r.folder().empty() ? fs::path(".") : fs::path(r.folder());
-  for (const fs::path& base : {folder, folder / "..", fs::path(ROLLNOISE_SOURCE_DIR)})
-    if (fs::exists(base / given)) return (base / given).lexically_normal().string();
-  r.fail(key, "file " + given.string() + " found neither beside the case file, in its parent folder, "
-              "nor in the source tree");
-}
 
 namespace {
 

@@ -27,10 +27,6 @@ struct NoiseCase {
   int points_per_band = 48;
 };
 
-/// Resolve a model file: as given if absolute, else relative to the case file's folder, its
-/// parent, or the source tree (in that order). InputError naming `key` if none exists.
-std::string resolve_model_file(const CaseReader& r, const std::string& key);
-
 NoiseCase read_noise_case(const CaseReader& r);
 
 }  // namespace rollnoise::io
