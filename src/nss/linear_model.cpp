@@ -496,14 +496,22 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
     // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
     Z = apply_K1(V.middleCols(d - 3, 3), *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_);
     X = red.solve(Z);
-    const double scale = (X.transpose() * Z).diagonal().maxCoeff();
+    const Eigen::Vector3d norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
+    const double scale = norm0.maxCoeff();
     grow(d + 3);
+    // Block classical Gram-Schmidt in the K0 inner product, repeated once when a column lost more
+    // than half of its squared norm ("twice is enough", Kahan-Parlett): one pass leaves the new
+    // column orthogonal to O(eps / ratio); away from cancellation one pass is as good as two. The
+    // rolling step mostly transports the traction into new directions (ratios ~0.9-1), with
+    // strong cancellation about once per contact length.
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, 3);
-    for (int pass = 0; pass < 2; ++pass) {  // CGS2 in the K0 inner product
+    for (int pass = 0; pass < 2; ++pass) {
       const Eigen::MatrixXd Ci = linalg::transposed_product3(Y, d, X);  // Y' X
       linalg::subtract_product3(V, r_, d, Ci, X);                        // X -= V Ci
       linalg::subtract_product3(Y, r_, d, Ci, Z);                        // Z -= Y Ci
       C += Ci;
+      const Eigen::Vector3d norm1 = (X.transpose() * Z).diagonal();
+      if (pass == 0 && (norm1.array() > 0.5 * norm0.array()).all()) break;
     }
     Eigen::Matrix3d R;
     const bool ok = normalise(X, Z, scale, R);
