@@ -71,11 +71,14 @@
 //    recursion (creep_coefficients_markov: J sequential solves), and from there to the Hessenberg
 //    form.
 //
-// Cost (measured, one core, bench/nss_bench.cpp): fine grid (r = 3541, n = 4192): K0 assembly and
-// Cholesky 0.6-0.7 s; 140 block steps 1.4-1.8 s (a 3-column Cholesky solve ~7 ms, memory bound,
-// linalg::cholesky_solve_in_place; FFTs ~1 ms; CGS2 ~3 ms at d = 420); 5 checks 0.1 s; Horner at
-// 1000 frequencies 0.02 s. Coarse grid (r = 898): 0.1 s in all. The exact recursion needs 1132
-// (fine) sequential steps instead of 140, and the paper's form a 4192 x 4192 LU.
+// Cost (measured, one core, bench/nss_bench.cpp, sweep of 1000 frequencies with the model set-up):
+// fine grid (68 x 50) at the paper's mean creepage (r = 3541, n = 4192): 2.0-2.3 s = K0 assembly
+// and Cholesky 0.6-0.7 s + 140 block steps 1.2-1.4 s (a 3-column Cholesky solve ~7 ms, memory
+// bound, linalg::cholesky_solve_in_place; FFTs ~1 ms; Gram-Schmidt ~2 ms at d = 420) + 5 checks
+// 0.1 s + Horner at 1000 frequencies 0.02 s. Full adhesion is the slowest case: r = n = 4192 and
+// 180 block steps, 4.1 s. Coarse grid (34 x 25): 0.08-0.13 s. The exact recursion needs 1132
+// (fine) sequential steps instead of 140 (9-12 s), the paper's form a 4192 x 4192 LU per
+// frequency (12 s).
 
 namespace rollnoise::nss {
 
