@@ -89,7 +89,6 @@ using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eig
 // The paper's formulation, dense (for the reference solve and the Hessenberg sweep).
 struct LinearContactModel::Dense {
   Eigen::MatrixXd M0, M1;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu0;
 };
 
 // The reduced symmetric formulation: K0 (lower triangle) factored in place, and A0 by FFT.
@@ -209,7 +208,6 @@ const LinearContactModel::Dense& LinearContactModel::dense() const {
     d->M0(2 * b, 2 * b) += c_[b];
     d->M0(2 * b + 1, 2 * b + 1) += c_[b];
   }
-  d->lu0.compute(d->M0);
   dense_ = std::move(d);
   return *dense_;
 }
@@ -364,11 +362,12 @@ void LinearContactModel::reduce() const {
   if (hessenberg_) return;
   const Dense& d = dense();
   // (M0 - z M1)^{-1} = (I - z N)^{-1} M0^{-1},  N = M0^{-1} M1 = Q H Q' (real Hessenberg form)
-  const Eigen::MatrixXd N = d.lu0.solve(d.M1);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu0(d.M0);
+  const Eigen::MatrixXd N = lu0.solve(d.M1);
   const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(N);
   H_ = hd.matrixH();
   const Eigen::MatrixXd Q = hd.matrixQ();
-  Rhat_ = Q.transpose() * d.lu0.solve(W_);
+  Rhat_ = Q.transpose() * lu0.solve(W_);
   Lhat_ = Q.transpose() * L_;
   hessenberg_ = true;
 }
