@@ -7,6 +7,7 @@
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
+//   rollnoise bench     CASE.toml [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -65,6 +66,13 @@ int main(int argc, char** argv) {
   add_common(noise_cmd);
   auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
   add_common(receptance);
+  std::vector<int> bench_grids = {10, 14, 20, 28, 40, 56};
+  std::string bench_csv;
+  auto* bench = app.add_subcommand("bench", "run time against error under grid refinement");
+  add_common(bench);
+  bench->add_option("--nx", bench_grids, "elements in x of the grids, coarse to fine (the last is the reference)")
+      ->delimiter(',');
+  bench->add_option("--csv", bench_csv, "write the table as CSV");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
@@ -85,6 +93,7 @@ int main(int argc, char** argv) {
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
+    if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

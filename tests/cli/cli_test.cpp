@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 #include <vector>
+#include <sstream>
 #include <algorithm>
 #include <cmath>
 
@@ -343,6 +344,25 @@ TEST(NonHertzianContact, LinearModelSpectraWithin1dBOfTheUnsteadySolverOnTheS100
     EXPECT_LT(worst, 1.0) << c;
   }
   H5Fclose(f);
+}
+
+TEST(BenchCommand, RefinementTableShowsTheForceErrorFallingTowardsTheFinestGrid) {
+  const fs::path csv = temp_dir() / "bench.csv";
+  const Invocation r = run("bench " + paper_case() + " --nx 10,20,34 --csv " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(csv);
+  std::string line;
+  std::vector<double> err;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'n') continue;
+    std::stringstream ss(line);
+    std::string cell;
+    for (int c = 0; c < 7 && std::getline(ss, cell, ','); ++c)
+      if (c == 6) err.push_back(std::stod(cell));
+  }
+  ASSERT_EQ(err.size(), 3u);
+  EXPECT_GT(err[0], err[1]);
+  EXPECT_EQ(err[2], 0.0);  // the reference grid
 }
 
 TEST(Program, KeysListsTheSchemaWithDefaults) {
