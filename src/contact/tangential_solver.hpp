@@ -1,12 +1,8 @@
 // The tangential problem of rolling contact with Coulomb friction on the grid (paper Eqs. 2-3,
-// DESIGN.md Sec. 2), solved by block Gauss-Seidel with the exact element solution of coulomb.hpp.
+// DESIGN.md Sec. 2): creepages, element states, solutions, rigid slip and the element order.
 //
-// Why Gauss-Seidel. Every element step solves Coulomb's law exactly, so the iteration needs no
-// regularisation and no slip-set guesses, and it works unchanged from creepage 0 (all adhesion) to
-// full sliding. For the transient step the operator A/dt is symmetric positive definite and the
-// iteration is the exact minimisation of a convex functional, element by element (Vollebregt's
-// ConvexGS), hence globally convergent. Steady rolling needs a transformed system: see
-// steady_rolling.hpp.
+// The solvers live in coulomb_newton.hpp (both problems), steady_rolling.hpp and
+// transient_rolling.hpp; this header holds what they share.
 #pragma once
 
 #include <cstdint>
@@ -47,14 +43,5 @@ void rigid_slip(const Grid& g, double speed, const Creepage& c, double spin_offs
 
 /// The contact elements (pn > 0) in the sweep order: from the leading edge (largest x) backwards.
 std::vector<int> sweep_order(const Grid& g, const GridField& pn);
-
-/// Solve s = rhs + S p with Coulomb's law |p| <= bound at the elements `order` (tractions elsewhere
-/// are zero). `p` holds the start values on entry (warm start). Throws NumericalError (naming
-/// `solver`) when the iteration does not converge.
-TangentialSolution solve_coulomb(const SlipOperator& S, const GridField& rhs_x,
-                                 const GridField& rhs_y, const GridField& bound,
-                                 const std::vector<int>& order, GridField px, GridField py,
-                                 const TangentialSolverSettings& settings,
-                                 const std::string& solver);
 
 }  // namespace rollnoise::contact

@@ -7,8 +7,8 @@
 // problem with the previous tractions known, S = A/dt, rhs = w - A0 p_{k-1}/dt, solved by the
 // semismooth Newton method of coulomb_newton.hpp warm-started from the previous step (its LU
 // factors carry over, so a step mostly costs a few O(n^2) GMRES iterations). Element Gauss-Seidel
-// (ConvexGS, tangential_solver.hpp) also converges here (A/dt is symmetric positive definite) but
-// needed ~90 sweeps per step to 1e-12 on the paper's grid: 56 ms per step against this solver's. The creepage of step k is taken at t_k = k dt, the end of the step (CONTACT's
+// (ConvexGS) also converges here (A/dt is symmetric positive definite) but needed ~90 sweeps per
+// step to 1e-12 on the paper's grid (56 ms per step, against 10-12 ms), so it was removed. The creepage of step k is taken at t_k = k dt, the end of the step (CONTACT's
 // convention, DESIGN.md Sec. 3).
 #pragma once
 

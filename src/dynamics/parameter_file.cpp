@@ -1,4 +1,5 @@
 #include "dynamics/parameter_file.hpp"
+#include "core/text.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -9,13 +10,6 @@
 
 namespace rollnoise::dynamics {
 namespace {
-
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
-}
 
 bool valid_key(const std::string& k) {
   if (k.empty()) return false;

@@ -1,4 +1,5 @@
 #include "dynamics/wheel.hpp"
+#include "core/text.hpp"
 
 #include <Eigen/Dense>
 #include <cctype>
@@ -22,13 +23,6 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
       r.z(), 0.0, -r.x(),   //
       -r.y(), r.x(), 0.0;
   return S;
-}
-
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
 }
 
 std::vector<std::string> split_csv(const std::string& line) {

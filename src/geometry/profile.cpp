@@ -1,4 +1,5 @@
 #include "geometry/profile.hpp"
+#include "core/text.hpp"
 
 #include <gsl/gsl_interp.h>
 
@@ -12,6 +13,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "geometry/parabola_fit.hpp"
 
 namespace rollnoise::geometry {
 
@@ -69,24 +71,8 @@ double Profile::second_derivative(double y) const {
 }
 
 double Profile::smoothed_second_derivative(double y, double half_window) const {
-  // Least-squares parabola z ~ c0 + c1 t + c2 t^2 through m equally spaced samples t_k in
-  // [-w, w]. The samples are symmetric, so sum t = sum t^3 = 0 and c2 decouples from c1:
-  //   c2 = sum (t_k^2 - <t^2>) z_k / sum (t_k^2 - <t^2>)^2.
-  const int m = 41;
-  const double w = std::max(half_window, 1e-9);
-  double mean_t2 = 0.0;
-  for (int k = 0; k < m; ++k) {
-    const double t = -w + 2.0 * w * k / (m - 1);
-    mean_t2 += t * t / m;
-  }
-  double num = 0.0, den = 0.0;
-  for (int k = 0; k < m; ++k) {
-    const double t = -w + 2.0 * w * k / (m - 1);
-    const double d = t * t - mean_t2;
-    num += d * z(y + t);
-    den += d * d;
-  }
-  return 2.0 * num / den;
+  // z'' = 2 c2 of the least-squares parabola through 41 samples in [y - w, y + w]
+  return 2.0 * quadratic_coefficient([&](double t) { return z(y + t); }, std::max(half_window, 1e-9));
 }
 
 double Profile::curvature(double y, double half_window) const {
@@ -117,13 +103,6 @@ std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
 }
 
 std::string extension(const std::string& path) {

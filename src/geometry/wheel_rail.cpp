@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "geometry/parabola_fit.hpp"
 
 namespace rollnoise::geometry {
 namespace {
@@ -35,25 +36,6 @@ double golden_minimum(F&& f, double a, double b, int iterations = 80) {
     }
   }
   return f1 <= f2 ? x1 : x2;
-}
-
-// The quadratic coefficient c2 of the least-squares parabola c0 + c1 t + c2 t^2
-// through f sampled at m equally spaced t in [-w, w] (symmetric samples decouple c2 from c1).
-template <class F>
-double quadratic_coefficient(F&& f, double w, int m = 41) {
-  double mean_t2 = 0.0;
-  for (int k = 0; k < m; ++k) {
-    const double t = -w + 2.0 * w * k / (m - 1);
-    mean_t2 += t * t / m;
-  }
-  double num = 0.0, den = 0.0;
-  for (int k = 0; k < m; ++k) {
-    const double t = -w + 2.0 * w * k / (m - 1);
-    const double d = t * t - mean_t2;
-    num += d * f(t);
-    den += d * d;
-  }
-  return num / den;
 }
 
 // A cross-section curve (rail or wheel) seen in the contact frame of contact point (yc0, zc0)

@@ -1,4 +1,5 @@
 #include "noise/roughness.hpp"
+#include "core/text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -26,13 +27,6 @@ RoughnessSpectrum table(const char* name, const double (&levels)[35]) {
     s.level.push_back(levels[i]);
   }
   return s;
-}
-
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
 }
 
 }  // namespace

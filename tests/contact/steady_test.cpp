@@ -177,7 +177,9 @@ TEST(SteadyRolling, ConvergesFromTinyCreepageToLargeSpinAndStaysWithinTheFrictio
       EXPECT_TRUE(std::isfinite(f.Fx) && std::isfinite(f.Fy) && std::isfinite(f.Mz));
       EXPECT_LE(std::hypot(f.Fx, f.Fy), kMu * kN * (1 + 1e-12));
       EXPECT_LT(s.residual, 1e-10);
-      if (c.xi_x == 0.0) EXPECT_LT(f.Fy * phi, 0.0) << "pure spin " << phi << ": Fy = -f23 phi, f23 > 0";
+      if (c.xi_x == 0.0) {
+        EXPECT_LT(f.Fy * phi, 0.0) << "pure spin " << phi << ": Fy = -f23 phi, f23 > 0";
+      }
     }
 }
 
