@@ -10,6 +10,7 @@
 // DESIGN.md Sec. 2): the influence at x_I + dx of the previous position, A0(I,J) = A(di + 1, dj).
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "contact/influence.hpp"
@@ -21,9 +22,17 @@ enum class Backend { Auto, Fft, Dense };
 /// Normal: u_z = A_zz p_z, one component. Tangential: (u_x, u_y) = [A_xx A_xy; A_xy A_yy](p_x, p_y).
 enum class Problem { Normal, Tangential };
 
+/// A block-Toeplitz kernel: the coefficient of component c for the element offset (di, dj),
+/// di in [-(nx-1), nx-1], dj in [-(ny-1), ny-1].
+using ToeplitzKernel = std::function<double(Component c, int di, int dj)>;
+
 class HalfSpaceOperator {
  public:
   HalfSpaceOperator(const InfluenceTable& table, Problem problem, int column_shift = 0,
+                    Backend backend = Backend::Auto);
+  /// Any block-Toeplitz operator on the grid with the structure of `problem` (e.g. the slip
+  /// operator S of slip_operator.hpp): the same backends, the same `apply`.
+  HalfSpaceOperator(const Grid& grid, Problem problem, const ToeplitzKernel& kernel,
                     Backend backend = Backend::Auto);
   ~HalfSpaceOperator();
   HalfSpaceOperator(HalfSpaceOperator&&) noexcept;

@@ -26,6 +26,11 @@ class SlipOperator {
   double xx(int k) const { return xx_[k]; }
   double xy(int k) const { return xy_[k]; }
   double yy(int k) const { return yy_[k]; }
+  /// Coefficient of component c (xx, xy or yy) at the offset (di, dj).
+  double operator()(Component c, int di, int dj) const {
+    const int k = offset_index(di, dj);
+    return c == Component::xx ? xx_[k] : c == Component::xy ? xy_[k] : yy_[k];
+  }
 
  private:
   template <class Coefficient>

@@ -31,8 +31,10 @@ struct TangentialSolution {
   GridField px, py;  ///< tractions on body 1 (Pa)
   GridField sx, sy;  ///< slip velocities (m/s), zero in adhesion
   std::vector<std::int8_t> state;  ///< ElementState per element
-  int iterations = 0;
-  double residual = 0.0;
+  int iterations = 0;         ///< Newton iterations
+  double residual = 0.0;      ///< final relative residual
+  int linear_iterations = 0;  ///< GMRES iterations over all Newton steps (work counter)
+  int factorisations = 0;     ///< LU factorisations of the Jacobian made by this solve
   int count(ElementState s) const;
 };
 

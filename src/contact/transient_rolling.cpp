@@ -30,6 +30,7 @@ TransientRolling::TransientRolling(const InfluenceTable& A, const GridField& pn,
 void TransientRolling::set_tractions(const GridField& px, const GridField& py) {
   current_.px = px;
   current_.py = py;
+  previous_.clear();
 }
 
 const TangentialSolution& TransientRolling::step(const Creepage& c) {
@@ -46,8 +47,16 @@ const TangentialSolution& TransientRolling::step(const Creepage& c) {
     rx[k] -= u0[k] / dt_;
     ry[k] -= u0[n + k] / dt_;
   }
-  current_ = newton_.solve(rx, ry, current_.px, current_.py, settings_,
-                           "transient tangential solver");
+  // Start value: the tractions extrapolated linearly from the last two steps (the Newton solve
+  // projects them onto the traction bound); the previous tractions after a reset.
+  GridField sx = current_.px, sy = current_.py;
+  if (previous_.size() == 2 * static_cast<size_t>(n))
+    for (int k = 0; k < n; ++k) {
+      sx[k] = 2.0 * current_.px[k] - previous_[k];
+      sy[k] = 2.0 * current_.py[k] - previous_[n + k];
+    }
+  previous_ = std::move(p0);
+  current_ = newton_.solve(rx, ry, sx, sy, settings_, "transient tangential solver");
   return current_;
 }
 

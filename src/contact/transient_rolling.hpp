@@ -41,6 +41,7 @@ class TransientRolling {
   CoulombNewton newton_;
   TangentialSolverSettings settings_;
   TangentialSolution current_;
+  std::vector<double> previous_;  // tractions (px, py) of the step before current_, for the start value
 };
 
 }  // namespace rollnoise::contact
