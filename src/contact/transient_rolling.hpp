@@ -5,11 +5,12 @@
 // on the grid that moves with the contact one element per step: A0 is A shifted by one column
 // (the material now at x_I was at x_I + dx one step earlier). Each step is a full Coulomb-friction
 // problem with the previous tractions known, S = A/dt, rhs = w - A0 p_{k-1}/dt, solved by the
-// semismooth Newton method of coulomb_newton.hpp warm-started from the previous step (its LU
-// factors carry over, so a step mostly costs a few O(n^2) GMRES iterations). Element Gauss-Seidel
-// (ConvexGS) also converges here (A/dt is symmetric positive definite) but needed ~90 sweeps per
-// step to 1e-12 on the paper's grid (56 ms per step, against 10-12 ms), so it was removed. The creepage of step k is taken at t_k = k dt, the end of the step (CONTACT's
-// convention, DESIGN.md Sec. 3).
+// semismooth Newton method of coulomb_newton.hpp, started from the tractions extrapolated linearly
+// from the last two steps (2 Newton iterations per step instead of 3 on the paper's case); its
+// preconditioner, if any, carries over between steps. Element Gauss-Seidel (ConvexGS) also
+// converges here (A/dt is symmetric positive definite) but needed ~90 sweeps per step to 1e-12 on
+// the paper's grid (56 ms per step, against 2-3 ms now), so it was removed. The creepage of step k
+// is taken at t_k = k dt, the end of the step (CONTACT's convention, DESIGN.md Sec. 3).
 #pragma once
 
 #include "contact/halfspace_operator.hpp"
