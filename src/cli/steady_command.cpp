@@ -71,9 +71,11 @@ std::vector<std::string> expand_sweep(const std::string& spec, const io::CaseRea
 void print_solution(const contact::Grid& g, const contact::TangentialSolution& s, double ms) {
   const auto f = contact::total_forces(g, s.px, s.py);
   std::printf("  Fx = %.6g N   Fy = %.6g N   Mz = %.6g N m\n", f.Fx, f.Fy, f.Mz);
-  std::printf("  adhesion %d, slip %d elements; %d Newton iterations, residual %.2g; %.1f ms\n",
-              s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip),
-              s.iterations, s.residual, ms);
+  std::printf(
+      "  adhesion %d, slip %d elements; %d Newton iterations (%d GMRES, %d LU), residual %.2g; "
+      "%.1f ms\n",
+      s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip), s.iterations,
+      s.linear_iterations, s.factorisations, s.residual, ms);
 }
 
 }  // namespace

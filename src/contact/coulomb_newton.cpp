@@ -18,14 +18,16 @@ struct FixedPointResidual {
   double norm = 0.0;  // max_I |R_I|
 };
 
-// GMRES iterations allowed without a preconditioner before J is factorised. An iteration costs one
-// FFT product; a preconditioned one adds two triangular solves with the n x n factors, which are
-// cheap while the factors stay in cache and memory-bound beyond. Measured (rollnoise_bench
-// --benchmark_filter=Transient, paper case, one step at 1 kHz): 34x25 grid (1076 unknowns) 3.2 ms
-// with factors against 5.2 ms without; 68x50 (4192 unknowns) 67 ms against 35 ms. Unpreconditioned
-// GMRES takes ~30 iterations per Newton step there, and 40-80 for the steady problem (where it saves
-// the O(n^3) factorisations: 68x50 steady solve 2.7 s -> 0.36 s).
-int max_unpreconditioned(int unknowns) { return unknowns <= 2000 ? 20 : 150; }
+// GMRES iterations allowed without a preconditioner (restarted every 150) before J is factorised.
+// An iteration costs one FFT product, O(N log N), plus the orthogonalisation; the factorisation
+// costs O(n^3) and each preconditioned iteration adds two triangular solves, O(n^2), cheap while
+// the factors stay in cache. Measured (rollnoise_bench --benchmark_filter='Steady|Transient',
+// paper case): on 34x25 (1076 unknowns) a transient step costs 2.1 ms with factors and ~3.5 ms
+// without, so small systems are factorised early; on 68x50 (4192 unknowns) 28 ms without against
+// 67 ms with, and the steady solve 0.35 s without against 2.7 s with. A budget proportional to n
+// keeps the unpreconditioned work below the factorisation (136x100, 16720 unknowns: one float LU
+// took 100 s against ~2 ms per GMRES iteration).
+int unpreconditioned_budget(int unknowns) { return unknowns <= 2000 ? 8 : unknowns / 4; }
 
 }  // namespace
 
@@ -170,26 +172,39 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     };
     // Newton step J dp = -R: GMRES with the current preconditioner (none before the first
     // factorisation); on failure new factors (double precision once float factors have failed).
-    const double forcing = std::min(1e-2, std::max(1e-13, sol.residual * 1e-2));
-    auto gmres = [&](Eigen::VectorXd& dp, int max_iterations) {
+    // Forcing term of the inexact Newton method (Dembo, Eisenstat & Steihaug 1982): the linear
+    // residual relative to |R|. With factors GMRES is cheap and 1e-2 |R| keeps Newton quadratic;
+    // without, reaching 1e-13 costs more GMRES iterations than the extra Newton steps that the
+    // floor 1e-3 (linear convergence by 1e-3 per step once the slip set is fixed) costs.
+    const double forcing =
+        std::min(1e-2, std::max(have_lu_ ? 1e-13 : 1e-3, sol.residual * 1e-2));
+    // GMRES(restart) from dp = 0 until converged or `budget` iterations are spent.
+    auto gmres = [&](Eigen::VectorXd& dp, int restart, int budget) {
       dp.setZero(n);
-      const auto res = linalg::gmres(
-          jacobian, [&](const Eigen::VectorXd& v) { return precondition(v); }, -r.R, dp, forcing,
-          max_iterations);
-      linear_iterations_ += res.iterations;
-      return res.converged;
+      for (int spent = 0; spent < budget;) {
+        const auto res = linalg::gmres(
+            jacobian, [&](const Eigen::VectorXd& v) { return precondition(v); }, -r.R, dp,
+            forcing, std::min(restart, budget - spent));
+        linear_iterations_ += res.iterations;
+        spent += std::max(res.iterations, 1);
+        if (res.converged) return true;
+      }
+      return false;
     };
     Eigen::VectorXd dp;
-    if (!gmres(dp, have_lu_ ? 30 : max_unpreconditioned(n))) {
+    bool solved = have_lu_ ? gmres(dp, 30, 30) : gmres(dp, 150, unpreconditioned_budget(n));
+    if (!solved) {  // new factors of the current J; double precision if float ones fail
       factorise(r.local);
-      if (!gmres(dp, 30) && !double_factors_) {
+      solved = gmres(dp, 30, 30);
+      if (!solved && !double_factors_) {
         double_factors_ = true;
         factorise(r.local);
-        if (!gmres(dp, 60)) {
-          std::ostringstream msg;
-          msg << solver << ": the Newton system is too ill-conditioned for GMRES with LU factors";
-          throw NumericalError(msg.str());
-        }
+        solved = gmres(dp, 60, 60);
+      }
+      if (!solved) {
+        std::ostringstream msg;
+        msg << solver << ": the Newton system is too ill-conditioned for GMRES with LU factors";
+        throw NumericalError(msg.str());
       }
     }
     // projected Newton point, accepted if it reduces |R|_2, else backtracking
