@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   add_common(bench);
   bench->add_option("--nx", bench_grids, "elements in x of the grids, coarse to fine (the last is the reference)")
       ->delimiter(',');
-  bench->add_option("--csv", bench_csv, "write the table as CSV");
+  bench->add_option("--csv", bench_csv, "write the table as CSV (draw it with postprocess/plot_bench.py)");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
   try {
