@@ -25,15 +25,6 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
   return S;
 }
 
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
 const char* const kColumns[] = {"frequency_Hz", "damping_ratio", "modal_mass_kg", "phi_z",
                                 "phi_x",        "phi_y",         "phi_rz"};
 
@@ -114,17 +105,9 @@ void validate_mode(const WheelMode& m, const std::string& where) {
 }
 
 std::vector<WheelMode> read_wheel_modes(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open wheel mode file '" + path + "'");
   std::vector<WheelMode> modes;
-  std::string line;
-  int line_no = 0;
   bool header = false;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string where = path + ":" + std::to_string(line_no);
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
+  for_each_data_line(path, "wheel mode file", [&](const std::string& where, const std::string& t) {
     const auto cells = split_csv(t);
     if (!header) {  // the header must name the columns in order
       for (int c = 0; c < 7; ++c)
@@ -136,20 +119,14 @@ std::vector<WheelMode> read_wheel_modes(const std::string& path) {
                                                           "'; column " + std::to_string(c + 1) +
                                                           " should be '" + kColumns[c] + "'");
       header = true;
-      continue;
+      return;
     }
     double v[7];
     for (int c = 0; c < 7; ++c) {
       if (static_cast<int>(cells.size()) <= c || cells[c].empty())
         throw InputError(where + ":" + kColumns[c],
                          where + ": missing field '" + kColumns[c] + "'");
-      std::size_t used = 0;
-      try {
-        v[c] = std::stod(cells[c], &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != cells[c].size() || used == 0 || !std::isfinite(v[c]))
+      if (!parse_finite(cells[c], v[c]))
         throw InputError(
             where + ":" + kColumns[c],
             where + ": field '" + kColumns[c] + "' is not a finite number: '" + cells[c] + "'");
@@ -165,7 +142,7 @@ std::vector<WheelMode> read_wheel_modes(const std::string& path) {
     if (cells.size() == 8) m.label = cells[7];
     validate_mode(m, where);
     modes.push_back(m);
-  }
+  });
   if (!header) throw InputError(path, path + ": no header line (empty wheel mode file)");
   return modes;
 }

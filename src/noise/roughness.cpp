@@ -90,17 +90,9 @@ RoughnessSpectrum wheel_roughness_disc_braked() {
 }
 
 RoughnessSpectrum read_roughness_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open roughness file '" + path + "'");
   std::vector<std::pair<double, double>> rows;
-  std::string line;
-  int line_no = 0;
   bool header = false;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string where = path + ":" + std::to_string(line_no);
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
+  for_each_data_line(path, "roughness file", [&](const std::string& where, const std::string& t) {
     const auto comma = t.find(',');
     const std::string c0 = trim(t.substr(0, comma));
     const std::string c1 = comma == std::string::npos ? "" : trim(t.substr(comma + 1));
@@ -109,27 +101,20 @@ RoughnessSpectrum read_roughness_csv(const std::string& path) {
         throw InputError(where + ":header",
                          where + ": header must be 'wavelength_m,level_dB', got '" + t + "'");
       header = true;
-      continue;
+      return;
     }
     double v[2];
     const std::string cells[2] = {c0, c1};
     const char* names[2] = {"wavelength_m", "level_dB"};
-    for (int c = 0; c < 2; ++c) {
-      std::size_t used = 0;
-      try {
-        v[c] = std::stod(cells[c], &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (cells[c].empty() || used != cells[c].size() || !std::isfinite(v[c]))
+    for (int c = 0; c < 2; ++c)
+      if (!parse_finite(cells[c], v[c]))
         throw InputError(where + ":" + names[c], where + ": field '" + names[c] +
                                                      "' is missing or not a finite number: '" +
                                                      cells[c] + "'");
-    }
     if (!(v[0] > 0.0))
       throw InputError(where + ":wavelength_m", where + ": field 'wavelength_m' must be positive");
     rows.emplace_back(v[0], v[1]);
-  }
+  });
   if (!header) throw InputError(path, path + ": empty roughness file (no header)");
   std::sort(rows.begin(), rows.end(), [](auto& p, auto& q) { return p.first > q.first; });
   RoughnessSpectrum s;
