@@ -139,7 +139,8 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
       r.local[a] = solve_coulomb_element(bx, by, d1_, d2_, bound_[a]);
       r.R(2 * a) = q(2 * a) - r.local[a].px;
       r.R(2 * a + 1) = q(2 * a + 1) - r.local[a].py;
-      r.norm = std::max(r.norm, std::hypot(r.R(2 * a), r.R(2 * a + 1)));
+      const double len = std::hypot(r.R(2 * a), r.R(2 * a + 1));
+      if (!(len <= r.norm)) r.norm = len;  // keeps a NaN (std::max would drop it)
     }
     return r;
   };
@@ -157,7 +158,8 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
   sol.residual = relative(r);
   bool converged = r.norm == 0.0 || sol.residual <= settings.tolerance;
   Eigen::VectorXd Sv;
-  for (int it = 1; it <= settings.max_iterations && !converged; ++it) {
+  for (int it = 1; it <= settings.max_iterations && !converged && std::isfinite(sol.residual);
+       ++it) {
     // Jacobian action J v = v - dPi/db (S v - D v), element by element
     auto jacobian = [&](const Eigen::VectorXd& v) {
       apply_S(v, Sv);

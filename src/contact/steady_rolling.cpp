@@ -8,6 +8,7 @@ TangentialSolution solve_steady_rolling(const InfluenceTable& A, const GridField
                                         const SteadyRollingInput& in,
                                         const TangentialSolverSettings& settings,
                                         const TangentialSolution* start) {
+  check_rolling_input(in.mu, in.speed, in.creepage);
   const Grid& g = A.grid();
   GridField wx, wy, bound(g.size());
   rigid_slip(g, in.speed, in.creepage, in.spin_offset, wx, wy);

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+
+#include "core/errors.hpp"
 
 
 namespace rollnoise::contact {
@@ -20,6 +23,21 @@ void rigid_slip(const Grid& g, double speed, const Creepage& c, double spin_offs
       wx[k] = speed * (c.xi_x - c.phi * g.y(iy));
       wy[k] = speed * (c.xi_y + c.phi * (g.x(ix) + spin_offset * g.dx));
     }
+}
+
+void check_rolling_input(double mu, double speed, const Creepage& c) {
+  auto text = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
+  if (!(std::isfinite(mu) && mu > 0.0))
+    throw InputError("friction.mu", "must be a positive finite number, got " + text(mu));
+  if (!(std::isfinite(speed) && speed > 0.0))
+    throw InputError("rolling.speed", "must be a positive finite speed (m/s), got " + text(speed));
+  if (!(std::isfinite(c.xi_x) && std::isfinite(c.xi_y) && std::isfinite(c.phi)))
+    throw InputError("creepage.mean", "creepages must be finite, got (" + text(c.xi_x) + ", " +
+                                          text(c.xi_y) + ", " + text(c.phi) + ")");
 }
 
 std::vector<int> sweep_order(const Grid& g, const GridField& pn) {

@@ -43,6 +43,11 @@ struct TangentialSolution {
 void rigid_slip(const Grid& g, double speed, const Creepage& c, double spin_offset, GridField& wx,
                 GridField& wy);
 
+/// Throw InputError unless mu > 0, speed > 0 and the creepages are finite (keys friction.mu,
+/// rolling.speed, creepage.mean: the case keys these come from). Non-finite input would otherwise
+/// travel through the solvers as NaN tractions.
+void check_rolling_input(double mu, double speed, const Creepage& c);
+
 /// The contact elements (pn > 0) in the sweep order: from the leading edge (largest x) backwards.
 std::vector<int> sweep_order(const Grid& g, const GridField& pn);
 

@@ -19,6 +19,7 @@ TransientRolling::TransientRolling(const InfluenceTable& A, const GridField& pn,
                 return b;
               }()),
       settings_(settings) {
+  check_rolling_input(mu, speed, Creepage{});
   const int n = A.grid().size();
   current_.px.assign(n, 0.0);
   current_.py.assign(n, 0.0);
@@ -34,6 +35,7 @@ void TransientRolling::set_tractions(const GridField& px, const GridField& py) {
 }
 
 const TangentialSolution& TransientRolling::step(const Creepage& c) {
+  check_rolling_input(mu_, speed_, c);
   const Grid& g = A_.grid();
   const int n = g.size();
   // rhs = w(t_k) - A0 p_{k-1} / dt

@@ -110,6 +110,7 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
                                        const contact::TangentialSolution& mean,
                                        const LinearModelInput& in)
     : dt_(patch.grid.dx / in.speed), speed_(in.speed), mu_(in.mu), table_(patch.influence) {
+  contact::check_rolling_input(in.mu, in.speed, contact::Creepage{});
   const contact::Grid& g = patch.grid;
   const contact::InfluenceTable& A = patch.influence;
   el_ = contact::sweep_order(g, patch.normal.pn);
@@ -621,6 +622,22 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_hessenberg(
     out.push_back(-(Lhat_.transpose().cast<std::complex<double>>() * X));
   }
   return out;
+}
+
+Eigen::MatrixXd LinearContactModel::step_matrix_cholesky_factor() const {
+  // K0 holds the factor in its lower triangle; its strict upper triangle was never written.
+  return reduced().K0.triangularView<Eigen::Lower>();
+}
+
+double LinearContactModel::step_matrix_rcond() const {
+  return reduced().llt->rcond();
+}
+
+Eigen::VectorXd LinearContactModel::step_matrix_slip_diagonal() const {
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(r_);
+  for (size_t a = 0; a < el_.size(); ++a)
+    if (slip_[a]) d(offset_[a]) = c_[a];
+  return d;
 }
 
 std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector<Eigen::Vector3d>& xi) const {

@@ -130,6 +130,19 @@ class LinearContactModel {
   /// Throw InputError (key "frequency") unless 0 <= f <= Nyquist.
   void check_frequency(double frequency) const;
 
+  // ---- diagnostics (read-only; they build and factorise K0 if that has not happened yet) ----
+
+  /// The Cholesky factor L of the reduced step matrix, K0 = D + Pi' A Pi/dt = L L' (lower
+  /// triangular, r x r, a copy), for exact condition numbers: cond_2(K0) = cond_2(L)^2 and, for a
+  /// diagonal scaling S, cond_2(S K0 S) = cond_2(S L)^2 (docs/stability.md).
+  Eigen::MatrixXd step_matrix_cholesky_factor() const;
+  /// Estimate of the reciprocal condition number 1/(|K0|_1 |K0^{-1}|_1) from the Cholesky factor
+  /// (Eigen's LLT::rcond, Hager-Higham 1-norm estimator, O(r^2)).
+  double step_matrix_rcond() const;
+  /// The diagonal D of K0: c_e = |s_bar_e|/(mu pn_e) (floored, see above) for slip unknowns, 0 for
+  /// adhesion unknowns (r values, reduced order).
+  Eigen::VectorXd step_matrix_slip_diagonal() const;
+
  private:
   struct Dense;    // the paper's formulation, assembled densely on demand
   struct Reduced;  // the symmetric reduced formulation (Cholesky of K0, FFT operator for K1)
