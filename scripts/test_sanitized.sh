@@ -5,34 +5,36 @@
 #
 #   bash scripts/test_sanitized.sh [ctest arguments]   e.g. -R LinearModel
 #   ROLLNOISE_JOBS=1        parallel jobs of the build and of ctest (default: nproc)
-#   ROLLNOISE_SANITIZE_ALL=1  also the excluded tests below (about 40 more CPU minutes)
+#   ROLLNOISE_SANITIZE_ALL=1  also the excluded tests below (30 more CPU minutes)
 #
 # Build: -O1 (the usual sanitizer level) with line tables only (-g1: the reports keep file:line and
-# inlined frames, and the build is a third faster than with -g); no -DNDEBUG, so Eigen's index
-# assertions are on, and _GLIBCXX_ASSERTIONS checks std::vector indices within the capacity, which
-# AddressSanitizer cannot see. No benchmarks. Any sanitizer report ends its process with status 86
-# (no test expects that status; the program itself exits 0, 1 or 2): a test of the CLI that fails
-# with status 86 had a report in build-asan/rollnoise (the test prints its output).
+# inlined frames, and a file compiles about a third faster than with -g); no -DNDEBUG, so Eigen's
+# index assertions are on, and _GLIBCXX_ASSERTIONS checks std::vector indices within the capacity,
+# which AddressSanitizer cannot see. No benchmarks. Any sanitizer report ends its process with
+# status 86 (the program itself exits 0, 1 or 2, and no test expects 86): a CLI test that fails
+# with status 86 had a report in build-asan/rollnoise; rerun its command to see the report if the
+# test does not print the output.
 #
 # Excluded by default: the few runs whose sanitized time is spent in O(n^3) dense factorisations
 # (Eigen code, 20-50x slower under the sanitizers: a 1200 x 1200 LU takes 0.08 s natively, 4 s
-# here) on large grids or repeated for reference, while the same rollnoise functions run on
-# smaller grids in the tests that stay. Measured on 2 cores, they took 1750 of the 2570 CPU
-# seconds of the sanitized suite:
-#   AgainstCONTACT.*_fine_*    the CONTACT cases on the fine 68 x 50 grid (40-65 s each); every
-#                              case S1-S5 runs on the coarse 34 x 25 grid, through the same solvers.
-#   KalkerLinearTheory.*       Kalker's coefficients under refinement to 60 x 60 elements (300-530 s
-#                              each); the full-adhesion solve stays in KalkerTable and SteadyRolling.*.
-#   LinearModel.FastSweepAgrees..., LinearModel.FastSweepHessenbergAndDirectSolveAgree
-#                              the fast sweep against dozens of direct complex LUs (200-270 s); the
-#                              sweep, the exact recursion, the Hessenberg form and the direct solve
-#                              all run in the other LinearModel.* and NssStress.* tests.
-#   ConditioningStress.*       exact condition numbers by dense eigenvalue problems and SVDs in the
-#                              test itself (~120 s); its mean states are solved in SteadyStress.*.
+# here) on fine grids or repeated many times as a reference, while the same rollnoise functions
+# run on smaller grids or fewer times in the tests that stay. Measured on this 2-core machine, the
+# whole sanitized suite takes 2570 CPU seconds (43 min with one job), these tests 1850 of them:
+#   AgainstCONTACT.*_fine_*     the CONTACT cases on the fine 68 x 50 grid (40-65 s each); each of
+#                               them also runs on the coarse 34 x 25 grid, through the same code.
+#   KalkerLinearTheory.*        Kalker's coefficients under refinement to 60 x 60 elements (up to
+#                               530 s); full-adhesion solves stay in KalkerTable.*, SteadyStress.*.
+#   LinearModel.FastSweepAgrees*, .FastSweepHessenbergAndDirect*, .EveryMeanState*
+#                               the fast sweep against 15-28 direct complex LUs each on 34 x 25
+#                               (130-270 s); the sweep, exact recursion, Hessenberg form and direct
+#                               solve (45 times, 15 mean states) run in the other LinearModel.* and
+#                               NssStress.* tests.
+#   ConditioningStress.*        exact condition numbers: dense eigenvalue problems and SVDs in the
+#                               test itself (120 s); its mean states are solved in SteadyStress.*.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='AgainstCONTACT\..*_fine_|KalkerLinearTheory\.|LinearModel\.FastSweep(Agrees|HessenbergAndDirect)|ConditioningStress\.'
+EXCLUDE='AgainstCONTACT\..*_fine_|KalkerLinearTheory\.|LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|ConditioningStress\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
