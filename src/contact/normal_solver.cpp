@@ -107,4 +107,51 @@ NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const
   throw NumericalError(msg.str());
 }
 
+NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceOperator& op,
+                                              const NormalSolution& normal, double tolerance) {
+  // Conjugate gradients for A_CC x = 1 (A_zz is symmetric positive definite, so is its principal
+  // submatrix on C); the products go through the full-grid operator with zeros outside C.
+  const int n = grid.size();
+  std::vector<char> in(n);
+  for (int k = 0; k < n; ++k) in[k] = normal.pn[k] > 0.0;
+  std::vector<double> x(n, 0.0), r(n, 0.0), d(n, 0.0), q(n);
+  for (int k = 0; k < n; ++k) r[k] = d[k] = in[k] ? 1.0 : 0.0;
+  double rr = 0.0;
+  for (int k = 0; k < n; ++k) rr += r[k] * r[k];
+  if (rr == 0.0) throw NumericalError("normal load sensitivity: no element in contact");
+  const double rr0 = rr;
+  NormalLoadSensitivity s;
+  const int max_iterations = 10 * n + 100;
+  while (rr > tolerance * tolerance * rr0) {
+    if (++s.iterations > max_iterations) {
+      std::ostringstream m;
+      m << "normal load sensitivity: CG did not converge in " << max_iterations
+        << " iterations (relative residual " << std::sqrt(rr / rr0) << ")";
+      throw NumericalError(m.str());
+    }
+    op.apply(d.data(), q.data());
+    double dq = 0.0;
+    for (int k = 0; k < n; ++k)
+      if (in[k]) dq += d[k] * q[k];
+    const double alpha = rr / dq;
+    double rr_new = 0.0;
+    for (int k = 0; k < n; ++k) {
+      if (!in[k]) continue;
+      x[k] += alpha * d[k];
+      r[k] -= alpha * q[k];
+      rr_new += r[k] * r[k];
+    }
+    const double beta = rr_new / rr;
+    for (int k = 0; k < n; ++k) d[k] = in[k] ? r[k] + beta * d[k] : 0.0;
+    rr = rr_new;
+  }
+  double sum = 0.0;
+  for (double v : x) sum += v;
+  const double stiffness = grid.element_area() * sum;  // dN/d(delta)
+  s.approach_per_load = 1.0 / stiffness;
+  s.dpn_dN.resize(n);
+  for (int k = 0; k < n; ++k) s.dpn_dN[k] = x[k] / stiffness;
+  return s;
+}
+
 }  // namespace rollnoise::contact

@@ -41,3 +41,33 @@ NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const
                             double normal_force, const NormalSolverSettings& settings = {});
 
 }  // namespace rollnoise::contact
+
+namespace rollnoise::contact {
+
+/// Sensitivity of the normal solution to the normal load on the frozen contact area C (the
+/// elements with pn > 0): with the area held, a load increment dN changes the approach by d(delta)
+/// and the pressure by dpn, with
+///
+///   A_CC dpn = d(delta) 1,   dx dy 1' dpn = dN      =>   dpn/dN = x / (dx dy 1'x),
+///   d(delta)/dN = 1 / (dx dy 1'x),   A_CC x = 1                                         (N1)
+///
+/// (x solved by conjugate gradients on C, FFT or dense products). For a smooth (Hertzian or
+/// non-Hertzian) profile this is the exact derivative of the continuous solution: the pressure
+/// vanishes at the edge of the area, so its growth does not contribute to first order, and dpn
+/// is the flat-punch distribution of the current area; for Hertz it is p0 / (3 N sqrt(1 - rho^2)),
+/// the N-derivative of p0 sqrt(1 - rho^2) with p0, a, b ~ N^(1/3) (Johnson 1985, Eq. 4.39-4.41).
+/// On the grid it is the derivative of the discrete solution as long as no element enters or
+/// leaves C. The normal contact stiffness is k_N = dN/d(delta) = dx dy 1'x.
+struct NormalLoadSensitivity {
+  GridField dpn_dN;            ///< 1/m^2 (Pa per N), 0 outside C
+  double approach_per_load = 0.0;  ///< d(delta)/dN (m/N)
+  double stiffness() const { return 1.0 / approach_per_load; }  ///< k_N (N/m)
+  int iterations = 0;
+};
+
+/// (N1) for a solved normal problem on `grid`; `op` the Normal operator of the grid.
+/// Throws NumericalError when CG does not converge to `tolerance` (relative residual).
+NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceOperator& op,
+                                              const NormalSolution& normal, double tolerance = 1e-13);
+
+}  // namespace rollnoise::contact

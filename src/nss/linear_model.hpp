@@ -47,6 +47,8 @@
 namespace rollnoise::nss {
 
 using CreepMatrix = Eigen::Matrix3cd;
+/// Normal-load coefficients g = (g_x, g_y, g_z) (-, -, m): F~ = -f xi~ + g N~ (docs/nss_normal_load.md).
+using LoadVector = Eigen::Vector3cd;
 
 struct LinearModelInput {
   double mu = 0.3;           ///< friction coefficient
@@ -103,6 +105,14 @@ class LinearContactModel {
   std::vector<CreepMatrix> creep_coefficients(const std::vector<double>& frequencies,
                                               int max_contact_lengths = 60) const;
 
+  /// g(omega) at one frequency by a fresh complex LU of the paper's form (the reference).
+  LoadVector normal_load_coefficients_direct(double frequency) const;
+
+  /// g at many frequencies from the same Markov parameters as creep_coefficients() (one more
+  /// input column of the same pencil; built together with f on the first call of either).
+  std::vector<LoadVector> normal_load_coefficients(const std::vector<double>& frequencies,
+                                                   int max_contact_lengths = 60) const;
+
   /// f at many frequencies from the exact Markov parameters: the recursion
   /// K0 X_{j+1} = K1 X_j (one Cholesky factorisation, K1 by FFT) until the h_j have decayed to
   /// round-off (|h_j| falls by ~1e-14 in 16 contact lengths on the paper's grid), then O(J) per
@@ -126,6 +136,9 @@ class LinearContactModel {
   /// by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
   /// factorisation of K0, K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
+  /// The same with a normal-load variation N~_k (N) at t_k as well (same length as the creepages).
+  std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation,
+                                             const std::vector<double>& normal_load_variation) const;
 
   /// Throw InputError (key "frequency") unless 0 <= f <= Nyquist.
   void check_frequency(double frequency) const;
