@@ -166,3 +166,34 @@ TEST(NormalLoad, RecursionWithALoadHistoryAgreesWithHarmonicSynthesisOfG) {
   std::printf("recursion vs synthesis: max error %.2e of %.4g N\n", err, ref);
   EXPECT_LT(err, 1e-8 * ref);
 }
+
+#include "geometry/wheel_rail.hpp"
+
+TEST(NormalLoad, ProfileContactZeroFrequencyAgreesWithFiniteLoadStepsWithinTheFrozenAreaEffect) {
+  // S1002 on UIC60, wheelset displaced 4 mm towards the flange (a non-Hertzian patch). The steady
+  // solver at N(1 +- e) on the same grid and undeformed distance (the geometry held): for e = 1e-6
+  // the area does not change and g(0) is the exact derivative; for e = 1 % elements enter and leave
+  // the contact area, which the frozen-area model ignores: the difference shows its size.
+  const std::string dir = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/";
+  const geometry::WheelRailPair pair(geometry::read_profile(dir + "MBench_S1002_v3.prw"),
+                                     geometry::read_profile(dir + "MBench_UIC60_v3.prr"));
+  const geometry::ContactGeometry cg = geometry::find_contact(pair, {0.004, 0.0});
+  geometry::GridOptions opt;
+  opt.nx = 30;
+  const ContactPatch p = geometry::solve_wheel_rail_patch(pair, cg, kN, kSteel, opt);
+  const Creepage c{0.001, -0.002, -0.3};
+  const auto mean = steady_at(p, c);
+  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+  const Eigen::Vector3d g0 = model.normal_load_coefficients_direct(0.0).real();
+  for (double e : {1e-6, 1e-2}) {
+    const ContactPatch pp = solve_patch(p.grid, kSteel, p.undeformed_distance, kN * (1 + e));
+    const ContactPatch pm = solve_patch(p.grid, kSteel, p.undeformed_distance, kN * (1 - e));
+    const Eigen::Vector3d fd = (forces(pp, steady_at(pp, c).steady) - forces(pm, steady_at(pm, c).steady)) / (2 * e * kN);
+    const double rel = (g0 - fd).head<2>().norm() / fd.head<2>().norm();
+    std::printf("profile patch (%d elements, %d slip), step %g: g(0) = (%.6g, %.6g, %.4g m), finite difference "
+                "(%.6g, %.6g, %.4g m), |dF| %.2e; contact elements %d -> %d / %d\n",
+                p.normal.contact_elements(), model.slip_elements(), e, g0(0), g0(1), g0(2), fd(0), fd(1), fd(2), rel,
+                pm.normal.contact_elements(), pp.normal.contact_elements(), p.normal.contact_elements());
+    EXPECT_LT(rel, e < 1e-3 ? 1e-5 : 0.02);
+  }
+}
