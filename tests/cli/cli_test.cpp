@@ -187,13 +187,17 @@ TEST(CreepCommand, WritesComplexCoefficientsAndCsvAndRejectsFrequenciesAboveNyqu
   ASSERT_GE(f, 0);
   EXPECT_EQ(read_units(f, "/creep/frequency"), "Hz");
   EXPECT_NE(read_units(f, "/creep/f").find("rows Fx"), std::string::npos);
+  EXPECT_NE(read_units(f, "/creep/g").find("g3 = dMz/dN [m]"), std::string::npos);
   H5Fclose(f);
   std::ifstream in(csv);
-  std::string line;
+  std::string line, header;
   int rows = 0;
   while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') ++rows;
+    if (!line.empty() && line[0] != '#') {
+      if (rows++ == 0) header = line;
+    }
   EXPECT_EQ(rows, 4);  // header + 3 frequencies
+  EXPECT_NE(header.find(",re_g1,im_g1,re_g2,im_g2,re_g3,im_g3"), std::string::npos) << header;
   const Invocation bad = run("creep " + paper_case() + " --set grid.nx=20 --set grid.ny=15 "
                              "--set 'frequency.list=[1000.0, 40000.0]' -o " + (dir / "bad.h5").string());
   EXPECT_EQ(bad.status, 2);
