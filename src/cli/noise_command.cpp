@@ -5,9 +5,11 @@
 //   2. the contact patch, steady rolling at the mean creepage, the linear NSS model and its creep
 //      coefficients f(w) at the narrow-band frequencies (one sweep, reused for every output);
 //   3. wheel and rail receptances at the contact point (computed once), the contact receptance
-//      (1/k_H normal, (V/(i w)) f^{-1} tangential), the closed loop per frequency per unit roughness;
+//      (1/k_H normal, (V/(i w)) f^{-1} tangential, the normal -> tangential coupling by g), the
+//      closed loop per frequency per unit roughness for the variants of noise/loop_variants.hpp:
+//      with the coupling (noise.normal_coupling = "on": also without it, /noise/uncoupled) and the
+//      baseline of noise.compare (the quasi-steady contact f(0), g(0), or Kalker's coefficients);
 //   4. the effective roughness (wheel + rail, contact filter) and the 1/3-octave levels.
-// With noise.compare_kalker = "yes" step 3 is repeated with Kalker's steady coefficients.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/contact_setup.hpp"
+#include "contact/forces.hpp"
 #include "contact/hertz.hpp"
 #include "io/contact_output.hpp"
 #include "io/frequency_axis.hpp"
@@ -24,6 +27,7 @@
 #include "noise/curving.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/loop.hpp"
+#include "noise/loop_variants.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -50,6 +54,23 @@ std::vector<std::complex<double>> flatten4(const std::vector<noise::Vector4c>& v
   std::vector<std::complex<double>> out;
   for (const auto& x : v) out.insert(out.end(), {x(0), x(1), x(2), x(3)});
   return out;
+}
+
+template <class Vector>
+std::vector<std::complex<double>> flatten(const std::vector<Vector>& v) {
+  std::vector<std::complex<double>> out;
+  for (const auto& m : v)
+    for (int j = 0; j < m.rows(); ++j)
+      for (int k = 0; k < m.cols(); ++k) out.push_back(m(j, k));
+  return out;
+}
+
+// One loop variant: its force per unit roughness and its band levels under `group`.
+void write_variant(io::Hdf5Writer& w, const std::string& group, const noise::LoopResult& r,
+                   const noise::BandLevels& b, const std::string& what) {
+  w.write(group + "/force", flatten4(r.force), {r.force.size(), 4},
+          "per unit roughness: Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel; " + what);
+  write_bands(w, group + "/bands", b, false);
 }
 
 // The case, its noise part and the mean state of the leading outer wheel (step 1).
@@ -122,6 +143,7 @@ int run_noise(const CommonOptions& o) {
                                       " Hz is above the grid's Nyquist limit " +
                                       std::to_string(model.nyquist_frequency()) + " Hz: refine grid.nx");
   const auto creep = model.creep_coefficients(freq);
+  const auto load = model.normal_load_coefficients(freq);  // g, the same Markov sweep
   const double kH = contact::hertz_from_semi_axes(cc.a, cc.b, cc.normal_force, cc.material).normal_stiffness();
   const double t_contact = seconds_since(t0);
 
@@ -130,10 +152,25 @@ int run_noise(const CommonOptions& o) {
   const noise::StructuralReceptances structures =
       noise::structural_receptances(*nc.wheel, *nc.rail, position, freq);
   const double t_structures = seconds_since(t1);
-  const auto nss_contact = noise::contact_receptances(freq, kH, cc.speed, creep);
-  const Eigen::Matrix3d f_kalker = noise::kalker_creep_matrix(cc.a, cc.b, G, cc.material.nu);
-  const auto kalker_contact = noise::contact_receptances(freq, kH, cc.speed, noise::steady_creep(f_kalker));
-  const noise::LoopResult main = noise::solve_loop(structures, nc.use_nss ? nss_contact : kalker_contact);
+  using Baseline = io::NoiseCase::Baseline;
+  noise::ContactCoefficients kalker = noise::constant_coefficients(
+      noise::kalker_creep_matrix(cc.a, cc.b, G, cc.material.nu).cast<std::complex<double>>(),
+      noise::LoadCoefficients::Zero(), freq.size());
+  kalker.load.clear();  // Kalker's linear theory (full adhesion): g = 0
+  noise::LoopVariantsInput variants_in;
+  variants_in.normal_stiffness = kH;
+  variants_in.speed = cc.speed;
+  variants_in.normal_coupling = nc.normal_coupling;
+  variants_in.model = nc.use_nss ? noise::ContactCoefficients{creep, load} : kalker;
+  const Eigen::Matrix3cd f0 = model.creep_coefficients({0.0})[0];
+  const noise::LoadCoefficients g0 = model.normal_load_coefficients({0.0})[0];
+  if (nc.compare == Baseline::kQuasiSteady) {  // the same mean state, frequency-independent
+    variants_in.baseline = noise::quasi_steady_coefficients(f0, g0, freq.size());
+  } else if (nc.compare == Baseline::kKalker && nc.use_nss) {
+    variants_in.baseline = kalker;
+  }
+  const noise::LoopVariants variants = noise::solve_loop_variants(structures, variants_in);
+  const noise::LoopResult& main = variants.main;
 
   // 4. roughness and bands
   noise::ContactFilter filter;
@@ -142,6 +179,16 @@ int run_noise(const CommonOptions& o) {
   filter.b = cc.b;
   const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, cc.speed, filter);
   const noise::BandLevels bands = noise::band_levels(main, centres, roughness);
+  const std::vector<double> rough_levels = roughness.levels(centres);
+  noise::BandLevels uncoupled_bands, baseline_bands;
+  std::vector<std::array<double, 4>> coupling_difference;
+  if (variants.has_uncoupled()) {
+    uncoupled_bands = noise::band_levels(variants.uncoupled, centres, rough_levels);
+    coupling_difference = noise::force_level_difference(bands, uncoupled_bands);
+  }
+  if (variants.has_baseline()) baseline_bands = noise::band_levels(variants.baseline, centres, rough_levels);
+  const std::string baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
+  const contact::TangentialForces mean_force = contact::total_forces(patch->grid, steady.px, steady.py);
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
@@ -154,12 +201,12 @@ int run_noise(const CommonOptions& o) {
   w.write("/noise/rail_velocity", flatten4(main.rail_velocity), {nf, 4}, "per unit roughness: (m/s)/m, (rad/s)/m");
   write_bands(w, "/noise/bands", bands, true);
   w.attribute("/noise", "contact_model", nc.use_nss ? "linear NSS model" : "Kalker's steady linear theory");
+  w.attribute("/noise", "normal_coupling", nc.normal_coupling ? "on" : "off");
+  w.attribute("/noise", "compare", variants.has_baseline() ? baseline_name : "none");
   w.attribute("/noise", "band_average", "mean of |H|^2 over the narrow-band samples inside each band (docs/noise_loop.md)");
-  std::vector<std::complex<double>> fc;
-  for (const auto& m : creep)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) fc.push_back(m(j, k));
-  w.write("/noise/creep/f", fc, {nf, 3, 3}, "f_jk with F~ = -f xi~ (N, N m, N m^2), rows Fx, Fy, Mz");
+  w.write("/noise/creep/f", flatten(creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
+  w.write("/noise/creep/g", flatten(load), {nf, 3},
+          "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
   w.write("/noise/contact/normal_stiffness", kH, "N/m");
   w.write("/noise/contact/angle", position.contact_angle, "rad");
   w.write("/noise/contact/wheel_shift", position.wheel_shift_y, "m");
@@ -170,10 +217,23 @@ int run_noise(const CommonOptions& o) {
     w.write("/noise/curving/lateral", curving.leading.lateral, "m");
     w.write("/noise/curving/flange_force", curving.leading.flange_force, "N");
   }
-  if (nc.compare_kalker && nc.use_nss) {
-    const noise::LoopResult k = noise::solve_loop(structures, kalker_contact);
-    write_bands(w, "/noise/kalker/bands", noise::band_levels(k, centres, roughness), false);
-    w.write("/noise/kalker/force", flatten4(k.force), {nf, 4}, "per unit roughness, Kalker's steady coefficients");
+  if (variants.has_uncoupled()) {
+    write_variant(w, "/noise/uncoupled", variants.uncoupled, uncoupled_bands, "the same contact with g = 0");
+    std::vector<double> d;
+    for (const auto& x : coupling_difference) d.insert(d.end(), x.begin(), x.end());
+    w.write("/noise/bands/coupling_difference", d, {centres.size(), 4},
+            "dB, force band levels with minus without the normal -> tangential coupling (Fz, Fx, Fy, Mz)");
+  }
+  if (variants.has_baseline()) {
+    write_variant(w, "/noise/" + baseline_name, variants.baseline, baseline_bands,
+                  nc.compare == Baseline::kKalker ? "Kalker's steady coefficients (full adhesion, g = 0)"
+                                                  : "quasi-steady contact f(0), g(0) of the same state");
+    if (nc.compare == Baseline::kQuasiSteady) {
+      w.write("/noise/quasi_steady/f", flatten(std::vector<Eigen::Matrix3cd>{f0}), {3, 3},
+              "f(0) (N, N m, N m^2), rows Fx, Fy, Mz (the real part is used)");
+      w.write("/noise/quasi_steady/g", flatten(std::vector<noise::LoadCoefficients>{g0}), {3},
+              "g(0) (-, -, m) (the real part is used)");
+    }
   }
   w.commit();
 
@@ -187,10 +247,30 @@ int run_noise(const CommonOptions& o) {
               "structures %.1f s, total %.1f s\n",
               model.adhesion_elements(), model.slip_elements(), nf, centres.size(), t_contact, t_structures,
               seconds_since(t0));
-  std::printf("  %8s %9s %9s %9s %9s %9s\n", "band Hz", "L_r dB", "Fz dB", "Fx dB", "Fy dB", "Mz dB");
-  for (size_t i = 0; i < centres.size(); i += 3)
-    std::printf("  %8.0f %9.1f %9.1f %9.1f %9.1f %9.1f\n", centres[i], bands.roughness_level[i],
-                bands.force_level[i][0], bands.force_level[i][1], bands.force_level[i][2], bands.force_level[i][3]);
+  if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());
+  std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n", mean_force.Fx,
+              mean_force.Fy, mean_force.Mz, cc.normal_force, g0(0).real(), g0(1).real(), g0(2).real());
+  std::printf("  levels dB re 1 N (Mz re 1 N m), %s coupling; d* = with minus without the coupling; "
+              "muFz = 20 log10|Fy_mean/N| + Fz; b* = minus the %s baseline\n",
+              nc.normal_coupling ? "with" : "without", variants.has_baseline() ? baseline_name.c_str() : "(no)");
+  std::printf("  %6s %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %6s | %6s %6s\n", "band", "L_r", "Fz", "Fx", "Fy", "Mz",
+              "dFz", "dFx", "dFy", "dMz", "muFz", "bFz", "bFy");
+  const double mu_db = 20 * std::log10(std::abs(mean_force.Fy / cc.normal_force));
+  for (size_t i = 0; i < centres.size(); ++i) {
+    const auto& L = bands.force_level[i];
+    std::printf("  %6.0f %6.1f %6.1f %6.1f %6.1f %6.1f |", centres[i], bands.roughness_level[i], L[0], L[1], L[2], L[3]);
+    if (variants.has_uncoupled()) {
+      const auto& d = coupling_difference[i];
+      std::printf(" %6.1f %6.1f %6.1f %6.1f |", d[0], d[1], d[2], d[3]);
+    } else {
+      std::printf(" %6s %6s %6s %6s |", "-", "-", "-", "-");
+    }
+    std::printf(" %6.1f |", mu_db + L[0]);
+    if (variants.has_baseline())
+      std::printf(" %6.1f %6.1f\n", L[0] - baseline_bands.force_level[i][0], L[2] - baseline_bands.force_level[i][2]);
+    else
+      std::printf(" %6s %6s\n", "-", "-");
+  }
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }
@@ -211,7 +291,10 @@ int run_receptance(const CommonOptions& o) {
     const nss::LinearContactModel model(*patch, steady, {cc.mu, cc.speed, cc.spin_offset});
     if (freq.back() > model.nyquist_frequency())
       setup.reader.fail("frequency.f_max", "above the grid's Nyquist limit " + std::to_string(model.nyquist_frequency()) + " Hz");
-    contact_r = noise::contact_receptances(freq, kH, cc.speed, model.creep_coefficients(freq));
+    const auto f = model.creep_coefficients(freq);
+    contact_r = setup.noise.normal_coupling
+                    ? noise::contact_receptances(freq, kH, cc.speed, f, model.normal_load_coefficients(freq))
+                    : noise::contact_receptances(freq, kH, cc.speed, f);
   } else {
     contact_r = noise::contact_receptances(
         freq, kH, cc.speed,

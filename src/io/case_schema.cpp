@@ -102,8 +102,16 @@ const std::vector<KeySpec>& case_schema() {
        {"isotropic", "correlated", "none"}},
       {"noise.contact_model", T::String, "\"nss\"", "-",
        "tangential contact: the linear NSS model or Kalker's steady linear theory", {"nss", "kalker"}},
-      {"noise.compare_kalker", T::String, "\"yes\"", "-",
-       "also run the loop with Kalker's steady coefficients", {"yes", "no"}},
+      {"noise.normal_coupling", T::String, "\"on\"", "-",
+       "normal -> tangential friction coupling F~t = -f xi~ + g Fz in the loop (NSS model's g; Kalker's "
+       "theory has g = 0); \"on\" also solves the loop without it (/noise/uncoupled)",
+       {"on", "off"}},
+      {"noise.compare", T::String, "\"quasi-steady\"", "-",
+       "comparison baseline: the quasi-steady contact of the same state (NSS f(0), g(0); "
+       "/noise/quasi_steady), Kalker's full-adhesion coefficients (/noise/kalker) or none",
+       {"quasi-steady", "kalker", "none"}},
+      {"noise.compare_kalker", T::String, "", "-",
+       "deprecated alias: \"yes\" = noise.compare \"kalker\", \"no\" = \"none\"", {"yes", "no"}},
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},

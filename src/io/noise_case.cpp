@@ -46,7 +46,19 @@ NoiseCase read_noise_case(const CaseReader& r) {
              : filter == "correlated" ? noise::ContactFilterModel::kCorrelated
                                       : noise::ContactFilterModel::kIsotropic;
   c.use_nss = r.string("noise.contact_model") == "nss";
-  c.compare_kalker = r.string("noise.compare_kalker") == "yes";
+  c.normal_coupling = r.string("noise.normal_coupling") == "on";
+  const std::string compare = r.string("noise.compare");
+  c.compare = compare == "kalker" ? NoiseCase::Baseline::kKalker
+              : compare == "none" ? NoiseCase::Baseline::kNone
+                                  : NoiseCase::Baseline::kQuasiSteady;
+  if (r.has("noise.compare_kalker")) {  // deprecated alias: "yes" -> "kalker", "no" -> "none"
+    const std::string mapped = r.string("noise.compare_kalker") == "yes" ? "kalker" : "none";
+    if (r.has("noise.compare") && compare != mapped)
+      r.fail("noise.compare_kalker", "deprecated alias of noise.compare = \"" + mapped +
+                                         "\" contradicts noise.compare = \"" + compare + "\"; remove it");
+    c.compare = mapped == "kalker" ? NoiseCase::Baseline::kKalker : NoiseCase::Baseline::kNone;
+    c.notice = "noise.compare_kalker is deprecated: read as noise.compare = \"" + mapped + "\"";
+  }
   c.band_min = r.real("noise.band_min");
   c.band_max = r.real("noise.band_max");
   if (c.band_max < c.band_min) r.fail("noise.band_max", "must not be below noise.band_min");

@@ -22,7 +22,14 @@ struct NoiseCase {
   std::unique_ptr<dynamics::WheelModel> wheel;
   noise::RoughnessSpectrum rail_roughness, wheel_roughness;
   noise::ContactFilterModel filter = noise::ContactFilterModel::kIsotropic;
-  bool use_nss = true, compare_kalker = true;
+  bool use_nss = true;
+  /// noise.normal_coupling: the contact's g (F~t = -f xi~ + g Fz) in the loop.
+  bool normal_coupling = true;
+  /// noise.compare: the comparison baseline of the loop (docs/noise_loop.md Sec. 5.1).
+  enum class Baseline { kNone, kQuasiSteady, kKalker };
+  Baseline compare = Baseline::kQuasiSteady;
+  /// Non-empty when a deprecated key was mapped (for the command to print).
+  std::string notice;
   double band_min = 100.0, band_max = 5000.0;
   int points_per_band = 48;
 };
