@@ -208,6 +208,7 @@ int run_noise(const CommonOptions& o) {
   w.write("/noise/creep/g", flatten(load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
   w.write("/noise/contact/normal_stiffness", kH, "N/m");
+  w.write("/noise/contact/normal_force", cc.normal_force, "N");
   w.write("/noise/contact/angle", position.contact_angle, "rad");
   w.write("/noise/contact/wheel_shift", position.wheel_shift_y, "m");
   w.write("/noise/contact/rail_offset", position.rail_offset_y, "m");
@@ -252,7 +253,7 @@ int run_noise(const CommonOptions& o) {
               mean_force.Fy, mean_force.Mz, cc.normal_force, g0(0).real(), g0(1).real(), g0(2).real());
   std::printf("  levels dB re 1 N (Mz re 1 N m), %s coupling; d* = with minus without the coupling; "
               "muFz = 20 log10|Fy_mean/N| + Fz; b* = minus the %s baseline\n",
-              nc.normal_coupling ? "with" : "without", variants.has_baseline() ? baseline_name.c_str() : "(no)");
+              nc.normal_coupling && !variants_in.model.load.empty() ? "with" : "without", variants.has_baseline() ? baseline_name.c_str() : "(no)");
   std::printf("  %6s %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %6s | %6s %6s\n", "band", "L_r", "Fz", "Fx", "Fy", "Mz",
               "dFz", "dFx", "dFy", "dMz", "muFz", "bFz", "bFy");
   const double mu_db = 20 * std::log10(std::abs(mean_force.Fy / cc.normal_force));
