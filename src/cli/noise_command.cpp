@@ -266,7 +266,10 @@ int run_noise(const CommonOptions& o) {
     } else {
       std::printf(" %6s %6s %6s %6s |", "-", "-", "-", "-");
     }
-    std::printf(" %6.1f |", mu_db + L[0]);
+    if (std::isfinite(mu_db))
+      std::printf(" %6.1f |", mu_db + L[0]);
+    else
+      std::printf(" %6s |", "-");  // no mean lateral force (e.g. tangent track)
     if (variants.has_baseline())
       std::printf(" %6.1f %6.1f\n", L[0] - baseline_bands.force_level[i][0], L[2] - baseline_bands.force_level[i][2]);
     else
