@@ -55,7 +55,8 @@ NoiseCase read_noise_case(const CaseReader& r) {
     const std::string mapped = r.string("noise.compare_kalker") == "yes" ? "kalker" : "none";
     if (r.has("noise.compare") && compare != mapped)
       r.fail("noise.compare_kalker", "deprecated alias of noise.compare = \"" + mapped +
-                                         "\" contradicts noise.compare = \"" + compare + "\"; remove it");
+                                         "\" contradicts noise.compare = \"" + compare +
+                                         "\"; remove it");
     c.compare = mapped == "kalker" ? NoiseCase::Baseline::kKalker : NoiseCase::Baseline::kNone;
     c.notice = "noise.compare_kalker is deprecated: read as noise.compare = \"" + mapped + "\"";
   }

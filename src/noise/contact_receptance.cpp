@@ -44,7 +44,8 @@ Receptance4 contact_receptance(double frequency, double normal_stiffness, double
   a(0, 0) = 1.0 / normal_stiffness;  // linearised Hertz spring
   // (C2): alpha_c,t = (V / (i omega)) f^{-1}
   a.bottomRightCorner<3, 3>() = (speed / (cdouble(0.0, 1.0) * omega)) * lu.inverse();
-  if (!load.allFinite()) throw NumericalError("contact receptance: normal-load coefficients g not finite");
+  if (!load.allFinite())
+    throw NumericalError("contact receptance: normal-load coefficients g not finite");
   // (C3): alpha_c,tn = -alpha_c,tt g (exactly zero for g = 0)
   if (!load.isZero(0.0)) a.bottomLeftCorner<3, 1>() = -(a.bottomRightCorner<3, 3>() * load);
   return a;
@@ -73,7 +74,9 @@ std::vector<Receptance4> contact_receptances(const std::vector<double>& frequenc
                                              const std::vector<Eigen::Matrix3cd>& creep,
                                              const std::vector<LoadCoefficients>& load) {
   if (creep.size() != frequencies.size() || load.size() != frequencies.size())
-    throw InputError("creep", "contact receptance: one creep matrix and one load vector per frequency are needed");
+    throw InputError(
+        "creep",
+        "contact receptance: one creep matrix and one load vector per frequency are needed");
   std::vector<Receptance4> out;
   out.reserve(frequencies.size());
   for (std::size_t k = 0; k < frequencies.size(); ++k)

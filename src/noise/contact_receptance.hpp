@@ -40,7 +40,8 @@
 //    bodies), so alpha_c is not symmetric when g != 0 (no reciprocity: friction is not a
 //    potential force). g = 0 gives (C2) exactly. In a saturated contact at low frequency
 //    g ~ F_mean / N_mean and f is small (the tangential contact is nearly free), so the loop gives
-//    F~t ~ g Fz: the tangential forces follow the mu-scaled normal force (docs/noise_loop.md Sec. 2).
+//    F~t ~ g Fz: the tangential forces follow the mu-scaled normal force (docs/noise_loop.md
+//    Sec. 2.1).
 #pragma once
 
 #include <Eigen/Core>

@@ -29,18 +29,30 @@ const rn::ContactPosition kCurvePosition{-0.005, 0.0, 0.149};
 // e = u_wheel - u_rail in the contact frame (Eq. C2), from the wheel and rail 6-dof receptances.
 Eigen::Vector3cd creepage_from_loop(const rn::StructuralReceptances& s, std::size_t k,
                                     const rn::Vector4c& F, rn::Vector4c* e_out) {
-  const Eigen::Matrix<cdouble, 6, 4> T = rn::contact_frame(s.position.contact_angle).cast<cdouble>();
+  const Eigen::Matrix<cdouble, 6, 4> T =
+      rn::contact_frame(s.position.contact_angle).cast<cdouble>();
   const Eigen::Matrix<cdouble, 6, 1> load = T * F;
   const rn::Vector4c e = T.transpose() * (s.wheel[k] * load - s.rail[k] * (-load));
   if (e_out) *e_out = e;
   return cdouble(0.0, 2 * M_PI * s.frequency[k] / kSpeed) * e.tail<3>();
 }
 
+// Loop input with the paper's contact (k_H, V) and the spring-damper creep law at `freq` (no g).
+rn::LoopVariantsInput spring_damper_input(const std::vector<double>& freq) {
+  rn::LoopVariantsInput in;
+  in.normal_stiffness = hertz().normal_stiffness();
+  in.speed = kSpeed;
+  const rn::CreepFunction creep = spring_creep();
+  for (double x : freq) in.model.creep.push_back(creep(x));
+  return in;
+}
+
 }  // namespace
 
 // From the receptance alone: a force (Fz, F~t) applied to the contact deforms it by e = -alpha_c F
-// (C1 with r = 0); the creepage xi~ = (i omega / V) e_t must reproduce the creep law with the normal
-// load, F~t = -f xi~ + g Fz, and the normal approach -Fz / k_H. Seeded random complex f, g, F.
+// (C1 with r = 0); the creepage xi~ = (i omega / V) e_t must reproduce the creep law with the
+// normal load, F~t = -f xi~ + g Fz, and the normal approach -Fz / k_H. Seeded random complex f, g,
+// F.
 TEST(ContactReceptance, CouplingBlockRecoversCreepLawWithNormalLoad) {
   std::mt19937 rng(20240611);
   const double kH = hertz().normal_stiffness();
@@ -81,7 +93,8 @@ TEST(ContactReceptance, ZeroLoadCoefficientsReproduceTheUncoupledReceptance) {
   std::vector<Eigen::Matrix3cd> f;
   for (double x : freq) f.push_back(creep(x));
   const auto zero_g = rn::contact_receptances(
-      freq, kH, kSpeed, f, std::vector<rn::LoadCoefficients>(freq.size(), rn::LoadCoefficients::Zero()));
+      freq, kH, kSpeed, f,
+      std::vector<rn::LoadCoefficients>(freq.size(), rn::LoadCoefficients::Zero()));
   const auto old = rn::contact_receptances(freq, kH, kSpeed, creep);
   for (std::size_t k = 0; k < freq.size(); ++k) {
     EXPECT_TRUE(zero_g[k] == old[k]) << freq[k];
@@ -102,14 +115,9 @@ TEST(NormalCoupling, LoopSatisfiesCreepLawWithNormalLoad) {
   const std::vector<double> freq = log_frequencies(80.0, 4000.0, 13);
   const rn::StructuralReceptances s =
       rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
-  const rn::CreepFunction creep = spring_creep();
-  rn::LoopVariantsInput in;
-  in.normal_stiffness = hertz().normal_stiffness();
-  in.speed = kSpeed;
-  for (double x : freq) {
-    in.model.creep.push_back(creep(x));
-    in.model.load.emplace_back(cdouble(0.05, 0.01), cdouble(0.25, -0.02), cdouble(1e-4, 0.0));
-  }
+  rn::LoopVariantsInput in = spring_damper_input(freq);
+  in.model.load.assign(freq.size(),
+                       rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
   in.options.roughness = cdouble(0.3e-6, -0.4e-6);
   const rn::LoopVariants v = rn::solve_loop_variants(s, in);
   ASSERT_TRUE(v.has_uncoupled());
@@ -126,11 +134,14 @@ TEST(NormalCoupling, LoopSatisfiesCreepLawWithNormalLoad) {
     // the uncoupled result satisfies the law with g = 0
     const rn::Vector4c& U = v.uncoupled.force[k];
     const Eigen::Vector3cd xu = creepage_from_loop(s, k, U, nullptr);
-    worst_off = std::max(worst_off, (-in.model.creep[k] * xu - U.tail<3>()).norm() / U.tail<3>().norm());
+    worst_off =
+        std::max(worst_off, (-in.model.creep[k] * xu - U.tail<3>()).norm() / U.tail<3>().norm());
     change = std::max(change, std::abs(std::log10(std::abs(F(2) / U(2)))));
   }
-  std::printf("creep law residual: coupled %.2e, uncoupled %.2e; normal law %.2e; max |Fy| change %.1f dB\n",
-              worst, worst_off, worst_n, 20 * change);
+  std::printf(
+      "creep law residual: coupled %.2e, uncoupled %.2e; normal law %.2e; max |Fy| change %.1f "
+      "dB\n",
+      worst, worst_off, worst_n, 20 * change);
   EXPECT_LT(worst, 1e-9);
   EXPECT_LT(worst_off, 1e-9);
   EXPECT_LT(worst_n, 1e-10);
@@ -144,16 +155,15 @@ TEST(NormalCoupling, ZeroLoadCoefficientsGiveTheUncoupledLoop) {
   const rn::StructuralReceptances s =
       rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
   const rn::CreepFunction creep = spring_creep();
-  rn::LoopVariantsInput in;
-  in.normal_stiffness = hertz().normal_stiffness();
-  in.speed = kSpeed;
-  for (double x : freq) in.model.creep.push_back(creep(x));
+  rn::LoopVariantsInput in = spring_damper_input(freq);
   in.model.load.assign(freq.size(), rn::LoadCoefficients::Zero());
-  in.baseline = rn::constant_coefficients(kalker().cast<cdouble>(), rn::LoadCoefficients::Zero(), freq.size());
+  in.baseline = rn::constant_coefficients(kalker().cast<cdouble>(), rn::LoadCoefficients::Zero(),
+                                          freq.size());
   const rn::LoopVariants v = rn::solve_loop_variants(s, in);
-  const rn::LoopResult old = rn::solve_loop(s, rn::contact_receptances(freq, in.normal_stiffness, kSpeed, creep));
-  const rn::LoopResult kalker_old =
-      rn::solve_loop(s, rn::contact_receptances(freq, in.normal_stiffness, kSpeed, rn::steady_creep(kalker())));
+  const rn::LoopResult old =
+      rn::solve_loop(s, rn::contact_receptances(freq, in.normal_stiffness, kSpeed, creep));
+  const rn::LoopResult kalker_old = rn::solve_loop(
+      s, rn::contact_receptances(freq, in.normal_stiffness, kSpeed, rn::steady_creep(kalker())));
   ASSERT_TRUE(v.has_uncoupled() && v.has_baseline());
   for (std::size_t k = 0; k < freq.size(); ++k) {
     EXPECT_TRUE(v.main.force[k] == old.force[k]) << freq[k];
@@ -188,13 +198,11 @@ TEST(NormalCoupling, SaturatedContactLateralForceFollowsMuScaledNormalForce) {
   const rn::StructuralReceptances s =
       rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
   Eigen::Matrix3d f = 1e-3 * kalker();
-  f(0, 0) += mu * kN / std::abs(xi_y);             // t = (0, -1): I - t t' = diag(1, 0)
+  f(0, 0) += mu * kN / std::abs(xi_y);                  // t = (0, -1): I - t t' = diag(1, 0)
   f(2, 2) += mu * kN * kB * kB / 5.0 / std::abs(xi_y);  // spin: the rotated slip direction
-  const double Fy_mean = mu * kN;                  // on the wheel, opposing w = V (0, xi_y)
+  const double Fy_mean = mu * kN;                       // on the wheel, opposing w = V (0, xi_y)
   const rn::LoadCoefficients g(0.0, Fy_mean / kN, 0.0);
-  rn::LoopVariantsInput in;
-  in.normal_stiffness = hertz().normal_stiffness();
-  in.speed = kSpeed;
+  rn::LoopVariantsInput in = spring_damper_input({});
   in.model = rn::constant_coefficients(f.cast<cdouble>(), g, freq.size());
   const rn::LoopVariants v = rn::solve_loop_variants(s, in);
   const std::vector<double> flat(centres.size(), 0.0);  // roughness level cancels in the check
