@@ -110,31 +110,33 @@ TEST(NormalLoad, FullAdhesionHasNoNormalLoadCouplingAndItVanishesWithTheCreepage
 }
 
 TEST(NormalLoad, FastSweepEqualsTheDirectSolveFromZeroToNyquist) {
+  // The Krylov sweep (block of 4, G3) against a complex LU of the paper's form (G2) per frequency,
+  // for partial slip with spin, nearly full sliding with large spin, full sliding and few slip
+  // elements; the Hessenberg fallback against both for the first state.
   const ContactPatch& p = paper_patch("coarse");
+  bool first = true;
   for (const Creepage c : {Creepage{0.001, 0.001, -0.053}, Creepage{0.0, 0.002, 0.5}, Creepage{0.006, 0.0, 0.0},
                            Creepage{2e-4, 0.0, 0.0}}) {
     const auto mean = steady_at(p, c);
     const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
     std::vector<double> freq;
-    for (int k = 0; k <= 12; ++k) freq.push_back(model.nyquist_frequency() * k / 12.0);
+    for (int k = 0; k <= 6; ++k) freq.push_back(model.nyquist_frequency() * k / 6.0);
     const auto g = model.normal_load_coefficients(freq);
-    const auto f = model.creep_coefficients(freq);
-    double worst = 0.0, worst_f = 0.0;
+    double worst = 0.0;
     for (size_t k = 0; k < freq.size(); ++k) {
       const Eigen::Vector3cd gd = model.normal_load_coefficients_direct(freq[k]);
       worst = std::max(worst, (g[k] - gd).norm() / gd.norm());
-      worst_f = std::max(worst_f, (f[k] - model.creep_coefficients_direct(freq[k])).norm() / f[k].norm());
     }
-    std::printf("xi = (%g, %g, %g): %d slip, %d block steps, max |g - g_direct|/|g| = %.2e (f: %.2e)\n", c.xi_x,
-                c.xi_y, c.phi, model.slip_elements(), model.sweep_info().block_steps, worst, worst_f);
+    std::printf("xi = (%g, %g, %g): %d slip, %d block steps, max |g - g_direct|/|g| = %.2e\n", c.xi_x, c.xi_y,
+                c.phi, model.slip_elements(), model.sweep_info().block_steps, worst);
     EXPECT_LT(worst, 1e-9);
-    EXPECT_LT(worst_f, 1e-9);
-    // the Hessenberg fallback gives the same g
-    const auto gh = [&] {
-      nss::LinearContactModel m2(p, mean.steady, {kMu, kSpeed, 0.0});
-      return m2.normal_load_coefficients(freq, 0);  // no Markov sequence can decay in 0 contact lengths
-    }();
-    for (size_t k = 0; k < freq.size(); ++k) EXPECT_LT((gh[k] - g[k]).norm(), 1e-9 * g[k].norm()) << k;
+    if (first) {  // no Markov sequence decays within 0 contact lengths: the Hessenberg form
+      const nss::LinearContactModel m2(p, mean.steady, {kMu, kSpeed, 0.0});
+      const auto gh = m2.normal_load_coefficients(freq, 0);
+      EXPECT_EQ(m2.sweep_info().method, nss::SweepInfo::Method::hessenberg);
+      for (size_t k = 0; k < freq.size(); ++k) EXPECT_LT((gh[k] - g[k]).norm(), 1e-9 * g[k].norm()) << k;
+      first = false;
+    }
   }
 }
 
