@@ -111,7 +111,7 @@ const std::vector<KeySpec>& case_schema() {
        "/noise/quasi_steady), Kalker's full-adhesion coefficients (/noise/kalker) or none",
        {"quasi-steady", "kalker", "none"}},
       {"noise.compare_kalker", T::String, "", "-",
-       "deprecated alias: \"yes\" = noise.compare \"kalker\", \"no\" = \"none\"", {"yes", "no"}},
+       "optional, deprecated alias of noise.compare: \"yes\" = \"kalker\", \"no\" = \"none\"", {"yes", "no"}},
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
