@@ -83,8 +83,9 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
     b.wheel_load = Q;
     b.friction = in.friction;
     b.load_transfer = cant_deficiency_load_transfer(Q, in.cant_deficiency, in.cg_height, 2.0 * l0);
-    b.profiles = std::make_shared<const ProfileCurvingTable>(
-        profile_curving_table(pair, 0.010, in.table_step));
+    b.profiles = in.table ? in.table
+                          : std::make_shared<const ProfileCurvingTable>(
+                                profile_curving_table(pair, 0.010, in.table_step));
     // Fixed point: f at the contact -> estimate -> contact. The contact moves by table steps at
     // most near a jump of the profile contact; a few iterations settle it.
     s.contact = geometry::find_contact(pair, {0.0, 0.0});

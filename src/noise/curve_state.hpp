@@ -58,6 +58,8 @@ struct CurveStateInput {
   double yaw = 0.0;      ///< psi (rad)
   std::optional<Eigen::Vector3d> creepage;  ///< (xi_x, xi_y, phi); empty: (K2)
   double table_step = 0.1e-3;  ///< lateral step of the profile table (m)
+  /// The profile table of `pair` (profile_curving_table), to share between states; empty: made here.
+  std::shared_ptr<const ProfileCurvingTable> table;
 
   void validate() const;  ///< InputError naming the curve./wheelset. key
 };

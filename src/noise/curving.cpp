@@ -284,6 +284,7 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
                      "coefficient (Nadal), else the flange cannot carry a lateral force");
   std::array<double, 4> Qt = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};
   std::array<double, 2> Qf = {0.0, 0.0};  // flange vertical load of axle i (K6)
+  const double unloaded = 1e-3;           // tread loads below this fraction of Q: wheel unloaded
   auto tan_gamma_outer = [&](double y) {
     if (table) return std::tan(table->at(table->contact_angle, y));
     return std::isnan(in.contact_angle) ? in.conicity : std::tan(in.contact_angle);
@@ -331,11 +332,9 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
       for (int side = 0; side < 2; ++side) {
         const double base = side == 0 ? Q + dQ : Q - dQ;
         const bool flanging = (active[i] == 1 && side == 0) || (active[i] == -1 && side == 1);
-        Qt[2 * i + side] = base - (flanging ? Qf[i] : 0.0);
-        if (!(Qt[2 * i + side] > 0.0))
-          throw NumericalError(
-              "curving estimate: a wheel is unloaded (load transfer or flange load above the "
-              "wheel load: overturning or flange climbing, Nadal's limit)");
+        // Floored while the saturation settles (the first iterates, unsaturated, overestimate
+        // the flange force); a converged state at the floor is reported below.
+        Qt[2 * i + side] = std::max(base - (flanging ? Qf[i] : 0.0), unloaded * Q);
       }
     }
     // Saturation of the combined creep force of each wheel (relaxed fixed point on s).
@@ -354,6 +353,11 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
       }
     }
   }
+  for (int w = 0; w < 4; ++w)
+    if (!(Qt[w] > unloaded * Q))
+      throw NumericalError(
+          "curving estimate: a wheel is unloaded (load transfer or flange load at the wheel load: "
+          "overturning or flange climbing, Nadal's limit)");
   if (change > 1e-9) {
     std::ostringstream m;
     m << "curving estimate: saturation iteration did not converge (change " << change << " after "
