@@ -1,7 +1,9 @@
 // rollnoise noise: contact-force spectra from roughness for a train in a curve (DESIGN.md Sec. 4).
 //
-//   1. mean creepages and contact position: the quasi-static bogie estimate for the curve
-//      (src/noise/curving.hpp), or the case's creepage.mean and contact.angle;
+//   1. mean creepages and contact position: with profiles the curve contact state
+//      (src/noise/curve_state.hpp: bogie estimate or multibody input, contact, loads, creepages),
+//      with the Hertzian patch the quasi-static bogie estimate (src/noise/curving.hpp), or the
+//      case's creepage.mean and contact;
 //   2. the contact patch, steady rolling at the mean creepage, the linear NSS model and its creep
 //      coefficients f(w) at the narrow-band frequencies (one sweep, reused for every output);
 //   3. wheel and rail receptances at the contact point (computed once), the contact receptance
@@ -107,6 +109,8 @@ NoiseSetup prepare(const CommonOptions& o) {
     cc.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
     s.position = s.curving.position();
   }
+  if (cc.profiles && !s.state)  // curve.creepage = "case": the case's contact point
+    s.position = {cc.contact_point.wheel_s, cc.contact_point.rail_y, cc.contact_point.contact_angle};
   if (s.state || s.estimated) {  // the case as run records the creepage used
     std::ostringstream v;
     v.precision(12);

@@ -10,9 +10,11 @@ namespace rollnoise::noise {
 namespace {
 
 // Kalker's f11, f22 of the Hertz estimate at the contact for the load (N).
-Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeometry& c, double load) {
+Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeometry& c,
+                          double load) {
   const contact::HertzContact hz = geometry::hertz_estimate(c, load, in.material, in.grid);
-  const Eigen::Matrix3d f = kalker_creep_matrix(hz.a, hz.b, in.material.shear_modulus(), in.material.nu);
+  const Eigen::Matrix3d f =
+      kalker_creep_matrix(hz.a, hz.b, in.material.shear_modulus(), in.material.nu);
   return {f(0, 0), f(1, 1)};
 }
 
@@ -51,7 +53,8 @@ double cant_deficiency_load_transfer(double wheel_load, double cant_deficiency, 
 double flange_vertical_load(double lateral_force, double flange_angle, double mu) {
   // (K6) with Nadal's friction direction (curving.hpp).
   const double d = flange_angle;
-  return std::abs(lateral_force) * (std::cos(d) + mu * std::sin(d)) / (std::sin(d) - mu * std::cos(d));
+  return std::abs(lateral_force) * (std::cos(d) + mu * std::sin(d)) /
+         (std::sin(d) - mu * std::cos(d));
 }
 
 CurveContactState curve_contact_state(const CurveStateInput& in) {
@@ -118,8 +121,8 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
   if (in.creepage) {
     s.creepage = *in.creepage;
   } else {  // (K2) with the actual contact
-    s.creepage = {l0 * inv_R - (rc - s.inner_rolling_radius) / (2.0 * r0),
-                  -s.yaw / std::cos(gamma), -std::sin(gamma) / rc - std::cos(gamma) * inv_R};
+    s.creepage = {l0 * inv_R - (rc - s.inner_rolling_radius) / (2.0 * r0), -s.yaw / std::cos(gamma),
+                  -std::sin(gamma) / rc - std::cos(gamma) * inv_R};
   }
   // (K8): the lateral creep force (K5: f scaled to the tread load, cubic saturation at mu Q_t).
   const double k = std::cbrt(s.tread_load * s.tread_load / (Q * Q));
@@ -131,7 +134,8 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
 }
 
 contact::ContactPatch solve_curve_patch(const CurveStateInput& in, const CurveContactState& s) {
-  return geometry::solve_wheel_rail_patch(*in.pair, s.contact, s.normal_force, in.material, in.grid);
+  return geometry::solve_wheel_rail_patch(*in.pair, s.contact, s.normal_force, in.material,
+                                          in.grid);
 }
 
 }  // namespace rollnoise::noise

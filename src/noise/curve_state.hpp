@@ -21,7 +21,7 @@
 //     contact carries Q_f (K6) and the tread contact Q_t = Q_o - Q_f. The normal force of the
 //     tread contact follows from its vertical equilibrium with the lateral creep force F_y (on the
 //     wheel, contact frame of loop.hpp, whose y axis rises by sin(gamma)):
-//       Q_t = N cos(gamma) + F_y sin(gamma)   =>   N = (Q_t - F_y sin(gamma)) / cos(gamma)      (K8)
+//       Q_t = N cos(gamma) + F_y sin(gamma)   =>   N = (Q_t - F_y sin(gamma)) / cos(gamma) (K8)
 //     F_y from Kalker's f22 scaled to Q_t (K5) with the cubic saturation at mu Q_t (spin
 //     neglected, as in the estimate).
 // The flange contact is not a second coupling point of the loop (a later step): its load is
@@ -46,7 +46,7 @@ struct CurveStateInput {
   contact::Material material;
   geometry::GridOptions grid;  ///< for the Hertz estimate and the patch
   double radius = std::numeric_limits<double>::infinity();  ///< R (m); inf: tangent track
-  double speed = 0.0;                                        ///< V (m/s)
+  double speed = 0.0;                                       ///< V (m/s)
   double cant_deficiency = 0.0;  ///< h_d (m), positive when the unbalanced force points outwards
   double wheelbase = 2.5;        ///< 2a (m)
   double cg_height = 1.5;        ///< h_cg (m) above the rails, (K4); 0: no load transfer
@@ -54,21 +54,22 @@ struct CurveStateInput {
   double friction = 0.3;         ///< mu, also at the flange
   // Multibody input: the wheelset's position (and optionally the creepages) given.
   bool multibody = false;
-  double lateral = 0.0;  ///< u (m)
-  double yaw = 0.0;      ///< psi (rad)
+  double lateral = 0.0;                     ///< u (m)
+  double yaw = 0.0;                         ///< psi (rad)
   std::optional<Eigen::Vector3d> creepage;  ///< (xi_x, xi_y, phi); empty: (K2)
-  double table_step = 0.1e-3;  ///< lateral step of the profile table (m)
-  /// The profile table of `pair` (profile_curving_table), to share between states; empty: made here.
+  double table_step = 0.1e-3;               ///< lateral step of the profile table (m)
+  /// The profile table of `pair` (profile_curving_table), to share between states; empty: made
+  /// here.
   std::shared_ptr<const ProfileCurvingTable> table;
 
   void validate() const;  ///< InputError naming the curve./wheelset. key
 };
 
 struct CurveContactState {
-  bool estimated = false;    ///< true: from the bogie estimate; false: multibody input
-  CurvingEstimate estimate;  ///< when estimated
-  int position_iterations = 0;  ///< contact -> f -> estimate iterations
-  double lateral = 0.0, yaw = 0.0;  ///< u (m), psi (rad) of the wheelset
+  bool estimated = false;             ///< true: from the bogie estimate; false: multibody input
+  CurvingEstimate estimate;           ///< when estimated
+  int position_iterations = 0;        ///< contact -> f -> estimate iterations
+  double lateral = 0.0, yaw = 0.0;    ///< u (m), psi (rad) of the wheelset
   geometry::ContactGeometry contact;  ///< tread contact of the outer wheel
   double inner_rolling_radius = 0.0;  ///< r_i (m)
   double f11 = 0.0, f22 = 0.0;        ///< Kalker's coefficients at the contact for the load Q (N)

@@ -19,7 +19,6 @@ void positive(double v, const char* key) {
                      std::string("curving.") + key + " must be positive and finite");
 }
 
-
 struct Geometry {
   double a, l0, r0, inv_R, yf, Fu, f11, f22;
   std::function<double(double)> delta_r;  // Delta_r(y) = r_outer - r_inner

@@ -42,8 +42,8 @@
 //    a two-point contact whose effective rolling-radius difference lies within the jump.
 //
 //  * Load transfer by the cant deficiency (quasi-static, rigid vehicle; the lateral unbalanced
-//    force m g h_d / s at the centre of gravity, height h_cg above the rails, balanced by the moment
-//    of the wheel-load differences over the contact-point distance s = 2 l0):
+//    force m g h_d / s at the centre of gravity, height h_cg above the rails, balanced by the
+//    moment of the wheel-load differences over the contact-point distance s = 2 l0):
 //      dQ / Q = 2 h_d h_cg / s^2                                                             (K4)
 //    (the caller computes dQ, BogieCurvingInput::load_transfer); outer wheels Q + dQ, inner Q - dQ.
 //  * Per-wheel creep law: f11, f22 of wheel w scale as (Q_w/Q)^(2/3) (Hertz: a, b ~ N^(1/3) at
@@ -54,7 +54,8 @@
 //    friction mu_f N_f acting on the wheel up the flange slope (Nadal's assumption: the flange
 //    contact leads the axle of a wheelset with a positive angle of attack and slides downwards on
 //    the rail, Nadal 1908; Iwnicki 2006, chapter on derailment):
-//      |Y| = N_f (sin delta_f - mu_f cos delta_f),   Q_f = N_f (cos delta_f + mu_f sin delta_f) (K6)
+//      |Y| = N_f (sin delta_f - mu_f cos delta_f),   Q_f = N_f (cos delta_f + mu_f sin delta_f)
+//      (K6)
 //    and the wheel's tread contact carries Q_w - Q_f (used in (K5), iterated with the saturation).
 //  * Gravitational stiffness: the normal load of each tread contact leans with its contact angle,
 //    so axle i at y_i adds the lateral force (towards the track centre for a restoring profile)
@@ -169,12 +170,12 @@ struct AxleCurving {
   double attack_angle = 0.0;  ///< psi_i (rad), (K1)
   double flange_force = 0.0;  ///< Y_i (N): lateral force of a flange on the axle (< 0 outer flange)
   int flange = 0;             ///< 0 none, +1 outer flange, -1 inner flange
-  double flange_normal_force = 0.0;  ///< N_f (N) of the flange contact (K6), 0 without
+  double flange_normal_force = 0.0;   ///< N_f (N) of the flange contact (K6), 0 without
   double flange_vertical_load = 0.0;  ///< Q_f (N) carried by the flange contact (K6)
   /// Vertical loads (N) of the tread contacts of the outer and inner wheel: Q +- dQ, less Q_f on
   /// the flanging wheel.
   double tread_load_outer = 0.0, tread_load_inner = 0.0;
-  double xi_x_outer = 0.0;    ///< xi_x of the outer wheel (K2)
+  double xi_x_outer = 0.0;  ///< xi_x of the outer wheel (K2)
 };
 
 struct CurvingEstimate {

@@ -75,12 +75,14 @@ TEST(CurveState, LargeRadiusGivesTheTangentState) {
   // (the wheel position by 1.6 %), at 1e7 m (u = 1 um) everything is within 0.2 %.
   const double R = 1e7, hd = 1.5 * kV * kV / (9.81 * R);
   const rn::CurveContactState c = rn::curve_contact_state(input(R, hd));
-  std::printf("tangent: gamma %.5f r %.6f N %.1f s %.3f mm rail %.3f mm phi %.5f; R = 1e5 m: %.5f %.6f %.1f "
-              "%.3f %.3f %.5f; xi (%.2e, %.2e) vs 300 m (%.2e, %.2e)\n",
-              t.contact.contact_angle, t.contact.rolling_radius, t.normal_force, 1e3 * t.contact.wheel_s,
-              1e3 * t.contact.rail_y, t.creepage(2), c.contact.contact_angle, c.contact.rolling_radius,
-              c.normal_force, 1e3 * c.contact.wheel_s, 1e3 * c.contact.rail_y, c.creepage(2), c.creepage(0),
-              c.creepage(1), c300.creepage(0), c300.creepage(1));
+  std::printf(
+      "tangent: gamma %.5f r %.6f N %.1f s %.3f mm rail %.3f mm phi %.5f; R = 1e5 m: %.5f %.6f "
+      "%.1f "
+      "%.3f %.3f %.5f; xi (%.2e, %.2e) vs 300 m (%.2e, %.2e)\n",
+      t.contact.contact_angle, t.contact.rolling_radius, t.normal_force, 1e3 * t.contact.wheel_s,
+      1e3 * t.contact.rail_y, t.creepage(2), c.contact.contact_angle, c.contact.rolling_radius,
+      c.normal_force, 1e3 * c.contact.wheel_s, 1e3 * c.contact.rail_y, c.creepage(2), c.creepage(0),
+      c.creepage(1), c300.creepage(0), c300.creepage(1));
   EXPECT_FALSE(t.two_point);
   EXPECT_NEAR(t.lateral, 0.0, 1e-12);
   EXPECT_NEAR(t.normal_force, kQ / std::cos(t.contact.contact_angle), 1e-9 * kQ);
@@ -129,20 +131,25 @@ TEST(CurveState, FlangeContactTakesItsShareOfTheVerticalLoad) {
   const rn::CurveContactState st = rn::curve_contact_state(in);
   ASSERT_TRUE(st.two_point);
   const double d = st.flange_angle, mu = in.friction, Nf = st.flange_normal_force;
-  std::printf("300 m, mu 0.4: |Y| %.1f kN, delta_f %.3f rad, N_f %.1f kN, Q_f %.1f kN, tread %.1f kN, N %.1f kN\n",
-              1e-3 * st.flange_lateral_force, d, 1e-3 * Nf, 1e-3 * st.flange_vertical_load, 1e-3 * st.tread_load,
-              1e-3 * st.normal_force);
+  std::printf(
+      "300 m, mu 0.4: |Y| %.1f kN, delta_f %.3f rad, N_f %.1f kN, Q_f %.1f kN, tread %.1f kN, N "
+      "%.1f kN\n",
+      1e-3 * st.flange_lateral_force, d, 1e-3 * Nf, 1e-3 * st.flange_vertical_load,
+      1e-3 * st.tread_load, 1e-3 * st.normal_force);
   EXPECT_GT(d, 1.0);
   EXPECT_NEAR(d, table()->flange_angle, 0.0);
   // force on the wheel from the flange contact: normal (-sin d, cos d), friction mu (cos d, sin d)
-  const double lateral = -Nf * std::sin(d) + mu * Nf * std::cos(d), vertical = Nf * std::cos(d) + mu * Nf * std::sin(d);
+  const double lateral = -Nf * std::sin(d) + mu * Nf * std::cos(d),
+               vertical = Nf * std::cos(d) + mu * Nf * std::sin(d);
   EXPECT_NEAR(-lateral, st.flange_lateral_force, 1e-6 * kQ);
   EXPECT_NEAR(vertical, st.flange_vertical_load, 1e-6 * kQ);
-  EXPECT_NEAR(st.flange_vertical_load, rn::flange_vertical_load(st.flange_lateral_force, d, mu), 1e-6 * kQ);
+  EXPECT_NEAR(st.flange_vertical_load, rn::flange_vertical_load(st.flange_lateral_force, d, mu),
+              1e-6 * kQ);
   EXPECT_NEAR(st.tread_load + st.flange_vertical_load, kQ + st.load_transfer, 1e-6 * kQ);
   EXPECT_GT(st.flange_vertical_load, 0.05 * kQ);
   const double g = st.contact.contact_angle;
-  EXPECT_NEAR(st.normal_force * std::cos(g) + st.lateral_creep_force * std::sin(g), st.tread_load, 1e-9 * kQ);
+  EXPECT_NEAR(st.normal_force * std::cos(g) + st.lateral_creep_force * std::sin(g), st.tread_load,
+              1e-9 * kQ);
   EXPECT_GT(st.lateral_creep_force, 0.0) << "the creep force pushes the leading axle outwards";
   const rollnoise::contact::ContactPatch patch = rn::solve_curve_patch(in, st);
   EXPECT_NEAR(patch.normal.force, st.normal_force, 1e-6 * st.normal_force);
@@ -165,7 +172,9 @@ TEST(CurveState, MultibodyInputPlacesTheContactAndKeepsGivenCreepages) {
   EXPECT_EQ(a.tread_load, 80e3);
   EXPECT_FALSE(a.two_point);
   EXPECT_NEAR(a.creepage(1), -2e-3 / std::cos(c.contact_angle), 1e-15);
-  EXPECT_NEAR(a.creepage(2), -std::sin(c.contact_angle) / c.rolling_radius - std::cos(c.contact_angle) / 500.0, 1e-12);
+  EXPECT_NEAR(a.creepage(2),
+              -std::sin(c.contact_angle) / c.rolling_radius - std::cos(c.contact_angle) / 500.0,
+              1e-12);
   in.creepage = Eigen::Vector3d(1e-3, -2e-3, -0.1);
   const rn::CurveContactState b = rn::curve_contact_state(in);
   EXPECT_EQ(b.creepage, *in.creepage);
@@ -214,16 +223,21 @@ TEST(CurveState, BadInputNamesTheKey) {
 // (the reported defect).
 TEST(CurveState, FrictionAndCantDeficiencyMoveTheState) {
   auto print = [](double R, double mu, double hd, const rn::CurveContactState& s) {
-    std::printf("| %.0f | %.1f | %.2f | %.2f | %.2f | %.2f | %+.2e | %+.2e | %.3f | %.3f | %.1f | %.1f |\n", R, mu, hd,
-                1e3 * s.lateral, 1e3 * s.estimate.trailing.lateral, 1e3 * s.yaw, s.creepage(0), s.creepage(1),
-                s.creepage(2), s.contact.contact_angle, 1e-3 * s.tread_load, 1e-3 * s.flange_vertical_load);
+    std::printf(
+        "| %.0f | %.1f | %.2f | %.2f | %.2f | %.2f | %+.2e | %+.2e | %.3f | %.3f | %.1f | %.1f |\n",
+        R, mu, hd, 1e3 * s.lateral, 1e3 * s.estimate.trailing.lateral, 1e3 * s.yaw, s.creepage(0),
+        s.creepage(1), s.creepage(2), s.contact.contact_angle, 1e-3 * s.tread_load,
+        1e-3 * s.flange_vertical_load);
   };
-  std::printf("| R (m) | mu | h_d (m) | u1 (mm) | u2 (mm) | psi1 (mrad) | xi_x | xi_y | phi (1/m) | gamma (rad) | Q_t (kN) | Q_f (kN) |\n");
+  std::printf(
+      "| R (m) | mu | h_d (m) | u1 (mm) | u2 (mm) | psi1 (mrad) | xi_x | xi_y | phi (1/m) | gamma "
+      "(rad) | Q_t (kN) | Q_f (kN) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   if (std::getenv("ROLLNOISE_CURVE_TABLE"))  // the whole table of docs/noise_loop.md Sec. 7.2
     for (double R : {300.0, 500.0, 1000.0})
       for (double mu : {0.2, 0.3, 0.4})
-        for (double hd : {0.0, 0.08, 0.15}) print(R, mu, hd, rn::curve_contact_state(input(R, hd, mu)));
+        for (double hd : {0.0, 0.08, 0.15})
+          print(R, mu, hd, rn::curve_contact_state(input(R, hd, mu)));
   for (double R : {300.0, 1000.0}) {
     // friction at h_d = 0.08 m: the leading axle further out, more flange force, less tread load
     rn::CurveContactState prev;
@@ -248,7 +262,8 @@ TEST(CurveState, FrictionAndCantDeficiencyMoveTheState) {
       const rn::CurveContactState m = rn::curve_contact_state(input(R, 0.08, 0.3));
       print(R, 0.3, hd, s);
       const double sign = hd > 0.08 ? 1.0 : -1.0;
-      EXPECT_GT(sign * (s.estimate.trailing.lateral - m.estimate.trailing.lateral), 0.0) << R << " " << hd;
+      EXPECT_GT(sign * (s.estimate.trailing.lateral - m.estimate.trailing.lateral), 0.0)
+          << R << " " << hd;
       EXPECT_LT(sign * (s.yaw - m.yaw), 0.0) << R << " " << hd;
       EXPECT_GT(sign * (s.tread_load - m.tread_load), 0.0) << R << " " << hd;
     }
