@@ -1,7 +1,9 @@
 // rollnoise noise: contact-force spectra from roughness for a train in a curve (DESIGN.md Sec. 4).
 //
-//   1. mean creepages and contact position: the quasi-static bogie estimate for the curve
-//      (src/noise/curving.hpp), or the case's creepage.mean and contact.angle;
+//   1. mean creepages and contact position: with profiles the curve contact state
+//      (src/noise/curve_state.hpp: bogie estimate or multibody input, contact, loads, creepages),
+//      with the Hertzian patch the quasi-static bogie estimate (src/noise/curving.hpp), or the
+//      case's creepage.mean and contact;
 //   2. the contact patch, steady rolling at the mean creepage, the linear NSS model and its creep
 //      coefficients f(w) at the narrow-band frequencies (one sweep, reused for every output);
 //   3. wheel and rail receptances at the contact point (computed once), the contact receptance
@@ -11,6 +13,7 @@
 //      baseline of noise.compare (the quasi-steady contact f(0), g(0), or Kalker's coefficients);
 //   4. the effective roughness (wheel + rail, contact filter) and the 1/3-octave levels.
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,11 +22,14 @@
 #include "cli/contact_setup.hpp"
 #include "contact/forces.hpp"
 #include "contact/hertz.hpp"
+#include "contact/halfspace_operator.hpp"
+#include "contact/normal_solver.hpp"
 #include "io/contact_output.hpp"
 #include "io/frequency_axis.hpp"
 #include "io/noise_case.hpp"
 #include "noise/bands.hpp"
 #include "noise/contact_receptance.hpp"
+#include "noise/curve_state.hpp"
 #include "noise/curving.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/loop.hpp"
@@ -74,6 +80,9 @@ void write_variant(io::Hdf5Writer& w, const std::string& group, const noise::Loo
 }
 
 // The case, its noise part and the mean state of the leading outer wheel (step 1).
+// The case, its noise part and the mean state of the leading outer wheel (step 1): with profiles
+// the curve contact state (src/noise/curve_state.hpp), with the Hertzian case the bogie estimate
+// on the conical tread and the case's patch.
 struct NoiseSetup {
   io::CaseReader reader;
   io::NoiseCase noise;
@@ -81,17 +90,30 @@ struct NoiseSetup {
   noise::ContactPosition position;
   noise::CurvingEstimate curving;
   bool estimated = false;
+  std::optional<noise::CurveContactState> state;  ///< profiles (estimate or multibody)
 };
 
 NoiseSetup prepare(const CommonOptions& o) {
-  NoiseSetup s{io::CaseReader::from_file(o.case_file, o.overrides), {}, {}, {}, {}, false};
+  NoiseSetup s{io::CaseReader::from_file(o.case_file, o.overrides), {}, {}, {}, {}, false, {}};
   s.noise = io::read_noise_case(s.reader);
   s.contact = io::read_contact_case(s.reader);
   io::ContactCase& cc = s.contact;
   const io::NoiseCase& nc = s.noise;
   s.position = {0.0, 0.0, nc.contact_angle};
-  s.estimated = nc.estimate_creepage && nc.curve_radius > 0.0;
-  if (s.estimated) {
+  if (cc.profiles && (nc.estimate_creepage || nc.multibody)) {
+    const noise::CurveStateInput in = io::curve_state_input(s.reader, cc, nc);
+    s.state = noise::curve_contact_state(in);
+    s.estimated = s.state->estimated;
+    s.curving = s.state->estimate;
+    cc.contact_point = s.state->contact;
+    cc.normal_force = s.state->normal_force;
+    const auto hz = geometry::hertz_estimate(cc.contact_point, cc.normal_force, cc.material, cc.grid_options);
+    cc.a = hz.a, cc.b = hz.b;
+    const Eigen::Vector3d& xi = s.state->creepage;
+    cc.creepage = {xi(0), xi(1), xi(2)};
+    s.position = s.state->position();
+  } else if (nc.estimate_creepage && nc.curve_radius > 0.0) {
+    s.estimated = true;
     const Eigen::Matrix3d fk =
         noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu);
     noise::BogieCurvingInput in;
@@ -109,13 +131,66 @@ NoiseSetup prepare(const CommonOptions& o) {
     s.curving = noise::estimate_bogie_curving(in);
     cc.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
     s.position = s.curving.position();
-    // the case as run records the creepage used
+  }
+  if (cc.profiles && !s.state)  // curve.creepage = "case": the case's contact point
+    s.position = {cc.contact_point.wheel_s, cc.contact_point.rail_y, cc.contact_point.contact_angle};
+  if (s.state || s.estimated) {  // the case as run records the creepage used
     std::ostringstream v;
     v.precision(12);
-    v << "creepage.mean=[" << s.curving.xi_x << ", " << s.curving.xi_y << ", " << s.curving.phi << "]";
+    v << "creepage.mean=[" << cc.creepage.xi_x << ", " << cc.creepage.xi_y << ", " << cc.creepage.phi << "]";
     s.reader = s.reader.with(v.str());
   }
   return s;
+}
+
+// The patch of the case (at the state's contact and normal force with profiles) and its normal
+// contact stiffness dN/d(delta) on the frozen contact area (contact::normal_load_sensitivity).
+std::unique_ptr<contact::ContactPatch> make_patch(const io::ContactCase& cc, double* stiffness) {
+  auto patch = std::make_unique<contact::ContactPatch>(io::solve_case_patch(cc));
+  const contact::HalfSpaceOperator op(patch->influence, contact::Problem::Normal, 0, cc.backend);
+  *stiffness = contact::normal_load_sensitivity(patch->grid, op, patch->normal).stiffness();
+  return patch;
+}
+
+// /noise/contact/*: the contact state the loop ran on.
+void write_contact_state(io::Hdf5Writer& w, const NoiseSetup& s, double stiffness) {
+  const io::ContactCase& cc = s.contact;
+  w.write("/noise/contact/normal_stiffness", stiffness, "N/m");
+  w.write("/noise/contact/angle", s.position.contact_angle, "rad");
+  w.write("/noise/contact/position_wheel", s.position.wheel_shift_y,
+          "m (wheel profile coordinate from the nominal running circle, field side > 0)");
+  w.write("/noise/contact/position_rail", s.position.rail_offset_y,
+          "m (rail profile coordinate from the rail's centre line, field side > 0)");
+  w.write("/noise/contact/normal_force", cc.normal_force, "N");
+  w.write("/noise/contact/creepage", std::vector<double>{cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi}, {3}, "-, -, rad/m");
+  const noise::CurveContactState* st = s.state ? &*s.state : nullptr;
+  w.write("/noise/contact/rolling_radius",
+          st ? st->contact.rolling_radius : s.estimated ? s.curving.rolling_radius : s.noise.wheel_radius, "m");
+  w.write("/noise/contact/two_point", std::vector<int>{st && st->two_point ? 1 : 0}, {}, "-");
+  w.write("/noise/contact/flange_normal_force", st ? st->flange_normal_force : 0.0, "N");
+  w.write("/noise/contact/flange_vertical_load", st ? st->flange_vertical_load : 0.0, "N");
+  w.write("/noise/contact/flange_angle", st ? st->flange_angle : 0.0, "rad");
+  if (st) {
+    w.write("/noise/contact/wheel_load", st->wheel_load, "N");
+    w.write("/noise/contact/load_transfer", st->load_transfer, "N");
+    w.write("/noise/contact/tread_load", st->tread_load, "N (vertical)");
+    w.write("/noise/contact/wheelset_lateral", st->lateral, "m");
+    w.write("/noise/contact/wheelset_yaw", st->yaw, "rad");
+  }
+}
+
+// The summary line of the contact state.
+void print_contact_state(const NoiseSetup& s) {
+  if (!s.state) return;
+  const noise::CurveContactState& st = *s.state;
+  std::printf("  contact (%s): u = %.2f mm, psi = %.2f mrad; on the wheel at s = %.1f mm, on the rail at %.1f mm, "
+              "r = %.4f m; Q = %.1f kN + dQ %.1f kN, tread %.1f kN (N = %.1f kN); %s",
+              st.estimated ? "bogie estimate" : "multibody", 1e3 * st.lateral, 1e3 * st.yaw, 1e3 * st.contact.wheel_s,
+              1e3 * st.contact.rail_y, st.contact.rolling_radius, 1e-3 * st.wheel_load, 1e-3 * st.load_transfer,
+              1e-3 * st.tread_load, 1e-3 * st.normal_force, st.two_point ? "two-point: flange " : "one-point\n");
+  if (st.two_point)
+    std::printf("%.1f kN vertical (N_f %.1f kN at %.3f rad, not coupled in the loop)\n", 1e-3 * st.flange_vertical_load,
+                1e-3 * st.flange_normal_force, st.flange_angle);
 }
 
 }  // namespace
@@ -135,7 +210,8 @@ int run_noise(const CommonOptions& o) {
   const std::vector<double> centres = noise::third_octave_centres(nc.band_min, nc.band_max);
   if (centres.empty()) reader.fail("noise.band_max", "no 1/3-octave band between band_min and band_max");
   const std::vector<double> freq = noise::band_frequencies(centres, nc.points_per_band);
-  auto patch = std::make_unique<contact::ContactPatch>(io::solve_case_patch(cc));
+  double kH = 0.0;
+  const auto patch = make_patch(cc, &kH);
   const auto steady = contact::solve_steady_rolling(patch->influence, patch->normal.pn, cc.steady_input(), cc.tangential);
   const nss::LinearContactModel model(*patch, steady, {cc.mu, cc.speed, cc.spin_offset});
   if (freq.back() > model.nyquist_frequency())
@@ -144,7 +220,6 @@ int run_noise(const CommonOptions& o) {
                                       std::to_string(model.nyquist_frequency()) + " Hz: refine grid.nx");
   const auto creep = model.creep_coefficients(freq);
   const auto load = model.normal_load_coefficients(freq);  // g, the same Markov sweep
-  const double kH = contact::hertz_from_semi_axes(cc.a, cc.b, cc.normal_force, cc.material).normal_stiffness();
   const double t_contact = seconds_since(t0);
 
   // 3. structures once, then the loop per contact model
@@ -207,11 +282,7 @@ int run_noise(const CommonOptions& o) {
   w.write("/noise/creep/f", flatten(creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
   w.write("/noise/creep/g", flatten(load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
-  w.write("/noise/contact/normal_stiffness", kH, "N/m");
-  w.write("/noise/contact/normal_force", cc.normal_force, "N");
-  w.write("/noise/contact/angle", position.contact_angle, "rad");
-  w.write("/noise/contact/wheel_shift", position.wheel_shift_y, "m");
-  w.write("/noise/contact/rail_offset", position.rail_offset_y, "m");
+  write_contact_state(w, setup, kH);
   if (estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
     w.write("/noise/curving/attack_angle", curving.leading.attack_angle, "rad");
@@ -244,6 +315,7 @@ int run_noise(const CommonOptions& o) {
               nc.curve_radius > 0 ? ("curve R = " + std::to_string(int(nc.curve_radius)) + " m").c_str()
                                   : "tangent track",
               cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, position.contact_angle);
+  print_contact_state(setup);
   std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "
               "structures %.1f s, total %.1f s\n",
               model.adhesion_elements(), model.slip_elements(), nf, centres.size(), t_contact, t_structures,
@@ -287,9 +359,9 @@ int run_receptance(const CommonOptions& o) {
   const std::vector<double> freq = io::read_frequency_axis(setup.reader);
   for (double f : freq)
     if (!(f > 0.0)) setup.reader.fail("frequency.f_min", "receptances need positive frequencies");
-  auto patch = std::make_unique<contact::ContactPatch>(io::solve_case_patch(cc));
+  double kH = 0.0;
+  const auto patch = make_patch(cc, &kH);
   const auto steady = contact::solve_steady_rolling(patch->influence, patch->normal.pn, cc.steady_input(), cc.tangential);
-  const double kH = contact::hertz_from_semi_axes(cc.a, cc.b, cc.normal_force, cc.material).normal_stiffness();
   std::vector<noise::Receptance4> contact_r;
   if (setup.noise.use_nss) {
     const nss::LinearContactModel model(*patch, steady, {cc.mu, cc.speed, cc.spin_offset});

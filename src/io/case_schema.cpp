@@ -80,8 +80,23 @@ const std::vector<KeySpec>& case_schema() {
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
       {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
       {"curve.creepage", T::String, "\"estimate\"", "-",
-       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp) or "
-       "creepage.mean with contact.angle", {"estimate", "case"}},
+       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp; with "
+       "contact.geometry = \"profiles\" the curve contact state of src/noise/curve_state.hpp), "
+       "creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw (profiles), or "
+       "the wheelset's position from a multibody run ([wheelset])", {"estimate", "case", "multibody"}},
+      {"curve.cg_height", T::NonNegReal, "1.5", "m",
+       "centre-of-gravity height above the rails for the load transfer by the cant deficiency, "
+       "dQ/Q = 2 h_d h_cg / s^2 (profiles; 0: none)"},
+      {"wheelset.lateral_displacement", T::Real, "0.0", "m",
+       "curve.creepage = \"multibody\": lateral displacement of the wheelset towards the outer rail"},
+      {"wheelset.yaw", T::Real, "0.0", "rad",
+       "curve.creepage = \"multibody\": yaw angle (angle of attack, positive turning towards the outer rail)"},
+      {"wheelset.wheel_load", T::PositiveReal, "", "N",
+       "curve.creepage = \"multibody\": vertical load of the outer wheel's tread contact "
+       "(default contact.normal_force)"},
+      {"wheelset.creepage", T::Real3, "", "-, -, rad/m",
+       "curve.creepage = \"multibody\": creepages (xi_x, xi_y, phi) of the outer wheel; default: "
+       "kinematic (K2) from the position"},
       {"curve.wheelbase", T::PositiveReal, "2.5", "m", "bogie wheelbase"},
       {"curve.wheel_radius", T::PositiveReal, "0.46", "m", "nominal rolling radius"},
       {"curve.conicity", T::PositiveReal, "0.15", "-", "equivalent conicity of the conical tread"},

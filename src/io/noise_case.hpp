@@ -8,6 +8,8 @@
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "io/case_reader.hpp"
+#include "io/contact_case.hpp"
+#include "noise/curve_state.hpp"
 #include "noise/roughness.hpp"
 
 namespace rollnoise::io {
@@ -16,6 +18,8 @@ struct NoiseCase {
   double curve_radius = 0.0;  ///< m, 0: tangent track
   double cant_deficiency = 0.0;
   bool estimate_creepage = true;
+  bool multibody = false;  ///< curve.creepage = "multibody"
+  double cg_height = 1.5;
   double wheelbase = 2.5, wheel_radius = 0.46, conicity = 0.15, flange_clearance = 0.005;
   double contact_angle = 0.0;  ///< when the case gives the creepages
   std::unique_ptr<dynamics::RailModel> rail;
@@ -35,5 +39,11 @@ struct NoiseCase {
 };
 
 NoiseCase read_noise_case(const CaseReader& r);
+
+/// The inputs of the curve contact state (profile cases with curve.creepage = "estimate" or
+/// "multibody"): the case's profiles, material, grid options, curve, wheel load
+/// (contact.normal_force, or wheelset.wheel_load) and [wheelset].
+noise::CurveStateInput curve_state_input(const CaseReader& r, const ContactCase& contact,
+                                         const NoiseCase& noise);
 
 }  // namespace rollnoise::io

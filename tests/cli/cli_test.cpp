@@ -329,6 +329,49 @@ TEST(NoiseCommand, DeprecatedCompareKalkerIsAnAliasAndMayNotContradict) {
   EXPECT_NE(bad.output.find("noise.compare_kalker"), std::string::npos) << bad.output;
 }
 
+// The profile curve case: the contact state the loop ran on is written under /noise/contact with
+// units (two_point an integer flag), the summary line names the contact and the two-point state,
+// and [wheelset] keys outside the multibody input are an input error naming the key.
+TEST(NoiseCommand, WritesTheCurveContactState) {
+  const fs::path out = temp_dir() / "noise_contact.h5";
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
+                           "--set track.support=continuous --set noise.compare=\"none\" -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("two-point"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("on the wheel at"), std::string::npos) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const char* name : {"/noise/contact/position_wheel", "/noise/contact/position_rail", "/noise/contact/rolling_radius"})
+    EXPECT_EQ(read_units(f, name).substr(0, 1), "m") << name;
+  EXPECT_EQ(read_units(f, "/noise/contact/angle"), "rad");
+  EXPECT_EQ(read_units(f, "/noise/contact/normal_force"), "N");
+  EXPECT_EQ(read_units(f, "/noise/contact/flange_normal_force"), "N");
+  EXPECT_EQ(read_units(f, "/noise/contact/creepage"), "-, -, rad/m");
+  EXPECT_EQ(read_units(f, "/noise/contact/two_point"), "-");
+  const hid_t set = H5Dopen2(f, "/noise/contact/two_point", H5P_DEFAULT);
+  ASSERT_GE(set, 0);
+  const hid_t type = H5Dget_type(set);
+  EXPECT_EQ(H5Tget_class(type), H5T_INTEGER);
+  int two_point = -1;
+  H5Dread(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &two_point);
+  H5Tclose(type), H5Dclose(set);
+  const auto creepage = read_doubles(f, "/noise/contact/creepage");
+  const auto steady = read_doubles(f, "/steady/creepage");
+  const auto normal = read_doubles(f, "/noise/contact/normal_force");
+  const auto force = read_doubles(f, "/normal/force");
+  const auto flange = read_doubles(f, "/noise/contact/flange_normal_force");
+  H5Fclose(f);
+  EXPECT_EQ(two_point, 1);
+  EXPECT_GT(flange[0], 0.0);
+  ASSERT_EQ(creepage.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(creepage[i], steady[i]) << "the loop ran on the state's creepages";
+  EXPECT_NEAR(force[0], normal[0], 1e-6 * normal[0]) << "the patch carries the state's normal force";
+
+  const Invocation bad = run("noise " + curve_case() + " --set wheelset.yaw=0.002 -o " + (temp_dir() / "bad.h5").string());
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("wheelset.yaw"), std::string::npos) << bad.output;
+}
+
 TEST(NoiseCommand, BandsAboveTheGridsNyquistLimitAreAnInputError) {
   const Invocation r = run("noise " + curve_case() + " --set noise.band_max=20000.0 --set noise.points_per_band=4 "
                            "--set track.support=continuous -o " + (temp_dir() / "nyq.h5").string());
