@@ -1,5 +1,5 @@
-// rollnoise transient: unsteady rolling (paper Eq. 2) under the case's creepage history, from the
-// steady state at the mean creepage or from zero tractions.
+// rollnoise transient: unsteady rolling (paper Eq. 2) under the case's creepage and normal-load
+// history, from the steady state at the mean creepage (and mean load) or from zero tractions.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +31,11 @@ int run_transient(const CommonOptions& o) {
   for (double t : snapshots)
     if (t < 0 || t > duration) reader.fail("transient.snapshots", "times must lie in [0, duration]");
 
+  // total normal load of every step (checked positive); the normal problem is re-solved per step
+  // only when the load varies (transient_rolling.hpp)
+  const std::vector<double> load = io::normal_load_series(reader, history, cc.normal_force, dt, steps);
+  const bool varying_load = history.has_normal_variation();
+
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_case(w, reader);
@@ -39,6 +44,7 @@ int run_transient(const CommonOptions& o) {
 
   contact::TransientRolling rolling(patch.influence, patch.normal.pn, cc.mu, cc.speed, cc.spin_offset,
                                     cc.backend, cc.tangential);
+  if (varying_load) rolling.set_normal_problem(patch.undeformed_distance, cc.normal_force, cc.normal);
   contact::TangentialSolution state;
   if (from_steady) {
     state = contact::solve_steady_rolling(patch.influence, patch.normal.pn, cc.steady_input(), cc.tangential);
@@ -55,6 +61,11 @@ int run_transient(const CommonOptions& o) {
               "contact), start: %s\n",
               reader.name().c_str(), steps, dt, g.nx, g.ny, patch.normal.contact_elements(),
               from_steady ? "steady state at the mean creepage" : "zero tractions");
+  if (varying_load) {
+    const auto [lo, hi] = std::minmax_element(load.begin(), load.end());
+    std::printf("  normal load %.6g N varies in [%.6g, %.6g] N: the normal problem is solved at every step\n",
+                cc.normal_force, *lo, *hi);
+  }
 
   std::vector<double> time, creep, force;
   std::vector<int> n_adh, n_slip;
@@ -77,11 +88,13 @@ int run_transient(const CommonOptions& o) {
   record(0, history.at(0.0), state);
   const auto t0 = std::chrono::steady_clock::now();
   Progress progress("transient", steps, o.quiet);
-  int newton = 0;
+  int newton = 0, factorisations = 0, gmres = 0;
   for (long k = 1; k <= steps; ++k) {
     const contact::Creepage c = history.at(k * dt);  // creepage of step k at t_k = k dt
-    const auto& s = rolling.step(c);
+    const auto& s = varying_load ? rolling.step(c, load[k]) : rolling.step(c);
     newton += s.iterations;
+    factorisations += s.factorisations;
+    gmres += s.linear_iterations;
     record(k, c, s);
     progress.update(k);
   }
@@ -94,12 +107,20 @@ int run_transient(const CommonOptions& o) {
   w.write("/transient/force", force, {nt, 3}, "N, N, N m");
   w.write("/transient/n_adhesion", n_adh, {nt}, "-");
   w.write("/transient/n_slip", n_slip, {nt}, "-");
+  w.write("/transient/normal_force", load, {nt}, "N");
   io::write_excitation(w, "/transient/excitation", history);
   w.commit();
   const std::size_t e = 3 * (nt - 1);
   std::printf("  final: Fx = %.6g N, Fy = %.6g N, Mz = %.6g N m; %.2f ms per step, %.1f Newton "
-              "iterations per step\nwrote %s\n",
-              force[e], force[e + 1], force[e + 2], ms / steps, double(newton) / steps, out.c_str());
+              "and %.1f GMRES iterations per step\n",
+              force[e], force[e + 1], force[e + 2], ms / steps, double(newton) / steps, double(gmres) / steps);
+  if (varying_load)
+    std::printf("  normal problem: %d solves, %.1f Polonsky-Keer iterations and %.2f ms per solve (included "
+                "above); %d LU factorisations of the tangential Jacobian\n",
+                rolling.normal_solves(),
+                rolling.normal_solves() ? double(rolling.normal_iterations()) / rolling.normal_solves() : 0.0,
+                rolling.normal_solves() ? 1e3 * rolling.normal_seconds() / rolling.normal_solves() : 0.0, factorisations);
+  std::printf("wrote %s\n", out.c_str());
   return 0;
 }
 

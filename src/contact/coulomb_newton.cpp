@@ -48,6 +48,16 @@ CoulombNewton::CoulombNewton(const SlipOperator& S, std::vector<int> elements,
   grid_out_.assign(2 * grid_.size(), 0.0);
 }
 
+void CoulombNewton::set_bounds(std::vector<int> elements, const GridField& bound) {
+  if (elements != elements_) {
+    elements_ = std::move(elements);
+    have_lu_ = false;  // factors of another system size
+  }
+  const int m = static_cast<int>(elements_.size());
+  bound_.resize(m);
+  for (int a = 0; a < m; ++a) bound_[a] = bound[elements_[a]];
+}
+
 void CoulombNewton::apply_S(const Eigen::VectorXd& q, Eigen::VectorXd& s) const {
   const int N = grid_.size(), m = static_cast<int>(elements_.size());
   for (int a = 0; a < m; ++a) {  // component-major grid fields; exterior elements stay zero
@@ -242,6 +252,7 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
   sol.sy.assign(g.size(), 0.0);
   sol.state.assign(g.size(), static_cast<std::int8_t>(ElementState::exterior));
   for (int a = 0; a < m; ++a) {
+    if (bound_[a] == 0.0) continue;  // out of contact at this load (set_bounds): p = 0
     const int k = elements_[a];
     const ElementTraction& e = r.local[a];
     sol.px[k] = e.px, sol.py[k] = e.py;

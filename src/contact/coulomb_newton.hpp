@@ -44,6 +44,12 @@ class CoulombNewton {
   /// `elements`: flat grid indices of the contact elements; `bound`: mu pn on the grid.
   CoulombNewton(const SlipOperator& S, std::vector<int> elements, const GridField& bound);
 
+  /// New traction bounds (a varying normal load, transient_rolling.hpp): `elements` as in the
+  /// constructor, `bound` mu pn on the grid, which may be 0 at some of the elements (these carry no
+  /// traction and are output as exterior). The factors are kept (as a preconditioner) if the
+  /// elements are the same, else dropped.
+  void set_bounds(std::vector<int> elements, const GridField& bound);
+
   /// Solve with the rigid-slip-like right-hand side (grid fields) from the start tractions
   /// (grid fields; projected onto the bounds). Throws NumericalError naming `solver`.
   TangentialSolution solve(const GridField& rhs_x, const GridField& rhs_y, const GridField& px,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "core/errors.hpp"
 
@@ -16,24 +17,30 @@ CreepageHistory CreepageHistory::constant(const Creepage& mean) {
 
 CreepageHistory CreepageHistory::harmonic(const Creepage& mean,
                                           const std::array<double, 3>& amplitude, double frequency,
-                                          const std::array<double, 3>& phase) {
+                                          const std::array<double, 3>& phase,
+                                          double normal_amplitude, double normal_phase) {
   if (!(frequency > 0.0)) throw InputError("excitation.frequency", "must be positive");
+  if (!std::isfinite(normal_amplitude)) throw InputError("excitation.normal_amplitude", "must be finite");
+  if (!std::isfinite(normal_phase)) throw InputError("excitation.normal_phase", "must be finite");
   CreepageHistory h;
   h.kind_ = Kind::harmonic;
   h.mean_ = mean;
   h.amp_ = amplitude;
   h.freq_ = {frequency};
   for (int j = 0; j < 3; ++j) h.phase_[j] = {phase[j]};
+  h.normal_amp_ = normal_amplitude;
+  h.normal_phase_ = {normal_phase};
   return h;
 }
 
 CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
                                                const std::array<double, 3>& amplitude,
                                                double f_min, double f_max, int count,
-                                               std::uint64_t seed) {
+                                               std::uint64_t seed, double normal_amplitude) {
   if (!(f_min > 0.0)) throw InputError("excitation.f_min", "must be positive");
   if (!(f_max >= f_min)) throw InputError("excitation.f_max", "must not be below excitation.f_min");
   if (count < 1) throw InputError("excitation.count", "must be at least 1");
+  if (!std::isfinite(normal_amplitude)) throw InputError("excitation.normal_amplitude", "must be finite");
   CreepageHistory h;
   h.kind_ = Kind::multiharmonic;
   h.mean_ = mean;
@@ -47,13 +54,22 @@ CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
     h.phase_[j].resize(count);
     for (int n = 0; n < count; ++n) h.phase_[j][n] = U(rng);
   }
+  // the load's phases after all creepage phases, so that these do not depend on the load
+  h.normal_amp_ = normal_amplitude;
+  h.normal_phase_.resize(count);
+  for (int n = 0; n < count; ++n) h.normal_phase_[n] = U(rng);
   return h;
 }
 
 CreepageHistory CreepageHistory::samples(const Creepage& mean, std::vector<double> t,
-                                         std::vector<Creepage> values) {
+                                         std::vector<Creepage> values, std::vector<double> normal) {
   if (t.size() < 2 || t.size() != values.size())
     throw InputError("excitation.file", "a creepage time series needs at least two samples");
+  if (!normal.empty() && normal.size() != t.size())
+    throw InputError("excitation.file", "the normal-load column needs one value per time");
+  for (size_t i = 0; i < normal.size(); ++i)
+    if (!std::isfinite(normal[i]))
+      throw InputError("excitation.file", "normal-load variation not finite (row " + std::to_string(i + 1) + ")");
   for (size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
       throw InputError("excitation.file", "times must increase (row " + std::to_string(i + 1) + ")");
@@ -62,6 +78,7 @@ CreepageHistory CreepageHistory::samples(const Creepage& mean, std::vector<doubl
   h.mean_ = mean;
   h.t_ = std::move(t);
   h.values_ = std::move(values);
+  h.normal_values_ = std::move(normal);
   return h;
 }
 
@@ -87,12 +104,46 @@ std::array<double, 3> CreepageHistory::variation(double t) const {
   return v;
 }
 
+// The sample interval of t: index i of the sample after t and the weight of sample i (t inside).
+static std::pair<size_t, double> interval(const std::vector<double>& ts, double t) {
+  const size_t i = std::upper_bound(ts.begin(), ts.end(), t) - ts.begin();
+  return {i, (t - ts[i - 1]) / (ts[i] - ts[i - 1])};
+}
+
+double CreepageHistory::normal_variation(double t) const {
+  switch (kind_) {
+    case Kind::constant:
+      return 0.0;
+    case Kind::harmonic:
+    case Kind::multiharmonic: {
+      if (normal_amp_ == 0.0) return 0.0;
+      double v = 0.0;
+      for (size_t n = 0; n < freq_.size(); ++n)
+        v += std::cos(2.0 * M_PI * freq_[n] * t + normal_phase_[n]);
+      return normal_amp_ * v;
+    }
+    case Kind::samples: {
+      if (normal_values_.empty()) return 0.0;
+      if (t <= t_.front()) return normal_values_.front();
+      if (t >= t_.back()) return normal_values_.back();
+      const auto [i, w] = interval(t_, t);
+      return normal_values_[i - 1] + w * (normal_values_[i] - normal_values_[i - 1]);
+    }
+  }
+  return 0.0;
+}
+
+bool CreepageHistory::has_normal_variation() const {
+  if (kind_ == Kind::samples)
+    return std::any_of(normal_values_.begin(), normal_values_.end(), [](double v) { return v != 0.0; });
+  return kind_ != Kind::constant && normal_amp_ != 0.0;
+}
+
 Creepage CreepageHistory::at(double t) const {
   if (kind_ == Kind::samples) {
     if (t <= t_.front()) return values_.front();
     if (t >= t_.back()) return values_.back();
-    const size_t i = std::upper_bound(t_.begin(), t_.end(), t) - t_.begin();
-    const double w = (t - t_[i - 1]) / (t_[i] - t_[i - 1]);
+    const auto [i, w] = interval(t_, t);
     const Creepage &a = values_[i - 1], &b = values_[i];
     return {a.xi_x + w * (b.xi_x - a.xi_x), a.xi_y + w * (b.xi_y - a.xi_y), a.phi + w * (b.phi - a.phi)};
   }

@@ -6,6 +6,17 @@
 //                  [f_min, f_max], phases alpha_jn uniform in [0, 2 pi) from a seeded
 //                  generator (std::mt19937_64), so a run can be repeated exactly (paper Eq. 32);
 //   samples        a time series (t_i, xi_i) interpolated linearly (held constant outside).
+//
+// Beside the creepages, the history carries a variation of the normal load, N(t) = N_mean + dN(t)
+// (N_mean is the case's contact.normal_force, not stored here), of the same kind:
+//   harmonic       dN = normal_amplitude cos(2 pi f t + normal_phase);
+//   multiharmonic  dN = normal_amplitude sum_n cos(2 pi f_n t + beta_n) on the same frequencies,
+//                  beta_n drawn from the same generator AFTER the creepage phases (alpha_xn for
+//                  all n, then alpha_yn, alpha_phi n, then beta_n: 4 count draws from
+//                  mt19937_64(seed)), so a seed gives the creepage phases it gave before;
+//   samples        an optional dN per sample, interpolated like the creepages.
+// The transient solver (transient_rolling.hpp) uses it; the linear model's normal-load input g
+// needs normal_variation, normal_amplitude, frequencies and normal_phases, as for the creepages.
 #pragma once
 
 #include <array>
@@ -21,14 +32,18 @@ class CreepageHistory {
   enum class Kind { constant, harmonic, multiharmonic, samples };
 
   static CreepageHistory constant(const Creepage& mean);
-  /// phase in radians per component.
+  /// phase in radians per component; normal_amplitude (N) and normal_phase (rad) of the load.
   static CreepageHistory harmonic(const Creepage& mean, const std::array<double, 3>& amplitude,
-                                  double frequency, const std::array<double, 3>& phase = {});
+                                  double frequency, const std::array<double, 3>& phase = {},
+                                  double normal_amplitude = 0.0, double normal_phase = 0.0);
+  /// normal_amplitude (N) per frequency, with its own seeded phases (see above).
   static CreepageHistory multiharmonic(const Creepage& mean, const std::array<double, 3>& amplitude,
-                                       double f_min, double f_max, int count, std::uint64_t seed);
-  /// `t` increasing; `values` one creepage per time.
+                                       double f_min, double f_max, int count, std::uint64_t seed,
+                                       double normal_amplitude = 0.0);
+  /// `t` increasing; `values` one creepage per time; `normal` empty or one load variation dN (N)
+  /// per time.
   static CreepageHistory samples(const Creepage& mean, std::vector<double> t,
-                                 std::vector<Creepage> values);
+                                 std::vector<Creepage> values, std::vector<double> normal = {});
 
   Kind kind() const { return kind_; }
   const Creepage& mean() const { return mean_; }
@@ -44,6 +59,15 @@ class CreepageHistory {
   const std::array<std::vector<double>, 3>& phases() const { return phase_; }
   const std::array<double, 3>& amplitude() const { return amp_; }
 
+  /// The normal-load variation dN(t) = N(t) - N_mean (N).
+  double normal_variation(double t) const;
+  /// Whether dN is not identically zero (a non-zero amplitude or a non-zero sample).
+  bool has_normal_variation() const;
+  /// harmonic, multiharmonic: the amplitude of dN per frequency (N); 0 otherwise.
+  double normal_amplitude() const { return normal_amp_; }
+  /// harmonic, multiharmonic: the phase of dN at each of frequencies() (rad); empty otherwise.
+  const std::vector<double>& normal_phases() const { return normal_phase_; }
+
  private:
   Kind kind_ = Kind::constant;
   Creepage mean_;
@@ -52,6 +76,9 @@ class CreepageHistory {
   std::array<std::vector<double>, 3> phase_;
   std::vector<double> t_;
   std::vector<Creepage> values_;
+  double normal_amp_ = 0.0;
+  std::vector<double> normal_phase_;
+  std::vector<double> normal_values_;  // samples: dN per time, or empty
 };
 
 }  // namespace rollnoise::contact

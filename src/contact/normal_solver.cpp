@@ -15,14 +15,22 @@ int NormalSolution::contact_elements() const {
 double NormalSolution::max_pressure() const { return *std::max_element(pn.begin(), pn.end()); }
 
 NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const GridField& h,
-                            double normal_force, const NormalSolverSettings& settings) {
+                            double normal_force, const NormalSolverSettings& settings,
+                            const GridField* start) {
   const int n = grid.size();
   const double area = grid.element_area();
   NormalSolution sol;
   std::vector<double>& p = sol.pn;
-  // Start: uniform pressure over the whole potential contact area. The method is globally
-  // convergent (convex problem), so the start only affects the iteration count.
+  // Start: uniform pressure over the whole potential contact area, or the given start scaled to
+  // the force. The method is globally convergent (convex problem), so the start only affects the
+  // iteration count.
   p.assign(n, normal_force / (area * n));
+  if (start && static_cast<int>(start->size()) == n) {
+    double total = 0.0;
+    for (double v : *start) total += std::max(v, 0.0) * area;
+    if (total > 0.0)
+      for (int k = 0; k < n; ++k) p[k] = std::max((*start)[k], 0.0) * normal_force / total;
+  }
 
   std::vector<double> u(n), g(n), t(n, 0.0), r(n), p_old(n);
   double G_old = 1.0, g_mean = 0.0;

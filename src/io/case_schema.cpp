@@ -56,12 +56,16 @@ const std::vector<KeySpec>& case_schema() {
       {"excitation.amplitude", T::Real3, "[0.0, 0.0, 0.0]", "-, -, rad/m",
        "amplitude per creepage component (harmonic, multiharmonic)"},
       {"excitation.phase", T::Real3, "[0.0, 0.0, 0.0]", "deg", "harmonic: phase per component"},
+      {"excitation.normal_amplitude", T::Real, "0.0", "N",
+       "normal-load variation about contact.normal_force: harmonic amplitude, or multiharmonic "
+       "amplitude per frequency (own seeded phases); transient only"},
+      {"excitation.normal_phase", T::Real, "0.0", "deg", "harmonic: phase of the normal-load variation"},
       {"excitation.frequency", T::PositiveReal, "1000.0", "Hz", "harmonic: frequency"},
       {"excitation.f_min", T::PositiveReal, "100.0", "Hz", "multiharmonic: lowest frequency"},
       {"excitation.f_max", T::PositiveReal, "5000.0", "Hz", "multiharmonic: highest frequency"},
       {"excitation.count", T::Integer, "1000", "-", "multiharmonic: number of frequencies", {}, 1},
       {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0},
-      {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi"},
+      {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi and optionally dN (normal-load variation, N)"},
       // transient
       {"transient.duration", T::PositiveReal, "0.01", "s", "simulated time"},
       {"transient.start", T::String, "\"steady\"", "-",

@@ -9,6 +9,17 @@
 
 namespace rollnoise::io {
 
+namespace {
+
+// The total load N_mean + dN must stay positive: a patch without load has no contact.
+void check_positive_load(const CaseReader& r, const std::string& key, double total, const std::string& where) {
+  if (!(total > 0.0))
+    r.fail(key, "the total normal load contact.normal_force + variation is " + std::to_string(total) + " N" +
+                    where + "; it must stay positive");
+}
+
+}  // namespace
+
 contact::CreepageHistory read_excitation(const CaseReader& r) {
   const auto m = r.real3("creepage.mean");
   const contact::Creepage mean{m[0], m[1], m[2]};
@@ -16,16 +27,22 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
   if (type == "none") return contact::CreepageHistory::constant(mean);
   if (type == "harmonic") {
     const auto ph = r.real3("excitation.phase");
+    const double dN = r.real("excitation.normal_amplitude");
+    if (dN != 0.0)  // the minimum of N_mean + dN cos(.) over all times
+      check_positive_load(r, "excitation.normal_amplitude", r.real("contact.normal_force") - std::abs(dN), " at its minimum");
     return contact::CreepageHistory::harmonic(mean, r.real3("excitation.amplitude"),
                                               r.real("excitation.frequency"),
-                                              {ph[0] * M_PI / 180, ph[1] * M_PI / 180, ph[2] * M_PI / 180});
+                                              {ph[0] * M_PI / 180, ph[1] * M_PI / 180, ph[2] * M_PI / 180},
+                                              dN, r.real("excitation.normal_phase") * M_PI / 180);
   }
   if (type == "multiharmonic") {
     const double f0 = r.real("excitation.f_min"), f1 = r.real("excitation.f_max");
     if (f1 < f0) r.fail("excitation.f_max", "must not be below excitation.f_min");
+    // The minimum over all times is not known in closed form: checked on the time steps of a run
+    // (normal_load_series).
     return contact::CreepageHistory::multiharmonic(
         mean, r.real3("excitation.amplitude"), f0, f1, static_cast<int>(r.integer("excitation.count")),
-        static_cast<std::uint64_t>(r.integer("excitation.seed")));
+        static_cast<std::uint64_t>(r.integer("excitation.seed")), r.real("excitation.normal_amplitude"));
   }
   // csv
   std::filesystem::path file = r.string("excitation.file");
@@ -34,26 +51,37 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
   if (!in) r.fail("excitation.file", "cannot open " + file.string());
   std::vector<double> t;
   std::vector<contact::Creepage> v;
+  std::vector<double> dn;  // optional 5th column: normal-load variation (N)
   std::string line;
-  int row = 0;
+  int row = 0, columns = 0;
   while (std::getline(in, line)) {
     ++row;
     if (line.empty() || line[0] == '#') continue;
     for (char& c : line)
       if (c == ',' || c == ';') c = ' ';
     std::istringstream is(line);
-    double a, b, c, d;
+    double a, b, c, d, e = 0.0;
+    const std::string at = file.string() + ":" + std::to_string(row) + ": ";
     if (!(is >> a >> b >> c >> d)) {
       if (t.empty() && row == 1) continue;  // header line
-      r.fail("excitation.file", file.string() + ":" + std::to_string(row) + ": expected t, xi_x, xi_y, phi");
+      r.fail("excitation.file", at + "expected t, xi_x, xi_y, phi[, dN]");
     }
-    if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
-      r.fail("excitation.file", file.string() + ":" + std::to_string(row) + ": value not finite");
+    const bool fifth = static_cast<bool>(is >> e);
+    if (columns == 0) columns = fifth ? 5 : 4;
+    if ((columns == 5) != fifth)
+      r.fail("excitation.file", at + "expected " + std::to_string(columns) + " columns as in the first data row");
+    if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d) || !std::isfinite(e))
+      r.fail("excitation.file", at + "value not finite");
     t.push_back(a);
     v.push_back({b, c, d});
+    if (fifth) {
+      // linear interpolation between positive loads stays positive: the samples suffice
+      check_positive_load(r, "excitation.file", r.real("contact.normal_force") + e, " at " + at);
+      dn.push_back(e);
+    }
   }
   try {
-    return contact::CreepageHistory::samples(mean, t, v);
+    return contact::CreepageHistory::samples(mean, t, v, dn);
   } catch (const InputError& e) {
     r.fail("excitation.file", file.string() + ": " + e.what());
   }
@@ -73,7 +101,22 @@ void write_excitation(Hdf5Writer& w, const std::string& group, const contact::Cr
     std::vector<double> ph;
     for (int j = 0; j < 3; ++j) ph.insert(ph.end(), h.phases()[j].begin(), h.phases()[j].end());
     w.write(group + "/phase", ph, {3, n}, "rad");
+    w.write(group + "/normal_amplitude", h.normal_amplitude(), "N");
+    w.write(group + "/normal_phase", h.normal_phases(), {n}, "rad");
   }
+}
+
+std::vector<double> normal_load_series(const CaseReader& r, const contact::CreepageHistory& h,
+                                       double normal_mean, double dt, long steps) {
+  const std::string key =
+      h.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file" : "excitation.normal_amplitude";
+  std::vector<double> N(steps + 1);
+  for (long k = 0; k <= steps; ++k) {
+    N[k] = normal_mean + h.normal_variation(k * dt);
+    if (!std::isfinite(N[k])) r.fail(key, "the normal load is not finite at t = " + std::to_string(k * dt) + " s");
+    check_positive_load(r, key, N[k], " at t = " + std::to_string(k * dt) + " s");
+  }
+  return N;
 }
 
 }  // namespace rollnoise::io
