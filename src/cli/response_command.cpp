@@ -31,6 +31,7 @@ std::vector<double> flatten(const Series& s) {
 struct LinearRun {
   std::vector<double> time;
   Series creepage, recursion, synthesis;  // forces incl. the mean
+  std::vector<double> normal_force;        // N_mean + dN (N)
   bool has_synthesis = false;
 };
 
@@ -41,22 +42,29 @@ LinearRun linear_response(const MeanState& ms, const contact::CreepageHistory& h
   const Eigen::Vector3d Fbar(fbar.Fx, fbar.Fy, fbar.Mz);
   LinearRun r;
   Series xi;
+  std::vector<double> dN;  // normal-load variation (N), input g of the linear model
   for (long k = 0; k <= steps; ++k) {
     r.time.push_back(k * dt);
     const auto c = h.at(k * dt);
     r.creepage.emplace_back(c.xi_x, c.xi_y, c.phi);
     const auto v = h.variation(k * dt);
     xi.emplace_back(v[0], v[1], v[2]);
+    dN.push_back(h.normal_variation(k * dt));
+    r.normal_force.push_back(ms.contact.normal_force + dN.back());
   }
-  for (const auto& F : m.time_response(xi)) r.recursion.push_back(Fbar + F);
+  for (const auto& F : m.time_response(xi, dN)) r.recursion.push_back(Fbar + F);
   r.has_synthesis = !h.frequencies().empty();
   if (r.has_synthesis) {
+    // F = F_bar + Re sum_n (-f(w_n) xi^_n + g(w_n) N^_n) e^{i w_n t}  (paper Eqs. 33-34 with G2)
     const auto f = m.creep_coefficients(h.frequencies());
-    std::vector<Eigen::Vector3cd> fx(f.size());  // f(w_n) xi^_n
+    const auto g = h.has_normal_variation() ? m.normal_load_coefficients(h.frequencies())
+                                            : std::vector<nss::LoadVector>(f.size(), nss::LoadVector::Zero());
+    std::vector<Eigen::Vector3cd> fx(f.size());  // f(w_n) xi^_n - g(w_n) N^_n
     for (size_t n = 0; n < f.size(); ++n) {
       Eigen::Vector3cd x;
       for (int j = 0; j < 3; ++j) x(j) = h.amplitude()[j] * std::polar(1.0, h.phases()[j][n]);
       fx[n] = f[n] * x;
+      if (h.has_normal_variation()) fx[n] -= g[n] * h.normal_amplitude() * std::polar(1.0, h.normal_phases()[n]);
     }
     for (long k = 0; k <= steps; ++k) {
       Eigen::Vector3d F = Fbar;
@@ -72,17 +80,13 @@ void write_linear(io::Hdf5Writer& w, const std::string& g, const LinearRun& r) {
   const std::size_t n = r.time.size();
   w.write(g + "/time", r.time, {n}, "s");
   w.write(g + "/creepage", flatten(r.creepage), {n, 3}, "-, -, rad/m");
+  w.write(g + "/normal_force", r.normal_force, {n}, "N");
   w.write(g + "/force", flatten(r.recursion), {n, 3}, "N, N, N m");
   if (r.has_synthesis) w.write(g + "/force_synthesis", flatten(r.synthesis), {n, 3}, "N, N, N m");
 }
 
 void check_excitation_resolved(const io::CaseReader& r, const contact::CreepageHistory& h,
                                const nss::LinearContactModel& m) {
-  // The linear model has no normal-load input yet (g(w) of linear_model.hpp): a normal-load
-  // variation would be ignored by it and compared against a reference that has it.
-  if (h.has_normal_variation())
-    r.fail(h.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file" : "excitation.normal_amplitude",
-           "a normal-load variation is not yet supported by response/validate (only by transient)");
   for (double f : h.frequencies())
     if (f > m.nyquist_frequency())
       r.fail(h.frequencies().size() == 1 ? "excitation.frequency" : "excitation.f_max",
@@ -105,6 +109,7 @@ int run_response(const CommonOptions& o) {
   MeanState ms = solve_mean_state(reader, true);
   check_excitation_resolved(reader, h, *ms.model);
   const long steps = steps_of(reader, ms.model->time_step());
+  io::normal_load_series(reader, h, ms.contact.normal_force, ms.model->time_step(), steps);  // N_k > 0
   const auto t0 = std::chrono::steady_clock::now();
   const LinearRun r = linear_response(ms, h, steps);
   const double ms_run = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -138,6 +143,7 @@ int run_validate(const CommonOptions& o) {
   check_excitation_resolved(reader, h, *ms.model);
   const double dt = ms.model->time_step();
   const long steps = steps_of(reader, dt);
+  io::normal_load_series(reader, h, ms.contact.normal_force, dt, steps);  // N_k > 0, else InputError
   const double t_start = reader.real("transient.analysis_start");
   const LinearRun lin = linear_response(ms, h, steps);
 
@@ -145,6 +151,9 @@ int run_validate(const CommonOptions& o) {
   contact::TransientRolling rolling(ms.patch->influence, ms.patch->normal.pn, ms.contact.mu, ms.contact.speed,
                                     ms.contact.spin_offset, ms.contact.backend, ms.contact.tangential);
   rolling.set_tractions(ms.steady.px, ms.steady.py);
+  const bool varying_load = h.has_normal_variation();
+  if (varying_load)  // the normal problem is re-solved at every step (transient_rolling.hpp)
+    rolling.set_normal_problem(ms.patch->undeformed_distance, ms.contact.normal_force, ms.contact.normal);
   Series unsteady;
   {
     const auto f = contact::total_forces(ms.patch->grid, ms.steady.px, ms.steady.py);
@@ -153,7 +162,7 @@ int run_validate(const CommonOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   Progress progress("unsteady", steps, o.quiet);
   for (long k = 1; k <= steps; ++k) {
-    const auto& s = rolling.step(h.at(k * dt));
+    const auto& s = varying_load ? rolling.step(h.at(k * dt), lin.normal_force[k]) : rolling.step(h.at(k * dt));
     const auto f = contact::total_forces(ms.patch->grid, s.px, s.py);
     unsteady.emplace_back(f.Fx, f.Fy, f.Mz);
     progress.update(k);

@@ -199,3 +199,73 @@ TEST(NormalLoad, ProfileContactZeroFrequencyAgreesWithFiniteLoadStepsWithinTheFr
     EXPECT_LT(rel, e < 1e-3 ? 1e-5 : 0.02);
   }
 }
+
+#include "contact/transient_rolling.hpp"
+#include "linalg/harmonic_fit.hpp"
+
+namespace {
+
+// Amplitude and phase of Fx and Fy of the unsteady solver (normal problem re-solved per step)
+// under N = N_bar (1 + e cos(2 pi f t)), fitted over the last `periods` periods after 10 contact
+// lengths, against the linear model's g(f) N_bar e.
+struct LoadResponseError {
+  double amplitude[2], phase_deg[2];
+};
+LoadResponseError load_response_error(const Creepage& c, double e, double f) {
+  const ContactPatch& p = paper_patch("coarse");
+  const auto mean = steady_at(p, c);
+  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+  const Eigen::Vector3cd g = model.normal_load_coefficients(std::vector<double>{f})[0] * (e * kN);
+  TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
+  rolling.set_normal_problem(p.undeformed_distance, kN);
+  rolling.set_tractions(mean.steady.px, mean.steady.py);
+  const double dt = rolling.time_step(), t0 = 300 * dt;  // 10 contact lengths
+  const double t1 = t0 + std::max(2.0, std::ceil(6e-3 * f)) / f;  // >= 2 periods, ~6 ms
+  std::vector<double> t, F[2];
+  for (int k = 1; k * dt <= t1 + 1e-12; ++k) {
+    const auto& s = rolling.step(c, kN * (1 + e * std::cos(2 * M_PI * f * k * dt)));
+    if (k * dt < t0) continue;
+    const auto tf = total_forces(p.grid, s.px, s.py);
+    t.push_back(k * dt);
+    F[0].push_back(tf.Fx);
+    F[1].push_back(tf.Fy);
+  }
+  LoadResponseError r{};
+  for (int j = 0; j < 2; ++j) {
+    const auto fit = linalg::fit_harmonic(t, F[j], f);
+    r.amplitude[j] = std::abs(g(j)) / fit.amplitude - 1.0;
+    r.phase_deg[j] = std::remainder(std::arg(g(j)) - fit.phase, 2 * M_PI) * 180 / M_PI;
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST(NormalLoad, LinearModelAgreesWithTheUnsteadySolverUnderAHarmonicLoad) {
+  // Paper patch, coarse grid. Full sliding (xi_x = 0.006): F = -mu N s^ whatever the contact area,
+  // so a 1 % load variation is linear. Partial slip (the paper's Sec. 3.2 mean state): elements at
+  // the edge of the area enter and leave contact, a discrete jump that the frozen-area model does
+  // not follow; the steady solver itself gives a dF/dN over +-1 % that differs from g(0) by 8.7 %
+  // (5.4 % on 68 x 50), so there the linear regime is a 0.01 % load variation, and the 1 % run is
+  // reported and held to the size of that jump.
+  struct Case {
+    Creepage c;
+    double e, tol_amplitude, tol_phase;
+  };
+  const Case cases[] = {{{0.006, 0.0, 0.0}, 1e-2, 0.01, 1.0},
+                        {{0.001, 0.001, -0.053}, 1e-4, 0.01, 1.0},
+                        {{0.001, 0.001, -0.053}, 1e-2, 0.10, 2.5}};
+  for (const Case& k : cases)
+    for (double f : {200.0, 1000.0, 3000.0}) {
+      const LoadResponseError r = load_response_error(k.c, k.e, f);
+      const int components = k.c.xi_y == 0.0 ? 1 : 2;  // Fy vanishes in pure longitudinal sliding
+      std::printf("xi = (%g, %g, %g), dN/N = %g, %4.0f Hz: amplitude error Fx %+.3f %%, Fy %+.3f %%; phase error "
+                  "Fx %+.3f deg, Fy %+.3f deg\n",
+                  k.c.xi_x, k.c.xi_y, k.c.phi, k.e, f, 100 * r.amplitude[0], 100 * r.amplitude[1], r.phase_deg[0],
+                  r.phase_deg[1]);
+      for (int j = 0; j < components; ++j) {
+        EXPECT_LT(std::abs(r.amplitude[j]), k.tol_amplitude) << f << " Hz, component " << j;
+        EXPECT_LT(std::abs(r.phase_deg[j]), k.tol_phase) << f << " Hz, component " << j;
+      }
+    }
+}
