@@ -3,9 +3,12 @@
 
   /usr/bin/python3 postprocess/plot_noise.py OUT.h5 [--prefix fig]
 
-Writes PREFIX_bands.png (1/3-octave force levels, the effective roughness, and with the run's
-Kalker comparison the same levels with Kalker's steady creep coefficients) and PREFIX_transfer.png
-(narrow-band force per unit roughness, |F/r|, in dB re 1 N/m).
+Writes PREFIX_bands.png (1/3-octave levels of Fz, Fx, Fy, Mz, one panel each: the run's contact
+model with the normal -> tangential coupling (solid), without it (dashed, /noise/uncoupled) and the
+comparison baseline (dotted, /noise/quasi_steady or /noise/kalker), with the effective roughness
+and, on the Fy panel, the mu-scaled normal force 20 log10|Fy_mean/N| + L_Fz) and PREFIX_transfer.png
+(narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants).
+Files written before the coupling existed (only /noise/kalker) are plotted too.
 """
 import argparse
 
@@ -17,6 +20,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 LABELS = ["Fz", "Fx", "Fy", "Mz"]
+BASELINES = [("/noise/quasi_steady", "quasi-steady f(0), g(0)"), ("/noise/kalker", "Kalker steady")]
+
+
+def attr(group, name, default):
+    v = group.attrs.get(name, default)
+    return v.decode() if isinstance(v, bytes) else v
 
 
 def main():
@@ -27,39 +36,51 @@ def main():
     prefix = args.prefix or args.file.rsplit(".", 1)[0]
     with h5py.File(args.file, "r") as f:
         centre = f["/noise/bands/centre"][:]
-        level = f["/noise/bands/force_level"][:]
         rough = f["/noise/bands/roughness_level"][:]
-        kalker = f["/noise/kalker/bands/force_level"][:] if "/noise/kalker/bands" in f else None
         freq = f["/noise/frequency"][:]
-        force = f["/noise/force"][:]
-        kforce = f["/noise/kalker/force"][:] if "/noise/kalker/force" in f else None
         creep = f["/steady/creepage"][:]
-        model = f["/noise"].attrs["contact_model"]
-    model = model.decode() if isinstance(model, bytes) else model
+        model = attr(f["/noise"], "contact_model", "contact model")
+        coupling = attr(f["/noise"], "normal_coupling", "off")
+        mean = f["/steady/force"][:] if "/steady/force" in f else None
+        normal = f["/noise/contact/normal_force"][()] if "/noise/contact/normal_force" in f else None
+        # variants: (label, band levels, narrow-band force, line style)
+        main_label = f"{model}" + (", with g" if coupling == "on" else "")
+        variants = [(main_label, f["/noise/bands/force_level"][:], f["/noise/force"][:], "-")]
+        if "/noise/uncoupled/bands" in f:
+            variants.append(("without g (uncoupled)", f["/noise/uncoupled/bands/force_level"][:],
+                             f["/noise/uncoupled/force"][:], "--"))
+        for path, name in BASELINES:
+            if path + "/bands" in f:
+                variants.append((name, f[path + "/bands/force_level"][:], f[path + "/force"][:], ":"))
     title = f"{args.file}: mean creepage ({creep[0]:.3g}, {creep[1]:.3g}, {creep[2]:.3g} rad/m)"
 
-    fig, ax = plt.subplots(figsize=(9, 5.5))
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
     x = np.arange(len(centre))
-    for j, c in zip(range(4), ["k", "tab:blue", "tab:red", "tab:green"]):
-        ax.plot(x, level[:, j], "-o", color=c, ms=3, label=f"{LABELS[j]} ({model})")
-        if kalker is not None:
-            ax.plot(x, kalker[:, j], ":", color=c, label=f"{LABELS[j]} (Kalker steady)")
-    ax.plot(x, rough, "--", color="0.5", label="effective roughness, dB re 1 um")
-    ax.set_xticks(x[::2])
-    ax.set_xticklabels([f"{c:.0f}" for c in centre[::2]], rotation=45)
-    ax.set_xlabel("1/3-octave band centre [Hz]")
-    ax.set_ylabel("level [dB re 1 N; Mz re 1 N m]")
-    ax.set_title(title, fontsize=9)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, ncol=2)
+    colours = ["k", "tab:blue", "tab:red", "tab:green"]
+    for j, ax in enumerate(axes.flat):
+        for (label, level, _, style), c in zip(variants, ["k", "tab:blue", "tab:orange"]):
+            ax.plot(x, level[:, j], style, color=c, marker="o" if style == "-" else None, ms=3, label=label)
+        if j == 2 and mean is not None and normal:
+            mu_fz = 20 * np.log10(abs(mean[1] / normal)) + variants[0][1][:, 0]
+            ax.plot(x, mu_fz, "-", color="tab:red", alpha=0.5, lw=3, label="20 log10|Fy_mean/N| + L_Fz")
+        ax.plot(x, rough, "-.", color="0.6", lw=0.8, label="effective roughness, dB re 1 um")
+        ax.set_title(LABELS[j], fontsize=10, color=colours[j])
+        ax.set_ylabel("dB re 1 N m" if j == 3 else "dB re 1 N")
+        ax.set_xticks(x[::2])
+        ax.set_xticklabels([f"{c:.0f}" for c in centre[::2]], rotation=45)
+        ax.grid(alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("1/3-octave band centre [Hz]")
+    axes[0, 0].legend(fontsize=7)
+    axes[1, 0].legend(fontsize=7)
+    fig.suptitle(title + f"; normal coupling {coupling}", fontsize=9)
     fig.tight_layout()
     fig.savefig(prefix + "_bands.png", dpi=120)
 
-    fig, axes = plt.subplots(4, 1, figsize=(9, 9), sharex=True)
+    fig, axes = plt.subplots(4, 1, figsize=(9, 10), sharex=True)
     for j, ax in enumerate(axes):
-        ax.semilogx(freq, 20 * np.log10(np.abs(force[:, j])), "k-", lw=0.8, label=model)
-        if kforce is not None:
-            ax.semilogx(freq, 20 * np.log10(np.abs(kforce[:, j])), "r:", lw=0.8, label="Kalker steady")
+        for (label, _, force, style), c in zip(variants, ["k", "tab:blue", "tab:orange"]):
+            ax.semilogx(freq, 20 * np.log10(np.abs(force[:, j])), style, color=c, lw=0.8, label=label)
         ax.set_ylabel(f"|{LABELS[j]}/r| dB")
         ax.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=8)

@@ -84,8 +84,23 @@ const std::vector<KeySpec>& case_schema() {
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
       {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
       {"curve.creepage", T::String, "\"estimate\"", "-",
-       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp) or "
-       "creepage.mean with contact.angle", {"estimate", "case"}},
+       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp; with "
+       "contact.geometry = \"profiles\" the curve contact state of src/noise/curve_state.hpp), "
+       "creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw (profiles), or "
+       "the wheelset's position from a multibody run ([wheelset])", {"estimate", "case", "multibody"}},
+      {"curve.cg_height", T::NonNegReal, "1.5", "m",
+       "centre-of-gravity height above the rails for the load transfer by the cant deficiency, "
+       "dQ/Q = 2 h_d h_cg / s^2 (profiles; 0: none)"},
+      {"wheelset.lateral_displacement", T::Real, "0.0", "m",
+       "curve.creepage = \"multibody\": lateral displacement of the wheelset towards the outer rail"},
+      {"wheelset.yaw", T::Real, "0.0", "rad",
+       "curve.creepage = \"multibody\": yaw angle (angle of attack, positive turning towards the outer rail)"},
+      {"wheelset.wheel_load", T::PositiveReal, "", "N",
+       "curve.creepage = \"multibody\": vertical load of the outer wheel's tread contact "
+       "(default contact.normal_force)"},
+      {"wheelset.creepage", T::Real3, "", "-, -, rad/m",
+       "curve.creepage = \"multibody\": creepages (xi_x, xi_y, phi) of the outer wheel; default: "
+       "kinematic (K2) from the position"},
       {"curve.wheelbase", T::PositiveReal, "2.5", "m", "bogie wheelbase"},
       {"curve.wheel_radius", T::PositiveReal, "0.46", "m", "nominal rolling radius"},
       {"curve.conicity", T::PositiveReal, "0.15", "-", "equivalent conicity of the conical tread"},
@@ -106,8 +121,16 @@ const std::vector<KeySpec>& case_schema() {
        {"isotropic", "correlated", "none"}},
       {"noise.contact_model", T::String, "\"nss\"", "-",
        "tangential contact: the linear NSS model or Kalker's steady linear theory", {"nss", "kalker"}},
-      {"noise.compare_kalker", T::String, "\"yes\"", "-",
-       "also run the loop with Kalker's steady coefficients", {"yes", "no"}},
+      {"noise.normal_coupling", T::String, "\"on\"", "-",
+       "normal -> tangential friction coupling F~t = -f xi~ + g Fz in the loop (NSS model's g; Kalker's "
+       "theory has g = 0); \"on\" also solves the loop without it (/noise/uncoupled)",
+       {"on", "off"}},
+      {"noise.compare", T::String, "\"quasi-steady\"", "-",
+       "comparison baseline: the quasi-steady contact of the same state (NSS f(0), g(0); "
+       "/noise/quasi_steady), Kalker's full-adhesion coefficients (/noise/kalker) or none",
+       {"quasi-steady", "kalker", "none"}},
+      {"noise.compare_kalker", T::String, "", "-",
+       "optional, deprecated alias of noise.compare: \"yes\" = \"kalker\", \"no\" = \"none\"", {"yes", "no"}},
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},

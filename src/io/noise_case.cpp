@@ -1,6 +1,7 @@
 #include "io/noise_case.hpp"
 
 #include <filesystem>
+#include <limits>
 
 #include "core/errors.hpp"
 
@@ -24,6 +25,17 @@ NoiseCase read_noise_case(const CaseReader& r) {
   c.curve_radius = r.real("curve.radius");
   c.cant_deficiency = r.real("curve.cant_deficiency");
   c.estimate_creepage = r.string("curve.creepage") == "estimate";
+  c.multibody = r.string("curve.creepage") == "multibody";
+  c.cg_height = r.real("curve.cg_height");
+  if (c.multibody && r.string("contact.geometry") != "profiles")
+    r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
+  for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage"})
+    if (r.has(key) && !c.multibody) r.fail(key, "only used with curve.creepage = \"multibody\"");
+  if (r.string("contact.geometry") == "profiles" && r.string("curve.creepage") != "case")
+    for (const char* key : {"contact.lateral_displacement", "contact.yaw", "creepage.mean"})
+      if (r.has(key))
+        r.fail(key, "the curve contact state sets it (curve.creepage = \"case\" to give it, or "
+                    "\"multibody\" with [wheelset])");
   c.wheelbase = r.real("curve.wheelbase");
   c.wheel_radius = r.real("curve.wheel_radius");
   c.conicity = r.real("curve.conicity");
@@ -46,12 +58,56 @@ NoiseCase read_noise_case(const CaseReader& r) {
              : filter == "correlated" ? noise::ContactFilterModel::kCorrelated
                                       : noise::ContactFilterModel::kIsotropic;
   c.use_nss = r.string("noise.contact_model") == "nss";
-  c.compare_kalker = r.string("noise.compare_kalker") == "yes";
+  c.normal_coupling = r.string("noise.normal_coupling") == "on";
+  const std::string compare = r.string("noise.compare");
+  c.compare = compare == "kalker" ? NoiseCase::Baseline::kKalker
+              : compare == "none" ? NoiseCase::Baseline::kNone
+                                  : NoiseCase::Baseline::kQuasiSteady;
+  if (r.has("noise.compare_kalker")) {  // deprecated alias: "yes" -> "kalker", "no" -> "none"
+    const std::string mapped = r.string("noise.compare_kalker") == "yes" ? "kalker" : "none";
+    if (r.has("noise.compare") && compare != mapped)
+      r.fail("noise.compare_kalker", "deprecated alias of noise.compare = \"" + mapped +
+                                         "\" contradicts noise.compare = \"" + compare +
+                                         "\"; remove it");
+    c.compare = mapped == "kalker" ? NoiseCase::Baseline::kKalker : NoiseCase::Baseline::kNone;
+    c.notice = "noise.compare_kalker is deprecated: read as noise.compare = \"" + mapped + "\"";
+  }
   c.band_min = r.real("noise.band_min");
   c.band_max = r.real("noise.band_max");
   if (c.band_max < c.band_min) r.fail("noise.band_max", "must not be below noise.band_min");
   c.points_per_band = static_cast<int>(r.integer("noise.points_per_band"));
   return c;
+}
+
+noise::CurveStateInput curve_state_input(const CaseReader& r, const ContactCase& contact,
+                                         const NoiseCase& noise) {
+  noise::CurveStateInput in;
+  in.pair = contact.profiles;
+  in.material = contact.material;
+  in.grid = contact.grid_options;
+  in.radius = noise.curve_radius > 0.0 ? noise.curve_radius : std::numeric_limits<double>::infinity();
+  in.speed = contact.speed;
+  in.cant_deficiency = noise.cant_deficiency;
+  in.wheelbase = noise.wheelbase;
+  in.cg_height = noise.cg_height;
+  in.wheel_load = contact.normal_force;
+  in.friction = contact.mu;
+  in.multibody = noise.multibody;
+  if (noise.multibody) {
+    in.lateral = r.real("wheelset.lateral_displacement");
+    in.yaw = r.real("wheelset.yaw");
+    if (r.has("wheelset.wheel_load")) in.wheel_load = r.real("wheelset.wheel_load");
+    if (r.has("wheelset.creepage")) {
+      const auto c = r.real3("wheelset.creepage");
+      in.creepage = Eigen::Vector3d(c[0], c[1], c[2]);
+    }
+  }
+  try {
+    in.validate();
+  } catch (const InputError& e) {
+    r.fail(e.key(), e.what());
+  }
+  return in;
 }
 
 }  // namespace rollnoise::io

@@ -8,6 +8,8 @@
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "io/case_reader.hpp"
+#include "io/contact_case.hpp"
+#include "noise/curve_state.hpp"
 #include "noise/roughness.hpp"
 
 namespace rollnoise::io {
@@ -16,17 +18,32 @@ struct NoiseCase {
   double curve_radius = 0.0;  ///< m, 0: tangent track
   double cant_deficiency = 0.0;
   bool estimate_creepage = true;
+  bool multibody = false;  ///< curve.creepage = "multibody"
+  double cg_height = 1.5;
   double wheelbase = 2.5, wheel_radius = 0.46, conicity = 0.15, flange_clearance = 0.005;
   double contact_angle = 0.0;  ///< when the case gives the creepages
   std::unique_ptr<dynamics::RailModel> rail;
   std::unique_ptr<dynamics::WheelModel> wheel;
   noise::RoughnessSpectrum rail_roughness, wheel_roughness;
   noise::ContactFilterModel filter = noise::ContactFilterModel::kIsotropic;
-  bool use_nss = true, compare_kalker = true;
+  bool use_nss = true;
+  /// noise.normal_coupling: the contact's g (F~t = -f xi~ + g Fz) in the loop.
+  bool normal_coupling = true;
+  /// noise.compare: the comparison baseline of the loop (docs/noise_loop.md Sec. 5.1).
+  enum class Baseline { kNone, kQuasiSteady, kKalker };
+  Baseline compare = Baseline::kQuasiSteady;
+  /// Non-empty when a deprecated key was mapped (for the command to print).
+  std::string notice;
   double band_min = 100.0, band_max = 5000.0;
   int points_per_band = 48;
 };
 
 NoiseCase read_noise_case(const CaseReader& r);
+
+/// The inputs of the curve contact state (profile cases with curve.creepage = "estimate" or
+/// "multibody"): the case's profiles, material, grid options, curve, wheel load
+/// (contact.normal_force, or wheelset.wheel_load) and [wheelset].
+noise::CurveStateInput curve_state_input(const CaseReader& r, const ContactCase& contact,
+                                         const NoiseCase& noise);
 
 }  // namespace rollnoise::io

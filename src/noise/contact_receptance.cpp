@@ -22,6 +22,11 @@ void check_common(double frequency, double normal_stiffness, double speed) {
 
 Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
                                const Eigen::Matrix3cd& creep) {
+  return contact_receptance(frequency, normal_stiffness, speed, creep, LoadCoefficients::Zero());
+}
+
+Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
+                               const Eigen::Matrix3cd& creep, const LoadCoefficients& load) {
   check_common(frequency, normal_stiffness, speed);
   const double omega = dynamics::angular(frequency);
   const Eigen::FullPivLU<Eigen::Matrix3cd> lu(creep);
@@ -39,6 +44,10 @@ Receptance4 contact_receptance(double frequency, double normal_stiffness, double
   a(0, 0) = 1.0 / normal_stiffness;  // linearised Hertz spring
   // (C2): alpha_c,t = (V / (i omega)) f^{-1}
   a.bottomRightCorner<3, 3>() = (speed / (cdouble(0.0, 1.0) * omega)) * lu.inverse();
+  if (!load.allFinite())
+    throw NumericalError("contact receptance: normal-load coefficients g not finite");
+  // (C3): alpha_c,tn = -alpha_c,tt g (exactly zero for g = 0)
+  if (!load.isZero(0.0)) a.bottomLeftCorner<3, 1>() = -(a.bottomRightCorner<3, 3>() * load);
   return a;
 }
 
@@ -56,12 +65,22 @@ std::vector<Receptance4> contact_receptances(const std::vector<double>& frequenc
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
                                              double normal_stiffness, double speed,
                                              const std::vector<Eigen::Matrix3cd>& creep) {
-  if (creep.size() != frequencies.size())
-    throw InputError("creep", "contact receptance: one creep matrix per frequency is needed");
+  return contact_receptances(frequencies, normal_stiffness, speed, creep,
+                             std::vector<LoadCoefficients>(creep.size(), LoadCoefficients::Zero()));
+}
+
+std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
+                                             double normal_stiffness, double speed,
+                                             const std::vector<Eigen::Matrix3cd>& creep,
+                                             const std::vector<LoadCoefficients>& load) {
+  if (creep.size() != frequencies.size() || load.size() != frequencies.size())
+    throw InputError(
+        "creep",
+        "contact receptance: one creep matrix and one load vector per frequency are needed");
   std::vector<Receptance4> out;
   out.reserve(frequencies.size());
   for (std::size_t k = 0; k < frequencies.size(); ++k)
-    out.push_back(contact_receptance(frequencies[k], normal_stiffness, speed, creep[k]));
+    out.push_back(contact_receptance(frequencies[k], normal_stiffness, speed, creep[k], load[k]));
   return out;
 }
 

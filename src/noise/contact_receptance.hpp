@@ -24,7 +24,24 @@
 //    Kalker's steady coefficients (real f) make alpha_c,t a pure damper (creep damping f/V); the
 //    linear NSS model adds the elasticity of the contact, |f| ~ 1/omega at high frequency, so that
 //    alpha_c,t tends to a spring.
-//  * No coupling between the normal and the tangential parts (quasi-identical bodies).
+//  * Normal -> tangential coupling (friction). The linear contact model may also respond to the
+//    normal-load variation N~: F~t = -f(omega) xi~ + g(omega) N~ (nss::LinearContactModel::
+//    normal_load_coefficients; g = (g_x, g_y, g_z) in (-, -, m)). N~ is the normal contact force
+//    variation, compressive positive, which is Fz of this file (the force on the wheel, up =
+//    compressive increment): N~ = Fz. With xi~ = (i omega / V) e_t,
+//
+//      F~t = -(i omega / V) f e_t + g Fz   =>   e_t = -(V / (i omega)) f^{-1} F~t
+//                                                      + (V / (i omega)) f^{-1} g Fz,
+//      and with (C1), e_t = -alpha_c,tt F~t - alpha_c,tn Fz:
+//      alpha_c,tn = -(V / (i omega)) f^{-1} g = -alpha_c,tt g   (3x1 block: rows x, y, rot z;
+//                                                                   column n)            (C3)
+//
+//    alpha_c,nt stays 0 (the tangential forces do not change the normal approach: quasi-identical
+//    bodies), so alpha_c is not symmetric when g != 0 (no reciprocity: friction is not a
+//    potential force). g = 0 gives (C2) exactly. In a saturated contact at low frequency
+//    g ~ F_mean / N_mean and f is small (the tangential contact is nearly free), so the loop gives
+//    F~t ~ g Fz: the tangential forces follow the mu-scaled normal force (docs/noise_loop.md
+//    Sec. 2.1).
 #pragma once
 
 #include <Eigen/Core>
@@ -42,10 +59,17 @@ using dynamics::Receptance4;
 /// argument is the frequency in Hz. The NSS model or Kalker's steady theory plug in here.
 using CreepFunction = std::function<Eigen::Matrix3cd(double frequency_hz)>;
 
+/// Normal-load coefficients g = (g_x, g_y, g_z) (-, -, m): F~t = -f xi~ + g Fz (Eq. C3).
+using LoadCoefficients = Eigen::Vector3cd;
+
 /// alpha_c (Eqs. C1-C2) at one frequency (Hz, > 0), for the normal stiffness k_H (N/m), the
 /// rolling speed V (m/s) and the creep matrix f at that frequency. NumericalError if f is singular.
 Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
                                const Eigen::Matrix3cd& creep);
+
+/// alpha_c with the normal -> tangential coupling g (Eqs. C1-C3); g = 0 gives the overload above.
+Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
+                               const Eigen::Matrix3cd& creep, const LoadCoefficients& load);
 
 /// alpha_c at many frequencies from a creep function (evaluated once per frequency).
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
@@ -56,6 +80,12 @@ std::vector<Receptance4> contact_receptances(const std::vector<double>& frequenc
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
                                              double normal_stiffness, double speed,
                                              const std::vector<Eigen::Matrix3cd>& creep);
+
+/// alpha_c with the coupling (C3) from precomputed f and g (one of each per frequency).
+std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
+                                             double normal_stiffness, double speed,
+                                             const std::vector<Eigen::Matrix3cd>& creep,
+                                             const std::vector<LoadCoefficients>& load);
 
 /// The normal part alone, 1/k_H at (z, z) and zeros elsewhere: for the vertical-only loop, which
 /// reads nothing but alpha_c,zz.

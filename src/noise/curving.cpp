@@ -19,14 +19,12 @@ void positive(double v, const char* key) {
                      std::string("curving.") + key + " must be positive and finite");
 }
 
-// Cubic saturation, secant form: |F| = mu Q u s(u), s = 1 - u/3 + u^2/27 (u < 3), 1/u (u >= 3).
-double secant_factor(double u) {
-  return u < 3.0 ? 1.0 - u / 3.0 + u * u / 27.0 : 1.0 / u;
-}
-
 struct Geometry {
   double a, l0, r0, inv_R, yf, Fu, f11, f22;
   std::function<double(double)> delta_r;  // Delta_r(y) = r_outer - r_inner
+  // Gravitational stiffness (K7): lateral force of the normal loads on axle i at lateral y,
+  // -(Q_o tan gamma_o(y) - Q_i tan gamma_o(-y)) with the tread loads of the current iterate.
+  std::function<double(int, double)> gravity;
 };
 
 struct State {
@@ -36,8 +34,8 @@ struct State {
 
 // Residuals of (K3) for given secant sums S_i of axle i, with (K1) and xi_x,i = l0/R - Delta_r/(2
 // r0):
-//   lateral = C1 psi1 + C2 psi2 + Y1 + Y2 + Fu,
-//   yaw     = sum_i l0 f11 S_i xi_x,i + a (C1 psi1 - C2 psi2) + a (Y1 - Y2).
+//   lateral = C1 psi1 + C2 psi2 + Y1 + Y2 + Fu + G1 + G2,
+//   yaw     = sum_i l0 f11 S_i xi_x,i + a (C1 psi1 - C2 psi2) + a (Y1 - Y2) + a (G1 - G2)  (K7).
 struct Residual {
   double lateral, yaw;
 };
@@ -45,10 +43,11 @@ Residual residual(const Geometry& g, const std::array<double, 2>& S, const State
   const double C1 = g.f22 * S[0], C2 = g.f22 * S[1];
   const double theta = (x.y[0] - x.y[1]) / (2.0 * g.a);
   const double psi1 = theta + g.a * g.inv_R, psi2 = theta - g.a * g.inv_R;
-  double yaw = g.a * (C1 * psi1 - C2 * psi2) + g.a * (x.Y[0] - x.Y[1]);
+  const double G1 = g.gravity(0, x.y[0]), G2 = g.gravity(1, x.y[1]);
+  double yaw = g.a * (C1 * psi1 - C2 * psi2) + g.a * (x.Y[0] - x.Y[1]) + g.a * (G1 - G2);
   for (int i = 0; i < 2; ++i)
     yaw += g.l0 * g.f11 * S[i] * (g.l0 * g.inv_R - g.delta_r(x.y[i]) / (2.0 * g.r0));
-  return {C1 * psi1 + C2 * psi2 + x.Y[0] + x.Y[1] + g.Fu, yaw};
+  return {C1 * psi1 + C2 * psi2 + x.Y[0] + x.Y[1] + g.Fu + G1 + G2, yaw};
 }
 
 // A root of a scalar function on [lo, hi]: the interval is scanned in `n` pieces for sign
@@ -100,24 +99,37 @@ bool find_root(F f, double lo, double hi, double prefer, double* root, int n = 2
 // Returns false when this choice has no admissible solution.
 bool solve_active_set(const Geometry& g, const std::array<double, 2>& S,
                       const std::array<int, 2>& flange, const State& previous, State* out) {
-  const double C1 = g.f22 * S[0], C2 = g.f22 * S[1], yf = g.yf;
+  const double yf = g.yf;
   State x;
-  // Free choice: (C1 + C2) theta + (C1 - C2) a/R + Fu = 0 below.
   if (flange[0] == 0 && flange[1] == 0) {
-    // Lateral: (C1 + C2) theta + (C1 - C2) a/R + Fu = 0 fixes theta; y2 = y1 - 2 a theta.
-    const double theta = -(g.Fu + (C1 - C2) * g.a * g.inv_R) / (C1 + C2);
-    const double d = 2.0 * g.a * theta;
+    // Lateral: (C1 + C2) theta + (C1 - C2) a/R + Fu + G1(y1) + G2(y2) = 0 with theta = (y1 -
+    // y2)/(2a); for each y1 it is one equation in y2 (decreasing in y2 for a restoring gravity
+    // term), solved first; the yaw equation is then one scalar equation in y1. Where no y2 in
+    // [-y_f, y_f] balances, y2 is clamped (continuity for the scan) and the state is rejected below
+    // unless the lateral residual vanishes.
+    auto trailing = [&](double y1) {
+      auto lat = [&](double y2) {
+        State t;
+        t.y[0] = y1;
+        t.y[1] = y2;
+        return residual(g, S, t).lateral;
+      };
+      double y2;
+      if (find_root(lat, -yf, yf, previous.y[1], &y2, 8)) return y2;
+      return std::abs(lat(-yf)) < std::abs(lat(yf)) ? -yf : yf;
+    };
     auto yaw = [&](double y1) {
       State t;
       t.y[0] = y1;
-      t.y[1] = y1 - d;
+      t.y[1] = trailing(y1);
       return residual(g, S, t).yaw;
     };
     double y1;
-    if (!find_root(yaw, std::max(-yf, -yf + d), std::min(yf, yf + d), previous.y[0], &y1))
-      return false;
+    if (!find_root(yaw, -yf, yf, previous.y[0], &y1, 100)) return false;
     x.y[0] = y1;
-    x.y[1] = y1 - d;
+    x.y[1] = trailing(y1);
+    const double scale = std::abs(g.Fu) + g.f22 * (S[0] + S[1]) * 1e-3 + 1.0;
+    if (std::abs(residual(g, S, x).lateral) > 1e-8 * scale) return false;
   } else if (flange[0] != 0 && flange[1] != 0) {
     // Both fixed: Y1 + Y2 = -rest_lat, Y1 - Y2 = -rest_yaw / a.
     x.y[0] = flange[0] * yf;
@@ -156,6 +168,10 @@ bool solve_active_set(const Geometry& g, const std::array<double, 2>& S,
 
 }  // namespace
 
+double saturation_secant_factor(double u) {
+  return u < 3.0 ? 1.0 - u / 3.0 + u * u / 27.0 : 1.0 / u;
+}
+
 double ProfileCurvingTable::at(const std::vector<double>& column, double y) const {
   const std::size_t n = lateral.size();
   if (n == 0 || column.size() != n) throw InputError("curving.profiles", "empty profile table");
@@ -187,10 +203,12 @@ ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair, d
     t.wheel_position.push_back(outer.wheel_s);
     t.rail_position.push_back(outer.rail_y);
     if (u >= 0.0 && !flanging) {
-      if (outer.contact_angle < flange_angle)
+      if (outer.contact_angle < flange_angle) {
         t.flange_clearance = u;
-      else
+      } else {
         flanging = true;
+        t.flange_angle = outer.contact_angle;
+      }
     }
   }
   if (!(t.flange_clearance > 0.0))
@@ -222,6 +240,13 @@ void BogieCurvingInput::validate() const {
   if (!profiles) positive(flange_clearance, "flange_clearance");
   positive(wheel_load, "wheel_load");
   positive(friction, "friction");
+  if (!std::isfinite(load_transfer) || !(std::abs(load_transfer) < wheel_load))
+    throw InputError("curving.load_transfer",
+                     "curving.load_transfer must be finite and below the wheel load in magnitude");
+  if (!std::isnan(flange_angle) && !(flange_angle >= 0.0 && flange_angle < 0.5 * M_PI))
+    throw InputError("curving.flange_angle", "curving.flange_angle must lie in [0, pi/2)");
+  if (!std::isnan(flange_friction) && !(flange_friction >= 0.0 && std::isfinite(flange_friction)))
+    throw InputError("curving.flange_friction", "curving.flange_friction must be >= 0");
   positive(f11, "f11");
   positive(f22, "f22");
 }
@@ -245,10 +270,36 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   g.f22 = in.f22;
   g.delta_r = delta_r;
 
+  // Tread loads of the wheels (index 2 i + side, side 0 outer, 1 inner): Q +- dQ (K4), less the
+  // flange share Q_f of a flanging wheel (K6), updated with the saturation iteration.
+  const double Q = in.wheel_load, dQ = in.load_transfer;
+  const double delta_f =
+      !std::isnan(in.flange_angle) ? in.flange_angle : (table ? table->flange_angle : 0.0);
+  const double mu_f = std::isnan(in.flange_friction) ? in.friction : in.flange_friction;
+  const bool flange_share = delta_f > 0.0;
+  if (flange_share && !(std::sin(delta_f) - mu_f * std::cos(delta_f) > 0.0))
+    throw InputError("curving.flange_angle",
+                     "curving.flange_angle: tan(delta_f) must exceed the flange friction "
+                     "coefficient (Nadal), else the flange cannot carry a lateral force");
+  std::array<double, 4> Qt = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};
+  std::array<double, 2> Qf = {0.0, 0.0};  // flange vertical load of axle i (K6)
+  const double unloaded = 1e-3;           // tread loads below this fraction of Q: wheel unloaded
+  auto tan_gamma_outer = [&](double y) {
+    if (table) return std::tan(table->at(table->contact_angle, y));
+    return std::isnan(in.contact_angle) ? in.conicity : std::tan(in.contact_angle);
+  };
+  // (K7): the normal loads' lateral components, -Q_w tan gamma_w towards the track centre.
+  g.gravity = [&](int i, double y) {
+    if (!in.gravitational_stiffness) return 0.0;
+    return -(Qt[2 * i] * tan_gamma_outer(y) - Qt[2 * i + 1] * tan_gamma_outer(-y));
+  };
+  auto load_factor = [&](int w) { return std::cbrt(Qt[w] * Qt[w] / (Q * Q)); };  // (K5)
+
   // Flange-contact choices, fewest contacts first.
   const std::array<std::array<int, 2>, 9> sets = {
       {{0, 0}, {1, 0}, {0, -1}, {-1, 0}, {0, 1}, {1, -1}, {1, 1}, {-1, -1}, {-1, 1}}};
-  std::array<double, 4> s = {1.0, 1.0, 1.0, 1.0};  // secant factors: 1 outer, 1 inner, 2 o, 2 i
+  std::array<double, 4> s;  // effective secant factors: 1 outer, 1 inner, 2 outer, 2 inner
+  for (int w = 0; w < 4; ++w) s[w] = load_factor(w);
   State x;
   std::array<int, 2> active = {0, 0};
   int it = 0;
@@ -268,23 +319,45 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
     if (!found)
       throw NumericalError("curving estimate: no consistent flange-contact state (iteration " +
                            std::to_string(it) + ")");
-    if (!in.saturation) break;
-    // Saturation of the combined creep force of each wheel (relaxed fixed point on s).
     change = 0.0;
+    // Flange shares (K6) and the tread loads (relaxed like the saturation).
+    for (int i = 0; i < 2; ++i) {
+      const double N_f = flange_share && active[i] != 0
+                             ? std::abs(x.Y[i]) / (std::sin(delta_f) - mu_f * std::cos(delta_f))
+                             : 0.0;
+      const double target = N_f * (std::cos(delta_f) + mu_f * std::sin(delta_f));
+      change = std::max(change, std::abs(target - Qf[i]) / Q);
+      Qf[i] = 0.5 * (Qf[i] + target);
+      for (int side = 0; side < 2; ++side) {
+        const double base = side == 0 ? Q + dQ : Q - dQ;
+        const bool flanging = (active[i] == 1 && side == 0) || (active[i] == -1 && side == 1);
+        // Floored while the saturation settles (the first iterates, unsaturated, overestimate
+        // the flange force); a converged state at the floor is reported below.
+        Qt[2 * i + side] = std::max(base - (flanging ? Qf[i] : 0.0), unloaded * Q);
+      }
+    }
+    // Saturation of the combined creep force of each wheel (relaxed fixed point on s).
     const double theta = (x.y[0] - x.y[1]) / (2.0 * g.a);
     const double psi[2] = {theta + g.a * g.inv_R, theta - g.a * g.inv_R};
     for (int i = 0; i < 2; ++i) {
       const double xi_x = g.l0 * g.inv_R - delta_r(x.y[i]) / (2.0 * g.r0), xi_y = -psi[i];
-      const double u = std::hypot(in.f11 * xi_x, in.f22 * xi_y) / (in.friction * in.wheel_load);
-      const double target = secant_factor(u);
       for (int w = 0; w < 2; ++w) {  // outer (+xi_x) and inner (-xi_x) wheel: same |xi|
+        const double k = load_factor(2 * i + w);
+        const double u =
+            k * std::hypot(in.f11 * xi_x, in.f22 * xi_y) / (in.friction * Qt[2 * i + w]);
+        const double target = in.saturation ? k * saturation_secant_factor(u) : k;
         double& sw = s[2 * i + w];
         change = std::max(change, std::abs(target - sw));
         sw = 0.5 * (sw + target);
       }
     }
   }
-  if (in.saturation && change > 1e-9) {
+  for (int w = 0; w < 4; ++w)
+    if (!(Qt[w] > unloaded * Q))
+      throw NumericalError(
+          "curving estimate: a wheel is unloaded (load transfer or flange load at the wheel load: "
+          "overturning or flange climbing, Nadal's limit)");
+  if (change > 1e-9) {
     std::ostringstream m;
     m << "curving estimate: saturation iteration did not converge (change " << change << " after "
       << it << " iterations)";
@@ -304,7 +377,14 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
     ax.flange_force = x.Y[i];
     ax.flange = active[i];
     ax.xi_x_outer = g.l0 * g.inv_R - delta_r(ax.lateral) / (2.0 * g.r0);
+    ax.flange_vertical_load = Qf[i];
+    ax.flange_normal_force =
+        Qf[i] > 0.0 ? Qf[i] / (std::cos(delta_f) + mu_f * std::sin(delta_f)) : 0.0;
+    ax.tread_load_outer = Qt[2 * i];
+    ax.tread_load_inner = Qt[2 * i + 1];
   }
+  e.load_transfer = dQ;
+  e.flange_angle = flange_share ? delta_f : 0.0;
   // The leading outer wheel's tread contact (K2).
   const double y1 = e.leading.lateral;
   if (table) {

@@ -41,13 +41,41 @@
 //    Delta_r(y) jumps (the contact jumping across the profile), the axle may settle on the jump:
 //    a two-point contact whose effective rolling-radius difference lies within the jump.
 //
+//  * Load transfer by the cant deficiency (quasi-static, rigid vehicle; the lateral unbalanced
+//    force m g h_d / s at the centre of gravity, height h_cg above the rails, balanced by the
+//    moment of the wheel-load differences over the contact-point distance s = 2 l0):
+//      dQ / Q = 2 h_d h_cg / s^2                                                             (K4)
+//    (the caller computes dQ, BogieCurvingInput::load_transfer); outer wheels Q + dQ, inner Q - dQ.
+//  * Per-wheel creep law: f11, f22 of wheel w scale as (Q_w/Q)^(2/3) (Hertz: a, b ~ N^(1/3) at
+//    fixed curvatures, Johnson 1985 Eqs. 4.39-4.41, so c^2 = ab ~ N^(2/3)), and its force saturates
+//    at mu Q_w, Q_w the vertical load of its tread contact                                  (K5)
+//  * Two-point contact: a flanging wheel's flange force Y (the lateral force of the flange on the
+//    axle) is carried by a flange contact at the flange angle delta_f with normal force N_f and
+//    friction mu_f N_f acting on the wheel up the flange slope (Nadal's assumption: the flange
+//    contact leads the axle of a wheelset with a positive angle of attack and slides downwards on
+//    the rail, Nadal 1908; Iwnicki 2006, chapter on derailment):
+//      |Y| = N_f (sin delta_f - mu_f cos delta_f),   Q_f = N_f (cos delta_f + mu_f sin delta_f)
+//      (K6)
+//    and the wheel's tread contact carries Q_w - Q_f (used in (K5), iterated with the saturation).
+//  * Gravitational stiffness: the normal load of each tread contact leans with its contact angle,
+//    so axle i at y_i adds the lateral force (towards the track centre for a restoring profile)
+//      G_i = -(Q_o tan gamma_o(y_i) - Q_in tan gamma_in(y_i))                                 (K7)
+//    (Q tan gamma: the normal force's lateral part when the vertical load is Q; Wickens 2003,
+//    chapter on the wheelset on track) to the lateral equation of (K3) and a (G_1 - G_2) to the
+//    yaw equation; gamma_in(y) = gamma_o(-y) for symmetric profiles. Without it the balance is
+//    homogeneous in the creep forces: with saturated creep forces (all scale with mu) and no
+//    cant deficiency, the position and the creepages could not depend on friction. With profiles
+//    near the flange root (gamma_o ~ 0.5 rad) it carries much of the guidance; with a conical
+//    tread it is 2 dQ lambda.
+//
 // Limits of validity: steady curving of a rigid two-axle bogie; radii from about 150 m (small
-// angles, linear kinematics) to tangent track; tread contact (a flange contact enters only as the
-// lateral stop y_f, the creepages are those of the tread contact; in reality the flanging wheel
-// has a second, flange, contact with a large rolling radius); conical tread unless Delta_r(y) is
-// given (or profiles, ProfileCurvingTable); no gravitational stiffness, no load transfer, no spin
-// in the force balance, no suspension yaw stiffness, no traction or braking. It gives magnitudes
-// and signs, not a multibody simulation.
+// angles, linear kinematics) to tangent track; tread contact (a flange contact enters as the
+// lateral stop y_f and, with delta_f, with its vertical share (K6); the creepages are those of
+// the tread contact; the flange contact's own creepages, with its large rolling radius, are not
+// estimated); conical tread unless Delta_r(y) is given (or profiles, ProfileCurvingTable); no
+// spin in the force balance, no suspension yaw stiffness, no
+// traction or braking; one pair f11, f22 (scaled per wheel by its load) for all wheels. It gives
+// magnitudes and signs, not a multibody simulation.
 #pragma once
 
 #include <Eigen/Core>
@@ -79,6 +107,9 @@ struct ProfileCurvingTable {
   /// The largest tabulated y before the outer wheel's contact jumps to the flange (contact angle
   /// above the threshold of profile_curving_table): the flangeway clearance of the profiles (m).
   double flange_clearance = 0.0;
+  /// Contact angle (rad) of the outer wheel's contact at the first tabulated y beyond the flange
+  /// clearance: the flange angle delta_f of a flange contact at the clearance.
+  double flange_angle = 0.0;
 
   /// Linear interpolation of a column at y (clamped to the table).
   double at(const std::vector<double>& column, double y) const;
@@ -117,6 +148,18 @@ struct BogieCurvingInput {
   /// and the flange clearance is the table's (rolling_radius_difference, contact_angle and
   /// flange_clearance above are ignored).
   std::shared_ptr<const ProfileCurvingTable> profiles;
+  /// Load transfer dQ (N) by the cant deficiency (K4): the outer wheels carry Q + dQ, the inner
+  /// ones Q - dQ. Each wheel's creep coefficients scale as (Q_w / Q)^(2/3) and its creep force
+  /// saturates at mu Q_w (K5); f11, f22 above are those of a wheel carrying Q.
+  double load_transfer = 0.0;
+  /// Flange angle delta_f (rad) of the flange contact of a flanging wheel: the flange force Y then
+  /// also takes the vertical share Q_f of (K6) from that wheel's tread contact (two-point contact).
+  /// NaN: the profile table's flange_angle with profiles, else no vertical share (the flange is a
+  /// lateral stop only).
+  double flange_angle = std::numeric_limits<double>::quiet_NaN();
+  double flange_friction = std::numeric_limits<double>::quiet_NaN();  ///< mu_f; NaN: friction
+  /// Include the lateral components of the wheels' normal loads (K7) in the balance.
+  bool gravitational_stiffness = true;
 
   double half_distance() const;
   void validate() const;
@@ -127,13 +170,20 @@ struct AxleCurving {
   double attack_angle = 0.0;  ///< psi_i (rad), (K1)
   double flange_force = 0.0;  ///< Y_i (N): lateral force of a flange on the axle (< 0 outer flange)
   int flange = 0;             ///< 0 none, +1 outer flange, -1 inner flange
-  double xi_x_outer = 0.0;    ///< xi_x of the outer wheel (K2)
+  double flange_normal_force = 0.0;   ///< N_f (N) of the flange contact (K6), 0 without
+  double flange_vertical_load = 0.0;  ///< Q_f (N) carried by the flange contact (K6)
+  /// Vertical loads (N) of the tread contacts of the outer and inner wheel: Q +- dQ, less Q_f on
+  /// the flanging wheel.
+  double tread_load_outer = 0.0, tread_load_inner = 0.0;
+  double xi_x_outer = 0.0;  ///< xi_x of the outer wheel (K2)
 };
 
 struct CurvingEstimate {
   AxleCurving leading, trailing;
   double bogie_yaw = 0.0;         ///< theta (rad)
   double unbalanced_force = 0.0;  ///< F_u (N) per bogie
+  double load_transfer = 0.0;     ///< dQ (N) per wheel, (K4)
+  double flange_angle = 0.0;      ///< delta_f (rad) used in (K6); 0 without vertical share
   double yaw_rate = 0.0;          ///< -V/R (rad/s)
   // The leading outer wheel's tread contact, contact frame of loop.hpp:
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;  ///< creepages (-, -, rad/m)
@@ -155,6 +205,10 @@ struct CurvingEstimate {
     return {contact_shift_on_wheel, rail_contact_offset, contact_angle};
   }
 };
+
+/// Secant factor of the cubic saturation: |F| = mu Q u s(u), s = 1 - u/3 + u^2/27 (u < 3), 1/u
+/// (u >= 3), u = |f xi| / (mu Q) (Johnson & Vermeulen 1964; Shen, Hedrick & Elkins 1983).
+double saturation_secant_factor(double u);
 
 /// The estimate (K1)-(K3). InputError naming the field for bad input; NumericalError if the
 /// saturation iteration does not converge.

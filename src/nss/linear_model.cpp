@@ -164,6 +164,50 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
       Lr_.block<2, 3>(offset_[a], 0) = area * U;
     }
   }
+  // Normal-load input (G1): bN on the slip elements from the frozen-area sensitivity dpn/dN, then
+  // A bN/dt and A0 bN/dt on the grid (two FFT products) and their reduced forms.
+  if (n_slip_ > 0) {
+    const contact::HalfSpaceOperator normal_op(A, contact::Problem::Normal);
+    const contact::NormalLoadSensitivity sens =
+        contact::normal_load_sensitivity(g, normal_op, patch.normal);
+    const int N = g.size();
+    std::vector<double> b(2 * N, 0.0), u0(2 * N), u1(2 * N);
+    for (int a = 0; a < m; ++a) {
+      if (!slip_[a]) continue;
+      const int k = el_[a];
+      const double s = std::hypot(mean.sx[k], mean.sy[k]);
+      b[k] = -in.mu * sens.dpn_dN[k] * mean.sx[k] / s;
+      b[N + k] = -in.mu * sens.dpn_dN[k] * mean.sy[k] / s;
+      const double x = g.x(k % g.nx), y = g.y(k / g.nx);
+      dN_ += area * Eigen::Vector3d(b[k], b[N + k], x * b[N + k] - y * b[k]);
+    }
+    contact::HalfSpaceOperator(A, contact::Problem::Tangential, 0).apply(b.data(), u0.data());
+    contact::HalfSpaceOperator(A, contact::Problem::Tangential, 1).apply(b.data(), u1.data());
+    wN0_.resize(n);
+    wN1_.resize(n);
+    rN0_.setZero(r_);
+    rN1_.setZero(r_);
+    for (int a = 0; a < m; ++a) {
+      const int k = el_[a];
+      const Eigen::Vector2d v0(u0[k] / dt_, u0[N + k] / dt_), v1(u1[k] / dt_, u1[N + k] / dt_);
+      wN0_.segment<2>(2 * a) = v0;
+      wN1_.segment<2>(2 * a) = v1;
+      if (slip_[a]) {
+        rN0_(offset_[a]) = -t_[a].dot(v0);
+        rN1_(offset_[a]) = t_[a].dot(v1);
+      } else {
+        rN0_.segment<2>(offset_[a]) = -v0;
+        rN1_.segment<2>(offset_[a]) = v1;
+      }
+    }
+    block_ = 4;
+  } else {
+    wN0_.setZero(n);
+    wN1_.setZero(n);
+    rN0_.setZero(r_);
+    rN1_.setZero(r_);
+  }
+
   // steps per contact length: the extent of the contact area in x, in elements
   int ix_min = g.nx, ix_max = -1;
   for (int k : el_) ix_min = std::min(ix_min, k % g.nx), ix_max = std::max(ix_max, k % g.nx);
@@ -295,11 +339,11 @@ Eigen::MatrixXd apply_K1(const Eigen::MatrixXd& X, const contact::HalfSpaceOpera
   return out;
 }
 
-// Markov parameters h_j = Lh' S_j, S_{j+1} = H S_j (S_0 given), until |h_j| < 1e-15 max |h| for a
-// whole contact length (`quiet_steps`); false if that does not happen within max_steps.
+// Markov parameters h_j = Lh' S_j (3 x p), S_{j+1} = H S_j (S_0 given), until |h_j| < 1e-15 max
+// |h| for a whole contact length (`quiet_steps`); false if that does not happen within max_steps.
 template <class Step>
 bool markov_sequence(const Eigen::MatrixXd& Lh, Eigen::MatrixXd S, const Step& step, int quiet_steps,
-                     int max_steps, std::vector<Eigen::Matrix3d>& h) {
+                     int max_steps, std::vector<Eigen::MatrixXd>& h) {
   h.clear();
   double h_max = 0.0;
   int quiet = 0;
@@ -314,19 +358,20 @@ bool markov_sequence(const Eigen::MatrixXd& Lh, Eigen::MatrixXd S, const Step& s
   return false;
 }
 
-// f(theta_k) = -sum_j h_j e^{-i j theta_k} on theta_k = 2 pi k / N, k = 0..N/2 (N >= 4 J, a power
-// of two), by nine real-to-complex FFTs.
-std::vector<CreepMatrix> transfer_on_grid(const std::vector<Eigen::Matrix3d>& h, int N) {
-  std::vector<CreepMatrix> f(N / 2 + 1, CreepMatrix::Zero());
+// sum_j h_j e^{-i j theta_k} on theta_k = 2 pi k / N, k = 0..N/2 (N >= 4 J, a power of two), by
+// one real-to-complex FFT per entry of the 3 x p blocks h_j (the check of the Krylov models).
+std::vector<Eigen::MatrixXcd> transfer_on_grid(const std::vector<Eigen::MatrixXd>& h, int N) {
+  const int rows = static_cast<int>(h.front().rows()), cols = static_cast<int>(h.front().cols());
+  std::vector<Eigen::MatrixXcd> f(N / 2 + 1, Eigen::MatrixXcd::Zero(rows, cols));
   double* in = fftw_alloc_real(N);
   fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
   const fftw_plan plan = fftw_plan_dft_r2c_1d(N, in, out, FFTW_ESTIMATE);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
       std::fill(in, in + N, 0.0);
       for (size_t j = 0; j < h.size(); ++j) in[j] = h[j](r, c);
       fftw_execute(plan);  // out_k = sum_j in_j e^{-2 pi i jk/N}
-      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = -std::complex<double>(out[k][0], out[k][1]);
+      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = std::complex<double>(out[k][0], out[k][1]);
     }
   fftw_destroy_plan(plan);
   fftw_free(in);
@@ -359,6 +404,18 @@ CreepMatrix LinearContactModel::creep_coefficients_direct(double frequency) cons
   return -(L_.transpose().cast<std::complex<double>>() * Q);
 }
 
+LoadVector LinearContactModel::normal_load_coefficients_direct(double frequency) const {
+  check_frequency(frequency);
+  if (!has_normal_load_input()) return LoadVector::Zero();
+  const Dense& d = dense();
+  // (G2): M(z) Q = (A - z A0) bN / dt = wN0 - z wN1,  g = dx dy U' bN + L' Q
+  const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * frequency * dt_);
+  const Eigen::MatrixXcd M = d.M0.cast<std::complex<double>>() - z * d.M1.cast<std::complex<double>>();
+  const Eigen::VectorXcd rhs = wN0_.cast<std::complex<double>>() - z * wN1_.cast<std::complex<double>>();
+  const Eigen::VectorXcd Q = M.partialPivLu().solve(rhs);
+  return dN_.cast<std::complex<double>>() + L_.transpose().cast<std::complex<double>>() * Q;
+}
+
 void LinearContactModel::reduce() const {
   if (hessenberg_) return;
   const Dense& d = dense();
@@ -368,7 +425,9 @@ void LinearContactModel::reduce() const {
   const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(N);
   H_ = hd.matrixH();
   const Eigen::MatrixXd Q = hd.matrixQ();
-  Rhat_ = Q.transpose() * lu0.solve(W_);
+  Eigen::MatrixXd inputs(W_.rows(), 5);  // the creepages, then wN0 and wN1 of (G2)
+  inputs << W_, wN0_, wN1_;
+  Rhat_ = Q.transpose() * lu0.solve(inputs);
   Lhat_ = Q.transpose() * L_;
   hessenberg_ = true;
 }
@@ -403,13 +462,46 @@ Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<
 
 }  // namespace
 
+void LinearContactModel::start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eigen::Vector3d& g0) const {
+  // X = K0^{-1} [-Pi' W, s y], Z = K0 X; y = K0^{-1}(K1 x0 + rN1), x0 = K0^{-1} rN0 (G3).
+  const Reduced& red = reduced();
+  Z.resize(r_, block_);
+  Z.leftCols(3) = Wr_;
+  g0 = dN_;
+  if (block_ == 4) Z.col(3) = rN0_;
+  X = red.solve(Z);
+  if (block_ == 3) return;
+  const Eigen::VectorXd x0 = X.col(3);
+  g0 += Lr_.transpose() * x0;
+  Z.col(3) = apply_K1(x0, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_) + rN1_;
+  X.col(3) = red.solve(Z.col(3));
+  // Scale y to the creepage columns (same K0-norm as the largest), so that the block's Gram
+  // matrix, the decay test and the a-posteriori check weigh both inputs alike.
+  const double creep_norm = (X.leftCols(3).transpose() * Z.leftCols(3)).diagonal().maxCoeff();
+  const double load_norm = X.col(3).dot(Z.col(3));
+  load_scale_ = load_norm > 0.0 ? std::sqrt(creep_norm / load_norm) : 1.0;
+  X.col(3) *= load_scale_;
+  Z.col(3) *= load_scale_;
+}
+
+void LinearContactModel::store_markov(const std::vector<Eigen::MatrixXd>& h, const Eigen::Vector3d& g0) const {
+  markov_.clear();
+  load_markov_.assign(1, g0);
+  for (const auto& hj : h) {
+    markov_.push_back(hj.leftCols(3));
+    if (block_ == 4) load_markov_.push_back(hj.col(3) / load_scale_);
+  }
+}
+
 bool LinearContactModel::exact_markov(int max_contact_lengths) const {
   // h_j = L' X_j, X_0 = K0^{-1}(-Pi' W), X_{j+1} = K0^{-1} K1 X_j (the same h_j as
   // L' (M0^{-1} M1)^j M0^{-1} W in the paper's form), until |h_j| < 1e-15 max |h| for a whole
-  // contact length.
+  // contact length; the normal-load column started from y (G3).
   const Reduced& red = reduced();
-  const Eigen::MatrixXd X0 = red.solve(Wr_);
-  std::vector<Eigen::Matrix3d> h;
+  Eigen::MatrixXd X0, Z0;
+  Eigen::Vector3d g0;
+  start_block(X0, Z0, g0);
+  std::vector<Eigen::MatrixXd> h;
   const bool ok = markov_sequence(
       Lr_, X0,
       [&](const Eigen::MatrixXd& X) {
@@ -417,7 +509,7 @@ bool LinearContactModel::exact_markov(int max_contact_lengths) const {
       },
       steps_per_contact_length_, max_contact_lengths * steps_per_contact_length_, h);
   if (!ok) return false;
-  markov_ = std::move(h);
+  store_markov(h, g0);
   info_.method = SweepInfo::Method::markov;
   info_.block_steps = static_cast<int>(markov_.size());
   return true;
@@ -431,18 +523,19 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
   t0 = std::chrono::steady_clock::now();
   const int Lc = steps_per_contact_length_;
   const int max_markov = max_contact_lengths * Lc;
+  const int p = block_;  // block size: 3 creepages (+ 1 normal load, G3)
   // Block steps: at most 10 contact lengths, and never more than the dimension allows.
-  const int max_blocks = std::min(10 * Lc, r_ / 3 - 1);
+  const int max_blocks = std::min(10 * Lc, r_ / p - 1);
   const int stride = std::max(4, (Lc + 2) / 3);  // block steps between checks
   const double tolerance = 1e-10;
 
   // Block Arnoldi in the K0 inner product (see the top of the file). V, Y = K0 V grow by blocks
-  // of 3 columns; H holds the Gram-Schmidt coefficients (the projection V' K1 V).
-  int cap = 3 * std::min(max_blocks + 2, 2 * Lc + 2);
+  // of p columns; H holds the Gram-Schmidt coefficients (the projection V' K1 V).
+  int cap = p * std::min(max_blocks + 2, 2 * Lc + 2);
   Eigen::MatrixXd V(r_, cap), Y(r_, cap), H = Eigen::MatrixXd::Zero(cap, cap);
   auto grow = [&](int need) {
     if (need <= cap) return;
-    const int c = std::max(need, 3 * ((cap / 3) * 3 / 2 + 1));
+    const int c = std::max(need, p * ((cap / p) * 3 / 2 + 1));
     V.conservativeResize(Eigen::NoChange, c);
     Y.conservativeResize(Eigen::NoChange, c);
     H.conservativeResize(c, c);
@@ -452,12 +545,12 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
   };
   // Orthonormalise the block X (K0 X = Z) in the K0 inner product: X' Z = R' R (Cholesky).
   // Returns false when the block has (numerically) lost rank: a breakdown of the block process.
-  auto normalise = [&](Eigen::MatrixXd& X, Eigen::MatrixXd& Z, double scale, Eigen::Matrix3d& R) {
-    Eigen::Matrix3d G = X.transpose() * Z;
+  auto normalise = [&](Eigen::MatrixXd& X, Eigen::MatrixXd& Z, double scale, Eigen::MatrixXd& R) {
+    Eigen::MatrixXd G = X.transpose() * Z;
     G = 0.5 * (G + G.transpose()).eval();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(G, Eigen::EigenvaluesOnly);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(G, Eigen::EigenvaluesOnly);
     if (!(es.eigenvalues()(0) > 1e-24 * scale)) return false;
-    const Eigen::LLT<Eigen::Matrix3d> g(G);
+    const Eigen::LLT<Eigen::MatrixXd> g(G);
     if (g.info() != Eigen::Success) return false;
     R = g.matrixU();
     X = R.triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(X);
@@ -465,66 +558,68 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
     return true;
   };
 
-  Eigen::MatrixXd X = red.solve(Wr_), Z = Wr_;
-  Eigen::Matrix3d R0;
+  Eigen::MatrixXd X, Z, R0;
+  Eigen::Vector3d g0;
+  start_block(X, Z, g0);
   {
-    const Eigen::Matrix3d G0 = X.transpose() * Z;
+    const Eigen::MatrixXd G0 = X.transpose() * Z;
     if (!normalise(X, Z, G0.diagonal().maxCoeff(), R0)) return false;
   }
-  V.leftCols(3) = X;
-  Y.leftCols(3) = Z;
-  int d = 3;  // basis vectors so far
+  V.leftCols(p) = X;
+  Y.leftCols(p) = Z;
+  int d = p;  // basis vectors so far
 
-  // The reduced model of the first k blocks (d = 3k): Markov parameters of f_k.
-  auto model_markov = [&](int dk, std::vector<Eigen::Matrix3d>& h) {
+  // The reduced model of the first k blocks (d = p k): Markov parameters of f_k (and g_k).
+  auto model_markov = [&](int dk, std::vector<Eigen::MatrixXd>& h) {
     const Eigen::MatrixXd Hk = H.topLeftCorner(dk, dk);
-    Eigen::MatrixXd S0 = Eigen::MatrixXd::Zero(dk, 3);
-    S0.topRows(3) = R0;
+    Eigen::MatrixXd S0 = Eigen::MatrixXd::Zero(dk, p);
+    S0.topRows(p) = R0;
     const Eigen::MatrixXd Lh = V.leftCols(dk).transpose() * Lr_;
-    // S -> H S with H block upper Hessenberg: columns q..q+3 have non-zeros in rows < q + 7 only.
+    // S -> H S with H block upper Hessenberg whose subdiagonal blocks R are upper triangular:
+    // column c has non-zeros in rows <= c + p only, so columns q..q+3 in rows < q + p + 4.
     return markov_sequence(
         Lh, S0,
         [&](const Eigen::MatrixXd& S) {
-          Eigen::MatrixXd next = Eigen::MatrixXd::Zero(dk, 3);
-          linalg::subtract_product3(Hk, dk, dk, -S, next, [](int q) { return q + 7; });
+          Eigen::MatrixXd next = Eigen::MatrixXd::Zero(dk, p);
+          linalg::subtract_product(Hk, dk, dk, -S, next, [p](int q) { return q + p + 4; });
           return next;
         },
         Lc, max_markov, h);
   };
 
-  std::vector<Eigen::Matrix3d> h_prev, h_cur;
+  std::vector<Eigen::MatrixXd> h_prev, h_cur;
   bool have_prev = false;
   int next_check = Lc;
   for (int k = 1; k <= max_blocks; ++k) {
     // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
-    Z = apply_K1(V.middleCols(d - 3, 3), *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_);
+    Z = apply_K1(V.middleCols(d - p, p), *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_);
     X = red.solve(Z);
-    const Eigen::Vector3d norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
+    const Eigen::VectorXd norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
     const double scale = norm0.maxCoeff();
-    grow(d + 3);
+    grow(d + p);
     // Block classical Gram-Schmidt in the K0 inner product, repeated once when a column lost more
     // than half of its squared norm ("twice is enough", Kahan-Parlett): one pass leaves the new
     // column orthogonal to O(eps / ratio); away from cancellation one pass is as good as two. The
     // rolling step mostly transports the traction into new directions (ratios ~0.9-1), with
     // strong cancellation about once per contact length.
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, 3);
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, p);
     for (int pass = 0; pass < 2; ++pass) {
-      const Eigen::MatrixXd Ci = linalg::transposed_product3(Y, d, X);  // Y' X
-      linalg::subtract_product3(V, r_, d, Ci, X);                        // X -= V Ci
-      linalg::subtract_product3(Y, r_, d, Ci, Z);                        // Z -= Y Ci
+      const Eigen::MatrixXd Ci = linalg::transposed_product(Y, d, X);  // Y' X
+      linalg::subtract_product(V, r_, d, Ci, X);                        // X -= V Ci
+      linalg::subtract_product(Y, r_, d, Ci, Z);                        // Z -= Y Ci
       C += Ci;
-      const Eigen::Vector3d norm1 = (X.transpose() * Z).diagonal();
+      const Eigen::VectorXd norm1 = (X.transpose() * Z).diagonal();
       if (pass == 0 && (norm1.array() > 0.5 * norm0.array()).all()) break;
     }
-    Eigen::Matrix3d R;
+    Eigen::MatrixXd R;
     const bool ok = normalise(X, Z, scale, R);
-    H.block(0, d - 3, d, 3) = C;
+    H.block(0, d - p, d, p) = C;
     if (ok) {
-      H.block<3, 3>(d, d - 3) = R;
-      V.middleCols(d, 3) = X;
-      Y.middleCols(d, 3) = Z;
+      H.block(d, d - p, p, p) = R;
+      V.middleCols(d, p) = X;
+      Y.middleCols(d, p) = Z;
     }
-    // After k steps the square model uses blocks 0..k-1 (d = 3k); its H is complete.
+    // After k steps the square model uses blocks 0..k-1 (d = p k); its H is complete.
     if (k >= next_check || !ok || k == max_blocks) {
       info_.krylov_seconds += seconds_since(t0);
       t0 = std::chrono::steady_clock::now();
@@ -542,7 +637,7 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
         info_.error_estimate = err;
         if (err <= tolerance) {
           info_.check_seconds += seconds_since(t0);
-          markov_ = std::move(h_cur);
+          store_markov(h_cur, g0);
           info_.method = SweepInfo::Method::krylov;
           info_.block_steps = k;
           info_.reduced_dimension = d;
@@ -557,7 +652,7 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
       t0 = std::chrono::steady_clock::now();
     }
     if (!ok) return false;
-    d += 3;
+    d += p;
   }
   return false;
 }
@@ -574,24 +669,59 @@ std::vector<CreepMatrix> LinearContactModel::horner(const std::vector<double>& f
   return out;
 }
 
+std::vector<LoadVector> LinearContactModel::horner_load(const std::vector<double>& frequencies) const {
+  std::vector<LoadVector> out;
+  out.reserve(frequencies.size());
+  for (double f : frequencies) {  // g(z) = sum_j gm_j z^j (G3)
+    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
+    LoadVector acc = LoadVector::Zero();
+    for (auto it = load_markov_.rbegin(); it != load_markov_.rend(); ++it)
+      acc = acc * z + it->cast<std::complex<double>>();
+    out.push_back(acc);
+  }
+  return out;
+}
+
+bool LinearContactModel::build_markov(int max_contact_lengths) const {
+  if (!markov_.empty()) return true;
+  if (markov_failed_) return false;
+  if (krylov_markov(max_contact_lengths)) return true;
+  const SweepInfo failed = info_;
+  if (!exact_markov(max_contact_lengths)) {
+    info_.method = SweepInfo::Method::hessenberg;
+    info_.krylov_failed = true;
+    markov_failed_ = true;
+    return false;
+  }
+  info_.checks = failed.checks;
+  info_.error_estimate = failed.error_estimate;
+  info_.krylov_failed = true;
+  return true;
+}
+
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients(const std::vector<double>& frequencies,
                                                                 int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
-  if (markov_.empty()) {
-    const bool krylov = krylov_markov(max_contact_lengths);
-    if (!krylov) {
-      const SweepInfo failed = info_;
-      if (!exact_markov(max_contact_lengths)) {
-        info_.method = SweepInfo::Method::hessenberg;
-        info_.krylov_failed = true;
-        return creep_coefficients_hessenberg(frequencies);
-      }
-      info_.checks = failed.checks;
-      info_.error_estimate = failed.error_estimate;
-      info_.krylov_failed = true;
-    }
-  }
+  if (!build_markov(max_contact_lengths)) return creep_coefficients_hessenberg(frequencies);
   return horner(frequencies);
+}
+
+std::vector<LoadVector> LinearContactModel::normal_load_coefficients(const std::vector<double>& frequencies,
+                                                                     int max_contact_lengths) const {
+  for (double f : frequencies) check_frequency(f);
+  if (!has_normal_load_input()) return std::vector<LoadVector>(frequencies.size(), LoadVector::Zero());
+  if (build_markov(max_contact_lengths)) return horner_load(frequencies);
+  // Hessenberg fallback: g = dN + L' (I - z N)^{-1} M0^{-1} (wN0 - z wN1)
+  reduce();
+  std::vector<LoadVector> out;
+  out.reserve(frequencies.size());
+  for (double f : frequencies) {
+    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
+    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.rightCols(2));
+    out.push_back(dN_.cast<std::complex<double>>() +
+                  Lhat_.transpose().cast<std::complex<double>>() * (X.col(0) - z * X.col(1)));
+  }
+  return out;
 }
 
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std::vector<double>& frequencies,
@@ -599,6 +729,7 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std
   for (double f : frequencies) check_frequency(f);
   // Computed afresh (not cached), so that it stays an independent check of creep_coefficients.
   std::vector<Eigen::Matrix3d> saved = std::move(markov_);
+  std::vector<Eigen::Vector3d> saved_load = std::move(load_markov_);
   const SweepInfo saved_info = info_;
   std::vector<CreepMatrix> out;
   if (exact_markov(max_contact_lengths))
@@ -606,6 +737,7 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std
   else
     out = creep_coefficients_hessenberg(frequencies);
   markov_ = std::move(saved);
+  load_markov_ = std::move(saved_load);
   info_ = saved_info;
   return out;
 }
@@ -618,7 +750,7 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_hessenberg(
   out.reserve(frequencies.size());
   for (double f : frequencies) {
     const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
-    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_);
+    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.leftCols(3));
     out.push_back(-(Lhat_.transpose().cast<std::complex<double>>() * X));
   }
   return out;
@@ -641,15 +773,26 @@ Eigen::VectorXd LinearContactModel::step_matrix_slip_diagonal() const {
 }
 
 std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector<Eigen::Vector3d>& xi) const {
-  // K0 pi_k = K1 pi_{k-1} - Pi' W xi_k (the reduced form of M0 Q_k = M1 Q_{k-1} + W xi_k),
-  // F_k = dx dy U' Pi pi_k.
+  return time_response(xi, std::vector<double>(xi.size(), 0.0));
+}
+
+std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector<Eigen::Vector3d>& xi,
+                                                               const std::vector<double>& dN) const {
+  // K0 pi_k = K1 pi_{k-1} - Pi' W xi_k + rN0 N~_k + rN1 N~_{k-1} (the reduced form of M0 Q_k =
+  // M1 Q_{k-1} + W xi_k + (A bN N~_k - A0 bN N~_{k-1})/dt, G2), F_k = dx dy U' (Pi pi_k + bN N~_k).
+  if (dN.size() != xi.size())
+    throw InputError("excitation", "time_response: the normal-load and creepage histories differ in length");
   const Reduced& red = reduced();
   std::vector<Eigen::Vector3d> F;
   F.reserve(xi.size());
   Eigen::MatrixXd p = Eigen::MatrixXd::Zero(r_, 1);
-  for (const auto& x : xi) {
-    p = red.solve(apply_K1(p, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_) + Wr_ * x);
-    F.push_back(Lr_.transpose() * p);
+  double previous = 0.0;
+  for (size_t k = 0; k < xi.size(); ++k) {
+    Eigen::MatrixXd rhs = apply_K1(p, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_) + Wr_ * xi[k];
+    if (block_ == 4) rhs += rN0_ * dN[k] + rN1_ * previous;
+    p = red.solve(rhs);
+    F.push_back(Lr_.transpose() * p + dN_ * dN[k]);
+    previous = dN[k];
   }
   return F;
 }

@@ -33,6 +33,22 @@
 //   (K0 - z K1) pi = -Pi' W~,  K0 = D + Pi' A Pi/dt (symmetric positive definite),
 //   K1 = Pi' A0 Pi/dt (applied by FFT),  D = diag(0 adhesion, c_e slip),  F~ = dx dy U' Pi pi,
 // of dimension r = 2 (adhesion elements) + (slip elements) instead of n = 2 (contact elements).
+//
+// Normal-load input (docs/nss_normal_load.md, Eqs. G1-G6). A normal-load variation N~ changes the
+// pressure on the frozen contact area by pn~ = (dpn/dN) N~ (contact::normal_load_sensitivity: the
+// normal problem's own derivative, not a Hertz formula). Adhesion elements are unchanged; in a
+// slip element the traction -mu pn s/|s| gains -mu pn~ s_bar/|s_bar|, so P~ = B Q + bN N~ with
+//   bN_e = -mu (dpn_e/dN) s_bar_e/|s_bar_e|  (slip),  0 (adhesion),                        (G1)
+// and the pencil gets one more input, with a one-step delay through A0 (the traction of the
+// previous step rolls on):
+//   M(z) Q = W xi~ + (A - z A0) bN N~ / dt,  F~ = L' Q + dx dy U' bN N~ = -f xi~ + g N~.    (G2)
+// g = (g_x, g_y, g_z) (-, -, m) for (Fx, Fy, Mz): at omega -> 0 and full sliding without spin
+// g = F_bar / N_bar; in full adhesion g = 0. Reduced form: (K0 - z K1) pi = -Pi' W xi~ + (rN0 +
+// z rN1) N~, rN0 = -Pi' A bN/dt, rN1 = Pi' A0 bN/dt. Its Markov parameters need ONE more vector
+// in the Krylov block: with x0 = K0^{-1} rN0 and y = K0^{-1}(K1 x0 + rN1) = N x0 + K0^{-1} rN1,
+//   g(z) = dx dy U' bN + L' x0 + z sum_j z^j L' N^j y                                       (G3)
+// so the block of 3 creepage vectors becomes a block of 4 (one more column per Cholesky pass of
+// the factor, which is streamed once for all of them).
 #pragma once
 
 #include <Eigen/Dense>
@@ -129,6 +145,12 @@ class LinearContactModel {
   /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
   /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()).
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
+  /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
+  const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
+  /// dx dy U' bN of (G2): the instantaneous part of g (the frozen-slip-direction response, -, -, m).
+  const Eigen::Vector3d& load_direct_term() const { return dN_; }
+  /// Whether there is a normal-load input at all (slip elements exist); without it g = 0.
+  bool has_normal_load_input() const { return block_ == 4; }
   /// How the last creep_coefficients() built its Markov parameters.
   const SweepInfo& sweep_info() const { return info_; }
 
@@ -164,7 +186,13 @@ class LinearContactModel {
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
   bool krylov_markov(int max_contact_lengths) const;
   bool exact_markov(int max_contact_lengths) const;
+  bool build_markov(int max_contact_lengths) const;  // false: fall back to the Hessenberg form
+  void store_markov(const std::vector<Eigen::MatrixXd>& h, const Eigen::Vector3d& g0) const;
+  /// The starting block K0^{-1} [-Pi' W, s y] of the Markov sequence (r x block_), with Z = K0 X,
+  /// and gm_0 = dN + L' x0 of (G3); s scales y to the creepage columns (load_scale_).
+  void start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eigen::Vector3d& g0) const;
   std::vector<CreepMatrix> horner(const std::vector<double>& frequencies) const;
+  std::vector<LoadVector> horner_load(const std::vector<double>& frequencies) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   int steps_per_contact_length_ = 1;
@@ -181,12 +209,20 @@ class LinearContactModel {
   Eigen::MatrixXd Lr_;  ///< r x 3 reduced outputs  dx dy Pi' U
   mutable std::unique_ptr<Dense> dense_;
   mutable std::unique_ptr<Reduced> reduced_;
+  // Normal-load input (G1-G3), zero when there is no slip element.
+  int block_ = 3;            ///< Krylov block: 3 creepage inputs (+ 1 normal load)
+  Eigen::VectorXd wN0_, wN1_;  ///< n: A bN/dt, A0 bN/dt (paper form, per N)
+  Eigen::VectorXd rN0_, rN1_;  ///< r: -Pi' A bN/dt, +Pi' A0 bN/dt
+  Eigen::Vector3d dN_ = Eigen::Vector3d::Zero();  ///< dx dy U' bN
   mutable std::vector<Eigen::Matrix3d> markov_;
+  mutable std::vector<Eigen::Vector3d> load_markov_;
+  mutable bool markov_failed_ = false;  ///< the Markov routes failed: sweeps use the Hessenberg form
+  mutable double load_scale_ = 1.0;
   mutable SweepInfo info_;
   // Hessenberg form of M0^{-1} M1 = Q H Q'
   mutable bool hessenberg_ = false;
   mutable Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;
-  mutable Eigen::MatrixXd Rhat_, Lhat_;  ///< Q' M0^{-1} W, Q' L
+  mutable Eigen::MatrixXd Rhat_, Lhat_;  ///< Q' M0^{-1} [W, wN0, wN1], Q' L
 };
 
 }  // namespace rollnoise::nss

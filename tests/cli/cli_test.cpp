@@ -187,13 +187,17 @@ TEST(CreepCommand, WritesComplexCoefficientsAndCsvAndRejectsFrequenciesAboveNyqu
   ASSERT_GE(f, 0);
   EXPECT_EQ(read_units(f, "/creep/frequency"), "Hz");
   EXPECT_NE(read_units(f, "/creep/f").find("rows Fx"), std::string::npos);
+  EXPECT_NE(read_units(f, "/creep/g").find("g3 = dMz/dN [m]"), std::string::npos);
   H5Fclose(f);
   std::ifstream in(csv);
-  std::string line;
+  std::string line, header;
   int rows = 0;
   while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') ++rows;
+    if (!line.empty() && line[0] != '#') {
+      if (rows++ == 0) header = line;
+    }
   EXPECT_EQ(rows, 4);  // header + 3 frequencies
+  EXPECT_NE(header.find(",re_g1,im_g1,re_g2,im_g2,re_g3,im_g3"), std::string::npos) << header;
   const Invocation bad = run("creep " + paper_case() + " --set grid.nx=20 --set grid.ny=15 "
                              "--set 'frequency.list=[1000.0, 40000.0]' -o " + (dir / "bad.h5").string());
   EXPECT_EQ(bad.status, 2);
@@ -238,7 +242,7 @@ std::string curve_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/cases/cu
 
 TEST(NoiseCommand, CurveCaseGivesBandLevelsAndTheNSSModelChangesTangentialNotVerticalForces) {
   const fs::path out = temp_dir() / "noise.h5";
-  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 "
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 --set noise.compare=kalker "
                            "--set track.support=continuous --set noise.band_max=2000.0 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -264,6 +268,108 @@ TEST(NoiseCommand, CurveCaseGivesBandLevelsAndTheNSSModelChangesTangentialNotVer
   std::printf("above 300 Hz: Fz differs by at most %.2f dB, Fy by up to %.1f dB (NSS vs Kalker)\n", dz, dy);
   EXPECT_LT(dz, 3.0);
   EXPECT_GT(dy, 6.0);
+}
+
+// The default run (noise.normal_coupling = "on", noise.compare = "quasi-steady") also writes the
+// loop without the coupling and the quasi-steady baseline; coupling_difference is the difference of
+// the written levels; in the saturated contact of the 300 m curve the coupling raises Fy by far more
+// than the quasi-steady baseline differs from the NSS result.
+TEST(NoiseCommand, CoupledUncoupledAndQuasiSteadyOutputs) {
+  const fs::path out = temp_dir() / "noise_coupling.h5";
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 "
+                           "--set track.support=continuous --set noise.band_max=2000.0 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const auto coupled = read_doubles(f, "/noise/bands/force_level");
+  const auto uncoupled = read_doubles(f, "/noise/uncoupled/bands/force_level");
+  const auto quasi = read_doubles(f, "/noise/quasi_steady/bands/force_level");
+  const auto diff = read_doubles(f, "/noise/bands/coupling_difference");
+  EXPECT_EQ(read_units(f, "/noise/bands/coupling_difference").substr(0, 2), "dB");
+  EXPECT_NE(read_units(f, "/noise/creep/g"), "(missing)");
+  EXPECT_NE(read_units(f, "/noise/quasi_steady/g"), "(missing)");
+  EXPECT_EQ(read_units(f, "/noise/kalker/force"), "(missing)");
+  H5Fclose(f);
+  ASSERT_EQ(uncoupled.size(), coupled.size());
+  ASSERT_EQ(quasi.size(), coupled.size());
+  ASSERT_EQ(diff.size(), coupled.size());
+  double dy = 1e9, dq = 0.0;
+  for (size_t i = 0; i < coupled.size(); ++i) {
+    EXPECT_NEAR(diff[i], coupled[i] - uncoupled[i], 1e-12);
+    if (i % 4 == 2) dy = std::min(dy, diff[i]), dq = std::max(dq, std::abs(coupled[i] - quasi[i]));
+  }
+  std::printf("coupling raises Fy by at least %.1f dB per band; NSS vs quasi-steady Fy within %.2f dB\n", dy, dq);
+  EXPECT_GT(dy, 10.0);
+  EXPECT_LT(dq, dy);
+}
+
+TEST(NoiseCommand, DeprecatedCompareKalkerIsAnAliasAndMayNotContradict) {
+  // the curve case without its noise.compare line (an older case file)
+  const fs::path old_case = temp_dir() / "old_curve_300m.toml";
+  {
+    std::ifstream in(curve_case());
+    std::ofstream o(old_case);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("compare", 0) != 0) o << line << "\n";
+  }
+  const std::string base = "noise " + old_case.string() + " --set noise.points_per_band=4 --set track.support=continuous "
+                           "--set noise.band_max=500.0 ";
+  const fs::path out = temp_dir() / "noise_alias.h5";
+  const Invocation r = run(base + "--set noise.compare_kalker=yes -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("deprecated"), std::string::npos) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_NE(read_units(f, "/noise/kalker/force"), "(missing)");
+  EXPECT_EQ(read_units(f, "/noise/quasi_steady/force"), "(missing)");
+  H5Fclose(f);
+  const Invocation bad = run(base + "--set noise.compare_kalker=yes --set noise.compare=none -o " +
+                             (temp_dir() / "noise_bad.h5").string());
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("noise.compare_kalker"), std::string::npos) << bad.output;
+}
+
+// The profile curve case: the contact state the loop ran on is written under /noise/contact with
+// units (two_point an integer flag), the summary line names the contact and the two-point state,
+// and [wheelset] keys outside the multibody input are an input error naming the key.
+TEST(NoiseCommand, WritesTheCurveContactState) {
+  const fs::path out = temp_dir() / "noise_contact.h5";
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
+                           "--set track.support=continuous --set noise.compare=\"none\" -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("two-point"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("on the wheel at"), std::string::npos) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const char* name : {"/noise/contact/position_wheel", "/noise/contact/position_rail", "/noise/contact/rolling_radius"})
+    EXPECT_EQ(read_units(f, name).substr(0, 1), "m") << name;
+  EXPECT_EQ(read_units(f, "/noise/contact/angle"), "rad");
+  EXPECT_EQ(read_units(f, "/noise/contact/normal_force"), "N");
+  EXPECT_EQ(read_units(f, "/noise/contact/flange_normal_force"), "N");
+  EXPECT_EQ(read_units(f, "/noise/contact/creepage"), "-, -, rad/m");
+  EXPECT_EQ(read_units(f, "/noise/contact/two_point"), "-");
+  const hid_t set = H5Dopen2(f, "/noise/contact/two_point", H5P_DEFAULT);
+  ASSERT_GE(set, 0);
+  const hid_t type = H5Dget_type(set);
+  EXPECT_EQ(H5Tget_class(type), H5T_INTEGER);
+  int two_point = -1;
+  H5Dread(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &two_point);
+  H5Tclose(type), H5Dclose(set);
+  const auto creepage = read_doubles(f, "/noise/contact/creepage");
+  const auto steady = read_doubles(f, "/steady/creepage");
+  const auto normal = read_doubles(f, "/noise/contact/normal_force");
+  const auto force = read_doubles(f, "/normal/force");
+  const auto flange = read_doubles(f, "/noise/contact/flange_normal_force");
+  H5Fclose(f);
+  EXPECT_EQ(two_point, 1);
+  EXPECT_GT(flange[0], 0.0);
+  ASSERT_EQ(creepage.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(creepage[i], steady[i]) << "the loop ran on the state's creepages";
+  EXPECT_NEAR(force[0], normal[0], 1e-6 * normal[0]) << "the patch carries the state's normal force";
+
+  const Invocation bad = run("noise " + curve_case() + " --set wheelset.yaw=0.002 -o " + (temp_dir() / "bad.h5").string());
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("wheelset.yaw"), std::string::npos) << bad.output;
 }
 
 TEST(NoiseCommand, BandsAboveTheGridsNyquistLimitAreAnInputError) {

@@ -84,3 +84,41 @@ TEST(NormalProblem, PatchTouchingTheGridBorderIsRejected) {
   const Grid g = Grid::around_ellipse(20, 16, 7.18e-3, 5.29e-3, 0.9);  // smaller than the patch
   EXPECT_THROW(solve_patch(g, kSteel, quadratic_distance(g, h.A, h.B), 98100), rollnoise::InputError);
 }
+
+TEST(NormalProblem, LoadSensitivityIsTheDiscreteDerivativeAndApproachesHertz) {
+  // (N1) against central differences of the discrete normal solver (no element enters or leaves
+  // the area for a 1e-6 load step), and against Hertz: k_N = 3N/(2 delta) and, at the centre,
+  // dpn/dN = p0/(3N) (the N-derivative of p0 sqrt(1 - rho^2), p0, a, b ~ N^(1/3)).
+  const Material steel{210e9, 0.28};
+  const double N = 98100;
+  const HertzContact hz = hertz_from_semi_axes(7.18e-3, 5.29e-3, N, steel);
+  for (int n : {30, 60}) {
+    const Grid g = Grid::around_ellipse(n + 1, n + 1, hz.a, hz.b, 1.1);  // odd: an element at the centre
+    const GridField h = quadratic_distance(g, hz.A, hz.B);
+    const ContactPatch p = solve_patch(g, steel, h, N);
+    const HalfSpaceOperator op(p.influence, Problem::Normal);
+    const NormalLoadSensitivity s = normal_load_sensitivity(g, op, p.normal);
+    const double dN = 1e-6 * N;
+    const ContactPatch pp = solve_patch(g, steel, h, N + dN), pm = solve_patch(g, steel, h, N - dN);
+    ASSERT_EQ(pp.normal.contact_elements(), p.normal.contact_elements());
+    ASSERT_EQ(pm.normal.contact_elements(), p.normal.contact_elements());
+    double worst = 0.0, peak = 0.0;
+    for (int k = 0; k < g.size(); ++k) {
+      const double fd = (pp.normal.pn[k] - pm.normal.pn[k]) / (2 * dN);
+      worst = std::max(worst, std::abs(fd - s.dpn_dN[k]));
+      peak = std::max(peak, std::abs(s.dpn_dN[k]));
+    }
+    const double k_fd = 2 * dN / (pp.normal.approach - pm.normal.approach);
+    const double centre = s.dpn_dN[g.index(n / 2, n / 2)];
+    const double err = std::abs(s.stiffness() / hz.normal_stiffness() - 1.0);
+    std::printf("%d x %d: k_N = %.5g N/m (finite difference %.5g, Hertz %.5g), dpn/dN at the centre %.5g "
+                "(Hertz %.5g), max |dpn/dN - fd| = %.1e of %.3g\n",
+                n + 1, n + 1, s.stiffness(), k_fd, hz.normal_stiffness(), centre, hz.p0 / (3 * N), worst, peak);
+    EXPECT_LT(worst, 1e-5 * peak);
+    EXPECT_NEAR(s.stiffness(), k_fd, 1e-5 * k_fd);
+    // within 0.2 % of Hertz on both grids (measured 1.4e-4 and 6.4e-4: the set of elements in
+    // contact changes with the grid, so the error does not fall monotonically)
+    EXPECT_LT(err, 2e-3);
+    EXPECT_NEAR(centre, hz.p0 / (3 * N), 0.03 * hz.p0 / (3 * N));
+  }
+}

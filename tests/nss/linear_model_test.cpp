@@ -336,19 +336,21 @@ TEST(LinearModel, TallSkinnyKernelsAgreeWithEigen) {
     Eigen::MatrixXd K = A * A.transpose() + n * Eigen::MatrixXd::Identity(n, n);
     const Eigen::MatrixXd K_copy = K;
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(K);
-    for (int cols : {1, 2, 3, 5}) {
+    for (int cols : {1, 2, 3, 4, 5, 8}) {
       const Eigen::MatrixXd B = Eigen::MatrixXd::Random(n, cols);
       Eigen::MatrixXd X = B;
       linalg::cholesky_solve_in_place(K, X);
       EXPECT_LT((K_copy * X - B).norm(), 1e-12 * B.norm() * K_copy.norm() / n) << n << " x " << cols;
     }
-    const Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, 11), X = Eigen::MatrixXd::Random(n, 3);
-    for (int c : {0, 3, 4, 7, 11}) {
-      const Eigen::MatrixXd C = linalg::transposed_product3(V, c, X);
-      EXPECT_LT((C - V.leftCols(c).transpose() * X).norm(), 1e-13 * (1 + C.norm()));
-      Eigen::MatrixXd Y = X;
-      linalg::subtract_product3(V, n, c, C, Y);
-      EXPECT_LT((Y - (X - V.leftCols(c) * C)).norm(), 1e-13 * (1 + Y.norm()));
+    for (int k : {1, 3, 4}) {  // block sizes: 3 creepage inputs, plus the normal load
+      const Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, 11), X = Eigen::MatrixXd::Random(n, k);
+      for (int c : {0, 3, 4, 7, 11}) {
+        const Eigen::MatrixXd C = linalg::transposed_product(V, c, X);
+        EXPECT_LT((C - V.leftCols(c).transpose() * X).norm(), 1e-13 * (1 + C.norm()));
+        Eigen::MatrixXd Y = X;
+        linalg::subtract_product(V, n, c, C, Y);
+        EXPECT_LT((Y - (X - V.leftCols(c) * C)).norm(), 1e-13 * (1 + Y.norm()));
+      }
     }
   }
 }

@@ -1,0 +1,56 @@
+#include "noise/loop_variants.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace rollnoise::noise {
+namespace {
+
+// alpha_c of one contact per frequency; g = 0 when `coupling` is off or the contact has none.
+std::vector<Receptance4> receptances(const StructuralReceptances& s, const LoopVariantsInput& in,
+                                     const ContactCoefficients& c, bool coupling) {
+  if (c.creep.size() != s.frequency.size() ||
+      (!c.load.empty() && c.load.size() != s.frequency.size()))
+    throw InputError("frequency",
+                     "noise loop: one creep matrix (and load vector) per frequency is needed");
+  if (coupling && !c.load.empty())
+    return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep, c.load);
+  return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep);
+}
+
+}  // namespace
+
+ContactCoefficients constant_coefficients(const Eigen::Matrix3cd& creep,
+                                          const LoadCoefficients& load, std::size_t n) {
+  return {std::vector<Eigen::Matrix3cd>(n, creep), std::vector<LoadCoefficients>(n, load)};
+}
+
+ContactCoefficients quasi_steady_coefficients(const Eigen::Matrix3cd& f0,
+                                              const LoadCoefficients& g0, std::size_t n) {
+  if (f0.imag().norm() > 1e-8 * f0.norm() || g0.imag().norm() > 1e-8 * g0.norm())
+    throw NumericalError("quasi-steady contact: f(0) or g(0) is not real");
+  return constant_coefficients(f0.real().cast<cdouble>(), g0.real().cast<cdouble>(), n);
+}
+
+LoopVariants solve_loop_variants(const StructuralReceptances& s, const LoopVariantsInput& in) {
+  LoopVariants v;
+  v.main = solve_loop(s, receptances(s, in, in.model, in.normal_coupling), in.options);
+  if (in.normal_coupling && !in.model.load.empty())
+    v.uncoupled = solve_loop(s, receptances(s, in, in.model, false), in.options);
+  if (!in.baseline.empty())
+    v.baseline = solve_loop(s, receptances(s, in, in.baseline, in.normal_coupling), in.options);
+  return v;
+}
+
+std::vector<std::array<double, 4>> force_level_difference(const BandLevels& a,
+                                                          const BandLevels& b) {
+  if (a.centre != b.centre)
+    throw InputError("noise.band_min", "level difference of different bands");
+  std::vector<std::array<double, 4>> d(a.centre.size());
+  for (std::size_t i = 0; i < d.size(); ++i)
+    for (int j = 0; j < 4; ++j) d[i][j] = a.force_level[i][j] - b.force_level[i][j];
+  return d;
+}
+
+}  // namespace rollnoise::noise
