@@ -7,7 +7,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "core/errors.hpp"
 #include "contact/forces.hpp"
+#include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
 #include "contact/transient_rolling.hpp"
 #include "io/contact_case.hpp"
@@ -35,6 +37,16 @@ int run_transient(const CommonOptions& o) {
   // only when the load varies (transient_rolling.hpp)
   const std::vector<double> load = io::normal_load_series(reader, history, cc.normal_force, dt, steps);
   const bool varying_load = history.has_normal_variation();
+  if (varying_load) {  // the contact area at the largest load must fit the grid: check before running
+    const double n_max = *std::max_element(load.begin(), load.end());
+    try {
+      contact::solve_patch(cc.grid, cc.material, patch.undeformed_distance, n_max, cc.backend, cc.normal);
+    } catch (const InputError& e) {
+      reader.fail(history.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file"
+                                                                            : "excitation.normal_amplitude",
+                  "at the largest normal load " + std::to_string(n_max) + " N: " + e.what());
+    }
+  }
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);

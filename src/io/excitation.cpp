@@ -76,7 +76,8 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
     v.push_back({b, c, d});
     if (fifth) {
       // linear interpolation between positive loads stays positive: the samples suffice
-      check_positive_load(r, "excitation.file", r.real("contact.normal_force") + e, " at " + at);
+      check_positive_load(r, "excitation.file", r.real("contact.normal_force") + e,
+                          " at " + file.string() + ":" + std::to_string(row));
       dn.push_back(e);
     }
   }

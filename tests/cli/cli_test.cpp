@@ -504,3 +504,85 @@ TEST(Program, KeysListsTheSchemaWithDefaults) {
   EXPECT_NE(r.output.find("spin_offset"), std::string::npos);
   EXPECT_NE(r.output.find("[creepage]"), std::string::npos);
 }
+
+TEST(TransientCommand, NormalAmplitudeIsWrittenAsTheHarmonicNormalForceHistory) {
+  const fs::path out = temp_dir() / "tr_normal.h5";
+  const Invocation r = run("transient " + paper_case() + " -q --set grid.nx=20 --set grid.ny=15 "
+                           "--set excitation.normal_amplitude=981 --set excitation.normal_phase=30 "
+                           "--set excitation.frequency=1000 --set transient.duration=0.002 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  EXPECT_EQ(read_units(f, "/transient/normal_force"), "N");
+  EXPECT_EQ(read_units(f, "/transient/excitation/normal_amplitude"), "N");
+  const auto t = read_doubles(f, "/transient/time"), N = read_doubles(f, "/transient/normal_force");
+  const auto force = read_doubles(f, "/transient/force");
+  H5Fclose(f);
+  ASSERT_EQ(N.size(), t.size());
+  ASSERT_GT(t.size(), 20u);
+  for (size_t k = 0; k < t.size(); ++k)
+    EXPECT_NEAR(N[k], 98100 + 981 * std::cos(2 * M_PI * 1000 * t[k] + M_PI / 6), 1e-9) << "t = " << t[k];
+  // the load reaches the tractions: Fx differs from a run at constant load
+  const fs::path out0 = temp_dir() / "tr_constant.h5";
+  ASSERT_EQ(run("transient " + paper_case() + " -q --set grid.nx=20 --set grid.ny=15 "
+                "--set transient.duration=0.002 -o " + out0.string()).status, 0);
+  const hid_t f0 = H5Fopen(out0.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const auto N0 = read_doubles(f0, "/transient/normal_force"), force0 = read_doubles(f0, "/transient/force");
+  H5Fclose(f0);
+  for (double v : N0) EXPECT_EQ(v, 98100.0) << "written, constant, without a variation";
+  double d = 0;
+  for (size_t i = 0; i < force.size(); i += 3) d = std::max(d, std::abs(force[i] - force0[i]));
+  EXPECT_GT(d, 1.0);
+}
+
+namespace {
+
+struct BadLoad {
+  std::string name, args, csv, key;
+};
+
+class BadNormalLoadTest : public ::testing::TestWithParam<BadLoad> {};
+
+}  // namespace
+
+TEST_P(BadNormalLoadTest, ExitsWithStatus2NamingTheKey) {
+  const BadLoad& b = GetParam();
+  const fs::path dir = temp_dir();
+  std::string args = b.args;
+  if (!b.csv.empty()) {
+    std::ofstream(dir / (b.name + ".csv")) << b.csv;
+    args += " --set excitation.type=csv --set excitation.file=" + (dir / (b.name + ".csv")).string();
+  }
+  const fs::path out = dir / (b.name + ".h5");
+  const Invocation r = run("transient " + paper_case() + " --set grid.nx=20 --set grid.ny=15 " + args + " -o " +
+                           out.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(b.key), std::string::npos) << "message must name '" << b.key << "': " << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadNormalLoadTest,
+    ::testing::Values(
+        BadLoad{"amplitude_above_mean", "--set excitation.normal_amplitude=-98100", "", "excitation.normal_amplitude"},
+        BadLoad{"nan_amplitude", "--set excitation.normal_amplitude=nan", "", "excitation.normal_amplitude"},
+        BadLoad{"infinite_phase", "--set excitation.normal_amplitude=10 --set excitation.normal_phase=inf", "",
+                "excitation.normal_phase"},
+        // 1000 frequencies of 500 N with random phases: the sum reaches -98.1 kN within 2 ms
+        BadLoad{"multiharmonic_negative",
+                "--set excitation.type=multiharmonic --set excitation.normal_amplitude=5000 "
+                "--set transient.duration=0.002",
+                "", "excitation.normal_amplitude"},
+        BadLoad{"csv_negative_total", "", "t,xi_x,xi_y,phi,dN\n0,0.001,0,0,0\n0.001,0.001,0,0,-99000\n",
+                "excitation.file"},
+        BadLoad{"csv_nan", "", "0,0.001,0,0,0\n0.001,0.001,0,0,nan\n", "excitation.file"},
+        BadLoad{"csv_mixed_columns", "", "0,0.001,0,0,0\n0.001,0.001,0,0\n", "excitation.file"},
+        BadLoad{"grid_too_small", "--set excitation.normal_amplitude=90000", "", "excitation.normal_amplitude"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(ValidateCommand, NormalLoadVariationIsRejectedUntilTheLinearModelHasIt) {
+  const Invocation r = run("validate " + paper_case() + " --set grid.nx=20 --set grid.ny=15 "
+                           "--set excitation.normal_amplitude=981 -o " + (temp_dir() / "v_normal.h5").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("excitation.normal_amplitude"), std::string::npos) << r.output;
+}
