@@ -81,7 +81,8 @@ void check_excitation_resolved(const io::CaseReader& r, const contact::CreepageH
   // The linear model has no normal-load input yet (g(w) of linear_model.hpp): a normal-load
   // variation would be ignored by it and compared against a reference that has it.
   if (h.has_normal_variation())
-    r.fail(h.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file" : "excitation.normal_amplitude",
+    r.fail(h.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file"
+                                                               : "excitation.normal_amplitude",
            "a normal-load variation is not yet supported by response/validate (only by transient)");
   for (double f : h.frequencies())
     if (f > m.nyquist_frequency())
