@@ -7,11 +7,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "core/errors.hpp"
 #include "contact/forces.hpp"
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
 #include "contact/transient_rolling.hpp"
+#include "core/errors.hpp"
 #include "io/contact_case.hpp"
 #include "io/contact_output.hpp"
 #include "io/excitation.hpp"
@@ -35,15 +35,19 @@ int run_transient(const CommonOptions& o) {
 
   // total normal load of every step (checked positive); the normal problem is re-solved per step
   // only when the load varies (transient_rolling.hpp)
-  const std::vector<double> load = io::normal_load_series(reader, history, cc.normal_force, dt, steps);
+  const std::vector<double> load =
+      io::normal_load_series(reader, history, cc.normal_force, dt, steps);
   const bool varying_load = history.has_normal_variation();
-  if (varying_load) {  // the contact area at the largest load must fit the grid: check before running
+  if (varying_load) {  // the contact area at the largest load must fit the grid: check before
+                       // running
     const double n_max = *std::max_element(load.begin(), load.end());
     try {
-      contact::solve_patch(cc.grid, cc.material, patch.undeformed_distance, n_max, cc.backend, cc.normal);
+      contact::solve_patch(cc.grid, cc.material, patch.undeformed_distance, n_max, cc.backend,
+                           cc.normal);
     } catch (const InputError& e) {
-      reader.fail(history.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file"
-                                                                            : "excitation.normal_amplitude",
+      reader.fail(history.kind() == contact::CreepageHistory::Kind::samples
+                      ? "excitation.file"
+                      : "excitation.normal_amplitude",
                   "at the largest normal load " + std::to_string(n_max) + " N: " + e.what());
     }
   }
@@ -56,7 +60,8 @@ int run_transient(const CommonOptions& o) {
 
   contact::TransientRolling rolling(patch.influence, patch.normal.pn, cc.mu, cc.speed, cc.spin_offset,
                                     cc.backend, cc.tangential);
-  if (varying_load) rolling.set_normal_problem(patch.undeformed_distance, cc.normal_force, cc.normal);
+  if (varying_load)
+    rolling.set_normal_problem(patch.undeformed_distance, cc.normal_force, cc.normal);
   contact::TangentialSolution state;
   if (from_steady) {
     state = contact::solve_steady_rolling(patch.influence, patch.normal.pn, cc.steady_input(), cc.tangential);
@@ -75,8 +80,10 @@ int run_transient(const CommonOptions& o) {
               from_steady ? "steady state at the mean creepage" : "zero tractions");
   if (varying_load) {
     const auto [lo, hi] = std::minmax_element(load.begin(), load.end());
-    std::printf("  normal load %.6g N varies in [%.6g, %.6g] N: the normal problem is solved at every step\n",
-                cc.normal_force, *lo, *hi);
+    std::printf(
+        "  normal load %.6g N varies in [%.6g, %.6g] N: the normal problem is solved at every "
+        "step\n",
+        cc.normal_force, *lo, *hi);
   }
 
   std::vector<double> time, creep, force;
@@ -123,15 +130,21 @@ int run_transient(const CommonOptions& o) {
   io::write_excitation(w, "/transient/excitation", history);
   w.commit();
   const std::size_t e = 3 * (nt - 1);
-  std::printf("  final: Fx = %.6g N, Fy = %.6g N, Mz = %.6g N m; %.2f ms per step, %.1f Newton "
-              "and %.1f GMRES iterations per step\n",
-              force[e], force[e + 1], force[e + 2], ms / steps, double(newton) / steps, double(gmres) / steps);
+  std::printf(
+      "  final: Fx = %.6g N, Fy = %.6g N, Mz = %.6g N m; %.2f ms per step, %.1f Newton "
+      "and %.1f GMRES iterations per step\n",
+      force[e], force[e + 1], force[e + 2], ms / steps, double(newton) / steps,
+      double(gmres) / steps);
   if (varying_load)
-    std::printf("  normal problem: %d solves, %.1f Polonsky-Keer iterations and %.2f ms per solve (included "
-                "above); %d LU factorisations of the tangential Jacobian\n",
-                rolling.normal_solves(),
-                rolling.normal_solves() ? double(rolling.normal_iterations()) / rolling.normal_solves() : 0.0,
-                rolling.normal_solves() ? 1e3 * rolling.normal_seconds() / rolling.normal_solves() : 0.0, factorisations);
+    std::printf(
+        "  normal problem: %d solves, %.1f Polonsky-Keer iterations and %.2f ms per solve "
+        "(included "
+        "above); %d LU factorisations of the tangential Jacobian\n",
+        rolling.normal_solves(),
+        rolling.normal_solves() ? double(rolling.normal_iterations()) / rolling.normal_solves()
+                                : 0.0,
+        rolling.normal_solves() ? 1e3 * rolling.normal_seconds() / rolling.normal_solves() : 0.0,
+        factorisations);
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

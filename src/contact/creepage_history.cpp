@@ -20,7 +20,8 @@ CreepageHistory CreepageHistory::harmonic(const Creepage& mean,
                                           const std::array<double, 3>& phase,
                                           double normal_amplitude, double normal_phase) {
   if (!(frequency > 0.0)) throw InputError("excitation.frequency", "must be positive");
-  if (!std::isfinite(normal_amplitude)) throw InputError("excitation.normal_amplitude", "must be finite");
+  if (!std::isfinite(normal_amplitude))
+    throw InputError("excitation.normal_amplitude", "must be finite");
   if (!std::isfinite(normal_phase)) throw InputError("excitation.normal_phase", "must be finite");
   CreepageHistory h;
   h.kind_ = Kind::harmonic;
@@ -34,13 +35,14 @@ CreepageHistory CreepageHistory::harmonic(const Creepage& mean,
 }
 
 CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
-                                               const std::array<double, 3>& amplitude,
-                                               double f_min, double f_max, int count,
-                                               std::uint64_t seed, double normal_amplitude) {
+                                               const std::array<double, 3>& amplitude, double f_min,
+                                               double f_max, int count, std::uint64_t seed,
+                                               double normal_amplitude) {
   if (!(f_min > 0.0)) throw InputError("excitation.f_min", "must be positive");
   if (!(f_max >= f_min)) throw InputError("excitation.f_max", "must not be below excitation.f_min");
   if (count < 1) throw InputError("excitation.count", "must be at least 1");
-  if (!std::isfinite(normal_amplitude)) throw InputError("excitation.normal_amplitude", "must be finite");
+  if (!std::isfinite(normal_amplitude))
+    throw InputError("excitation.normal_amplitude", "must be finite");
   CreepageHistory h;
   h.kind_ = Kind::multiharmonic;
   h.mean_ = mean;
@@ -69,7 +71,8 @@ CreepageHistory CreepageHistory::samples(const Creepage& mean, std::vector<doubl
     throw InputError("excitation.file", "the normal-load column needs one value per time");
   for (size_t i = 0; i < normal.size(); ++i)
     if (!std::isfinite(normal[i]))
-      throw InputError("excitation.file", "normal-load variation not finite (row " + std::to_string(i + 1) + ")");
+      throw InputError("excitation.file",
+                       "normal-load variation not finite (row " + std::to_string(i + 1) + ")");
   for (size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
       throw InputError("excitation.file", "times must increase (row " + std::to_string(i + 1) + ")");
@@ -135,7 +138,8 @@ double CreepageHistory::normal_variation(double t) const {
 
 bool CreepageHistory::has_normal_variation() const {
   if (kind_ == Kind::samples)
-    return std::any_of(normal_values_.begin(), normal_values_.end(), [](double v) { return v != 0.0; });
+    return std::any_of(normal_values_.begin(), normal_values_.end(),
+                       [](double v) { return v != 0.0; });
   return kind_ != Kind::constant && normal_amp_ != 0.0;
 }
 

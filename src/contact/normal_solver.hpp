@@ -36,8 +36,8 @@ struct NormalSolution {
 
 /// Solve the normal problem for the undeformed distance `h` (m, without the approach; larger is
 /// further apart) and the total normal force (N). `op` must be the Normal operator of the grid.
-/// `start` (optional): a start pressure (e.g. the solution at a nearby load), rescaled to the force;
-/// without it, a uniform pressure. Throws NumericalError when it does not converge.
+/// `start` (optional): a start pressure (e.g. the solution at a nearby load), rescaled to the
+/// force; without it, a uniform pressure. Throws NumericalError when it does not converge.
 NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const GridField& h,
                             double normal_force, const NormalSolverSettings& settings = {},
                             const GridField* start = nullptr);

@@ -21,8 +21,9 @@ void check_inside_potential_area(const Grid& g, const GridField& pn, const std::
       const bool border = ix == 0 || iy == 0 || ix == g.nx - 1 || iy == g.ny - 1;
       if (border && pn[g.index(ix, iy)] > 0.0) {
         std::ostringstream msg;
-        msg << "the contact area" << context << " reaches the border of the potential contact area (element ix="
-            << ix << ", iy=" << iy << "): enlarge the grid (grid.scale or its extent)";
+        msg << "the contact area" << context
+            << " reaches the border of the potential contact area (element ix=" << ix
+            << ", iy=" << iy << "): enlarge the grid (grid.scale or its extent)";
         throw InputError("grid", msg.str());
       }
     }

@@ -24,8 +24,8 @@ struct ContactPatch {
 /// Undeformed distance h = A x^2 + B y^2 of a Hertzian contact at the element centres.
 GridField quadratic_distance(const Grid& g, double A, double B);
 
-/// InputError (key "grid") if the pressure pn reaches the border of the grid, where the contact area
-/// would be cut off; `context` (e.g. " at N = 1e5 N") completes the message.
+/// InputError (key "grid") if the pressure pn reaches the border of the grid, where the contact
+/// area would be cut off; `context` (e.g. " at N = 1e5 N") completes the message.
 void check_inside_potential_area(const Grid& g, const GridField& pn, const std::string& context);
 
 /// Solve the normal problem for the undeformed distance h and load N on the grid.

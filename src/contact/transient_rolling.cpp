@@ -86,7 +86,8 @@ void TransientRolling::set_normal_problem(const GridField& h, double normal_forc
 }
 
 void TransientRolling::solve_normal_load(double N) {
-  if (!normal_op_) throw std::logic_error("TransientRolling: a normal load needs set_normal_problem first");
+  if (!normal_op_)
+    throw std::logic_error("TransientRolling: a normal load needs set_normal_problem first");
   if (!(N > 0.0) || !std::isfinite(N)) {
     std::ostringstream m;
     m << "the total normal load must stay positive and finite, got " << N << " N";

@@ -65,7 +65,8 @@ class TransientRolling {
 
   /// Allow a varying normal load: `h` the undeformed distance of the patch (without the approach,
   /// ContactPatch::undeformed_distance) and `normal_force` the load the constructor's pn solves.
-  void set_normal_problem(const GridField& h, double normal_force, const NormalSolverSettings& settings = {});
+  void set_normal_problem(const GridField& h, double normal_force,
+                          const NormalSolverSettings& settings = {});
   /// Advance one step with the creepage and the total normal load N (N > 0) of the new time. The
   /// same as step(c) if N is the load of the last step. InputError (key "grid") if the contact
   /// area at N reaches the border of the grid.
@@ -97,8 +98,8 @@ class TransientRolling {
   double normal_force_previous_ = 0.0;
   NormalSolverSettings normal_settings_;
   double normal_force_ = 0.0;
-  GridField ever_in_contact_;     // 1 at the elements in contact at any step so far, else 0
-  std::vector<int> elements_;     // those elements in sweep order: the Newton unknowns
+  GridField ever_in_contact_;  // 1 at the elements in contact at any step so far, else 0
+  std::vector<int> elements_;  // those elements in sweep order: the Newton unknowns
   int normal_solves_ = 0, normal_iterations_ = 0;
   double normal_seconds_ = 0.0;
 };

@@ -12,10 +12,11 @@ namespace rollnoise::io {
 namespace {
 
 // The total load N_mean + dN must stay positive: a patch without load has no contact.
-void check_positive_load(const CaseReader& r, const std::string& key, double total, const std::string& where) {
+void check_positive_load(const CaseReader& r, const std::string& key, double total,
+                         const std::string& where) {
   if (!(total > 0.0))
-    r.fail(key, "the total normal load contact.normal_force + variation is " + std::to_string(total) + " N" +
-                    where + "; it must stay positive");
+    r.fail(key, "the total normal load contact.normal_force + variation is " +
+                    std::to_string(total) + " N" + where + "; it must stay positive");
 }
 
 }  // namespace
@@ -29,11 +30,12 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
     const auto ph = r.real3("excitation.phase");
     const double dN = r.real("excitation.normal_amplitude");
     if (dN != 0.0)  // the minimum of N_mean + dN cos(.) over all times
-      check_positive_load(r, "excitation.normal_amplitude", r.real("contact.normal_force") - std::abs(dN), " at its minimum");
-    return contact::CreepageHistory::harmonic(mean, r.real3("excitation.amplitude"),
-                                              r.real("excitation.frequency"),
-                                              {ph[0] * M_PI / 180, ph[1] * M_PI / 180, ph[2] * M_PI / 180},
-                                              dN, r.real("excitation.normal_phase") * M_PI / 180);
+      check_positive_load(r, "excitation.normal_amplitude",
+                          r.real("contact.normal_force") - std::abs(dN), " at its minimum");
+    return contact::CreepageHistory::harmonic(
+        mean, r.real3("excitation.amplitude"), r.real("excitation.frequency"),
+        {ph[0] * M_PI / 180, ph[1] * M_PI / 180, ph[2] * M_PI / 180}, dN,
+        r.real("excitation.normal_phase") * M_PI / 180);
   }
   if (type == "multiharmonic") {
     const double f0 = r.real("excitation.f_min"), f1 = r.real("excitation.f_max");
@@ -41,8 +43,10 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
     // The minimum over all times is not known in closed form: checked on the time steps of a run
     // (normal_load_series).
     return contact::CreepageHistory::multiharmonic(
-        mean, r.real3("excitation.amplitude"), f0, f1, static_cast<int>(r.integer("excitation.count")),
-        static_cast<std::uint64_t>(r.integer("excitation.seed")), r.real("excitation.normal_amplitude"));
+        mean, r.real3("excitation.amplitude"), f0, f1,
+        static_cast<int>(r.integer("excitation.count")),
+        static_cast<std::uint64_t>(r.integer("excitation.seed")),
+        r.real("excitation.normal_amplitude"));
   }
   // csv
   std::filesystem::path file = r.string("excitation.file");
@@ -69,8 +73,10 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
     const bool fifth = static_cast<bool>(is >> e);
     if (columns == 0) columns = fifth ? 5 : 4;
     if ((columns == 5) != fifth)
-      r.fail("excitation.file", at + "expected " + std::to_string(columns) + " columns as in the first data row");
-    if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d) || !std::isfinite(e))
+      r.fail("excitation.file",
+             at + "expected " + std::to_string(columns) + " columns as in the first data row");
+    if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d) ||
+        !std::isfinite(e))
       r.fail("excitation.file", at + "value not finite");
     t.push_back(a);
     v.push_back({b, c, d});
@@ -109,12 +115,14 @@ void write_excitation(Hdf5Writer& w, const std::string& group, const contact::Cr
 
 std::vector<double> normal_load_series(const CaseReader& r, const contact::CreepageHistory& h,
                                        double normal_mean, double dt, long steps) {
-  const std::string key =
-      h.kind() == contact::CreepageHistory::Kind::samples ? "excitation.file" : "excitation.normal_amplitude";
+  const std::string key = h.kind() == contact::CreepageHistory::Kind::samples
+                              ? "excitation.file"
+                              : "excitation.normal_amplitude";
   std::vector<double> N(steps + 1);
   for (long k = 0; k <= steps; ++k) {
     N[k] = normal_mean + h.normal_variation(k * dt);
-    if (!std::isfinite(N[k])) r.fail(key, "the normal load is not finite at t = " + std::to_string(k * dt) + " s");
+    if (!std::isfinite(N[k]))
+      r.fail(key, "the normal load is not finite at t = " + std::to_string(k * dt) + " s");
     check_positive_load(r, key, N[k], " at t = " + std::to_string(k * dt) + " s");
   }
   return N;

@@ -1,10 +1,11 @@
 // Creepage histories: paper Eqs. 31-32 and sampled series.
+#include "contact/creepage_history.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "contact/creepage_history.hpp"
 #include "core/errors.hpp"
 
 using namespace rollnoise::contact;
@@ -49,13 +50,15 @@ TEST(CreepageHistory, SamplesAreInterpolatedLinearlyAndHeldOutside) {
 }
 
 TEST(CreepageHistory, HarmonicNormalLoadIsAmplitudeCosineWithItsOwnPhase) {
-  const auto h = CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0, {}, 981.0, M_PI / 3);
+  const auto h =
+      CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0, {}, 981.0, M_PI / 3);
   EXPECT_TRUE(h.has_normal_variation());
   EXPECT_EQ(h.normal_amplitude(), 981.0);
   ASSERT_EQ(h.normal_phases().size(), 1u);
   for (double t : {0.0, 1.3e-4, 7.7e-4})
     EXPECT_NEAR(h.normal_variation(t), 981.0 * std::cos(2 * M_PI * 1000.0 * t + M_PI / 3), 1e-10);
-  EXPECT_FALSE(CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0).has_normal_variation());
+  EXPECT_FALSE(
+      CreepageHistory::harmonic({0.001, 0, 0}, {5e-5, 0, 0}, 1000.0).has_normal_variation());
   EXPECT_FALSE(CreepageHistory::constant({0.001, 0, 0}).has_normal_variation());
   EXPECT_EQ(CreepageHistory::constant({0.001, 0, 0}).normal_variation(1e-3), 0.0);
 }
@@ -63,25 +66,28 @@ TEST(CreepageHistory, HarmonicNormalLoadIsAmplitudeCosineWithItsOwnPhase) {
 TEST(CreepageHistory, MultiharmonicNormalPhasesFollowTheUnchangedCreepagePhasesOfTheSeed) {
   // The generator use documented in the header: 3 x count creepage phases, then count load phases.
   const int count = 50;
-  const auto h = CreepageHistory::multiharmonic({0.001, 0, 0}, {1e-6, 1e-6, 5e-6}, 100, 5000, count, 11, 200.0);
+  const auto h = CreepageHistory::multiharmonic({0.001, 0, 0}, {1e-6, 1e-6, 5e-6}, 100, 5000, count,
+                                                11, 200.0);
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0.0, 2.0 * M_PI);
   for (int j = 0; j < 3; ++j)
     for (int n = 0; n < count; ++n) ASSERT_EQ(h.phases()[j][n], U(rng)) << j << " " << n;
   for (int n = 0; n < count; ++n) ASSERT_EQ(h.normal_phases()[n], U(rng)) << n;
-  const auto without = CreepageHistory::multiharmonic({0.001, 0, 0}, {1e-6, 1e-6, 5e-6}, 100, 5000, count, 11);
+  const auto without =
+      CreepageHistory::multiharmonic({0.001, 0, 0}, {1e-6, 1e-6, 5e-6}, 100, 5000, count, 11);
   EXPECT_EQ(without.phases(), h.phases());
   EXPECT_EQ(without.at(3e-3).xi_x, h.at(3e-3).xi_x);
   EXPECT_FALSE(without.has_normal_variation());
   double sum = 0;
   const double t = 2.1e-3;
-  for (int n = 0; n < count; ++n) sum += std::cos(2 * M_PI * h.frequencies()[n] * t + h.normal_phases()[n]);
+  for (int n = 0; n < count; ++n)
+    sum += std::cos(2 * M_PI * h.frequencies()[n] * t + h.normal_phases()[n]);
   EXPECT_NEAR(h.normal_variation(t), 200.0 * sum, 1e-9);
 }
 
 TEST(CreepageHistory, SampledNormalLoadIsInterpolatedLikeTheCreepages) {
-  const auto h = CreepageHistory::samples({0, 0, 0}, {0.0, 1.0, 3.0}, {{0, 0, 0}, {1e-3, 0, 0}, {0, 0, 0}},
-                                          {0.0, 100.0, -300.0});
+  const auto h = CreepageHistory::samples(
+      {0, 0, 0}, {0.0, 1.0, 3.0}, {{0, 0, 0}, {1e-3, 0, 0}, {0, 0, 0}}, {0.0, 100.0, -300.0});
   EXPECT_TRUE(h.has_normal_variation());
   EXPECT_NEAR(h.normal_variation(0.5), 50.0, 1e-12);
   EXPECT_NEAR(h.normal_variation(2.0), -100.0, 1e-12);

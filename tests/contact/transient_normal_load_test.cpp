@@ -20,7 +20,9 @@ using namespace rollnoise::testing;
 
 namespace {
 
-const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
+const ContactPatch& coarse_patch() {
+  return paper_patch("coarse");
+}
 
 TransientRolling with_normal_load(const ContactPatch& patch) {
   TransientRolling r(patch.influence, patch.normal.pn, kMu, kSpeed, 0.0);
@@ -38,8 +40,10 @@ double max_abs(const GridField& f) {
 
 TEST(TransientNormalLoad, ConstantLoadThroughTheLoadPathIsBitIdenticalToTheOldPath) {
   const ContactPatch& patch = coarse_patch();
-  const auto history = CreepageHistory::harmonic({0.001, 0.001, -0.053}, {5e-5, 5e-5, 0.0027}, 1000.0);
-  const auto steady = solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, history.mean(), 0.0});
+  const auto history =
+      CreepageHistory::harmonic({0.001, 0.001, -0.053}, {5e-5, 5e-5, 0.0027}, 1000.0);
+  const auto steady =
+      solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, history.mean(), 0.0});
   TransientRolling old_path(patch.influence, patch.normal.pn, kMu, kSpeed, 0.0);
   TransientRolling new_path = with_normal_load(patch);
   old_path.set_tractions(steady.px, steady.py);
@@ -99,13 +103,17 @@ TEST(TransientNormalLoad, SlowLoadVariationInFullSlipKeepsTheSteadyForceToLoadRa
   // Poisson coupling A_xy, more at larger tractions): compare at the peak load with steady rolling
   // at that load, where the quasi-static transient must agree much more closely.
   const ContactPatch peak = solve_patch(patch.grid, kSteel, patch.undeformed_distance, n_peak);
-  const auto steady_peak = solve_steady_rolling(peak.influence, peak.normal.pn, {kMu, kSpeed, c, 0.0});
-  const double ratio_steady_peak = total_forces(peak.grid, steady_peak.px, steady_peak.py).Fx / n_peak;
-  std::printf("steady Fx/N = %.6f; 50 Hz load 1 +- 0.2 N: max |Fx(t)/N(t) / (Fx/N) - 1| = %.2e (steady at "
-              "%.4f N: %.2e); at that peak Fx/N differs from steady rolling at the peak load by %.2e; up to %d "
-              "elements in contact (%d at N)\n",
-              ratio, worst, n_peak / kN, ratio_steady_peak / ratio - 1, ratio_peak / ratio_steady_peak - 1,
-              elements_max, patch.normal.contact_elements());
+  const auto steady_peak =
+      solve_steady_rolling(peak.influence, peak.normal.pn, {kMu, kSpeed, c, 0.0});
+  const double ratio_steady_peak =
+      total_forces(peak.grid, steady_peak.px, steady_peak.py).Fx / n_peak;
+  std::printf(
+      "steady Fx/N = %.6f; 50 Hz load 1 +- 0.2 N: max |Fx(t)/N(t) / (Fx/N) - 1| = %.2e (steady at "
+      "%.4f N: %.2e); at that peak Fx/N differs from steady rolling at the peak load by %.2e; up "
+      "to %d "
+      "elements in contact (%d at N)\n",
+      ratio, worst, n_peak / kN, ratio_steady_peak / ratio - 1, ratio_peak / ratio_steady_peak - 1,
+      elements_max, patch.normal.contact_elements());
   EXPECT_GT(n_peak, 1.19 * kN);
   EXPECT_GT(elements_max, patch.normal.contact_elements()) << "elements entered the contact";
   EXPECT_LT(worst, 1e-4);  // measured 2.4e-5, the steady ratio's own change from N to 1.2 N
@@ -123,8 +131,10 @@ TEST_P(SteppedLoad, HeldLoadReachesTheSteadyStateAtTheNewLoad) {
   const ContactPatch& patch = coarse_patch();
   const ContactPatch patch1 = solve_patch(patch.grid, kSteel, patch.undeformed_distance, N1);
   const Creepage c{0.001, 0.001, -0.053};
-  const auto steady0 = solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, c, 0.0});
-  const auto steady1 = solve_steady_rolling(patch1.influence, patch1.normal.pn, {kMu, kSpeed, c, 0.0});
+  const auto steady0 =
+      solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, c, 0.0});
+  const auto steady1 =
+      solve_steady_rolling(patch1.influence, patch1.normal.pn, {kMu, kSpeed, c, 0.0});
   const TangentialForces fs = total_forces(patch.grid, steady1.px, steady1.py);
   TransientRolling rolling = with_normal_load(patch);
   rolling.set_tractions(steady0.px, steady0.py);
@@ -149,11 +159,13 @@ TEST_P(SteppedLoad, HeldLoadReachesTheSteadyStateAtTheNewLoad) {
   for (int k = 2; k <= 300; ++k) {
     const auto& s = rolling.step(c, N1);
     const TangentialForces f = total_forces(patch.grid, s.px, s.py);
-    err = std::max({std::abs(f.Fx / fs.Fx - 1), std::abs(f.Fy / fs.Fy - 1), std::abs(f.Mz / fs.Mz - 1)});
+    err = std::max(
+        {std::abs(f.Fx / fs.Fx - 1), std::abs(f.Fy / fs.Fy - 1), std::abs(f.Mz / fs.Mz - 1)});
   }
-  std::printf("load stepped by %+.0f %%: %d elements entered or left; after 10 contact lengths the "
-              "forces are within %.2e of steady rolling at the new load\n",
-              100 * GetParam(), changed, err);
+  std::printf(
+      "load stepped by %+.0f %%: %d elements entered or left; after 10 contact lengths the "
+      "forces are within %.2e of steady rolling at the new load\n",
+      100 * GetParam(), changed, err);
   EXPECT_GT(changed, 0);
   EXPECT_LT(err, 1e-6);
   EXPECT_EQ(rolling.normal_solves(), 1);
@@ -174,5 +186,6 @@ TEST(TransientNormalLoad, NonPositiveLoadIsAnInputErrorNamingTheKey) {
     }
   }
   TransientRolling without(patch.influence, patch.normal.pn, kMu, kSpeed, 0.0);
-  EXPECT_THROW(without.step({0.001, 0, 0}, 1.1 * kN), std::logic_error) << "needs set_normal_problem";
+  EXPECT_THROW(without.step({0.001, 0, 0}, 1.1 * kN), std::logic_error)
+      << "needs set_normal_problem";
 }
