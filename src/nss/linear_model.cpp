@@ -711,17 +711,9 @@ std::vector<LoadVector> LinearContactModel::normal_load_coefficients(const std::
   for (double f : frequencies) check_frequency(f);
   if (!has_normal_load_input()) return std::vector<LoadVector>(frequencies.size(), LoadVector::Zero());
   if (build_markov(max_contact_lengths)) return horner_load(frequencies);
-  // Hessenberg fallback: g = dN + L' (I - z N)^{-1} M0^{-1} (wN0 - z wN1)
-  reduce();
-  std::vector<LoadVector> out;
-  out.reserve(frequencies.size());
-  for (double f : frequencies) {
-    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
-    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.rightCols(2));
-    out.push_back(dN_.cast<std::complex<double>>() +
-                  Lhat_.transpose().cast<std::complex<double>>() * (X.col(0) - z * X.col(1)));
-  }
-  return out;
+  std::vector<LoadVector> g;
+  hessenberg_sweep(frequencies, nullptr, &g);
+  return g;
 }
 
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std::vector<double>& frequencies,
@@ -745,15 +737,24 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients_hessenberg(
     const std::vector<double>& frequencies) const {
   for (double f : frequencies) check_frequency(f);
+  std::vector<CreepMatrix> f;
+  hessenberg_sweep(frequencies, &f, nullptr);
+  return f;
+}
+
+void LinearContactModel::hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
+                                          std::vector<LoadVector>* g) const {
+  // (M0 - z M1)^{-1} = (I - z N)^{-1} M0^{-1}: f = -L' X(:, 0:3), g = dN + L' (X(:, 3) - z X(:, 4))
+  // with (I - z H) X = Q' M0^{-1} [W, wN0, wN1] (G2).
   reduce();
-  std::vector<CreepMatrix> out;
-  out.reserve(frequencies.size());
-  for (double f : frequencies) {
-    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
-    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.leftCols(3));
-    out.push_back(-(Lhat_.transpose().cast<std::complex<double>>() * X));
+  const int first = f ? 0 : 3, count = (f ? 3 : 0) + (g ? 2 : 0);
+  for (double fr : frequencies) {
+    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * fr * dt_);
+    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.middleCols(first, count));
+    const Eigen::MatrixXcd LX = Lhat_.transpose().cast<std::complex<double>>() * X;
+    if (f) f->push_back(-LX.leftCols(3));
+    if (g) g->push_back(dN_.cast<std::complex<double>>() + LX.col(count - 2) - z * LX.col(count - 1));
   }
-  return out;
 }
 
 Eigen::MatrixXd LinearContactModel::step_matrix_cholesky_factor() const {

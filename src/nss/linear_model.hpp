@@ -193,6 +193,9 @@ class LinearContactModel {
   void start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eigen::Vector3d& g0) const;
   std::vector<CreepMatrix> horner(const std::vector<double>& frequencies) const;
   std::vector<LoadVector> horner_load(const std::vector<double>& frequencies) const;
+  /// f and/or g by the Hessenberg form (either pointer may be null).
+  void hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
+                        std::vector<LoadVector>* g) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   int steps_per_contact_length_ = 1;
