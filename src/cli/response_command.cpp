@@ -214,7 +214,8 @@ int run_validate(const CommonOptions& o) {
   const auto& fr = h.frequencies();
   bool fitted = false;
   if (!fr.empty() && ta.size() > 2 * fr.size() + 1) {
-    double spacing = fr.size() > 1 ? fr[1] - fr[0] : 1.0 / (ta.back() - ta.front());
+    // several frequencies: the record must resolve their spacing; one: cover at least one period
+    const double spacing = fr.size() > 1 ? fr[1] - fr[0] : fr[0];
     if ((ta.back() - ta.front()) * spacing >= 1.0) {
       std::vector<double> amp_err, ph_err;
       for (int j = 0; j < 3; ++j) {
