@@ -12,8 +12,8 @@
 //  - Kalker's C11 in the full-adhesion limit (creepage 1e-6) against his table.
 // Errors are relative to the finest grid (for C11 to Kalker's table); the transient response is
 // also compared with the linear model's prediction -f(w) xi^ on the same grid (paper Eq. 28-30: the
-// linear model must agree with the unsteady solver to ~0.1 % at non-zero mean creepage, DESIGN.md
-// Sec. 3), a consistency check that should not depend on the grid. Prints the table with the
+// linear model must agree with the unsteady solver to ~0.1 % at non-zero mean creepage, measured
+// in the linear-model tests), a consistency check that should not depend on the grid. Prints the table with the
 // observed orders of convergence (observed_order: a fit that accounts for the finest grid's own
 // error) and writes it as CSV (postprocess/plot_bench.py draws it). The errors of f_jk at 1 kHz and
 // above and of the transient response are dominated by a half-step phase lead of the time
@@ -30,7 +30,7 @@
 // variation starts from zero (phase -90 deg, xi~ = amplitude sin(w t)) so the creepage does not
 // jump at t = 0. The start transient decays as the material passes through the contact (it carries
 // the memory of the tractions), by about 10x per contact length: the linear model's own recursion
-// (the discrete-time form M0 Q_k = M1 Q_{k-1} + W_k, DESIGN.md Sec. 3, started from rest like the
+// (the discrete-time form M0 Q_k = M1 Q_{k-1} + W_k, docs/conventions.md Sec. 3, started from rest like the
 // unsteady run), fitted over the same window, differs from its exact harmonic response -f(w) xi^
 // by 1.4e-2, 1.6e-3, 1.8e-4, 3.6e-6 and 1.2e-8 after 1, 2, 3, 5 and 8 contact lengths
 // (grids 10..34; printed as "fit window error"). After 5 it is far below the discretisation errors
@@ -254,7 +254,7 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   const double c11_table = noise::kalker_coefficients(base.a / base.b, base.material.nu).C11;
   // The half-step phase lead. The displacement difference (A p_k - A0 p_{k-1})/dt of paper Eq. 2 is
   // a one-step difference, centred at t_k - dt/2, while the creepage is taken at t_k (CONTACT's
-  // convention, DESIGN.md Sec. 3): the discrete response leads the grid-converged one by dt/2, a
+  // convention, docs/conventions.md Sec. 3): the discrete response leads the grid-converged one by dt/2, a
   // phase error of w dt/2 = pi f dx/V, first order in dx (10.9 deg at 1 kHz on 20x15, 2.6 deg on
   // 80x59; the phase of f11 at 1 kHz minus that shift is -85.3 +- 0.1 deg on all grids from 28x21
   // to 80x59 (-85.05 on 20x15), while the raw phase runs from -74.2 (20x15) to -82.6 deg (80x59)).

@@ -1,4 +1,4 @@
-// rollnoise noise: contact-force spectra from roughness for a train in a curve (DESIGN.md Sec. 4).
+// rollnoise noise: contact-force spectra from roughness for a train in a curve (docs/noise_loop.md).
 //
 //   1. mean creepages and contact position: with profiles the curve contact state
 //      (src/noise/curve_state.hpp: bogie estimate or multibody input, contact, loads, creepages),

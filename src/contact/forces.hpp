@@ -1,4 +1,4 @@
-// Total forces on body 1 (the wheel) from the tractions (DESIGN.md Sec. 2):
+// Total forces on body 1 (the wheel) from the tractions (docs/conventions.md Secs. 1-2):
 //   Fx = dx dy sum px,  Fy = dx dy sum py,  Mz = dx dy sum (x py - y px)  (about the grid origin).
 #pragma once
 

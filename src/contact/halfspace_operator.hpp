@@ -7,7 +7,7 @@
 // Auto picks Dense up to a size measured with bench/ (see README, "Benchmarks").
 //
 // `column_shift` = 1 gives the matrix A0 of the rolling step (Kalker 1990, Sec. 5.3;
-// DESIGN.md Sec. 2): the influence at x_I + dx of the previous position, A0(I,J) = A(di + 1, dj).
+// docs/conventions.md Secs. 1-2): the influence at x_I + dx of the previous position, A0(I,J) = A(di + 1, dj).
 #pragma once
 
 #include <functional>

@@ -1,5 +1,5 @@
 // Hertz's solution for two quasi-identical elastic bodies with an elliptic contact
-// (Johnson 1985, Contact Mechanics, Sec. 4.2, Eqs. 4.39-4.41; ../shared/DESIGN.md Sec. 2).
+// (Johnson 1985, Contact Mechanics, Sec. 4.2, Eqs. 4.39-4.41; docs/conventions.md Secs. 1-2).
 //
 // With semi-axes a (along x) and b (along y), eccentricity e^2 = 1 - (minor/major)^2 and the complete
 // elliptic integrals K(e), E(e) (GSL), the undeformed distance h = A x^2 + B y^2 and the load N give,

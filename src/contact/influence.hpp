@@ -1,5 +1,5 @@
 // Influence coefficients of the elastic half-space for piecewise-constant tractions on rectangular
-// elements (Kalker 1990, Sec. 5.2; CONTACT's INFLCF = 2; ../shared/DESIGN.md Sec. 2).
+// elements (Kalker 1990, Sec. 5.2; CONTACT's INFLCF = 2; docs/conventions.md Secs. 1-2).
 //
 // A unit uniform traction on element J produces at the centre of element I the displacement
 // difference (body 1 relative to body 2) of the two quasi-identical half-spaces

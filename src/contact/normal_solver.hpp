@@ -1,4 +1,4 @@
-// The discretised normal contact problem (Kalker 1990, Sec. 5.4; DESIGN.md Sec. 2):
+// The discretised normal contact problem (Kalker 1990, Sec. 5.4; docs/conventions.md Secs. 1-2):
 //
 //   find pn >= 0 and the approach delta with  e = h + A_zz pn - delta >= 0,  pn e = 0,
 //   sum(pn) dx dy = N,

@@ -1,5 +1,5 @@
 // The tangential problem of rolling contact with Coulomb friction on the grid (paper Eqs. 2-3,
-// DESIGN.md Sec. 2): creepages, element states, solutions, rigid slip and the element order.
+// docs/conventions.md Secs. 1-2): creepages, element states, solutions, rigid slip and the element order.
 //
 // The solvers live in coulomb_newton.hpp (both problems), steady_rolling.hpp and
 // transient_rolling.hpp; this header holds what they share.

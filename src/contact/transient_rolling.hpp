@@ -10,7 +10,7 @@
 // preconditioner, if any, carries over between steps. Element Gauss-Seidel (ConvexGS) also
 // converges here (A/dt is symmetric positive definite) but needed ~90 sweeps per step to 1e-12 on
 // the paper's grid (56 ms per step, against 2-3 ms now), so it was removed. The creepage of step k
-// is taken at t_k = k dt, the end of the step (CONTACT's convention, DESIGN.md Sec. 3).
+// is taken at t_k = k dt, the end of the step (CONTACT's convention, docs/conventions.md Sec. 3).
 //
 // Varying normal load N(t) (step(c, N_k), after set_normal_problem). At each step whose load
 // differs from the last one, the normal problem of the patch is solved for N_k (normal_solver.hpp,

@@ -9,7 +9,7 @@
 //   2: y  (lateral; force Fy)
 //   3: rotation about z (spin; moment Mz)
 //
-// (../shared/DESIGN.md Sec. 4). Each structure's receptance relates the displacement of that
+// (docs/noise_loop.md). Each structure's receptance relates the displacement of that
 // structure to the force applied *to that structure*, both along the same axes; the sign change
 // between the force on the wheel and the force on the rail belongs to the coupled loop.
 #pragma once

@@ -1,4 +1,4 @@
-// Writing the contact results (grid, normal problem, steady rolling) to HDF5 (INTERFACE.md).
+// Writing the contact results (grid, normal problem, steady rolling) to HDF5 (docs/conventions.md Sec. 4).
 #pragma once
 
 #include "contact/forces.hpp"

@@ -1,4 +1,4 @@
-// Results files in HDF5 with the layout of ../shared/INTERFACE.md.
+// Results files in HDF5 with the layout of docs/conventions.md Sec. 4.
 //
 // Every dataset carries a string attribute `units`; complex values use the compound type {r, i}
 // (what h5py and NumPy read as complex). The file is written as OUT.h5.partial and renamed to

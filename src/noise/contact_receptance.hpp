@@ -1,4 +1,4 @@
-// The contact receptance of the rolling-noise loop (../shared/DESIGN.md Sec. 4; docs/noise_loop.md
+// The contact receptance of the rolling-noise loop (docs/noise_loop.md; docs/noise_loop.md
 // Sec. 2): a 4x4 complex matrix in the contact frame, order (n, x, y, rotation about n) =
 // (z, x, y, rot z) of dynamics::Receptance4 when the contact angle is zero.
 //

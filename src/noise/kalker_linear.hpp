@@ -1,6 +1,6 @@
 // Kalker's linear theory of steady rolling contact (full adhesion, vanishing creepage) for elliptic
 // contact areas: creep coefficients for the noise loop and the curving estimate
-// (../shared/DESIGN.md Sec. 2; docs/noise_loop.md Sec. 3).
+// (docs/conventions.md Secs. 1-2; docs/noise_loop.md Sec. 3).
 //
 // Forces on the wheel (body 1), opposing the creepage, c = sqrt(a b), G the combined shear modulus:
 //

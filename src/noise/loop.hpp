@@ -1,4 +1,4 @@
-// The closed rolling-noise loop per frequency (../shared/DESIGN.md Sec. 4; docs/noise_loop.md).
+// The closed rolling-noise loop per frequency (docs/noise_loop.md; docs/noise_loop.md).
 //
 // Unknowns: the contact force variation on the wheel in the contact frame, F = (Fz, Fx, Fy, Mz)
 // (normal, longitudinal, lateral, spin moment; with a contact angle gamma the frame is the tilted
@@ -10,7 +10,7 @@
 //
 // with r the combined (effective) roughness, taken positive for a *depression* of the running
 // surfaces (a dip opens the undeformed gap by r; a bump of height h is r = -h). Only |F/r| enters
-// band levels, so this sign is a phase convention (the one of DESIGN.md Sec. 4).
+// band levels, so this sign is a phase convention (the one of docs/noise_loop.md).
 // Outputs: F per unit roughness (N/m, N m/m), and the velocities of the wheel's and the rail's
 // contact points, v_w = i omega alpha_w F and v_r = i omega alpha_r (-F), in the global frame
 // (z, x, y, rot z) (m/s and rad/s per m of roughness).

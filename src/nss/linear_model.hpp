@@ -1,5 +1,5 @@
 // The linear non-steady-state (NSS) tangential contact model (Baeza, Bruni, Giner-Navarro, Liu;
-// paper Eqs. 6-30; ../shared/DESIGN.md Sec. 3).
+// paper Eqs. 6-30; docs/conventions.md Sec. 3).
 //
 // Around a steady solution (p_bar, s_bar) at the mean creepage, with the adhesion and slip areas
 // frozen, small creepage variations xi~ e^{i w t} give
@@ -21,7 +21,7 @@
 // With Q = (p~ for adhesion, q for slip), P~ = B Q, S~ = C Q:
 //   M(z) Q = W~,  M(z) = M0 - z M1,  M0 = C - A B/dt,  M1 = -A0 B/dt.
 // (The paper prints "+" in Eqs. 14, 22, 24, which with its own Eqs. 9 and 11 gives -f; this sign
-// is the consistent one, checked against CONTACT: DESIGN.md Sec. 3.)
+// is the consistent one, checked against CONTACT: docs/conventions.md Sec. 3.)
 // Outputs F~x = dx dy U1' P~, F~y = dx dy U2' P~, M~z = dx dy Usp0' P~ with Usp0_e = (-y_e, x_e): the
 // spin offset belongs to the input only. Creep coefficients: F~ = -f xi~ (Eqs. 28-30), rows Fx, Fy,
 // Mz, columns xi_x, xi_y, phi.

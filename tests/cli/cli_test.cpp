@@ -1,4 +1,4 @@
-// The rollnoise program end to end: a steady run writes the INTERFACE.md layout with units, and bad
+// The rollnoise program end to end: a steady run writes the docs/conventions.md Sec. 4 layout with units, and bad
 // input gives exit status 2, a message naming the key, and no output file.
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -506,7 +506,7 @@ TEST(BenchCommand, RefinementTableShowsTheErrorsFallingTowardsTheFinestGrid) {
   }
   for (const char* name : {"t_transient_s", "transient_steps", "err_transient_vs_linear_rel"})
     for (double v : col(name)) EXPECT_TRUE(std::isfinite(v) && v >= 0) << name;
-  // the unsteady solver agrees with the linear model on every grid (DESIGN.md Sec. 3: 0.1 %)
+  // the unsteady solver agrees with the linear model on every grid (docs/conventions.md Sec. 3: 0.1 %)
   for (double v : col("err_transient_vs_linear_rel")) EXPECT_LT(v, 1e-3);
 }
 

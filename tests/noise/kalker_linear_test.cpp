@@ -134,7 +134,7 @@ TEST(KalkerTable, OutsideTheTableIsInputError) {
   EXPECT_THROW(rn::kalker_creep_matrix(0.0, 5e-3, 8e10, 0.28), rollnoise::InputError);
 }
 
-// DESIGN.md Sec. 2: Fx = -G c^2 C11 xi_x, Fy = -G c^2 C22 xi_y - G c^3 C23 phi,
+// docs/conventions.md Secs. 1-2: Fx = -G c^2 C11 xi_x, Fy = -G c^2 C22 xi_y - G c^3 C23 phi,
 // Mz = G c^3 C23 xi_y - G c^4 C33 phi, i.e. F = -f xi with f23 = -f32.
 TEST(KalkerCreepMatrix, SignsAndScalingOfDesignSec2) {
   const double a = 7.18e-3, b = 5.29e-3, G = 210e9 / (2 * 1.28), nu = 0.28;

@@ -1,5 +1,5 @@
 // Shared inputs of the noise-loop tests: the UIC60 ballasted track, the 920 mm wheel of models/,
-// the paper's Hertzian contact (a = 7.18 mm, b = 5.29 mm, N = 98.1 kN, DESIGN.md Sec. 5) and
+// the paper's Hertzian contact (a = 7.18 mm, b = 5.29 mm, N = 98.1 kN, docs/conventions.md Sec. 4) and
 // 100 km/h.
 #pragma once
 

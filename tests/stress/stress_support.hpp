@@ -45,7 +45,7 @@ inline constexpr bool kSanitized = false;
 
 using namespace rollnoise::contact;
 
-// The paper's Hertzian case (DESIGN.md Sec. 5): E = 210 GPa, nu = 0.28, N = 98.1 kN, V = 50 km/h,
+// The paper's Hertzian case (docs/conventions.md Sec. 4): E = 210 GPa, nu = 0.28, N = 98.1 kN, V = 50 km/h,
 // c = sqrt(a b) with a = 7.18 mm, b = 5.29 mm. Other aspect ratios keep c (and so the area).
 inline const Material kSteel{210e9, 0.28};
 inline constexpr double kSpeed = 13.8888888888889, kN = 98100, kPaperRatio = 7.18 / 5.29;
