@@ -87,10 +87,12 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
   std::printf("  at %.1f Hz: f11 = %.4g %+.4gi N, f22 = %.4g %+.4gi N, f23 = %.4g %+.4gi N m, f32 = %.4g %+.4gi N m\n",
               freq[mid], f[mid](0, 0).real(), f[mid](0, 0).imag(), f[mid](1, 1).real(), f[mid](1, 1).imag(),
               f[mid](1, 2).real(), f[mid](1, 2).imag(), f[mid](2, 1).real(), f[mid](2, 1).imag());
+  // g(0) by the same method as the sweep (one more LU with --direct; else the same Markov parameters)
+  const nss::LoadVector g0 = direct ? model.normal_load_coefficients_direct(0.0)
+                                    : model.normal_load_coefficients(std::vector<double>{0.0})[0];
   std::printf("  normal load: g(0) = (%.4g, %.4g, %.4g m) (quasi-static dF/dN), at %.1f Hz g = (%.4g %+.4gi, %.4g "
               "%+.4gi, %.4g %+.4gi m)\n",
-              model.normal_load_coefficients_direct(0.0)(0).real(), model.normal_load_coefficients_direct(0.0)(1).real(),
-              model.normal_load_coefficients_direct(0.0)(2).real(), freq[mid], g[mid](0).real(), g[mid](0).imag(),
+              g0(0).real(), g0(1).real(), g0(2).real(), freq[mid], g[mid](0).real(), g[mid](0).imag(),
               g[mid](1).real(), g[mid](1).imag(), g[mid](2).real(), g[mid](2).imag());
   std::printf("wrote %s%s%s\n", out.c_str(), csv.empty() ? "" : " and ", csv.c_str());
   return 0;

@@ -114,21 +114,7 @@ NoiseSetup prepare(const CommonOptions& o) {
     s.position = s.state->position();
   } else if (nc.estimate_creepage && nc.curve_radius > 0.0) {
     s.estimated = true;
-    const Eigen::Matrix3d fk =
-        noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu);
-    noise::BogieCurvingInput in;
-    in.radius = nc.curve_radius;
-    in.speed = cc.speed;
-    in.cant_deficiency = nc.cant_deficiency;
-    in.wheelbase = nc.wheelbase;
-    in.wheel_radius = nc.wheel_radius;
-    in.conicity = nc.conicity;
-    in.flange_clearance = nc.flange_clearance;
-    in.wheel_load = cc.normal_force;
-    in.friction = cc.mu;
-    in.f11 = fk(0, 0);
-    in.f22 = fk(1, 1);
-    s.curving = noise::estimate_bogie_curving(in);
+    s.curving = noise::estimate_bogie_curving(io::bogie_curving_input(cc, nc));
     cc.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
     s.position = s.curving.position();
   }

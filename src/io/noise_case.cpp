@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "noise/kalker_linear.hpp"
 
 
 namespace rollnoise::io {
@@ -107,6 +108,24 @@ noise::CurveStateInput curve_state_input(const CaseReader& r, const ContactCase&
   } catch (const InputError& e) {
     r.fail(e.key(), e.what());
   }
+  return in;
+}
+
+noise::BogieCurvingInput bogie_curving_input(const ContactCase& contact, const NoiseCase& noise) {
+  const Eigen::Matrix3d fk =
+      noise::kalker_creep_matrix(contact.a, contact.b, contact.material.shear_modulus(), contact.material.nu);
+  noise::BogieCurvingInput in;
+  in.radius = noise.curve_radius;
+  in.speed = contact.speed;
+  in.cant_deficiency = noise.cant_deficiency;
+  in.wheelbase = noise.wheelbase;
+  in.wheel_radius = noise.wheel_radius;
+  in.conicity = noise.conicity;
+  in.flange_clearance = noise.flange_clearance;
+  in.wheel_load = contact.normal_force;
+  in.friction = contact.mu;
+  in.f11 = fk(0, 0);
+  in.f22 = fk(1, 1);
   return in;
 }
 

@@ -46,4 +46,8 @@ NoiseCase read_noise_case(const CaseReader& r);
 noise::CurveStateInput curve_state_input(const CaseReader& r, const ContactCase& contact,
                                          const NoiseCase& noise);
 
+/// The inputs of the bogie estimate on the conical tread (Hertzian curve cases): the curve, the
+/// case's wheel load and friction, Kalker's f11, f22 of the case's semi-axes.
+noise::BogieCurvingInput bogie_curving_input(const ContactCase& contact, const NoiseCase& noise);
+
 }  // namespace rollnoise::io

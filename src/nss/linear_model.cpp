@@ -95,7 +95,7 @@ struct LinearContactModel::Dense {
 struct LinearContactModel::Reduced {
   Eigen::MatrixXd K0;  // holds the Cholesky factor after construction
   std::unique_ptr<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> llt;
-  std::unique_ptr<contact::HalfSpaceOperator> A0;
+  std::shared_ptr<const contact::HalfSpaceOperator> A0;  // the model's A0_op_
   int nx = 0, ny = 0;
   mutable std::vector<double> p, u;  // full-grid work arrays, component-major [c][iy][ix]
   /// K0^{-1} B with the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once
@@ -164,6 +164,9 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
       Lr_.block<2, 3>(offset_[a], 0) = area * U;
     }
   }
+  // A0 by FFT (shift 1): the rolling step of the sweeps (K1) and the delayed load input below.
+  A0_op_ = std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 1);
+
   // Normal-load input (G1): bN on the slip elements from the frozen-area sensitivity dpn/dN, then
   // A bN/dt and A0 bN/dt on the grid (two FFT products) and their reduced forms.
   if (n_slip_ > 0) {
@@ -182,7 +185,7 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
       dN_ += area * Eigen::Vector3d(b[k], b[N + k], x * b[N + k] - y * b[k]);
     }
     contact::HalfSpaceOperator(A, contact::Problem::Tangential, 0).apply(b.data(), u0.data());
-    contact::HalfSpaceOperator(A, contact::Problem::Tangential, 1).apply(b.data(), u1.data());
+    A0_op_->apply(b.data(), u1.data());
     wN0_.resize(n);
     wN1_.resize(n);
     rN0_.setZero(r_);
@@ -291,7 +294,7 @@ const LinearContactModel::Reduced& LinearContactModel::reduced() const {
   red->llt = std::make_unique<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>>(red->K0);
   if (red->llt->info() != Eigen::Success)
     throw NumericalError("linear contact model: the reduced matrix K0 = D + Pi' A Pi/dt is not positive definite");
-  red->A0 = std::make_unique<contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 1);
+  red->A0 = A0_op_;
   red->nx = g.nx;
   red->ny = g.ny;
   red->p.assign(2 * g.size(), 0.0);

@@ -56,6 +56,7 @@
 #include <memory>
 #include <vector>
 
+#include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
 #include "contact/tangential_solver.hpp"
@@ -201,6 +202,7 @@ class LinearContactModel {
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;
+  std::shared_ptr<const contact::HalfSpaceOperator> A0_op_;  ///< A0 (shift 1) by FFT
   std::vector<int> el_;                  ///< contact elements in sweep order (grid indices)
   std::vector<int> offset_;              ///< first reduced unknown of each element
   std::vector<Eigen::Vector2d> t_;       ///< slip elements: traction direction t_e (unused for adhesion)
