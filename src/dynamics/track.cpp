@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "dynamics/parameter_file.hpp"
 
 namespace rollnoise::dynamics {
 namespace {
@@ -63,7 +62,7 @@ void TrackParameters::validate() const {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Parameters: built-in UIC60 track and the file reader
+// Parameters: the built-in UIC60 track
 // ---------------------------------------------------------------------------------------------
 
 TrackParameters uic60_ballasted() {
@@ -86,48 +85,6 @@ TrackParameters uic60_ballasted() {
   t.sleeper_spacing = 0.6;
   t.head_height = 0.091;
   t.supports_each_side = 60;
-  return t;
-}
-
-TrackParameters read_track_parameters(const std::string& path) {
-  return track_parameters_from(ParameterFile::read(path));
-}
-
-TrackParameters track_parameters_from(const ParameterFile& f) {
-  TrackParameters t;
-  BeamSection rail;
-  rail.youngs_modulus = f.positive("rail.youngs_modulus");
-  rail.shear_modulus = f.positive("rail.shear_modulus");
-  rail.area = f.positive("rail.area");
-  rail.mass_per_length = f.positive("rail.mass_per_length");
-  rail.loss_factor = f.positive("rail.loss_factor", true);
-  rail.timoshenko = f.get_or("rail.timoshenko", 1.0) != 0.0;
-  t.vertical = rail;
-  t.vertical.second_moment = f.positive("rail.vertical.second_moment");
-  t.vertical.shear_coefficient = f.positive("rail.vertical.shear_coefficient");
-  t.lateral = rail;
-  t.lateral.second_moment = f.positive("rail.lateral.second_moment");
-  t.lateral.shear_coefficient = f.positive("rail.lateral.shear_coefficient");
-  auto support = [&](const std::string& p) {
-    Support s;
-    s.pad_stiffness = f.positive(p + ".pad_stiffness");
-    s.pad_loss_factor = f.positive(p + ".pad_loss_factor", true);
-    s.sleeper_mass = f.positive(p + ".sleeper_mass", true);
-    s.ballast_stiffness = f.positive(p + ".ballast_stiffness");
-    s.ballast_loss_factor = f.positive(p + ".ballast_loss_factor", true);
-    return s;
-  };
-  t.vertical_support = support("support.vertical");
-  t.lateral_support = support("support.lateral");
-  t.longitudinal_support = support("support.longitudinal");
-  t.sleeper_spacing = f.positive("sleeper_spacing");
-  t.head_height = f.positive("head_height", true);
-  const double n = f.get_or("supports_each_side", 60.0);
-  if (!(n >= 1.0) || n != std::floor(n) || n > 100000.0)
-    throw InputError(f.origin() + ":supports_each_side",
-                     f.origin() + ": supports_each_side must be a positive integer");
-  t.supports_each_side = static_cast<int>(n);
-  t.validate();
   return t;
 }
 

@@ -37,8 +37,6 @@
 
 namespace rollnoise::dynamics {
 
-class ParameterFile;
-
 /// One rail seat: rail pad, sleeper (the share of one rail), ballast.
 struct Support {
   double pad_stiffness = 0.0;        ///< k_p (N/m)
@@ -67,13 +65,8 @@ struct TrackParameters {
 };
 
 /// The built-in UIC60 ballasted track, identical to models/track/uic60_ballasted.toml
-/// (values and sources in docs/models.md).
+/// (values and sources in docs/models.md). Track files are read by io/track_file.hpp.
 TrackParameters uic60_ballasted();
-
-/// Reads a track parameter file (ParameterFile syntax; keys as in
-/// models/track/uic60_ballasted.toml).
-TrackParameters read_track_parameters(const std::string& path);
-TrackParameters track_parameters_from(const ParameterFile& file);
 
 /// Rail on a continuous support s = K(omega)/L: (w, psi) at x per (F, M) at 0 (see InfiniteBeam).
 Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& support,

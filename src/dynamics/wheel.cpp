@@ -1,14 +1,9 @@
 #include "dynamics/wheel.hpp"
-#include "core/text.hpp"
 
 #include <Eigen/Dense>
-#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "core/errors.hpp"
-#include "dynamics/parameter_file.hpp"
 
 namespace rollnoise::dynamics {
 namespace {
@@ -24,9 +19,6 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
       -r.y(), r.x(), 0.0;
   return S;
 }
-
-const char* const kColumns[] = {"frequency_Hz", "damping_ratio", "modal_mass_kg", "phi_z",
-                                "phi_x",        "phi_y",         "phi_rz"};
 
 }  // namespace
 
@@ -68,22 +60,6 @@ Receptance4 RigidWheelset::receptance(double frequency) const {
   return R;
 }
 
-RigidWheelset read_wheelset(const std::string& path) {
-  return wheelset_from(ParameterFile::read(path));
-}
-
-RigidWheelset wheelset_from(const ParameterFile& f) {
-  RigidWheelset w;
-  w.mass = f.positive("mass");
-  w.roll_inertia = f.positive("roll_inertia");
-  w.spin_inertia = f.positive("spin_inertia");
-  w.yaw_inertia = f.positive("yaw_inertia");
-  w.contact_offset_y = f.get("contact_offset_y");
-  w.wheel_radius = f.positive("wheel_radius");
-  w.validate(f.origin());
-  return w;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Modes
 // ---------------------------------------------------------------------------------------------
@@ -99,52 +75,9 @@ void validate_mode(const WheelMode& m, const std::string& where) {
   if (!std::isfinite(m.modal_mass) || !(m.modal_mass > 0.0))
     fail("modal_mass_kg", "must be positive, got " + std::to_string(m.modal_mass));
   for (int j = 0; j < 4; ++j)
-    if (!std::isfinite(m.shape[j])) fail(kColumns[3 + j], "must be a finite number");
+    if (!std::isfinite(m.shape[j])) fail(kWheelModeFields[3 + j], "must be a finite number");
   if (m.shape.cwiseAbs().maxCoeff() == 0.0)
     fail("phi_z", "and phi_x, phi_y, phi_rz are all zero: the mode is not excited at the contact");
-}
-
-std::vector<WheelMode> read_wheel_modes(const std::string& path) {
-  std::vector<WheelMode> modes;
-  bool header = false;
-  for_each_data_line(path, "wheel mode file", [&](const std::string& where, const std::string& t) {
-    const auto cells = split_csv(t);
-    if (!header) {  // the header must name the columns in order
-      for (int c = 0; c < 7; ++c)
-        if (static_cast<int>(cells.size()) <= c || cells[c] != kColumns[c])
-          throw InputError(where + ":" + kColumns[c], where + ": header must be '" +
-                                                          std::string("frequency_Hz,damping_ratio,"
-                                                                      "modal_mass_kg,phi_z,phi_x,"
-                                                                      "phi_y,phi_rz[,label]") +
-                                                          "'; column " + std::to_string(c + 1) +
-                                                          " should be '" + kColumns[c] + "'");
-      header = true;
-      return;
-    }
-    double v[7];
-    for (int c = 0; c < 7; ++c) {
-      if (static_cast<int>(cells.size()) <= c || cells[c].empty())
-        throw InputError(where + ":" + kColumns[c],
-                         where + ": missing field '" + kColumns[c] + "'");
-      if (!parse_finite(cells[c], v[c]))
-        throw InputError(
-            where + ":" + kColumns[c],
-            where + ": field '" + kColumns[c] + "' is not a finite number: '" + cells[c] + "'");
-    }
-    if (cells.size() > 8)
-      throw InputError(where, where + ": too many fields (" + std::to_string(cells.size()) +
-                                  "), expected 7 or 8");
-    WheelMode m;
-    m.frequency = v[0];
-    m.damping_ratio = v[1];
-    m.modal_mass = v[2];
-    m.shape << v[3], v[4], v[5], v[6];
-    if (cells.size() == 8) m.label = cells[7];
-    validate_mode(m, where);
-    modes.push_back(m);
-  });
-  if (!header) throw InputError(path, path + ": no header line (empty wheel mode file)");
-  return modes;
 }
 
 // ---------------------------------------------------------------------------------------------

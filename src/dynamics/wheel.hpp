@@ -22,6 +22,8 @@
 // asymptote of the translational receptances is -1/(M_eff omega^2); vertically the roll adds to the
 // bounce (M_eff = M / (1 + M y_c^2 / I_xx), about half the wheelset mass for I_xx ~ M y_c^2).
 // The wheel's rotation about the axle is free (no drive or brake torque).
+//
+// The wheelset parameter file and the mode table are read by io/wheel_file.hpp.
 #pragma once
 
 #include <Eigen/Core>
@@ -31,8 +33,6 @@
 #include "dynamics/receptance.hpp"
 
 namespace rollnoise::dynamics {
-
-class ParameterFile;
 
 /// One flexible mode of the wheel.
 struct WheelMode {
@@ -59,18 +59,11 @@ struct RigidWheelset {
   Receptance4 receptance(double frequency) const;
 };
 
-/// Reads the wheelset parameters (keys: mass, roll_inertia, spin_inertia, yaw_inertia,
-/// contact_offset_y, wheel_radius) from a ParameterFile, e.g. models/wheel/wheelset_920mm.toml.
-RigidWheelset read_wheelset(const std::string& path);
-RigidWheelset wheelset_from(const ParameterFile& file);
+/// The fields of a mode as named in messages: the columns of a mode table (io/wheel_file.hpp).
+inline constexpr const char* kWheelModeFields[7] = {
+    "frequency_Hz", "damping_ratio", "modal_mass_kg", "phi_z", "phi_x", "phi_y", "phi_rz"};
 
-/// Reads a mode table. CSV with the header
-///   frequency_Hz,damping_ratio,modal_mass_kg,phi_z,phi_x,phi_y,phi_rz[,label]
-/// ('#' starts a comment line). Any bad line is an InputError whose key is "<path>:<line>:<field>"
-/// and whose message names the field.
-std::vector<WheelMode> read_wheel_modes(const std::string& path);
-
-/// Checks one mode; throws InputError(`where`:field, ...).
+/// Checks the values of one mode; throws InputError(`where`:field, ...).
 void validate_mode(const WheelMode& mode, const std::string& where);
 
 /// Rigid wheelset plus flexible modes.

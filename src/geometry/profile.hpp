@@ -12,10 +12,12 @@
 // the steep flange and rail-corner segments), and its slopes are second-order accurate. Its second
 // derivative is only piecewise continuous (it jumps at the knots), so curvatures for Hertz's theory
 // are taken from a least-squares parabola over a window of the spline (Profile::curvature).
+//
+// A Profile is built from its points; the profile files (SIMPACK point files, CSV) are read by
+// io/profile_file.hpp.
 #pragma once
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,21 +72,5 @@ class Profile {
   bool canted_ = false;
   std::shared_ptr<const Spline> spline_;
 };
-
-/// Read a profile file: the SIMPACK point format (`.prw`, `.prr`, `.prf`, or any file containing a
-/// `point.begin` block) or plain CSV (two columns y, z in mm, optional header line, '#' comments).
-/// The kind comes from the SIMPACK header `type`, else from the extension (.prw wheel, .prr rail),
-/// else from `kind`; a CSV file needs `kind`. Malformed files throw InputError naming the file,
-/// the line and what is wrong (key: the path).
-Profile read_profile(const std::string& path, std::optional<ProfileKind> kind = std::nullopt);
-
-/// The SIMPACK profile point format used by the Manchester contact benchmark. Applied processing
-/// flags: shift.y/z, rotate, bound.y/z, mirror.y/z, inversion, units.len.f (lengths unit per
-/// metre). A `comment` saying the rail is "already canted" sets Profile::canted().
-Profile read_simpack_profile(const std::string& path,
-                             std::optional<ProfileKind> kind = std::nullopt);
-
-/// Plain CSV: y, z in mm per line (separators ',', ';', tab or spaces), one optional header line.
-Profile read_csv_profile(const std::string& path, ProfileKind kind);
 
 }  // namespace rollnoise::geometry

@@ -6,6 +6,7 @@
 #include "contact/hertz.hpp"
 #include "core/errors.hpp"
 #include "geometry/profile.hpp"
+#include "io/profile_file.hpp"
 
 namespace rollnoise::io {
 
@@ -51,8 +52,8 @@ ContactCase read_contact_case(const CaseReader& r) {
     if (2.0 * c.b / c.grid.dy < 4.0)
       r.fail("grid.ny", "too coarse for the patch: fewer than 4 elements across 2b");
   } else {  // profiles: the right wheel of a wheelset on track (src/geometry, docs/geometry.md)
-    const auto wheel = geometry::read_profile(resolve_model_file(r, "contact.wheel_profile"), geometry::ProfileKind::Wheel);
-    const auto rail = geometry::read_profile(resolve_model_file(r, "contact.rail_profile"), geometry::ProfileKind::Rail);
+    const auto wheel = read_profile(resolve_model_file(r, "contact.wheel_profile"), geometry::ProfileKind::Wheel);
+    const auto rail = read_profile(resolve_model_file(r, "contact.rail_profile"), geometry::ProfileKind::Rail);
     c.profiles = std::make_shared<const geometry::WheelRailPair>(wheel, rail);
     c.contact_point = geometry::find_contact(
         *c.profiles, {r.real("contact.lateral_displacement"), r.real("contact.yaw")});

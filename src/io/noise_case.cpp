@@ -4,6 +4,9 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "io/roughness_file.hpp"
+#include "io/track_file.hpp"
+#include "io/wheel_file.hpp"
 #include "noise/kalker_linear.hpp"
 
 
@@ -16,7 +19,7 @@ noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) 
   if (v == "iso3095") return noise::iso3095_2013_rail_limit();
   if (v == "cast-iron") return noise::wheel_roughness_cast_iron_block();
   if (v == "disc-braked") return noise::wheel_roughness_disc_braked();
-  return noise::read_roughness_csv(resolve_model_file(r, key));
+  return read_roughness_csv(resolve_model_file(r, key));
 }
 
 }  // namespace
@@ -44,14 +47,14 @@ NoiseCase read_noise_case(const CaseReader& r) {
   c.contact_angle = r.real("contact.angle");
   if (c.curve_radius > 0.0 && c.curve_radius < 50.0) r.fail("curve.radius", "below 50 m is outside the curving estimate's range");
 
-  const dynamics::TrackParameters track = dynamics::read_track_parameters(resolve_model_file(r, "track.file"));
+  const dynamics::TrackParameters track = read_track_parameters(resolve_model_file(r, "track.file"));
   const bool discrete = r.string("track.support") == "discrete";
   c.rail = std::make_unique<dynamics::RailModel>(
       track, discrete ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
       r.real("track.position"));
   c.wheel = std::make_unique<dynamics::WheelModel>(
-      dynamics::read_wheelset(resolve_model_file(r, "wheel.wheelset")),
-      dynamics::read_wheel_modes(resolve_model_file(r, "wheel.modes")));
+      read_wheelset(resolve_model_file(r, "wheel.wheelset")),
+      read_wheel_modes(resolve_model_file(r, "wheel.modes")));
   c.rail_roughness = roughness(r, "roughness.rail");
   c.wheel_roughness = roughness(r, "roughness.wheel");
   const std::string filter = r.string("roughness.filter");

@@ -1,11 +1,7 @@
 #include "noise/roughness.hpp"
-#include "core/text.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -87,44 +83,6 @@ RoughnessSpectrum wheel_roughness_disc_braked() {
                                          -4.9,  -7.0, -8.6, -9.3, -9.5, -10.1, -10.3, -10.3, -10.8,
                                          -10.9, -9.5, -9.5, -9.5, -9.5, -9.5,  -9.5,  -9.5};
   return table("wheel roughness, disc-braked tread", kLevels);
-}
-
-RoughnessSpectrum read_roughness_csv(const std::string& path) {
-  std::vector<std::pair<double, double>> rows;
-  bool header = false;
-  for_each_data_line(path, "roughness file", [&](const std::string& where, const std::string& t) {
-    const auto comma = t.find(',');
-    const std::string c0 = trim(t.substr(0, comma));
-    const std::string c1 = comma == std::string::npos ? "" : trim(t.substr(comma + 1));
-    if (!header) {
-      if (c0 != "wavelength_m" || c1 != "level_dB")
-        throw InputError(where + ":header",
-                         where + ": header must be 'wavelength_m,level_dB', got '" + t + "'");
-      header = true;
-      return;
-    }
-    double v[2];
-    const std::string cells[2] = {c0, c1};
-    const char* names[2] = {"wavelength_m", "level_dB"};
-    for (int c = 0; c < 2; ++c)
-      if (!parse_finite(cells[c], v[c]))
-        throw InputError(where + ":" + names[c], where + ": field '" + names[c] +
-                                                     "' is missing or not a finite number: '" +
-                                                     cells[c] + "'");
-    if (!(v[0] > 0.0))
-      throw InputError(where + ":wavelength_m", where + ": field 'wavelength_m' must be positive");
-    rows.emplace_back(v[0], v[1]);
-  });
-  if (!header) throw InputError(path, path + ": empty roughness file (no header)");
-  std::sort(rows.begin(), rows.end(), [](auto& p, auto& q) { return p.first > q.first; });
-  RoughnessSpectrum s;
-  s.name = path;
-  for (const auto& [w, l] : rows) {
-    s.wavelength.push_back(w);
-    s.level.push_back(l);
-  }
-  s.validate(path);
-  return s;
 }
 
 // ---------------------------------------------------------------------------------------------

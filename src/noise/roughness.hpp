@@ -13,6 +13,8 @@
 //   L_total = 10 log10(10^{L_wheel/10} + 10^{L_rail/10}).
 // The contact filter (roughness_filter.hpp) then gives the effective roughness
 //   L_eff(f) = L_total(V/f) + 10 log10 <|H(k)|^2>_band,   k = 2 pi f / V.
+//
+// Spectra in CSV files are read by io/roughness_file.hpp.
 #pragma once
 
 #include <string>
@@ -47,10 +49,6 @@ RoughnessSpectrum wheel_roughness_cast_iron_block();
 /// Typical tread roughness of disc-braked wheels without tread brakes (CNOSSOS-EU Table G-2,
 /// "disc brake"); models/roughness/wheel_disc_braked.csv. Approximate, see docs/models.md.
 RoughnessSpectrum wheel_roughness_disc_braked();
-
-/// Reads a spectrum from CSV with the header "wavelength_m,level_dB" ('#' comment lines), one band
-/// per line in any order. InputError key "<path>:<line>:<field>" on a bad line.
-RoughnessSpectrum read_roughness_csv(const std::string& path);
 
 /// 10 log10(10^{a/10} + 10^{b/10}).
 double energy_sum_db(double a, double b);

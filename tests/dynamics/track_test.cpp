@@ -9,11 +9,9 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <string>
 
 #include "core/errors.hpp"
-#include "dynamics/parameter_file.hpp"
 
 namespace rd = rollnoise::dynamics;
 using cd = std::complex<double>;
@@ -297,60 +295,6 @@ TEST(RailModel, ReceptanceIsSymmetricAndPassive) {
   const rd::DiscretelySupportedRail v(t.vertical, t.vertical_support, t.sleeper_spacing,
                                       t.supports_each_side);
   EXPECT_LT(std::abs(over.receptance(700.0)(rd::kZ, rd::kZ) - v.point(700.0, 0.0)(0, 0)), 1e-14);
-}
-
-// --- parameter files ----------------------------------------------------------------------------
-
-TEST(TrackParameters, Uic60FileEqualsBuiltInTrack) {
-  const auto f = rd::read_track_parameters(std::string(ROLLNOISE_SOURCE_DIR) +
-                                           "/models/track/uic60_ballasted.toml");
-  const auto b = rd::uic60_ballasted();
-  for (auto [p, q] : {std::pair{f.vertical, b.vertical}, std::pair{f.lateral, b.lateral}}) {
-    EXPECT_EQ(p.youngs_modulus, q.youngs_modulus);
-    EXPECT_EQ(p.shear_modulus, q.shear_modulus);
-    EXPECT_EQ(p.area, q.area);
-    EXPECT_EQ(p.second_moment, q.second_moment);
-    EXPECT_EQ(p.mass_per_length, q.mass_per_length);
-    EXPECT_EQ(p.shear_coefficient, q.shear_coefficient);
-    EXPECT_EQ(p.loss_factor, q.loss_factor);
-    EXPECT_EQ(p.timoshenko, q.timoshenko);
-  }
-  for (auto [p, q] : {std::pair{f.vertical_support, b.vertical_support},
-                      std::pair{f.lateral_support, b.lateral_support},
-                      std::pair{f.longitudinal_support, b.longitudinal_support}}) {
-    EXPECT_EQ(p.pad_stiffness, q.pad_stiffness);
-    EXPECT_EQ(p.pad_loss_factor, q.pad_loss_factor);
-    EXPECT_EQ(p.sleeper_mass, q.sleeper_mass);
-    EXPECT_EQ(p.ballast_stiffness, q.ballast_stiffness);
-    EXPECT_EQ(p.ballast_loss_factor, q.ballast_loss_factor);
-  }
-  EXPECT_EQ(f.sleeper_spacing, b.sleeper_spacing);
-  EXPECT_EQ(f.head_height, b.head_height);
-  EXPECT_EQ(f.supports_each_side, b.supports_each_side);
-}
-
-TEST(TrackParameters, BadFileNamesFileLineAndKey) {
-  using rollnoise::InputError;
-  auto expect_error = [](const std::string& text, const std::string& key_part,
-                         const std::string& what_part) {
-    try {
-      rd::track_parameters_from(rd::ParameterFile::parse(text, "track.toml"));
-      ADD_FAILURE() << "no InputError for: " << text;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.key()).find(key_part), std::string::npos) << e.key();
-      EXPECT_NE(std::string(e.what()).find(what_part), std::string::npos) << e.what();
-    }
-  };
-  expect_error("sleeper_spacing = 0.6\n[rail]\narea 7e-3\n", "track.toml:3", "key = number");
-  expect_error("sleeper_spacing = abc\n", "track.toml:1:sleeper_spacing", "finite number");
-  expect_error("sleeper_spacing = 0.6\n", "rail.youngs_modulus", "missing parameter");
-  // A complete file with one negative stiffness.
-  std::ifstream in(std::string(ROLLNOISE_SOURCE_DIR) + "/models/track/uic60_ballasted.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto pos = text.find("pad_stiffness = 350e6");
-  ASSERT_NE(pos, std::string::npos);
-  text.replace(pos, 21, "pad_stiffness = -350e6");
-  expect_error(text, "support.vertical.pad_stiffness", "positive");
 }
 
 TEST(RailModel, NonPositiveFrequencyIsInputError) {

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "geometry/profile.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "io/profile_file.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::geometry;
@@ -23,8 +24,8 @@ const std::string kProfiles = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profi
 constexpr double kWheelLoad = 98.1e3;  // 20 t per wheelset: 98.1 kN per wheel
 
 WheelRailPair s1002_on_uic60() {
-  return WheelRailPair(read_profile(kProfiles + "MBench_S1002_v3.prw"),
-                       read_profile(kProfiles + "MBench_UIC60_v3.prr"));
+  return WheelRailPair(io::read_profile(kProfiles + "MBench_S1002_v3.prw"),
+                       io::read_profile(kProfiles + "MBench_UIC60_v3.prr"));
 }
 
 // A circular arc z = sign (ρ - sqrt(ρ² - y²)) sampled every 0.2 mm on [-half, half].

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "geometry/profile.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "io/profile_file.hpp"
 #include "noise_fixture.hpp"
 
 using namespace noise_test;
@@ -25,8 +26,8 @@ constexpr double kV = 70 / 3.6;
 
 const std::shared_ptr<const rg::WheelRailPair>& pair() {
   static const auto p = std::make_shared<const rg::WheelRailPair>(
-      rg::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
-      rg::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
+      rollnoise::io::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
+      rollnoise::io::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
   return p;
 }
 

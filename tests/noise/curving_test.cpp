@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "geometry/profile.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "io/profile_file.hpp"
 #include "noise_fixture.hpp"
 
 using namespace noise_test;
@@ -125,8 +126,8 @@ TEST(Curving, BadInputNamesTheKey) {
 // is the table's there.
 TEST(Curving, ProfileTableFromS1002OnUic60) {
   namespace rg = rollnoise::geometry;
-  const rg::WheelRailPair pair(rg::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
-                               rg::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
+  const rg::WheelRailPair pair(rollnoise::io::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
+                               rollnoise::io::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
   auto table =
       std::make_shared<rn::ProfileCurvingTable>(rn::profile_curving_table(pair, 0.01, 0.5e-3));
   const std::size_t centre = table->lateral.size() / 2;

@@ -12,6 +12,7 @@
 #include "contact/material.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
+#include "io/wheel_file.hpp"
 #include "noise/contact_receptance.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/loop.hpp"
@@ -30,8 +31,8 @@ inline std::string model_path(const std::string& rel) {
 }
 
 inline const rd::WheelModel& wheel() {
-  static const rd::WheelModel w(rd::read_wheelset(model_path("wheel/wheelset_920mm.toml")),
-                                rd::read_wheel_modes(model_path("wheel/wheel_920mm_modes.csv")));
+  static const rd::WheelModel w(rollnoise::io::read_wheelset(model_path("wheel/wheelset_920mm.toml")),
+                                rollnoise::io::read_wheel_modes(model_path("wheel/wheel_920mm_modes.csv")));
   return w;
 }
 

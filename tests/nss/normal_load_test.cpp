@@ -170,6 +170,7 @@ TEST(NormalLoad, RecursionWithALoadHistoryAgreesWithHarmonicSynthesisOfG) {
 }
 
 #include "geometry/wheel_rail.hpp"
+#include "io/profile_file.hpp"
 
 TEST(NormalLoad, ProfileContactZeroFrequencyAgreesWithFiniteLoadStepsWithinTheFrozenAreaEffect) {
   // S1002 on UIC60, wheelset displaced 4 mm towards the flange (a non-Hertzian patch). The steady
@@ -177,8 +178,8 @@ TEST(NormalLoad, ProfileContactZeroFrequencyAgreesWithFiniteLoadStepsWithinTheFr
   // the area does not change and g(0) is the exact derivative; for e = 1 % elements enter and leave
   // the contact area, which the frozen-area model ignores: the difference shows its size.
   const std::string dir = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/";
-  const geometry::WheelRailPair pair(geometry::read_profile(dir + "MBench_S1002_v3.prw"),
-                                     geometry::read_profile(dir + "MBench_UIC60_v3.prr"));
+  const geometry::WheelRailPair pair(io::read_profile(dir + "MBench_S1002_v3.prw"),
+                                     io::read_profile(dir + "MBench_UIC60_v3.prr"));
   const geometry::ContactGeometry cg = geometry::find_contact(pair, {0.004, 0.0});
   geometry::GridOptions opt;
   opt.nx = 30;

@@ -1,6 +1,6 @@
-// Small text helpers shared by the file readers of every layer: trimming, CSV cells, numbers, and
-// the loop over the data lines of a file (blank lines and '#' comments skipped, "path:line" kept
-// for error messages).
+// Small text helpers shared by the model-file readers of io (profile_file, wheel_file,
+// roughness_file): trimming, CSV cells, numbers, and the loop over the data lines of a file (blank
+// lines and '#' comments skipped, "path:line" kept for error messages).
 #pragma once
 
 #include <cctype>
@@ -13,7 +13,7 @@
 
 #include "core/errors.hpp"
 
-namespace rollnoise {
+namespace rollnoise::io {
 
 /// `s` without leading and trailing white space.
 inline std::string trim(const std::string& s) {
@@ -59,4 +59,4 @@ void for_each_data_line(const std::string& path, const std::string& what, Row&& 
   }
 }
 
-}  // namespace rollnoise
+}  // namespace rollnoise::io
