@@ -1,11 +1,12 @@
 #include "io/parameter_table.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -50,7 +51,8 @@ struct Leaf {
 
 void flatten(const toml::table& t, const std::string& prefix, std::vector<Leaf>& out) {
   for (const auto& [k, v] : t) {
-    const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const std::string key =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (const auto* sub = v.as_table())
       flatten(*sub, key, out);
     else
@@ -115,9 +117,9 @@ ParameterTable ParameterTable::parse(const std::string& text, const std::string&
     }
     if (!std::isfinite(e.value)) {
       const std::string where = origin + ":" + std::to_string(l.line);
-      throw InputError(where + ":" + l.key, where + ": key '" + l.key +
-                                                "' needs a finite number, got " +
-                                                describe(*l.node));
+      throw InputError(
+          where + ":" + l.key,
+          where + ": key '" + l.key + "' needs a finite number, got " + describe(*l.node));
     }
     p.values_.emplace(l.key, e);
   }
@@ -139,9 +141,9 @@ double ParameterTable::get(const std::string& key) const {
   const Entry* e = find(key);
   if (!e) throw InputError(origin_ + ":" + key, origin_ + ": missing parameter '" + key + "'");
   if (e->boolean)
-    throw InputError(where(key) + ":" + key,
-                     where(key) + ": key '" + key + "' needs a finite number, got " +
-                         (e->value != 0.0 ? "true" : "false"));
+    throw InputError(where(key) + ":" + key, where(key) + ": key '" + key +
+                                                 "' needs a finite number, got " +
+                                                 (e->value != 0.0 ? "true" : "false"));
   return e->value;
 }
 
@@ -174,7 +176,8 @@ void ParameterTable::reject_unread_keys() const {
   const std::string section = dot == std::string::npos ? "" : key.substr(0, dot + 1);
   std::string known;
   for (const std::string& k : read_)
-    if (k.compare(0, section.size(), section) == 0 && k.find('.', section.size()) == std::string::npos)
+    if (k.compare(0, section.size(), section) == 0 &&
+        k.find('.', section.size()) == std::string::npos)
       known += (known.empty() ? "" : ", ") + k;
   throw InputError(where(key) + ":" + key,
                    where(key) + ": unknown parameter '" + key + "'" +

@@ -41,12 +41,13 @@ std::vector<dynamics::WheelMode> read_wheel_modes(const std::string& path) {
     if (!header) {  // the header must name the columns in order
       for (int c = 0; c < 7; ++c)
         if (static_cast<int>(cells.size()) <= c || cells[c] != kWheelModeFields[c])
-          throw InputError(where + ":" + kWheelModeFields[c], where + ": header must be '" +
-                                                          std::string("frequency_Hz,damping_ratio,"
-                                                                      "modal_mass_kg,phi_z,phi_x,"
-                                                                      "phi_y,phi_rz[,label]") +
-                                                          "'; column " + std::to_string(c + 1) +
-                                                          " should be '" + kWheelModeFields[c] + "'");
+          throw InputError(where + ":" + kWheelModeFields[c],
+                           where + ": header must be '" +
+                               std::string("frequency_Hz,damping_ratio,"
+                                           "modal_mass_kg,phi_z,phi_x,"
+                                           "phi_y,phi_rz[,label]") +
+                               "'; column " + std::to_string(c + 1) + " should be '" +
+                               kWheelModeFields[c] + "'");
       header = true;
       return;
     }
@@ -56,9 +57,9 @@ std::vector<dynamics::WheelMode> read_wheel_modes(const std::string& path) {
         throw InputError(where + ":" + kWheelModeFields[c],
                          where + ": missing field '" + kWheelModeFields[c] + "'");
       if (!parse_finite(cells[c], v[c]))
-        throw InputError(
-            where + ":" + kWheelModeFields[c],
-            where + ": field '" + kWheelModeFields[c] + "' is not a finite number: '" + cells[c] + "'");
+        throw InputError(where + ":" + kWheelModeFields[c],
+                         where + ": field '" + kWheelModeFields[c] + "' is not a finite number: '" +
+                             cells[c] + "'");
     }
     if (cells.size() > 8)
       throw InputError(where, where + ": too many fields (" + std::to_string(cells.size()) +

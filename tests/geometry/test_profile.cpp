@@ -11,21 +11,14 @@
 
 using namespace rollnoise;
 using namespace rollnoise::geometry;
-using rollnoise::io::read_profile;
-
-namespace {
-
-const std::string kProfiles = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/";
-const std::string kWheelFile = kProfiles + "MBench_S1002_v3.prw";
-
-}  // namespace
 
 // Test of item 3 of the brief: the analytic S1002 (EN 13715) and the point file agree within
 // 0.01 mm over the tread, s from -26 mm (end of the flange root, start of section B) to +60 mm
 // (field side), with the file's origin at the taping line (s = y, no offset). Sampled every 0.01
 // mm, i.e. mostly between the file's points (0.35 mm apart): this tests the spline too.
 TEST(S1002, AnalyticDefinitionMatchesPointFileOnTreadWithin10Micrometres) {
-  const Profile w = read_profile(kWheelFile);
+  const Profile w =
+      io::read_profile(std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/MBench_S1002_v3.prw");
   double worst = 0.0;
   for (double s = -26e-3; s <= 60e-3 + 1e-12; s += 0.01e-3)
     worst = std::max(worst, std::abs(w.z(s) - s1002_height(std::min(s, 60e-3))));

@@ -15,7 +15,7 @@ namespace rd = rollnoise::dynamics;
 
 TEST(TrackParameters, Uic60FileEqualsBuiltInTrack) {
   const auto f = rollnoise::io::read_track_parameters(std::string(ROLLNOISE_SOURCE_DIR) +
-                                           "/models/track/uic60_ballasted.toml");
+                                                      "/models/track/uic60_ballasted.toml");
   const auto b = rd::uic60_ballasted();
   for (auto [p, q] : {std::pair{f.vertical, b.vertical}, std::pair{f.lateral, b.lateral}}) {
     EXPECT_EQ(p.youngs_modulus, q.youngs_modulus);

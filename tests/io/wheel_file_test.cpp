@@ -15,14 +15,7 @@ namespace rd = rollnoise::dynamics;
 
 namespace {
 
-std::string model_path(const std::string& rel) {
-  return std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/" + rel;
-}
-
-rd::WheelModel default_wheel() {
-  return rd::WheelModel(rollnoise::io::read_wheelset(model_path("wheelset_920mm.toml")),
-                        rollnoise::io::read_wheel_modes(model_path("wheel_920mm_modes.csv")));
-}
+const std::string kWheelModels = std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/";
 
 // Writes `text` to a temporary mode file and returns its path.
 std::string temp_file(const std::string& name, const std::string& text) {
@@ -37,7 +30,8 @@ const char* kHeader = "frequency_Hz,damping_ratio,modal_mass_kg,phi_z,phi_x,phi_
 }  // namespace
 
 TEST(WheelModes, DefaultFilesReadAndCoverTheRollingNoiseRange) {
-  const rd::WheelModel w = default_wheel();
+  const rd::WheelModel w(rollnoise::io::read_wheelset(kWheelModels + "wheelset_920mm.toml"),
+                         rollnoise::io::read_wheel_modes(kWheelModels + "wheel_920mm_modes.csv"));
   EXPECT_EQ(w.modes().size(), 36u);
   for (const auto& m : w.modes()) {
     EXPECT_GE(m.frequency, 300.0) << m.label;
@@ -79,7 +73,8 @@ TEST(WheelModeFile, BadInputNamesFileLineAndField) {
     }
     std::remove(path.c_str());
   }
-  EXPECT_THROW(rollnoise::io::read_wheel_modes(::testing::TempDir() + "does_not_exist.csv"), InputError);
+  EXPECT_THROW(rollnoise::io::read_wheel_modes(::testing::TempDir() + "does_not_exist.csv"),
+               InputError);
 }
 
 TEST(WheelsetFile, MissingOrBadParameterIsInputError) {
