@@ -25,7 +25,8 @@ int run_transient(const CommonOptions& o) {
   const double duration = reader.real("transient.duration");
   const bool from_steady = reader.string("transient.start") == "steady";
   const std::vector<double> snapshots = reader.real_list("transient.snapshots");
-  const contact::ContactPatch patch = io::solve_case_patch(cc);
+  io::within_case(reader, [&] { pipeline::place_contact(cc); });
+  const contact::ContactPatch patch = io::within_case(reader, [&] { return pipeline::solve_patch(cc); });
   cc.grid = patch.grid;  // profiles: the grid may have been enlarged
   const double dt = cc.grid.dx / cc.speed;
   const long steps = std::lround(std::floor(duration / dt + 1e-9));
