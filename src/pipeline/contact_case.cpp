@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "contact/hertz.hpp"
+#include "core/errors.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -32,6 +33,10 @@ std::string frequencies_above_nyquist(const ContactCase& c, const std::vector<do
   std::snprintf(msg, sizeof msg, "%.6g Hz is above the grid's Nyquist limit V/(2 dx) = %.6g Hz: refine grid.nx or lower it",
                 worst, fn);
   return msg;
+}
+
+void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key) {
+  if (const std::string above = frequencies_above_nyquist(c, freq); !above.empty()) throw InputError(key, above);
 }
 
 contact::ContactPatch solve_patch(const ContactCase& c) {

@@ -4,7 +4,7 @@
 //   place_contact       profiles: the contact point of the wheelset position, the grid chosen
 //                       around it and Hertz's semi-axes from the curvatures there (geometry only,
 //                       milliseconds); the Hertzian case is placed when read;
-//   check_frequencies   the frequencies a command will evaluate against the grid's Nyquist limit
+//   check_nyquist       the frequencies a command will evaluate against the grid's Nyquist limit
 //                       V/(2 dx) (one rolling step dx/V per time step, docs/conventions.md Sec. 3),
 //                       before anything is solved;
 //   solve_patch         the normal problem of the case.
@@ -62,6 +62,10 @@ double nyquist_frequency(const ContactCase& c);
 /// The message for each frequency above the Nyquist limit (empty if none), for an InputError
 /// naming `key`.
 std::string frequencies_above_nyquist(const ContactCase& c, const std::vector<double>& freq);
+
+/// InputError naming `key` when a frequency lies above the Nyquist limit. Called once the case is
+/// placed (before any solve) and again on the patch's grid, which profiles may have enlarged.
+void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key);
 
 /// The normal problem of the case (placed). With profiles the grid is enlarged when the contact
 /// area reaches its border: use the returned patch's grid.

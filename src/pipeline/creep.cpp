@@ -10,11 +10,11 @@ CreepResult run_creep(ContactCase c, const std::vector<double>& freq, bool direc
   using Clock = std::chrono::steady_clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   place_contact(c);
-  if (const std::string above = frequencies_above_nyquist(c, freq); !above.empty())
-    throw InputError(frequency_key, above);
+  check_nyquist(c, freq, frequency_key);
   CreepResult r;
   const auto t0 = Clock::now();
   r.state = solve_mean_state(std::move(c), true);
+  check_nyquist(r.state.contact, freq, frequency_key);  // on the patch's grid
   const nss::LinearContactModel& model = *r.state.model;
   const auto t1 = Clock::now();
   if (direct) {

@@ -43,8 +43,7 @@ BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
   a.centres = noise::third_octave_centres(nc.band_min, nc.band_max);
   if (a.centres.empty()) throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
   a.frequency = noise::band_frequencies(a.centres, nc.points_per_band);
-  if (const std::string above = frequencies_above_nyquist(c, a.frequency); !above.empty())
-    throw InputError("noise.band_max", "the band edge " + above);
+  check_nyquist(c, a.frequency, "noise.band_max");
   return a;
 }
 
@@ -59,6 +58,8 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
 
   // 3. contact
   r.stage = contact_stage(cc);
+  r.contact.grid = r.stage.patch->grid;  // profiles: the grid may have been enlarged
+  check_nyquist(cc, freq, "noise.band_max");
   const nss::LinearContactModel& model = *r.stage.model;
   r.creep = model.creep_coefficients(freq);
   r.load = model.normal_load_coefficients(freq);  // g, the same sweep
@@ -110,13 +111,13 @@ ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::v
   r.curve = resolve_curve(c, nc);
   for (double f : freq)
     if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
-  if (nc.use_nss)
-    if (const std::string above = frequencies_above_nyquist(c, freq); !above.empty())
-      throw InputError("frequency.f_max", above);
+  if (nc.use_nss) check_nyquist(c, freq, "frequency.f_max");
   r.contact = std::move(c);
   const ContactCase& cc = r.contact;
   r.frequency = freq;
   r.stage = contact_stage(cc, nc.use_nss);
+  r.contact.grid = r.stage.patch->grid;
+  if (nc.use_nss) check_nyquist(cc, freq, "frequency.f_max");
   const double kN = r.stage.normal_stiffness;
   if (nc.use_nss) {
     const nss::LinearContactModel& model = *r.stage.model;
