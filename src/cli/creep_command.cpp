@@ -12,10 +12,14 @@ namespace rollnoise::cli {
 
 int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  const std::vector<double> freq = io::read_frequency_axis(reader);
+  io::InputProblems problems;  // every problem of the case at once
+  std::vector<double> freq;
+  problems.check([&] { freq = io::read_frequency_axis(reader); });
+  io::ContactCase cc = io::read_contact_case(reader, problems);
+  problems.throw_if_any();
   const std::string freq_key = reader.has("frequency.list") ? "frequency.list" : "frequency.f_max";
-  const pipeline::CreepResult r = io::within_case(
-      reader, [&] { return pipeline::run_creep(io::read_contact_case(reader), freq, direct, freq_key); });
+  const pipeline::CreepResult r =
+      io::within_case(reader, [&] { return pipeline::run_creep(std::move(cc), freq, direct, freq_key); });
   const nss::LinearContactModel& model = *r.state.model;
 
   const std::string out = output_path(o, reader.name());

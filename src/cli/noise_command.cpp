@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
-#include "io/frequency_axis.hpp"
 #include "io/noise_case.hpp"
 #include "io/noise_output.hpp"
 #include "pipeline/noise_pipeline.hpp"
@@ -88,8 +87,8 @@ int run_noise(const CommonOptions& o) {
 
 int run_receptance(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  io::NoiseInputs in = io::read_noise_inputs(reader);
-  const std::vector<double> freq = io::read_frequency_axis(reader);
+  std::vector<double> freq;
+  io::NoiseInputs in = io::read_noise_inputs(reader, &freq);
   const pipeline::ReceptanceResult r =
       io::within_case(reader, [&] { return pipeline::run_receptance(std::move(in.contact), in.noise, freq); });
   const std::string out = output_path(o, reader.name());

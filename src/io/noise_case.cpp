@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "io/frequency_axis.hpp"
 
 
 namespace rollnoise::io {
@@ -105,9 +106,10 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
 
 namespace rollnoise::io {
 
-NoiseInputs read_noise_inputs(const CaseReader& r) {
+NoiseInputs read_noise_inputs(const CaseReader& r, std::vector<double>* freq) {
   InputProblems problems;
   NoiseInputs in;
+  if (freq) problems.check([&] { *freq = read_frequency_axis(r); });
   in.contact = read_contact_case(r, problems);
   in.noise = read_noise_case(r, problems);
   problems.throw_if_any();

@@ -25,7 +25,8 @@ struct NoiseInputs {
   NoiseCase noise;
 };
 
-/// Read the contact and noise parts of a case; one InputError with every problem found.
-NoiseInputs read_noise_inputs(const CaseReader& r);
+/// Read the contact and noise parts of a case (and, when `freq` is given, its [frequency] axis
+/// into `freq`); one InputError with every problem found.
+NoiseInputs read_noise_inputs(const CaseReader& r, std::vector<double>* freq = nullptr);
 
 }  // namespace rollnoise::io
