@@ -77,11 +77,13 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   in.normal_stiffness = r.stage.normal_stiffness;
   in.speed = cc.speed;
   in.normal_coupling = nc.normal_coupling;
-  in.model = nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker_coefficients(cc, freq.size());
+  const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
+  const noise::ContactCoefficients kalker = kalker_needed ? kalker_coefficients(cc, freq.size()) : noise::ContactCoefficients{};
+  in.model = nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker;
   if (nc.compare == Baseline::kQuasiSteady)  // the same mean state, frequency-independent
     in.baseline = noise::quasi_steady_coefficients(r.f0, r.g0, freq.size());
   else if (nc.compare == Baseline::kKalker && nc.use_nss)
-    in.baseline = kalker_coefficients(cc, freq.size());
+    in.baseline = kalker;
   r.coupled = nc.normal_coupling && !in.model.load.empty();
   r.variants = noise::solve_loop_variants(structures, in);
   r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
