@@ -1,18 +1,12 @@
 #include "cli/contact_setup.hpp"
 
+#include "io/contact_case.hpp"
+
 namespace rollnoise::cli {
 
 MeanState solve_mean_state(const io::CaseReader& r, bool with_model) {
-  MeanState s;
-  s.contact = io::read_contact_case(r);
-  s.patch = std::make_unique<contact::ContactPatch>(io::solve_case_patch(s.contact));
-  s.contact.grid = s.patch->grid;  // profiles: the grid may have been enlarged
-  s.steady = contact::solve_steady_rolling(s.patch->influence, s.patch->normal.pn,
-                                           s.contact.steady_input(), s.contact.tangential);
-  if (with_model)
-    s.model = std::make_unique<nss::LinearContactModel>(
-        *s.patch, s.steady, nss::LinearModelInput{s.contact.mu, s.contact.speed, s.contact.spin_offset});
-  return s;
+  io::ContactCase c = io::read_contact_case(r);
+  return io::within_case(r, [&] { return pipeline::solve_mean_state(std::move(c), with_model); });
 }
 
 }  // namespace rollnoise::cli

@@ -1,23 +1,15 @@
-// What the contact commands share: the case's patch, the steady state at the mean creepage, and
-// (for creep/response/validate) the linear model around it.
+// The mean state of a case file, for the commands that start from it (creep, response, validate,
+// bench): the case read by io, the mean state solved by the pipeline (pipeline/mean_state.hpp).
 #pragma once
 
-#include <memory>
-
-#include "contact/patch.hpp"
-#include "contact/steady_rolling.hpp"
-#include "io/contact_case.hpp"
-#include "nss/linear_model.hpp"
+#include "io/case_reader.hpp"
+#include "pipeline/mean_state.hpp"
 
 namespace rollnoise::cli {
 
-struct MeanState {
-  io::ContactCase contact;
-  std::unique_ptr<contact::ContactPatch> patch;
-  contact::TangentialSolution steady;
-  std::unique_ptr<nss::LinearContactModel> model;  ///< built on request
-};
+using pipeline::MeanState;
 
+/// Read the contact part of the case and solve its mean state (and linear model when asked).
 MeanState solve_mean_state(const io::CaseReader& r, bool with_model);
 
 }  // namespace rollnoise::cli

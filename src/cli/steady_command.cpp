@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "io/contact_case.hpp"
 #include "io/contact_output.hpp"
+#include "pipeline/steady_sweep.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -83,6 +84,7 @@ void print_solution(const contact::Grid& g, const contact::TangentialSolution& s
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   io::ContactCase cc = io::read_contact_case(reader);
+  io::within_case(reader, [&] { pipeline::place_contact(cc); });
   if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
   // Read every sweep point before any work, so that bad input fails early.
   std::vector<double> values;
@@ -92,13 +94,14 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
     for (const auto& kv : expand_sweep(sweeps[0], reader, values)) {
       points.push_back(reader.with(kv));
       point_cases.push_back(io::read_contact_case(points.back()));
+      io::within_case(points.back(), [&] { pipeline::place_contact(point_cases.back()); });
     }
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_case(w, reader);
 
   auto t0 = Clock::now();
-  const contact::ContactPatch patch = io::solve_case_patch(cc);
+  const contact::ContactPatch patch = io::within_case(reader, [&] { return pipeline::solve_patch(cc); });
   cc.grid = patch.grid;  // profiles: the grid may have been enlarged
   std::printf("%s: normal problem on %d x %d elements (dx = %.4g mm, dy = %.4g mm)\n",
               reader.name().c_str(), cc.grid.nx, cc.grid.ny, cc.grid.dx * 1e3, cc.grid.dy * 1e3);
@@ -121,29 +124,19 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
     std::vector<int> n_adh, n_slip, iters;
     std::printf("sweep %s (%zu points):\n%12s %12s %12s %12s %8s %8s\n", sweeps[0].c_str(),
                 points.size(), "value", "Fx [N]", "Fy [N]", "Mz [N m]", "adhesion", "slip");
-    contact::TangentialSolution previous;
-    for (size_t i = 0; i < points.size(); ++i) {
-      const io::ContactCase& pc = point_cases[i];
-      // The normal problem is reused unless the sweep changes it.
-      const bool same_normal = pc.grid.nx == cc.grid.nx && pc.grid.ny == cc.grid.ny &&
-                               pc.grid.dx == cc.grid.dx && pc.grid.dy == cc.grid.dy &&
-                               pc.material.E == cc.material.E && pc.material.nu == cc.material.nu &&
-                               pc.normal_force == cc.normal_force && pc.a == cc.a && pc.b == cc.b;
-      std::unique_ptr<contact::ContactPatch> own;
-      if (!same_normal) own = std::make_unique<contact::ContactPatch>(io::solve_case_patch(pc));
-      const contact::ContactPatch& local = same_normal ? patch : *own;
-      const auto s = contact::solve_steady_rolling(local.influence, local.normal.pn, pc.steady_input(),
-                                                   pc.tangential, same_normal && i ? &previous : nullptr);
-      const auto f = contact::total_forces(pc.grid, s.px, s.py);
-      std::printf("%12.6g %12.6g %12.6g %12.6g %8d %8d\n", values[i], f.Fx, f.Fy, f.Mz,
-                  s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip));
-      force.insert(force.end(), {f.Fx, f.Fy, f.Mz});
-      creep.insert(creep.end(), {pc.creepage.xi_x, pc.creepage.xi_y, pc.creepage.phi});
-      n_adh.push_back(s.count(contact::ElementState::adhesion));
-      n_slip.push_back(s.count(contact::ElementState::slip));
-      iters.push_back(s.iterations);
-      previous = s;
-    }
+    io::within_case(reader, [&] {
+      return pipeline::steady_sweep(cc, patch, point_cases, [&](std::size_t i, const io::ContactCase& pc,
+                                                                const contact::TangentialSolution& s) {
+        const auto f = contact::total_forces(pc.grid, s.px, s.py);
+        std::printf("%12.6g %12.6g %12.6g %12.6g %8d %8d\n", values[i], f.Fx, f.Fy, f.Mz,
+                    s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip));
+        force.insert(force.end(), {f.Fx, f.Fy, f.Mz});
+        creep.insert(creep.end(), {pc.creepage.xi_x, pc.creepage.xi_y, pc.creepage.phi});
+        n_adh.push_back(s.count(contact::ElementState::adhesion));
+        n_slip.push_back(s.count(contact::ElementState::slip));
+        iters.push_back(s.iterations);
+      });
+    });
     const std::size_t n = points.size();
     w.attribute("/sweep", "spec", sweeps[0]);
     w.write("/sweep/value", values, {n}, "as the swept key (index for TOML-array sweeps)");

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
+
 namespace rollnoise::io {
 
 class CaseReader {
@@ -53,6 +55,17 @@ class CaseReader {
   std::unique_ptr<Doc> doc_;
   std::string name_, source_;
 };
+
+/// Run a stage of the pipeline on the case read by `r`: an InputError it throws (naming a case
+/// key, without the file) is thrown again with the case file in front, as r.fail does.
+template <class Stage>
+auto within_case(const CaseReader& r, Stage&& stage) {
+  try {
+    return stage();
+  } catch (const InputError& e) {
+    r.fail(e.key(), e.what());
+  }
+}
 
 /// Resolve a model file: as given if absolute, else relative to the case file's folder, its
 /// parent, or the source tree (in that order). InputError naming `key` if none exists.

@@ -1,49 +1,20 @@
-// The contact part of a case: material, friction, speed, geometry, grid, mean creepage and solver
-// settings, read and checked from a case file.
+// Reading the contact part of a case (material, friction, speed, geometry, grid, mean creepage,
+// solver settings) into pipeline::ContactCase: values checked, profile files read, nothing solved
+// (the contact point of a profile case is found by pipeline::place_contact).
 #pragma once
 
-#include <memory>
-#include <string>
-
-#include "contact/grid.hpp"
-#include "contact/halfspace_operator.hpp"
-#include "contact/material.hpp"
-#include "contact/normal_solver.hpp"
-#include "contact/patch.hpp"
-#include "contact/steady_rolling.hpp"
-#include "geometry/wheel_rail.hpp"
 #include "io/case_reader.hpp"
+#include "io/input_problems.hpp"
+#include "pipeline/contact_case.hpp"
 
 namespace rollnoise::io {
 
-struct ContactCase {
-  contact::Material material;
-  double mu = 0.3;
-  double speed = 0.0;
-  std::string geometry = "hertz";
-  double normal_force = 0.0;
-  double a = 0.0, b = 0.0;  ///< hertz semi-axes (m)
-  contact::Grid grid;
-  double spin_offset = 0.0;
-  contact::Creepage creepage;
-  contact::Backend backend = contact::Backend::Auto;
-  /// profiles: the wheel-rail pair and its contact point (the grid is chosen around it)
-  std::shared_ptr<const geometry::WheelRailPair> profiles;
-  geometry::ContactGeometry contact_point;
-  geometry::GridOptions grid_options;
-  contact::NormalSolverSettings normal;
-  contact::TangentialSolverSettings tangential;
+using pipeline::ContactCase;
 
-  contact::SteadyRollingInput steady_input() const {
-    return {mu, speed, creepage, spin_offset};
-  }
-};
+/// Read and check the contact keys of a case, recording every problem in `problems`.
+ContactCase read_contact_case(const CaseReader& r, InputProblems& problems);
 
-/// Read and check the contact keys of a case. Throws InputError naming the key.
+/// The same, throwing one InputError with every problem found.
 ContactCase read_contact_case(const CaseReader& r);
-
-/// Solve the normal problem of the case (Hertzian or profile geometry). With profiles the grid may
-/// be enlarged when the patch reaches its border: use the returned patch's grid.
-contact::ContactPatch solve_case_patch(const ContactCase& c);
 
 }  // namespace rollnoise::io

@@ -1,5 +1,7 @@
 #include "io/excitation.hpp"
 
+#include "pipeline/transient.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,17 +117,7 @@ void write_excitation(Hdf5Writer& w, const std::string& group, const contact::Cr
 
 std::vector<double> normal_load_series(const CaseReader& r, const contact::CreepageHistory& h,
                                        double normal_mean, double dt, long steps) {
-  const std::string key = h.kind() == contact::CreepageHistory::Kind::samples
-                              ? "excitation.file"
-                              : "excitation.normal_amplitude";
-  std::vector<double> N(steps + 1);
-  for (long k = 0; k <= steps; ++k) {
-    N[k] = normal_mean + h.normal_variation(k * dt);
-    if (!std::isfinite(N[k]))
-      r.fail(key, "the normal load is not finite at t = " + std::to_string(k * dt) + " s");
-    check_positive_load(r, key, N[k], " at t = " + std::to_string(k * dt) + " s");
-  }
-  return N;
+  return within_case(r, [&] { return pipeline::normal_load_series(h, normal_mean, dt, steps); });
 }
 
 }  // namespace rollnoise::io

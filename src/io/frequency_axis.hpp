@@ -8,6 +8,7 @@
 
 namespace rollnoise::io {
 
+/// Read [frequency] and give its frequencies (pipeline/frequency_axis.hpp).
 std::vector<double> read_frequency_axis(const CaseReader& r);
 
 }  // namespace rollnoise::io

@@ -1,0 +1,142 @@
+#include "io/noise_output.hpp"
+
+#include <sstream>
+
+#include "io/contact_output.hpp"
+
+namespace rollnoise::io {
+namespace {
+
+void write_bands(Hdf5Writer& w, const std::string& g, const noise::BandLevels& b, bool roughness) {
+  const std::size_t nb = b.centre.size();
+  std::vector<double> fl, vl;
+  for (const auto& l : b.force_level) fl.insert(fl.end(), l.begin(), l.end());
+  for (const auto& l : b.velocity_level)
+    for (const auto& side : l) vl.insert(vl.end(), side.begin(), side.end());
+  w.write(g + "/centre", b.centre, {nb}, "Hz");
+  w.write(g + "/force_level", fl, {nb, 4}, "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
+  w.write(g + "/velocity_level", vl, {nb, 2, 4}, "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
+  if (roughness)
+    w.write(g + "/roughness_level", b.roughness_level, {nb}, "dB re 1 um (effective, after the contact filter)");
+}
+
+std::vector<std::complex<double>> flatten4(const std::vector<noise::Vector4c>& v) {
+  std::vector<std::complex<double>> out;
+  for (const auto& x : v) out.insert(out.end(), {x(0), x(1), x(2), x(3)});
+  return out;
+}
+
+// Row-major flattening of a list of matrices or vectors.
+template <class Matrix>
+std::vector<std::complex<double>> flatten(const std::vector<Matrix>& v) {
+  std::vector<std::complex<double>> out;
+  for (const auto& m : v)
+    for (int j = 0; j < m.rows(); ++j)
+      for (int k = 0; k < m.cols(); ++k) out.push_back(m(j, k));
+  return out;
+}
+
+// One loop variant: its force per unit roughness and its band levels under `group`.
+void write_variant(Hdf5Writer& w, const std::string& group, const noise::LoopResult& r, const noise::BandLevels& b,
+                   const std::string& what) {
+  w.write(group + "/force", flatten4(r.force), {r.force.size(), 4},
+          "per unit roughness: Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel; " + what);
+  write_bands(w, group + "/bands", b, false);
+}
+
+// /noise/contact/*: the contact state the loop ran on.
+void write_contact_state(Hdf5Writer& w, const pipeline::NoiseCase& nc, const pipeline::NoiseResult& r) {
+  const pipeline::ContactCase& cc = r.contact;
+  const noise::ContactPosition& p = r.curve.position;
+  w.write("/noise/contact/normal_stiffness", r.stage.normal_stiffness, "N/m");
+  w.write("/noise/contact/angle", p.contact_angle, "rad");
+  w.write("/noise/contact/position_wheel", p.wheel_shift_y,
+          "m (wheel profile coordinate from the nominal running circle, field side > 0)");
+  w.write("/noise/contact/position_rail", p.rail_offset_y, "m (rail profile coordinate from the rail's centre line, field side > 0)");
+  w.write("/noise/contact/normal_force", cc.normal_force, "N");
+  w.write("/noise/contact/creepage", std::vector<double>{cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi}, {3},
+          "-, -, rad/m");
+  const noise::CurveContactState* st = r.curve.state ? &*r.curve.state : nullptr;
+  w.write("/noise/contact/rolling_radius", r.curve.rolling_radius(nc), "m");
+  w.write("/noise/contact/two_point", std::vector<int>{st && st->two_point ? 1 : 0}, {}, "-");
+  w.write("/noise/contact/flange_normal_force", st ? st->flange_normal_force : 0.0, "N");
+  w.write("/noise/contact/flange_vertical_load", st ? st->flange_vertical_load : 0.0, "N");
+  w.write("/noise/contact/flange_angle", st ? st->flange_angle : 0.0, "rad");
+  if (st) {
+    w.write("/noise/contact/wheel_load", st->wheel_load, "N");
+    w.write("/noise/contact/load_transfer", st->load_transfer, "N");
+    w.write("/noise/contact/tread_load", st->tread_load, "N (vertical)");
+    w.write("/noise/contact/wheelset_lateral", st->lateral, "m");
+    w.write("/noise/contact/wheelset_yaw", st->yaw, "rad");
+  }
+}
+
+}  // namespace
+
+CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve) {
+  if (!curve.creepage_from_curve()) return r;
+  std::ostringstream v;
+  v.precision(12);
+  v << "creepage.mean=[" << c.creepage.xi_x << ", " << c.creepage.xi_y << ", " << c.creepage.phi << "]";
+  return r.with(v.str());
+}
+
+void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseCase& nc,
+                 const pipeline::NoiseResult& r) {
+  using Baseline = pipeline::NoiseCase::Baseline;
+  const auto& variants = r.variants;
+  write_mean_state(w, case_as_run(reader, r.contact, r.curve), *r.stage.patch, r.contact.creepage, r.stage.steady);
+  const std::vector<double>& freq = r.axis.frequency;
+  const std::size_t nf = freq.size();
+  w.write("/noise/frequency", freq, {nf}, "Hz");
+  w.write("/noise/force", flatten4(variants.main.force), {nf, 4},
+          "per unit roughness: Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
+  w.write("/noise/wheel_velocity", flatten4(variants.main.wheel_velocity), {nf, 4}, "per unit roughness: (m/s)/m, (rad/s)/m");
+  w.write("/noise/rail_velocity", flatten4(variants.main.rail_velocity), {nf, 4}, "per unit roughness: (m/s)/m, (rad/s)/m");
+  write_bands(w, "/noise/bands", r.bands, true);
+  w.attribute("/noise", "contact_model", nc.use_nss ? "linear NSS model" : "Kalker's steady linear theory");
+  w.attribute("/noise", "normal_coupling", nc.normal_coupling ? "on" : "off");
+  w.attribute("/noise", "compare", variants.has_baseline() ? r.baseline_name : "none");
+  w.attribute("/noise", "band_average", "mean of |H|^2 over the narrow-band samples inside each band (docs/noise_loop.md)");
+  w.write("/noise/creep/f", flatten(r.creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
+  w.write("/noise/creep/g", flatten(r.load), {nf, 3},
+          "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
+  write_contact_state(w, nc, r);
+  if (r.curve.estimated) {
+    w.write("/noise/curving/radius", nc.curve_radius, "m");
+    w.write("/noise/curving/attack_angle", r.curve.curving.leading.attack_angle, "rad");
+    w.write("/noise/curving/lateral", r.curve.curving.leading.lateral, "m");
+    w.write("/noise/curving/flange_force", r.curve.curving.leading.flange_force, "N");
+  }
+  if (variants.has_uncoupled()) {
+    write_variant(w, "/noise/uncoupled", variants.uncoupled, r.uncoupled_bands, "the same contact with g = 0");
+    std::vector<double> d;
+    for (const auto& x : r.coupling_difference) d.insert(d.end(), x.begin(), x.end());
+    w.write("/noise/bands/coupling_difference", d, {r.axis.centres.size(), 4},
+            "dB, force band levels with minus without the normal -> tangential coupling (Fz, Fx, Fy, Mz)");
+  }
+  if (variants.has_baseline()) {
+    write_variant(w, "/noise/" + r.baseline_name, variants.baseline, r.baseline_bands,
+                  nc.compare == Baseline::kKalker ? "Kalker's steady coefficients (full adhesion, g = 0)"
+                                                  : "quasi-steady contact f(0), g(0) of the same state");
+    if (nc.compare == Baseline::kQuasiSteady) {
+      w.write("/noise/quasi_steady/f", flatten(std::vector<Eigen::Matrix3cd>{r.f0}), {3, 3},
+              "f(0) (N, N m, N m^2), rows Fx, Fy, Mz (the real part is used)");
+      w.write("/noise/quasi_steady/g", flatten(std::vector<noise::LoadCoefficients>{r.g0}), {3},
+              "g(0) (-, -, m) (the real part is used)");
+    }
+  }
+}
+
+void write_receptance(Hdf5Writer& w, const CaseReader& reader, const pipeline::ReceptanceResult& r) {
+  const std::string units =
+      "m/N, m/(N m), rad/N, rad/(N m); order normal, x, y, rotation about the normal (contact frame)";
+  write_mean_state(w, case_as_run(reader, r.contact, r.curve), *r.stage.patch, r.contact.creepage, r.stage.steady);
+  const std::size_t nf = r.frequency.size();
+  w.write("/receptance/frequency", r.frequency, {nf}, "Hz");
+  w.write("/receptance/wheel", flatten(r.structures.wheel_contact), {nf, 4, 4}, units);
+  w.write("/receptance/rail", flatten(r.structures.rail_contact), {nf, 4, 4}, units);
+  w.write("/receptance/contact", flatten(r.contact_receptance), {nf, 4, 4}, units);
+}
+
+}  // namespace rollnoise::io

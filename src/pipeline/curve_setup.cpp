@@ -1,0 +1,78 @@
+#include "pipeline/curve_setup.hpp"
+
+#include <limits>
+
+#include "noise/kalker_linear.hpp"
+
+namespace rollnoise::pipeline {
+
+double CurveSetup::rolling_radius(const NoiseCase& nc) const {
+  return state ? state->contact.rolling_radius : estimated ? curving.rolling_radius : nc.wheel_radius;
+}
+
+noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& nc) {
+  noise::CurveStateInput in;
+  in.pair = c.profiles;
+  in.material = c.material;
+  in.grid = c.grid_options;
+  in.radius = nc.curve_radius > 0.0 ? nc.curve_radius : std::numeric_limits<double>::infinity();
+  in.speed = c.speed;
+  in.cant_deficiency = nc.cant_deficiency;
+  in.wheelbase = nc.wheelbase;
+  in.cg_height = nc.cg_height;
+  in.wheel_load = c.normal_force;
+  in.friction = c.mu;
+  in.multibody = nc.multibody;
+  if (nc.multibody) {
+    in.lateral = nc.wheelset_lateral;
+    in.yaw = nc.wheelset_yaw;
+    if (nc.wheelset_load) in.wheel_load = *nc.wheelset_load;
+    in.creepage = nc.wheelset_creepage;
+  }
+  in.validate();
+  return in;
+}
+
+noise::BogieCurvingInput bogie_curving_input(const ContactCase& c, const NoiseCase& nc) {
+  const Eigen::Matrix3d fk = noise::kalker_creep_matrix(c.a, c.b, c.material.shear_modulus(), c.material.nu);
+  noise::BogieCurvingInput in;
+  in.radius = nc.curve_radius;
+  in.speed = c.speed;
+  in.cant_deficiency = nc.cant_deficiency;
+  in.wheelbase = nc.wheelbase;
+  in.wheel_radius = nc.wheel_radius;
+  in.conicity = nc.conicity;
+  in.flange_clearance = nc.flange_clearance;
+  in.wheel_load = c.normal_force;
+  in.friction = c.mu;
+  in.f11 = fk(0, 0);
+  in.f22 = fk(1, 1);
+  return in;
+}
+
+CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc) {
+  CurveSetup s;
+  s.position = {0.0, 0.0, nc.contact_angle};
+  if (c.profiles && (nc.estimate_creepage || nc.multibody)) {
+    s.state = noise::curve_contact_state(curve_state_input(c, nc));
+    s.estimated = s.state->estimated;
+    s.curving = s.state->estimate;
+    place_contact_at(c, s.state->contact, s.state->normal_force);
+    const Eigen::Vector3d& xi = s.state->creepage;
+    c.creepage = {xi(0), xi(1), xi(2)};
+    s.position = s.state->position();
+    return s;
+  }
+  place_contact(c);
+  if (nc.estimate_creepage && nc.curve_radius > 0.0) {
+    s.estimated = true;
+    s.curving = noise::estimate_bogie_curving(bogie_curving_input(c, nc));
+    c.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
+    s.position = s.curving.position();
+  }
+  if (c.profiles)  // curve.creepage = "case": the case's contact point
+    s.position = {c.contact_point.wheel_s, c.contact_point.rail_y, c.contact_point.contact_angle};
+  return s;
+}
+
+}  // namespace rollnoise::pipeline

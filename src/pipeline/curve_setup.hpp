@@ -1,0 +1,46 @@
+// The curve stage of the noise pipeline: the mean contact state of the leading outer wheel.
+//
+//   profiles with curve.creepage = "estimate" or "multibody": the curve contact state
+//     (noise/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
+//     load transfer and flange share, creepages);
+//   Hertzian case in a curve with curve.creepage = "estimate": the quasi-static bogie estimate on
+//     the conical tread (noise/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
+//   otherwise the case's creepage.mean and contact point (or contact.angle).
+// The stage writes the state's contact point, normal force and creepages into the contact case
+// and places it (pipeline/contact_case.hpp): geometry only, nothing is solved.
+#pragma once
+
+#include <optional>
+
+#include "noise/curve_state.hpp"
+#include "noise/curving.hpp"
+#include "noise/loop.hpp"
+#include "pipeline/contact_case.hpp"
+#include "pipeline/noise_case.hpp"
+
+namespace rollnoise::pipeline {
+
+struct CurveSetup {
+  noise::ContactPosition position;  ///< where the loop couples wheel and rail
+  noise::CurvingEstimate curving;   ///< when estimated
+  bool estimated = false;           ///< the creepages come from a curving estimate
+  std::optional<noise::CurveContactState> state;  ///< profiles (estimate or multibody)
+  /// The creepages were set by the stage (estimate or multibody), not read from the case.
+  bool creepage_from_curve() const { return state.has_value() || estimated; }
+  /// The rolling radius of the contact (m): of the state, of the estimate or the nominal one.
+  double rolling_radius(const NoiseCase& nc) const;
+};
+
+/// Resolve the curve contact state and set c's contact point, normal force, a, b, grid and
+/// creepage accordingly. InputError (curve.* / wheelset.* keys) for inputs outside the models.
+CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc);
+
+/// The inputs of the curve contact state: the case's profiles, material, grid options, curve,
+/// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; validated.
+noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& nc);
+
+/// The inputs of the bogie estimate on the conical tread (Hertzian curve cases): the curve, the
+/// case's wheel load and friction, Kalker's f11, f22 of the case's semi-axes.
+noise::BogieCurvingInput bogie_curving_input(const ContactCase& c, const NoiseCase& nc);
+
+}  // namespace rollnoise::pipeline

@@ -1,0 +1,46 @@
+// The structural, roughness and curve parts of a noise case as plain data (read by
+// io/noise_case.hpp): wheel and track models, roughness spectra, the contact filter, the curve,
+// the wheelset position of a multibody run, the band range and the loop's variants.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "dynamics/track.hpp"
+#include "dynamics/wheel.hpp"
+#include "noise/roughness.hpp"
+#include "noise/roughness_filter.hpp"
+
+namespace rollnoise::pipeline {
+
+struct NoiseCase {
+  double curve_radius = 0.0;  ///< m, 0: tangent track
+  double cant_deficiency = 0.0;
+  bool estimate_creepage = true;
+  bool multibody = false;  ///< curve.creepage = "multibody"
+  double cg_height = 1.5;
+  double wheelbase = 2.5, wheel_radius = 0.46, conicity = 0.15, flange_clearance = 0.005;
+  double contact_angle = 0.0;  ///< when the case gives the creepages
+  /// [wheelset] of a multibody run: position, and optionally its own load and creepages.
+  double wheelset_lateral = 0.0, wheelset_yaw = 0.0;
+  std::optional<double> wheelset_load;
+  std::optional<Eigen::Vector3d> wheelset_creepage;
+  std::unique_ptr<dynamics::RailModel> rail;
+  std::unique_ptr<dynamics::WheelModel> wheel;
+  noise::RoughnessSpectrum rail_roughness, wheel_roughness;
+  noise::ContactFilterModel filter = noise::ContactFilterModel::kIsotropic;
+  bool use_nss = true;
+  /// noise.normal_coupling: the contact's g (F~t = -f xi~ + g Fz) in the loop.
+  bool normal_coupling = true;
+  /// noise.compare: the comparison baseline of the loop (docs/noise_loop.md Sec. 5.1).
+  enum class Baseline { kNone, kQuasiSteady, kKalker };
+  Baseline compare = Baseline::kQuasiSteady;
+  /// Non-empty when a deprecated key was mapped (for the command to print).
+  std::string notice;
+  double band_min = 100.0, band_max = 5000.0;
+  int points_per_band = 48;
+};
+
+}  // namespace rollnoise::pipeline

@@ -1,0 +1,139 @@
+#include "pipeline/noise_pipeline.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "contact/normal_solver.hpp"
+#include "contact/steady_rolling.hpp"
+#include "core/errors.hpp"
+#include "noise/contact_receptance.hpp"
+#include "noise/kalker_linear.hpp"
+#include "noise/roughness.hpp"
+#include "pipeline/mean_state.hpp"
+
+namespace rollnoise::pipeline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Kalker's linear theory (full adhesion) of the case's semi-axes: constant f, g = 0.
+noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n) {
+  noise::ContactCoefficients k = noise::constant_coefficients(
+      noise::kalker_creep_matrix(c.a, c.b, c.material.shear_modulus(), c.material.nu).cast<std::complex<double>>(),
+      noise::LoadCoefficients::Zero(), n);
+  k.load.clear();
+  return k;
+}
+
+}  // namespace
+
+ContactStage contact_stage(const ContactCase& c, bool with_model) {
+  ContactStage s;
+  s.patch = std::make_unique<contact::ContactPatch>(solve_patch(c));
+  const contact::HalfSpaceOperator op(s.patch->influence, contact::Problem::Normal, 0, c.backend);
+  s.normal_stiffness = contact::normal_load_sensitivity(s.patch->grid, op, s.patch->normal).stiffness();
+  s.steady = contact::solve_steady_rolling(s.patch->influence, s.patch->normal.pn, c.steady_input(), c.tangential);
+  if (with_model) s.model = linear_model(c, *s.patch, s.steady);
+  return s;
+}
+
+BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
+  BandAxis a;
+  a.centres = noise::third_octave_centres(nc.band_min, nc.band_max);
+  if (a.centres.empty()) throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
+  a.frequency = noise::band_frequencies(a.centres, nc.points_per_band);
+  check_nyquist(c, a.frequency, "noise.band_max");
+  return a;
+}
+
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
+  const auto t0 = Clock::now();
+  NoiseResult r;
+  r.curve = resolve_curve(c, nc);  // 1
+  r.axis = band_axis(c, nc);       // 2, before anything is solved
+  r.contact = std::move(c);
+  const ContactCase& cc = r.contact;
+  const std::vector<double>& freq = r.axis.frequency;
+
+  // 3. contact
+  r.stage = contact_stage(cc);
+  r.contact.grid = r.stage.patch->grid;  // profiles: the grid may have been enlarged
+  check_nyquist(cc, freq, "noise.band_max");
+  const nss::LinearContactModel& model = *r.stage.model;
+  r.creep = model.creep_coefficients(freq);
+  r.load = model.normal_load_coefficients(freq);  // g, the same sweep
+  r.f0 = model.creep_coefficients({0.0})[0];
+  r.g0 = model.normal_load_coefficients({0.0})[0];
+  r.seconds_contact = seconds_since(t0);
+
+  // 4. structures once, then the loop per contact model
+  const auto t1 = Clock::now();
+  const noise::StructuralReceptances structures =
+      noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
+  r.seconds_structures = seconds_since(t1);
+  using Baseline = NoiseCase::Baseline;
+  noise::LoopVariantsInput in;
+  in.normal_stiffness = r.stage.normal_stiffness;
+  in.speed = cc.speed;
+  in.normal_coupling = nc.normal_coupling;
+  const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
+  const noise::ContactCoefficients kalker = kalker_needed ? kalker_coefficients(cc, freq.size()) : noise::ContactCoefficients{};
+  in.model = nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker;
+  if (nc.compare == Baseline::kQuasiSteady)  // the same mean state, frequency-independent
+    in.baseline = noise::quasi_steady_coefficients(r.f0, r.g0, freq.size());
+  else if (nc.compare == Baseline::kKalker && nc.use_nss)
+    in.baseline = kalker;
+  r.coupled = nc.normal_coupling && !in.model.load.empty();
+  r.variants = noise::solve_loop_variants(structures, in);
+  r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
+
+  // 5. roughness and bands
+  noise::ContactFilter filter;
+  filter.model = nc.filter;
+  filter.a = cc.a;
+  filter.b = cc.b;
+  const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, cc.speed, filter);
+  const std::vector<double>& centres = r.axis.centres;
+  r.bands = noise::band_levels(r.variants.main, centres, roughness);
+  const std::vector<double> rough_levels = roughness.levels(centres);
+  if (r.variants.has_uncoupled()) {
+    r.uncoupled_bands = noise::band_levels(r.variants.uncoupled, centres, rough_levels);
+    r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
+  }
+  if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
+  r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
+  r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
+  r.seconds_total = seconds_since(t0);
+  return r;
+}
+
+ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {
+  ReceptanceResult r;
+  r.curve = resolve_curve(c, nc);
+  for (double f : freq)
+    if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
+  if (nc.use_nss) check_nyquist(c, freq, "frequency.f_max");
+  r.contact = std::move(c);
+  const ContactCase& cc = r.contact;
+  r.frequency = freq;
+  r.stage = contact_stage(cc, nc.use_nss);
+  r.contact.grid = r.stage.patch->grid;
+  if (nc.use_nss) check_nyquist(cc, freq, "frequency.f_max");
+  const double kN = r.stage.normal_stiffness;
+  if (nc.use_nss) {
+    const nss::LinearContactModel& model = *r.stage.model;
+    const auto f = model.creep_coefficients(freq);
+    r.contact_receptance = nc.normal_coupling
+                               ? noise::contact_receptances(freq, kN, cc.speed, f, model.normal_load_coefficients(freq))
+                               : noise::contact_receptances(freq, kN, cc.speed, f);
+  } else {
+    r.contact_receptance = noise::contact_receptances(
+        freq, kN, cc.speed,
+        noise::steady_creep(noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu)));
+  }
+  r.structures = noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
+  return r;
+}
+
+}  // namespace rollnoise::pipeline

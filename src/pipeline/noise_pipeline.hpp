@@ -1,0 +1,94 @@
+// The noise pipeline (docs/noise_loop.md): case -> curve contact state -> contact (patch, steady
+// rolling, linear NSS model, creep coefficients) -> structures -> closed loop -> 1/3-octave bands.
+// Each stage is callable alone; `rollnoise noise` runs them all, `rollnoise receptance` the first
+// three, and a study reuses the stages whose inputs it shares.
+//
+//   1. curve_setup.hpp: the mean contact state, the case placed (geometry only);
+//   2. the frequencies: narrow-band samples of the 1/3-octave bands, checked against the grid's
+//      Nyquist limit before anything is solved;
+//   3. contact_stage: patch, its normal stiffness dN/d(delta) on the frozen contact area
+//      (contact::normal_load_sensitivity), steady rolling, the linear model, f(w) and g(w) of one
+//      sweep, f(0) and g(0);
+//   4. structures (wheel and rail receptances at the contact point, once), the loop variants
+//      (noise/loop_variants.hpp): with the coupling g, without it, and the baseline of
+//      noise.compare (quasi-steady f(0), g(0), or Kalker's coefficients);
+//   5. the effective roughness (wheel + rail, contact filter) and the band levels of each variant.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/forces.hpp"
+#include "contact/patch.hpp"
+#include "contact/tangential_solver.hpp"
+#include "noise/bands.hpp"
+#include "noise/loop.hpp"
+#include "noise/loop_variants.hpp"
+#include "nss/linear_model.hpp"
+#include "pipeline/contact_case.hpp"
+#include "pipeline/curve_setup.hpp"
+#include "pipeline/noise_case.hpp"
+
+namespace rollnoise::pipeline {
+
+/// Stage 3: the contact at the mean state.
+struct ContactStage {
+  std::unique_ptr<contact::ContactPatch> patch;
+  double normal_stiffness = 0.0;  ///< k_N = dN/d(delta) on the frozen contact area (N/m)
+  contact::TangentialSolution steady;
+  std::unique_ptr<nss::LinearContactModel> model;
+};
+
+/// Patch, normal stiffness, steady rolling and (with_model) the linear model of a placed case.
+ContactStage contact_stage(const ContactCase& c, bool with_model = true);
+
+/// The narrow-band frequencies of the case's bands (stage 2) and the band centres.
+struct BandAxis {
+  std::vector<double> centres;    ///< 1/3-octave centres (Hz)
+  std::vector<double> frequency;  ///< narrow-band samples (Hz)
+};
+/// InputError naming noise.band_max when no band lies in the range or the samples exceed the
+/// Nyquist limit of the placed case.
+BandAxis band_axis(const ContactCase& c, const NoiseCase& nc);
+
+struct NoiseResult {
+  ContactCase contact;  ///< as run: the curve's contact point, normal force and creepages
+  CurveSetup curve;
+  BandAxis axis;
+  ContactStage stage;
+  std::vector<nss::CreepMatrix> creep;  ///< f(w) (N, N m, N m^2)
+  std::vector<nss::LoadVector> load;    ///< g(w) (-, -, m)
+  Eigen::Matrix3cd f0;                  ///< f(0)
+  noise::LoadCoefficients g0;           ///< g(0)
+  bool coupled = false;                 ///< the main loop ran with g
+  noise::LoopVariants variants;
+  std::string baseline_name;            ///< "quasi_steady" or "kalker" (when there is a baseline)
+  noise::BandLevels bands, uncoupled_bands, baseline_bands;
+  /// dB, force band levels with minus without the coupling (Fz, Fx, Fy, Mz); when uncoupled ran
+  std::vector<std::array<double, 4>> coupling_difference;
+  contact::TangentialForces mean_force;  ///< of the steady state
+  /// 20 log10 |F_y / N| (dB): the level of mu F_z relative to F_z (NaN without a lateral force)
+  double lateral_to_normal_db = 0.0;
+  double seconds_contact = 0.0, seconds_structures = 0.0, seconds_total = 0.0;
+};
+
+/// The whole pipeline for a read noise case (stages 1-5).
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc);
+
+/// `rollnoise receptance`: wheel, rail and contact receptances at the contact point and mean state
+/// of the noise case (contact frame: normal, x, y, rotation about the normal).
+struct ReceptanceResult {
+  ContactCase contact;
+  CurveSetup curve;
+  ContactStage stage;
+  std::vector<double> frequency;
+  noise::StructuralReceptances structures;
+  std::vector<noise::Receptance4> contact_receptance;
+};
+/// InputError naming frequency.f_min / frequency.f_max for non-positive frequencies or
+/// frequencies above the Nyquist limit.
+ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq);
+
+}  // namespace rollnoise::pipeline
