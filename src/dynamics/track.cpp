@@ -157,7 +157,7 @@ RailModel::RailModel(const TrackParameters& track, TrackSupport support, double 
                 track.supports_each_side),
       lateral_(track.lateral, track.lateral_support, track.sleeper_spacing,
                track.supports_each_side) {
-  if (!std::isfinite(x_)) throw InputError("contact_position", "contact position must be finite");
+  if (!std::isfinite(x_)) throw InputError("track.position", "contact position must be finite");
 }
 
 Receptance4 RailModel::receptance(double frequency) const {

@@ -143,9 +143,9 @@ WheelRailPair::WheelRailPair(Profile wheel, Profile rail, const TrackParameters&
     throw InputError(rail_.source(),
                      rail_.source() + ": is a wheel profile, a rail profile was expected");
   if (!(track_.gauge > 0.5 && track_.gauge < 3.0))
-    throw InputError("track.gauge", "the track gauge must be between 0.5 and 3 m");
+    throw InputError("wheel_rail.track_gauge", "the track gauge must be between 0.5 and 3 m");
   if (!(wheelset_.nominal_radius > 0.05))
-    throw InputError("wheelset.nominal_radius", "the nominal rolling radius must exceed 0.05 m");
+    throw InputError("wheel_rail.nominal_radius", "the nominal rolling radius must exceed 0.05 m");
   // Cant an upright rail towards the track centre: its top turns towards -y (the gauge side), a
   // rotation by -atan(inclination) from +y towards +z.
   if (!rail_.canted() && track_.rail_inclination != 0.0)
@@ -365,15 +365,15 @@ contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, d
 contact::ContactPatch solve_wheel_rail_patch(const WheelRailPair& pair, const ContactGeometry& c,
                                              double normal_force, const contact::Material& material,
                                              GridOptions options) {
+  // Enlarge the grid (up to 3 times) while the contact area reaches its border.
   for (int attempt = 0;; ++attempt) {
     const contact::Grid g = choose_grid(pair, c, normal_force, material, options);
-    try {
-      return contact::solve_patch(g, material, undeformed_distance(pair, c, g), normal_force);
-    } catch (const InputError& e) {
-      if (e.key() != "grid" || attempt == 3) throw;
-      options.scale *= 1.5;
-      options.gap_factor *= 1.5;
-    }
+    contact::ContactPatch patch =
+        contact::solve_patch_unchecked(g, material, undeformed_distance(pair, c, g), normal_force);
+    if (attempt == 3) contact::check_inside_potential_area(g, patch.normal.pn, "");
+    if (attempt == 3 || !contact::reaches_border(g, patch.normal.pn)) return patch;
+    options.scale *= 1.5;
+    options.gap_factor *= 1.5;
   }
 }
 

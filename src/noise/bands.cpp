@@ -64,7 +64,7 @@ std::array<double, 2> third_octave_edges(double centre) {
 
 std::vector<double> band_frequencies(const std::vector<double>& centres, int points_per_band) {
   if (points_per_band < 1)
-    throw InputError("frequency.points_per_band", "need at least one frequency per band");
+    throw InputError("noise.points_per_band", "need at least one frequency per band");
   std::vector<double> out;
   for (double c : centres) {
     if (!(c > 0.0)) throw InputError("frequency", "band centres must be positive");

@@ -13,10 +13,10 @@
 namespace rollnoise::noise {
 namespace {
 
+// `key`: the case key that sets the field (bogie_curving_input, io/noise_case.cpp), or
+// "curving.<field>" for a field no case key sets.
 void positive(double v, const char* key) {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw InputError(std::string("curving.") + key,
-                     std::string("curving.") + key + " must be positive and finite");
+  if (!(v > 0.0) || !std::isfinite(v)) throw InputError(key, std::string(key) + " must be positive and finite");
 }
 
 struct Geometry {
@@ -224,31 +224,33 @@ double BogieCurvingInput::half_distance() const {
 
 void BogieCurvingInput::validate() const {
   if (!(radius > 0.0) || std::isnan(radius))
-    throw InputError("curving.radius", "curving.radius must be positive (inf for tangent track)");
+    throw InputError("curve.radius", "curve.radius must be positive (inf for tangent track)");
   if (!(speed >= 0.0) || !std::isfinite(speed))
-    throw InputError("curving.speed", "curving.speed must be >= 0");
+    throw InputError("rolling.speed", "rolling.speed must be >= 0");
   if (!std::isfinite(cant_deficiency))
-    throw InputError("curving.cant_deficiency", "curving.cant_deficiency must be finite");
-  positive(wheelbase, "wheelbase");
-  positive(wheel_radius, "wheel_radius");
-  positive(track_gauge, "track_gauge");
+    throw InputError("curve.cant_deficiency", "curve.cant_deficiency must be finite");
+  positive(wheelbase, "curve.wheelbase");
+  positive(wheel_radius, "curve.wheel_radius");
+  positive(track_gauge, "curving.track_gauge");
   if (!(contact_half_distance >= 0.0))
     throw InputError("curving.contact_half_distance", "curving.contact_half_distance must be >= 0");
-  if (!rolling_radius_difference && !profiles) positive(conicity, "conicity");
+  if (!rolling_radius_difference && !profiles) positive(conicity, "curve.conicity");
   if (!std::isnan(contact_angle) && !(std::abs(contact_angle) < 0.5 * M_PI))
     throw InputError("curving.contact_angle", "curving.contact_angle must lie in (-pi/2, pi/2)");
-  if (!profiles) positive(flange_clearance, "flange_clearance");
-  positive(wheel_load, "wheel_load");
-  positive(friction, "friction");
+  if (!profiles) positive(flange_clearance, "curve.flange_clearance");
+  positive(wheel_load, "contact.normal_force");
+  positive(friction, "friction.mu");
   if (!std::isfinite(load_transfer) || !(std::abs(load_transfer) < wheel_load))
-    throw InputError("curving.load_transfer",
-                     "curving.load_transfer must be finite and below the wheel load in magnitude");
+    throw InputError("curve.cg_height",  // dQ = 2 Q h_d h_cg / s^2 (curve_state.cpp, K4)
+                     "the load transfer by the cant deficiency, dQ = " + std::to_string(load_transfer) +
+                         " N, must be finite and below the wheel load in magnitude (curve.cg_height, "
+                         "curve.cant_deficiency)");
   if (!std::isnan(flange_angle) && !(flange_angle >= 0.0 && flange_angle < 0.5 * M_PI))
     throw InputError("curving.flange_angle", "curving.flange_angle must lie in [0, pi/2)");
   if (!std::isnan(flange_friction) && !(flange_friction >= 0.0 && std::isfinite(flange_friction)))
     throw InputError("curving.flange_friction", "curving.flange_friction must be >= 0");
-  positive(f11, "f11");
-  positive(f22, "f22");
+  positive(f11, "curving.f11");
+  positive(f22, "curving.f22");
 }
 
 CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {

@@ -108,7 +108,7 @@ TEST(Curving, BadInputNamesTheKey) {
     rn::estimate_bogie_curving(in);
     FAIL();
   } catch (const rollnoise::InputError& e) {
-    EXPECT_EQ(e.key(), "curving.radius");
+    EXPECT_EQ(e.key(), "curve.radius");
   }
   in = bogie(300.0);
   in.f22 = 0.0;

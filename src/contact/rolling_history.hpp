@@ -1,0 +1,24 @@
+// The force history of unsteady rolling (paper Eq. 2, contact::TransientRolling) under a creepage
+// history: the loop shared by `rollnoise validate` and `rollnoise bench`.
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+#include <vector>
+
+#include "contact/creepage_history.hpp"
+#include "contact/grid.hpp"
+#include "contact/transient_rolling.hpp"
+
+namespace rollnoise::contact {
+
+/// Total forces (Fx, Fy, Mz) (contact/forces.hpp) after steps k = 1..steps of `rolling` from the
+/// state it holds, step k with the creepage h.at(k dt) (taken at the end of the step, CONTACT's
+/// convention) and, unless `normal_force` is empty, the normal load normal_force[k] (N; after
+/// TransientRolling::set_normal_problem). `on_step(k)` is called after step k (progress output).
+std::vector<Eigen::Vector3d> rolling_forces(TransientRolling& rolling, const Grid& g,
+                                            const CreepageHistory& h, double dt, long steps,
+                                            const std::vector<double>& normal_force = {},
+                                            const std::function<void(long)>& on_step = {});
+
+}  // namespace rollnoise::contact

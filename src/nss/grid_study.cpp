@@ -1,0 +1,194 @@
+#include "nss/grid_study.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "contact/forces.hpp"
+#include "contact/hertz.hpp"
+#include "contact/patch.hpp"
+#include "contact/rolling_history.hpp"
+#include "contact/transient_rolling.hpp"
+#include "linalg/harmonic_fit.hpp"
+
+namespace rollnoise::nss {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Complex amplitude of the harmonic at `freq` in q(t_k), least squares over t_k in the last
+// `periods` periods: q ~ mean + A cos(w t + phase) = mean + Re(A e^{i phase} e^{i w t}).
+std::complex<double> fit_last_periods(const std::vector<double>& t, const std::vector<double>& q,
+                                      double freq, int periods) {
+  const double t0 = t.back() - periods / freq + 1e-9 * (t[1] - t[0]);
+  std::vector<double> tw, qw;
+  for (size_t k = 0; k < t.size(); ++k)
+    if (t[k] > t0) tw.push_back(t[k]), qw.push_back(q[k]);
+  const auto h = linalg::fit_harmonic(tw, qw, freq);
+  return std::polar(h.amplitude, h.phase);
+}
+
+double rel_err(const Eigen::Vector2cd& v, const Eigen::Vector2cd& ref) {
+  return (v - ref).norm() / ref.norm();
+}
+
+// The grid with nx elements in x: ny = nx b/a rounded (at least 4); coarse grids need a wider
+// margin around the ellipse (at least ~1.25 elements each side).
+contact::Grid study_grid(const GridStudyCase& c, int nx, int* ny) {
+  *ny = std::max(4, static_cast<int>(std::lround(nx * c.b / c.a)));
+  const double s_i = std::max(c.scale, 1.0 + 2.5 / std::min(nx, *ny));
+  return contact::Grid::around_ellipse(nx, *ny, c.a, c.b, s_i);
+}
+
+// f at the study frequencies the grid resolves, NaN above its Nyquist limit.
+void measure_creep(const LinearContactModel& m, const GridStudySettings& s, GridMeasurement& r) {
+  std::vector<double> ok;
+  for (double f : s.frequencies)
+    if (f <= m.nyquist_frequency()) ok.push_back(f);
+  const auto fk = m.creep_coefficients(ok);
+  for (size_t i = 0; i < s.frequencies.size(); ++i)
+    r.f.push_back(i < fk.size() ? fk[i] : CreepMatrix::Constant(kNaN));
+}
+
+// Kalker's C11 = -Fx / (G a b xi_x) in the full-adhesion limit xi_x = 1e-6 (Kalker's linear
+// theory, F_x = -G a b C11 xi_x).
+double full_adhesion_c11(const GridStudyCase& c, const contact::ContactPatch& patch) {
+  contact::SteadyRollingInput lin = c.steady;
+  lin.creepage = {1e-6, 0.0, 0.0};
+  const auto sk = contact::solve_steady_rolling(patch.influence, patch.normal.pn, lin, c.tangential);
+  const double G = c.material.shear_modulus();
+  return -contact::total_forces(patch.grid, sk.px, sk.py).Fx / (G * c.a * c.b * 1e-6);
+}
+
+// The transient run from the steady state `steady` (forces F0), its fitted amplitudes, the linear
+// model's -f(w) xi^, and its recursion from rest fitted the same way (window_error).
+void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const GridStudyExcitation& e,
+                       const contact::ContactPatch& patch, const contact::TangentialSolution& steady,
+                       const LinearContactModel& m, GridMeasurement& r) {
+  const double dt = m.time_step();
+  r.steps = std::lround(std::ceil(e.duration / dt));
+  const auto t = Clock::now();
+  contact::TransientRolling rolling(patch.influence, patch.normal.pn, c.steady.mu, c.steady.speed,
+                                    c.steady.spin_offset, c.backend, c.tangential);
+  rolling.set_tractions(steady.px, steady.py);
+  const auto F = contact::rolling_forces(rolling, patch.grid, e.history, dt, r.steps);
+  std::vector<double> time = {0.0}, fx = {r.force(0)}, fy = {r.force(1)};
+  for (long k = 1; k <= r.steps; ++k)
+    time.push_back(k * dt), fx.push_back(F[k - 1](0)), fy.push_back(F[k - 1](1));
+  r.t_transient = seconds(t);
+  const double f = s.transient_frequency;
+  r.transient << fit_last_periods(time, fx, f, s.fit_periods), fit_last_periods(time, fy, f, s.fit_periods);
+  // the linear model on the same grid: F~ = -f(w) xi^ (paper Eqs. 28-30) ...
+  const CreepMatrix fw = m.creep_coefficients({f})[0];
+  r.linear = -(fw * e.xi_hat).head<2>();
+  // ... and its recursion from rest over the same run, fitted the same way: what is left of the
+  // start transient in the fit window
+  std::vector<Eigen::Vector3d> xi;
+  for (double tk : time) {
+    const auto v = e.history.variation(tk);
+    xi.emplace_back(v[0], v[1], v[2]);
+  }
+  const auto Fl = m.time_response(xi);
+  std::vector<double> lx, ly;
+  for (const auto& v : Fl) lx.push_back(v(0)), ly.push_back(v(1));
+  const Eigen::Vector2cd Xl(fit_last_periods(time, lx, f, s.fit_periods),
+                            fit_last_periods(time, ly, f, s.fit_periods));
+  r.window_error = rel_err(Xl, r.linear);
+}
+
+// Largest relative error of the entries (j, k) of f at frequency i against the reference grid (NaN
+// where neither resolves it), optionally phase-corrected.
+using Entries = std::vector<std::pair<int, int>>;
+double creep_error(const GridMeasurement& r, const GridMeasurement& ref, double freq, size_t i,
+                   const Entries& entries, bool corrected, double speed) {
+  const std::complex<double> c = corrected ? half_step_phase_correction(freq, r.dx, speed) : 1.0;
+  const std::complex<double> c_ref = corrected ? half_step_phase_correction(freq, ref.dx, speed) : 1.0;
+  double e = kNaN;
+  for (auto [j, k] : entries) {
+    const std::complex<double> q = c * r.f[i](j, k), q_ref = c_ref * ref.f[i](j, k);
+    const double d = std::abs(q - q_ref) / std::abs(q_ref);
+    if (std::isfinite(d)) e = std::isfinite(e) ? std::max(e, d) : d;
+  }
+  return e;
+}
+
+}  // namespace
+
+GridStudyExcitation grid_study_excitation(const GridStudyCase& c, const GridStudySettings& s) {
+  GridStudyExcitation e;
+  const contact::Creepage& mean = c.steady.creepage;
+  e.amplitude = {s.relative_amplitude * std::abs(mean.xi_x), s.relative_amplitude * std::abs(mean.xi_y),
+                 s.relative_amplitude * std::abs(mean.phi)};
+  if (e.amplitude[0] == 0 && e.amplitude[1] == 0 && e.amplitude[2] == 0) e.amplitude[0] = 5e-5;
+  e.phase = {-M_PI / 2, -M_PI / 2, -M_PI / 2};
+  e.history = contact::CreepageHistory::harmonic(mean, e.amplitude, s.transient_frequency, e.phase);
+  e.xi_hat = Eigen::Vector3cd(std::polar(e.amplitude[0], e.phase[0]), std::polar(e.amplitude[1], e.phase[1]),
+                              std::polar(e.amplitude[2], e.phase[2]));
+  e.duration = s.settle_lengths * 2 * c.a / c.steady.speed + s.fit_periods / s.transient_frequency;
+  return e;
+}
+
+GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
+                             const GridStudyExcitation& e, int nx) {
+  GridMeasurement r;
+  r.nx = nx;
+  const contact::Grid g = study_grid(c, nx, &r.ny);
+  r.dx = g.dx;
+  const contact::HertzContact hz = contact::hertz_from_semi_axes(c.a, c.b, c.normal_force, c.material);
+  auto t = Clock::now();
+  const contact::ContactPatch patch =
+      contact::solve_patch(g, c.material, contact::quadratic_distance(g, hz.A, hz.B), c.normal_force);
+  r.t_normal = seconds(t);
+  const auto steady = contact::solve_steady_rolling(patch.influence, patch.normal.pn, c.steady, c.tangential);
+  r.t_steady = seconds(t);
+  r.contact = patch.normal.contact_elements();
+  const auto F = contact::total_forces(g, steady.px, steady.py);
+  r.force << F.Fx, F.Fy, F.Mz;
+  t = Clock::now();
+  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset});
+  measure_creep(m, s, r);
+  r.t_creep = seconds(t);
+  t = Clock::now();
+  r.c11 = full_adhesion_c11(c, patch);
+  r.t_kalker = seconds(t);
+  // transient response: unsteady rolling from the steady state at the mean creepage
+  if (s.transient_frequency <= m.nyquist_frequency()) measure_transient(c, s, e, patch, steady, m, r);
+  return r;
+}
+
+GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const GridStudySettings& s,
+                                  double speed, double c11_table) {
+  GridStudyErrors err;
+  const GridMeasurement& ref = res.back();
+  const Entries all = {{0, 0}, {1, 1}, {1, 2}}, direct = {{0, 0}, {1, 1}}, f23 = {{1, 2}};
+  const size_t nf = s.frequencies.size();
+  err.f.resize(nf), err.f_direct_corrected.resize(nf), err.f23.resize(nf);
+  for (size_t i = 0; i < nf; ++i)
+    for (const auto& r : res) {
+      const double freq = s.frequencies[i];
+      err.f[i].push_back(creep_error(r, ref, freq, i, all, false, speed));
+      err.f_direct_corrected[i].push_back(creep_error(r, ref, freq, i, direct, true, speed));
+      err.f23[i].push_back(creep_error(r, ref, freq, i, f23, false, speed));
+    }
+  const double ft = s.transient_frequency;
+  for (const auto& r : res) {
+    err.dx.push_back(r.dx);
+    err.force.push_back((r.force.head<2>() - ref.force.head<2>()).norm() / ref.force.head<2>().norm());
+    err.mz.push_back(std::abs(r.force(2) - ref.force(2)) / std::abs(ref.force(2)));
+    err.transient.push_back(rel_err(r.transient, ref.transient));
+    err.transient_corrected.push_back(rel_err(half_step_phase_correction(ft, r.dx, speed) * r.transient,
+                                              half_step_phase_correction(ft, ref.dx, speed) * ref.transient));
+    err.c11.push_back(std::abs(r.c11 / ref.c11 - 1));
+    err.transient_vs_linear.push_back(rel_err(r.transient, r.linear));
+    err.c11_table.push_back(std::abs(r.c11 / c11_table - 1));
+    if (std::isfinite(r.window_error)) err.window_error = std::max(err.window_error, r.window_error);
+  }
+  return err;
+}
+
+}  // namespace rollnoise::nss

@@ -1,0 +1,144 @@
+// Every key an input error names exists: each string literal key of `InputError("...", ...)` and
+// `fail("...", ...)` in src/ (read at test time from ROLLNOISE_SOURCE_DIR) is a declared case key
+// (io::find_key, src/io/case_schema.cpp), an option of the rollnoise program (declared in
+// src/cli/main.cpp), or one of the pseudo-keys below, each with the reason it names no case key.
+// Keys built at run time (a file path, "path:line") are not literals and are not checked here.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/case_schema.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The allow-list: pseudo-keys and why they are not case keys.
+const std::map<std::string, std::string> kPseudoKeys = {
+    {"(file)", "the case file itself could not be opened"},
+    {"(syntax)", "the case file is not valid TOML"},
+    {"grid", "the potential contact area as a whole: grid.scale or the explicit extent grid.x_min..y_max, "
+             "whichever the case uses, or the grid the profile geometry chose"},
+    {"geometry", "the wheel and rail profiles with the lateral displacement (contact.* or wheelset.*, "
+                 "depending on curve.creepage) do not overlap"},
+    {"contact.curvature", "the curvatures A, B of a profile contact: derived from the profiles, no key"},
+    {"frequency", "a frequency argument of a numerics function; the case's frequencies are checked "
+                  "against frequency.* and excitation.* where they are read"},
+    {"excitation", "library guard: creepage and normal-load histories of different lengths"},
+    {"receptance", "library guard: one wheel and one rail receptance per frequency"},
+    {"roughness", "library guard: one roughness level per band"},
+    {"creep", "library guard: no creep-coefficient model given"},
+    {"normal_stiffness", "argument of the contact receptance (derived from the Hertzian contact)"},
+    {"a", "argument of Kalker's coefficients / the contact receptance (contact.a or the patch)"},
+    {"b", "argument of Kalker's coefficients (contact.b or the patch)"},
+    {"a_over_b", "argument of Kalker's coefficients (contact.a / contact.b or the patch)"},
+    {"nu", "argument of Kalker's coefficients (material.nu, checked where read)"},
+    {"shear_modulus", "argument of Kalker's coefficients (from material.E and nu)"},
+    {"contact_filter.a", "field of noise::ContactFilter, set from the contact patch"},
+    {"contact_filter.b", "field of noise::ContactFilter, set from the contact patch"},
+    {"contact_filter.spectral_exponent", "field of noise::ContactFilter, set by roughness.filter"},
+    {"curving.profiles", "the profile table of the curving estimate: from the profiles, no key"},
+    {"curving.contact_half_distance", "field of noise::BogieCurvingInput that no case key sets"},
+    {"curving.contact_angle", "field of noise::BogieCurvingInput that no case key sets"},
+    {"curving.flange_angle", "field of noise::BogieCurvingInput (or from the profiles); no key"},
+    {"curving.flange_friction", "field of noise::BogieCurvingInput that no case key sets"},
+    {"wheel_rail.track_gauge", "field of geometry::TrackParameters that no case key sets"},
+    {"wheel_rail.nominal_radius", "field of geometry::WheelsetParameters that no case key sets"},
+    {"s1002", "argument of the built-in S1002 profile function (lateral coordinate out of range)"},
+    {"s1002.spacing", "argument of the built-in S1002 profile sampler"},
+    // fields of the model files named by case keys (track.file, wheel.modes, wheel.wheelset)
+    {"head_height", "field of the track model file (track.file)"},
+    {"sleeper_spacing", "field of the track model file (track.file)"},
+    {"supports_each_side", "field of the track model file (track.file)"},
+    {"damping_ratio", "column of the wheel modes file (wheel.modes)"},
+    {"frequency_Hz", "column of the wheel modes file (wheel.modes)"},
+    {"modal_mass_kg", "column of the wheel modes file (wheel.modes)"},
+    {"phi_z", "column of the wheel modes file (wheel.modes)"},
+};
+
+struct Use {
+  std::string key, where;
+};
+
+// The text of a line before a // comment that is not inside a string literal.
+std::string strip_comment(const std::string& line) {
+  bool in_string = false;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    if (line[i] == '\\' && in_string) {
+      ++i;
+      continue;
+    }
+    if (line[i] == '"') in_string = !in_string;
+    if (!in_string && line[i] == '/' && line[i + 1] == '/') return line.substr(0, i);
+  }
+  return line;
+}
+
+std::vector<Use> literal_keys() {
+  const std::regex call(R"re(\b(InputError|fail)\(\s*"((?:[^"\\]|\\.)*)")re");
+  std::vector<Use> uses;
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(ROLLNOISE_SOURCE_DIR) / "src")) {
+    const auto ext = entry.path().extension();
+    if (!entry.is_regular_file() || (ext != ".cpp" && ext != ".hpp")) continue;
+    std::ifstream in(entry.path());
+    std::string text, line;
+    std::vector<size_t> line_start;  // offset of each line in `text`
+    while (std::getline(in, line)) line_start.push_back(text.size()), text += strip_comment(line) + "\n";
+    for (std::sregex_iterator m(text.begin(), text.end(), call), end; m != end; ++m) {
+      const size_t at = static_cast<size_t>(m->position(0));
+      const size_t n = std::upper_bound(line_start.begin(), line_start.end(), at) - line_start.begin();
+      uses.push_back({(*m)[2].str(), fs::relative(entry.path(), ROLLNOISE_SOURCE_DIR).string() + ":" +
+                                         std::to_string(n)});
+    }
+  }
+  return uses;
+}
+
+std::set<std::string> cli_options() {
+  // the names in add_option/add_flag("-o,--output", ...) of src/cli/main.cpp
+  std::ifstream in(fs::path(ROLLNOISE_SOURCE_DIR) / "src/cli/main.cpp");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const std::regex decl(R"re(add_(?:option|flag)\(\s*"([^"]*)")re");
+  std::set<std::string> names;
+  for (std::sregex_iterator m(text.begin(), text.end(), decl), end; m != end; ++m) {
+    std::stringstream list((*m)[1].str());
+    for (std::string name; std::getline(list, name, ',');) names.insert(name);
+  }
+  return names;
+}
+
+}  // namespace
+
+TEST(ErrorKeys, EveryLiteralKeyIsACaseKeyAnOptionOrAListedPseudoKey) {
+  const auto uses = literal_keys();
+  ASSERT_GT(uses.size(), 50u);  // the scan found the sources
+  const auto options = cli_options();
+  ASSERT_TRUE(options.count("--csv") && options.count("--set")) << "main.cpp's options not found";
+  for (const Use& u : uses) {
+    const bool declared = rollnoise::io::find_key(u.key) != nullptr;
+    const bool option = u.key.rfind('-', 0) == 0 && options.count(u.key) > 0;
+    EXPECT_TRUE(declared || option || kPseudoKeys.count(u.key))
+        << u.where << ": InputError key \"" << u.key
+        << "\" is no case key (rollnoise keys), no option of rollnoise and not in the pseudo-key list";
+  }
+}
+
+TEST(ErrorKeys, EveryListedPseudoKeyIsStillUsed) {
+  // the allow-list holds no stale entries (and no real case key)
+  std::set<std::string> used;
+  for (const Use& u : literal_keys()) used.insert(u.key);
+  for (const auto& [key, reason] : kPseudoKeys) {
+    EXPECT_TRUE(used.count(key)) << "pseudo-key \"" << key << "\" is no longer used: remove it";
+    EXPECT_EQ(rollnoise::io::find_key(key), nullptr) << key << " is a case key: remove it from the list";
+  }
+}

@@ -1,0 +1,93 @@
+// Observed orders of convergence of the linear model and the unsteady solver under grid
+// refinement (nss/grid_study.hpp, as `rollnoise bench` measures them), on the paper's Hertzian case
+// (a = 7.18 mm, b = 5.29 mm, N = 98.1 kN, V = 50 km/h, mean creepages of Sec. 3.2) on coarse grids
+// nx = 10, 14, 20, 28, 40 (the last the reference; about 2 s).
+//
+// Why these orders. The contact elements are piecewise constant and the grid moves one element
+// per time step, dt = dx/V, so space and time are refined together. The displacement difference
+// (A p_k - A0 p_{k-1})/dt of paper Eq. 2 is a one-step difference centred at t_k - dt/2 while the
+// creepage is taken at t_k: the discrete response leads the converged one by half a step, a phase
+// error w dt/2 = pi f dx/V, FIRST order in dx (nss::half_step_phase_correction). At 1 kHz it
+// dominates the errors of f_jk and of the transient response (10.9 deg on 20x15), so both converge
+// at first order. Once that lead is removed, what is left of the one-step difference is the
+// truncation error of a difference centred at t_k - dt/2, O((w dt)^2): SECOND order. At 5 kHz
+// (w dt = 2 pi f dx/V from 2.9 on 14x10 to 1.3 on 28x21) the time discretisation dominates the
+// error, so the phase-corrected f11/f22 converge at about second order there (2.6 measured here);
+// at 1 kHz that remainder is small and mixed with the irregular spatial error (not asserted). The
+// intervals allow for the higher-order terms still visible on grids this coarse (the fit uses the
+// grids 10..28 against 40x29).
+// (The steady forces are not asserted: the set of elements in contact changes irregularly with dx
+// and their errors scatter about any power law by a factor ~1.4.)
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "linalg/convergence.hpp"
+#include "nss/grid_study.hpp"
+
+using namespace rollnoise;
+
+namespace {
+
+struct Study {
+  std::vector<nss::GridMeasurement> grids;
+  nss::GridStudyErrors errors;
+};
+
+const Study& paper_study() {
+  static const Study s = [] {
+    nss::GridStudyCase c;
+    c.material = {210e9, 0.28};
+    c.normal_force = 98100;
+    c.a = 7.18e-3, c.b = 5.29e-3;
+    c.scale = 34.0 / 30.0;
+    c.steady = {0.3, 13.8888888888889, {0.001, 0.001, -0.053}, 0.0};
+    const nss::GridStudySettings settings;
+    const auto e = nss::grid_study_excitation(c, settings);
+    Study st;
+    for (int nx : {10, 14, 20, 28, 40}) st.grids.push_back(nss::measure_grid(c, settings, e, nx));
+    // C11's table value does not enter the errors asserted here
+    st.errors = nss::grid_study_errors(st.grids, settings, c.steady.speed, 1.0);
+    return st;
+  }();
+  return s;
+}
+
+}  // namespace
+
+TEST(GridStudy, CreepCoefficientsAt1kHzConvergeAtFirstOrder) {
+  const auto& err = paper_study().errors;  // frequencies 100 Hz, 1 kHz, 5 kHz
+  const auto o = linalg::observed_order(err.dx, err.f[1]);
+  EXPECT_EQ(o.points, 4);
+  EXPECT_GE(o.p, 0.8);
+  EXPECT_LE(o.p, 1.3);
+  EXPECT_LT(o.scatter, 1.1);  // a clean power law
+}
+
+TEST(GridStudy, TransientResponseAt1kHzConvergesAtFirstOrder) {
+  const auto& err = paper_study().errors;
+  const auto o = linalg::observed_order(err.dx, err.transient);
+  EXPECT_EQ(o.points, 4);
+  EXPECT_GE(o.p, 0.8);
+  EXPECT_LE(o.p, 1.3);
+  EXPECT_LT(o.scatter, 1.1);
+}
+
+TEST(GridStudy, PhaseCorrectedCreepCoefficientsAt5kHzConvergeAtSecondOrder) {
+  const auto& err = paper_study().errors;
+  const auto raw = linalg::observed_order(err.dx, err.f[2]);
+  const auto corrected = linalg::observed_order(err.dx, err.f_direct_corrected[2]);
+  EXPECT_GE(corrected.points, 3);  // the coarsest grids do not resolve 5 kHz (Nyquist V/(2 dx))
+  EXPECT_GE(corrected.p, 1.7);
+  EXPECT_LE(corrected.p, 2.8);
+  // the half-step lead is what holds the raw coefficients to first order
+  EXPECT_LT(raw.p, 1.5);
+}
+
+TEST(GridStudy, TransientAgreesWithLinearModelOnEveryGrid) {
+  // the consistency check of the bench: the unsteady run and -f(w) xi^ on the same grid agree to
+  // well below 0.1 % (the start transient has decayed, window_error), whatever the grid's own error
+  const auto& err = paper_study().errors;
+  for (size_t i = 0; i < err.transient_vs_linear.size(); ++i) EXPECT_LT(err.transient_vs_linear[i], 1e-3) << i;
+  EXPECT_LT(err.window_error, 1e-4);
+}
