@@ -1,7 +1,16 @@
-# Fails when a numerics source file includes a TOML, HDF5 or CLI11 header (only src/io and src/cli may).
+# Fails when
+#   - a numerics source file includes a TOML, HDF5 or CLI11 header (only src/io and src/cli may);
+#   - any source file but src/linalg/fft.cpp includes <fftw3.h> (the project's one FFT wrapper,
+#     linalg/fft.hpp, keeps the planning flags, and so the results, in one place).
 file(GLOB_RECURSE files ${SRC}/*.hpp ${SRC}/*.cpp)
 set(bad "")
 foreach(f IN LISTS files)
+  if(NOT f MATCHES "/src/linalg/fft\\.cpp$")
+    file(STRINGS ${f} lines REGEX "#include *[<\"]fftw3")
+    if(lines)
+      list(APPEND bad "${f}: ${lines} (use linalg/fft.hpp)")
+    endif()
+  endif()
   if(f MATCHES "/src/(io|cli)/")
     continue()
   endif()
@@ -11,6 +20,6 @@ foreach(f IN LISTS files)
   endif()
 endforeach()
 if(bad)
-  message(FATAL_ERROR "numerics files include I/O headers:\n${bad}")
+  message(FATAL_ERROR "layering rules broken:\n${bad}")
 endif()
 message(STATUS "layering ok")

@@ -1,7 +1,5 @@
 #include "nss/linear_model.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,6 +8,7 @@
 #include "contact/halfspace_operator.hpp"
 #include "core/errors.hpp"
 #include "linalg/cholesky_solve.hpp"
+#include "linalg/fft.hpp"
 
 // Numerics of the fast sweep (creep_coefficients), in three steps.
 //
@@ -366,19 +365,16 @@ bool markov_sequence(const Eigen::MatrixXd& Lh, Eigen::MatrixXd S, const Step& s
 std::vector<Eigen::MatrixXcd> transfer_on_grid(const std::vector<Eigen::MatrixXd>& h, int N) {
   const int rows = static_cast<int>(h.front().rows()), cols = static_cast<int>(h.front().cols());
   std::vector<Eigen::MatrixXcd> f(N / 2 + 1, Eigen::MatrixXcd::Zero(rows, cols));
-  double* in = fftw_alloc_real(N);
-  fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
-  const fftw_plan plan = fftw_plan_dft_r2c_1d(N, in, out, FFTW_ESTIMATE);
+  const linalg::RealFft fft(N);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       std::fill(in, in + N, 0.0);
       for (size_t j = 0; j < h.size(); ++j) in[j] = h[j](r, c);
-      fftw_execute(plan);  // out_k = sum_j in_j e^{-2 pi i jk/N}
-      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = std::complex<double>(out[k][0], out[k][1]);
+      fft.forward();  // out_k = sum_j in_j e^{-2 pi i jk/N}
+      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = out[k];
     }
-  fftw_destroy_plan(plan);
-  fftw_free(in);
-  fftw_free(out);
   return f;
 }
 
