@@ -1,10 +1,18 @@
-# Fails when a source file outside src/io and src/cli
-#  - includes a TOML, HDF5 or CLI11 header, or
-#  - includes <fstream> or opens a file (std::ifstream, std::ofstream, std::fstream, fopen):
-# io reads and writes files, the numerics folders take plain structs and arrays.
+# Fails when
+#   - a source file outside src/io and src/cli includes a TOML, HDF5 or CLI11 header, or includes
+#     <fstream> or opens a file (std::ifstream, std::ofstream, std::fstream, fopen): io reads and
+#     writes files, the numerics folders take plain structs and arrays;
+#   - any source file but src/linalg/fft.cpp includes <fftw3.h> (the project's one FFT wrapper,
+#     linalg/fft.hpp, keeps the planning flags, and so the results, in one place).
 file(GLOB_RECURSE files ${SRC}/*.hpp ${SRC}/*.cpp)
 set(bad "")
 foreach(f IN LISTS files)
+  if(NOT f MATCHES "/src/linalg/fft\\.cpp$")
+    file(STRINGS ${f} lines REGEX "#include *[<\"]fftw3")
+    if(lines)
+      list(APPEND bad "${f}: ${lines} (use linalg/fft.hpp)")
+    endif()
+  endif()
   if(f MATCHES "/src/(io|cli)/")
     continue()
   endif()
@@ -18,7 +26,7 @@ foreach(f IN LISTS files)
   endif()
 endforeach()
 if(bad)
-  message(FATAL_ERROR "numerics files include I/O headers or open files:\n${bad}")
+  message(FATAL_ERROR "layering rules broken:\n${bad}")
 endif()
 message(STATUS "layering ok")
 

@@ -35,22 +35,26 @@ CoulombNewton::CoulombNewton(const SlipOperator& S, std::vector<int> elements,
                              const GridField& bound)
     : grid_(S.grid()),
       S_(S),
-      product_(S.grid(), Problem::Tangential,
-               [&S](Component c, int di, int dj) { return S(c, di, dj); }),
-      elements_(std::move(elements)) {
+      product_(std::make_shared<const HalfSpaceOperator>(
+          S.grid(), Problem::Tangential, [&S](Component c, int di, int dj) { return S(c, di, dj); })),
+      elements_(std::move(elements)),
+      S_elements_(element_operator()) {
   const int k0 = S.offset_index(0, 0);
   d1_ = S.xx(k0);
   d2_ = S.yy(k0);
   const int m = static_cast<int>(elements_.size());
   bound_.resize(m);
   for (int a = 0; a < m; ++a) bound_[a] = bound[elements_[a]];
-  grid_in_.assign(2 * grid_.size(), 0.0);
-  grid_out_.assign(2 * grid_.size(), 0.0);
+}
+
+ElementOperator CoulombNewton::element_operator() const {
+  return ElementOperator(product_, grid_, elements_);
 }
 
 void CoulombNewton::set_bounds(std::vector<int> elements, const GridField& bound) {
   if (elements != elements_) {
     elements_ = std::move(elements);
+    S_elements_ = element_operator();
     have_lu_ = false;  // factors of another system size
   }
   const int m = static_cast<int>(elements_.size());
@@ -59,17 +63,8 @@ void CoulombNewton::set_bounds(std::vector<int> elements, const GridField& bound
 }
 
 void CoulombNewton::apply_S(const Eigen::VectorXd& q, Eigen::VectorXd& s) const {
-  const int N = grid_.size(), m = static_cast<int>(elements_.size());
-  for (int a = 0; a < m; ++a) {  // component-major grid fields; exterior elements stay zero
-    grid_in_[elements_[a]] = q(2 * a);
-    grid_in_[N + elements_[a]] = q(2 * a + 1);
-  }
-  product_.apply(grid_in_.data(), grid_out_.data());
-  s.resize(2 * m);
-  for (int a = 0; a < m; ++a) {
-    s(2 * a) = grid_out_[elements_[a]];
-    s(2 * a + 1) = grid_out_[N + elements_[a]];
-  }
+  s.resize(S_elements_.size());
+  S_elements_.apply(q.data(), s.data());
 }
 
 void CoulombNewton::factorise(const std::vector<ElementTraction>& local) {

@@ -29,10 +29,12 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/coulomb.hpp"
+#include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/slip_operator.hpp"
 #include "contact/tangential_solver.hpp"
@@ -43,6 +45,10 @@ class CoulombNewton {
  public:
   /// `elements`: flat grid indices of the contact elements; `bound`: mu pn on the grid.
   CoulombNewton(const SlipOperator& S, std::vector<int> elements, const GridField& bound);
+  CoulombNewton(const CoulombNewton&) = delete;  // the grid operator's work arrays are not shared
+  CoulombNewton& operator=(const CoulombNewton&) = delete;
+  CoulombNewton(CoulombNewton&&) = default;
+  CoulombNewton& operator=(CoulombNewton&&) = default;
 
   /// New traction bounds (a varying normal load, transient_rolling.hpp): `elements` as in the
   /// constructor, `bound` mu pn on the grid, which may be 0 at some of the elements (these carry no
@@ -64,17 +70,19 @@ class CoulombNewton {
  private:
   /// s = S q on the contact elements (q, s interleaved x, y per element), by FFT on the grid.
   void apply_S(const Eigen::VectorXd& q, Eigen::VectorXd& s) const;
+  /// The contact-element operator of S on elements_.
+  ElementOperator element_operator() const;
   /// Assemble J = I - dPi/db (S - D) densely and factorise it (float, or double if needed).
   void factorise(const std::vector<ElementTraction>& local);
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;
 
   Grid grid_;
   SlipOperator S_;
-  HalfSpaceOperator product_;  // S on the grid
+  std::shared_ptr<const HalfSpaceOperator> product_;  // S on the grid
   std::vector<int> elements_;
+  ElementOperator S_elements_;  // S on the contact elements (every element free)
   std::vector<double> bound_;
   double d1_ = 0.0, d2_ = 0.0;
-  mutable std::vector<double> grid_in_, grid_out_;  // 2 N scratch values each
   Eigen::PartialPivLU<Eigen::MatrixXf> lu_float_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_double_;
   bool have_lu_ = false, double_factors_ = false;

@@ -1,11 +1,11 @@
 #include "contact/halfspace_operator.hpp"
 
-#include <fftw3.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <complex>
 #include <vector>
+
+#include "linalg/fft.hpp"
 
 namespace rollnoise::contact {
 namespace {
@@ -73,81 +73,68 @@ int smooth_size(int n) {
 // -(n-1) <= i - k <= n-1 map to distinct residues mod N.
 class FftImpl final : public HalfSpaceOperator::Impl {
  public:
-  FftImpl(const Grid& g, Problem problem, const ToeplitzKernel& t) : g_(g) {
+  FftImpl(const Grid& g, Problem problem, const ToeplitzKernel& t)
+      : g_(g), Nx_(smooth_size(2 * g.nx - 1)), Ny_(smooth_size(2 * g.ny - 1)), fft_(Ny_, Nx_) {
     n = g_.size();
     ncomp = problem == Problem::Normal ? 1 : 2;
     backend = Backend::Fft;
-    Nx_ = smooth_size(2 * g_.nx - 1);
-    Ny_ = smooth_size(2 * g_.ny - 1);
-    Nc_ = Nx_ / 2 + 1;  // r2c halves the last (x) dimension
-    const size_t nreal = static_cast<size_t>(Nx_) * Ny_, ncplx = static_cast<size_t>(Nc_) * Ny_;
-    real_ = fftw_alloc_real(nreal);
-    spec_.resize(ncomp);
-    for (auto& s : spec_) s = fftw_alloc_complex(ncplx);
-    out_ = fftw_alloc_complex(ncplx);
-    // FFTW_ESTIMATE: the plan, and so every result bit, is the same on every run. FFTW_MEASURE
-    // was measured 10-20 % faster on the transient benchmark (within the run-to-run noise of this
-    // machine) and would make results differ in the last bits between runs.
-    fwd_ = fftw_plan_dft_r2c_2d(Ny_, Nx_, real_, spec_[0], FFTW_ESTIMATE);
-    bwd_ = fftw_plan_dft_c2r_2d(Ny_, Nx_, spec_[0], real_, FFTW_ESTIMATE);
+    spec_.resize(ncomp);  // spec_[0] is the planning array, the others have its alignment
+    for (int c = 1; c < ncomp; ++c) spec_[c] = fft_.spectrum_array();
+    out_ = fft_.spectrum_array();
 
     // Kernel spectra, scaled by 1/(Nx Ny) so that the unnormalised inverse transform is exact.
+    const size_t nreal = fft_.real_size(), ncplx = fft_.spectrum_size();
+    double* real = fft_.real();
     const auto comps = blocks(problem);
     kernel_.assign(comps.size(), std::vector<std::complex<double>>(ncplx));
     for (size_t b = 0; b < comps.size(); ++b) {
-      std::fill(real_, real_ + nreal, 0.0);
+      std::fill(real, real + nreal, 0.0);
       for (int m = 0; m < Ny_; ++m) {
         const int dj = m < g_.ny ? m : m - Ny_;
         if (dj <= -g_.ny) continue;  // the padding between the offsets +(ny-1) and -(ny-1)
         for (int l = 0; l < Nx_; ++l) {
           const int di = l < g_.nx ? l : l - Nx_;
           if (di <= -g_.nx) continue;
-          real_[static_cast<size_t>(m) * Nx_ + l] = t(comps[b], di, dj) / nreal;
+          real[static_cast<size_t>(m) * Nx_ + l] = t(comps[b], di, dj) / nreal;
         }
       }
-      fftw_execute_dft_r2c(fwd_, real_, spec_[0]);
-      for (size_t k = 0; k < ncplx; ++k)
-        kernel_[b][k] = {spec_[0][k][0], spec_[0][k][1]};
+      fft_.forward();
+      std::copy(fft_.spectrum(), fft_.spectrum() + ncplx, kernel_[b].begin());
     }
-  }
-  ~FftImpl() override {
-    fftw_destroy_plan(fwd_);
-    fftw_destroy_plan(bwd_);
-    fftw_free(real_);
-    for (auto* s : spec_) fftw_free(s);
-    fftw_free(out_);
   }
   void apply(const double* p, double* u) const override {
-    const size_t ncplx = static_cast<size_t>(Nc_) * Ny_;
+    const size_t ncplx = fft_.spectrum_size();
+    double* real = fft_.real();
     for (int c = 0; c < ncomp; ++c) {  // forward transforms of each traction component
-      std::fill(real_, real_ + static_cast<size_t>(Nx_) * Ny_, 0.0);
+      std::fill(real, real + fft_.real_size(), 0.0);
       for (int j = 0; j < g_.ny; ++j)
         for (int i = 0; i < g_.nx; ++i)
-          real_[static_cast<size_t>(j) * Nx_ + i] = p[c * n + g_.index(i, j)];
-      fftw_execute_dft_r2c(fwd_, real_, spec_[c]);
+          real[static_cast<size_t>(j) * Nx_ + i] = p[c * n + g_.index(i, j)];
+      fft_.forward(spectrum(c));
     }
-    auto* out = reinterpret_cast<std::complex<double>*>(out_);
+    std::complex<double>* out = out_.data();
     for (int a = 0; a < ncomp; ++a) {
       std::fill(out, out + ncplx, 0.0);
       for (int b = 0; b < ncomp; ++b) {
         const auto& K = kernel_[a * ncomp + b];
-        const auto* P = reinterpret_cast<const std::complex<double>*>(spec_[b]);
+        const std::complex<double>* P = spectrum(b);
         for (size_t k = 0; k < ncplx; ++k) out[k] += K[k] * P[k];
       }
-      fftw_execute_dft_c2r(bwd_, out_, real_);
+      fft_.backward(out);
       for (int j = 0; j < g_.ny; ++j)
         for (int i = 0; i < g_.nx; ++i)
-          u[a * n + g_.index(i, j)] = real_[static_cast<size_t>(j) * Nx_ + i];
+          u[a * n + g_.index(i, j)] = real[static_cast<size_t>(j) * Nx_ + i];
     }
   }
 
  private:
+  std::complex<double>* spectrum(int c) const { return c == 0 ? fft_.spectrum() : spec_[c].data(); }
+
   Grid g_;
-  int Nx_ = 0, Ny_ = 0, Nc_ = 0;
-  double* real_ = nullptr;
-  std::vector<fftw_complex*> spec_;
-  fftw_complex* out_ = nullptr;  // product spectrum (aligned like the planning arrays)
-  fftw_plan fwd_ = nullptr, bwd_ = nullptr;
+  int Nx_ = 0, Ny_ = 0;
+  linalg::RealFft fft_;  // r2c halves the last (x) dimension: Ny rows of Nx/2 + 1 bins
+  std::vector<linalg::FftArray<std::complex<double>>> spec_;  // per traction component (c > 0)
+  linalg::FftArray<std::complex<double>> out_;  // product spectrum
   std::vector<std::vector<std::complex<double>>> kernel_;
 };
 

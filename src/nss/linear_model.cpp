@@ -1,15 +1,15 @@
 #include "nss/linear_model.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
 
+#include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "core/errors.hpp"
 #include "linalg/cholesky_solve.hpp"
+#include "linalg/fft.hpp"
 
 // Numerics of the fast sweep (creep_coefficients), in three steps.
 //
@@ -91,13 +91,15 @@ struct LinearContactModel::Dense {
   Eigen::MatrixXd M0, M1;
 };
 
-// The reduced symmetric formulation: K0 (lower triangle) factored in place, and A0 by FFT.
+// The reduced symmetric formulation: K0 (lower triangle) factored in place, and K1 by FFT.
 struct LinearContactModel::Reduced {
+  explicit Reduced(contact::ElementOperator k1) : K1(std::move(k1)) {}
   Eigen::MatrixXd K0;  // holds the Cholesky factor after construction
   std::unique_ptr<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> llt;
-  std::shared_ptr<const contact::HalfSpaceOperator> A0;  // the model's A0_op_
-  int nx = 0, ny = 0;
-  mutable std::vector<double> p, u;  // full-grid work arrays, component-major [c][iy][ix]
+  /// K1 X = Pi' A0 Pi X / dt column by column: the amplitudes expanded to tractions on the grid
+  /// (adhesion elements free, slip elements along t_e), one FFT convolution with the shifted
+  /// kernel (the model's A0_op_), projected back.
+  contact::ElementOperator K1;
   /// K0^{-1} B with the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once
   /// per pass for three right-hand sides, ~3x faster than LLT::solve for few columns).
   Eigen::MatrixXd solve(Eigen::MatrixXd B) const {
@@ -262,8 +264,8 @@ const LinearContactModel::Dense& LinearContactModel::dense() const {
 
 const LinearContactModel::Reduced& LinearContactModel::reduced() const {
   if (reduced_) return *reduced_;
-  auto red = std::make_unique<Reduced>();
   const contact::Grid& g = table_.grid();
+  auto red = std::make_unique<Reduced>(contact::ElementOperator(A0_op_, g, el_, slip_, t_, dt_));
   const int m = static_cast<int>(el_.size());
   // K0 = D + Pi' A Pi / dt: only the lower triangle (element a >= b) is written and read. The
   // block of elements (a, b) is Pi_a' A_ab Pi_b / dt with A_ab = [xx xy; xy yy](di, dj).
@@ -294,11 +296,6 @@ const LinearContactModel::Reduced& LinearContactModel::reduced() const {
   red->llt = std::make_unique<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>>(red->K0);
   if (red->llt->info() != Eigen::Success)
     throw NumericalError("linear contact model: the reduced matrix K0 = D + Pi' A Pi/dt is not positive definite");
-  red->A0 = A0_op_;
-  red->nx = g.nx;
-  red->ny = g.ny;
-  red->p.assign(2 * g.size(), 0.0);
-  red->u.assign(2 * g.size(), 0.0);
   reduced_ = std::move(red);
   return *reduced_;
 }
@@ -307,39 +304,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// K1 X = Pi' A0 Pi X / dt column by column: expand the amplitudes to tractions on the grid, one
-// FFT convolution with the shifted kernel, project back.
-Eigen::MatrixXd apply_K1(const Eigen::MatrixXd& X, const contact::HalfSpaceOperator& A0, std::vector<double>& p,
-                         std::vector<double>& u, const std::vector<int>& el, const std::vector<int>& offset,
-                         const std::vector<char>& slip, const std::vector<Eigen::Vector2d>& t, double dt) {
-  const int m = static_cast<int>(el.size()), N = static_cast<int>(p.size()) / 2;
-  Eigen::MatrixXd out(X.rows(), X.cols());
-  for (int j = 0; j < X.cols(); ++j) {
-    std::fill(p.begin(), p.end(), 0.0);
-    for (int a = 0; a < m; ++a) {
-      const int o = offset[a];
-      if (slip[a]) {
-        p[el[a]] = t[a](0) * X(o, j);
-        p[N + el[a]] = t[a](1) * X(o, j);
-      } else {
-        p[el[a]] = X(o, j);
-        p[N + el[a]] = X(o + 1, j);
-      }
-    }
-    A0.apply(p.data(), u.data());
-    for (int a = 0; a < m; ++a) {
-      const int o = offset[a];
-      if (slip[a]) {
-        out(o, j) = (t[a](0) * u[el[a]] + t[a](1) * u[N + el[a]]) / dt;
-      } else {
-        out(o, j) = u[el[a]] / dt;
-        out(o + 1, j) = u[N + el[a]] / dt;
-      }
-    }
-  }
-  return out;
 }
 
 // Markov parameters h_j = Lh' S_j (3 x p), S_{j+1} = H S_j (S_0 given), until |h_j| < 1e-15 max
@@ -366,19 +330,16 @@ bool markov_sequence(const Eigen::MatrixXd& Lh, Eigen::MatrixXd S, const Step& s
 std::vector<Eigen::MatrixXcd> transfer_on_grid(const std::vector<Eigen::MatrixXd>& h, int N) {
   const int rows = static_cast<int>(h.front().rows()), cols = static_cast<int>(h.front().cols());
   std::vector<Eigen::MatrixXcd> f(N / 2 + 1, Eigen::MatrixXcd::Zero(rows, cols));
-  double* in = fftw_alloc_real(N);
-  fftw_complex* out = fftw_alloc_complex(N / 2 + 1);
-  const fftw_plan plan = fftw_plan_dft_r2c_1d(N, in, out, FFTW_ESTIMATE);
+  const linalg::RealFft fft(N);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       std::fill(in, in + N, 0.0);
       for (size_t j = 0; j < h.size(); ++j) in[j] = h[j](r, c);
-      fftw_execute(plan);  // out_k = sum_j in_j e^{-2 pi i jk/N}
-      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = std::complex<double>(out[k][0], out[k][1]);
+      fft.forward();  // out_k = sum_j in_j e^{-2 pi i jk/N}
+      for (int k = 0; k <= N / 2; ++k) f[k](r, c) = out[k];
     }
-  fftw_destroy_plan(plan);
-  fftw_free(in);
-  fftw_free(out);
   return f;
 }
 
@@ -476,7 +437,7 @@ void LinearContactModel::start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eig
   if (block_ == 3) return;
   const Eigen::VectorXd x0 = X.col(3);
   g0 += Lr_.transpose() * x0;
-  Z.col(3) = apply_K1(x0, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_) + rN1_;
+  Z.col(3) = red.K1 * x0 + rN1_;
   X.col(3) = red.solve(Z.col(3));
   // Scale y to the creepage columns (same K0-norm as the largest), so that the block's Gram
   // matrix, the decay test and the a-posteriori check weigh both inputs alike.
@@ -508,7 +469,7 @@ bool LinearContactModel::exact_markov(int max_contact_lengths) const {
   const bool ok = markov_sequence(
       Lr_, X0,
       [&](const Eigen::MatrixXd& X) {
-        return Eigen::MatrixXd(red.solve(apply_K1(X, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_)));
+        return Eigen::MatrixXd(red.solve(red.K1 * X));
       },
       steps_per_contact_length_, max_contact_lengths * steps_per_contact_length_, h);
   if (!ok) return false;
@@ -595,7 +556,7 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
   int next_check = Lc;
   for (int k = 1; k <= max_blocks; ++k) {
     // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
-    Z = apply_K1(V.middleCols(d - p, p), *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_);
+    Z = red.K1 * V.middleCols(d - p, p);
     X = red.solve(Z);
     const Eigen::VectorXd norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
     const double scale = norm0.maxCoeff();
@@ -792,7 +753,7 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
   Eigen::MatrixXd p = Eigen::MatrixXd::Zero(r_, 1);
   double previous = 0.0;
   for (size_t k = 0; k < xi.size(); ++k) {
-    Eigen::MatrixXd rhs = apply_K1(p, *red.A0, red.p, red.u, el_, offset_, slip_, t_, dt_) + Wr_ * xi[k];
+    Eigen::MatrixXd rhs = red.K1 * p + Wr_ * xi[k];
     if (block_ == 4) rhs += rN0_ * dN[k] + rN1_ * previous;
     p = red.solve(rhs);
     F.push_back(Lr_.transpose() * p + dN_ * dN[k]);

@@ -1,9 +1,9 @@
 #include "nss/spectrum.hpp"
 
-#include <fftw3.h>
-
 #include <cmath>
 #include <numeric>
+
+#include "linalg/fft.hpp"
 
 namespace rollnoise::nss {
 
@@ -12,7 +12,8 @@ Spectrum amplitude_spectrum(const std::vector<double>& x, double dt) {
   Spectrum s;
   if (n < 2) return s;
   const double mean = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  std::vector<double> in(n);
+  const linalg::RealFft fft(n);
+  double* in = fft.real();
   double wsum = 0.0;
   for (int k = 0; k < n; ++k) {
     const double w = 0.5 * (1.0 - std::cos(2.0 * M_PI * k / n));
@@ -20,11 +21,8 @@ Spectrum amplitude_spectrum(const std::vector<double>& x, double dt) {
     wsum += w;
   }
   const int nc = n / 2 + 1;
-  std::vector<std::complex<double>> out(nc);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()),
-                                        FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
+  fft.forward();
+  const std::complex<double>* out = fft.spectrum();
   s.frequency.resize(nc);
   s.amplitude.resize(nc);
   for (int m = 0; m < nc; ++m) {
