@@ -20,7 +20,11 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#ifdef __FMA__
+#include <immintrin.h>
+#endif
 
 namespace rollnoise::linalg {
 
@@ -68,12 +72,33 @@ inline void axpy4<4>(const double* __restrict c0, const double* __restrict c1, c
   }
 }
 
+using v4d = double __attribute__((vector_size(32)));
+
+/// acc + l y, fused (one rounding) where the target has FMA (see dot4).
+inline v4d fused_multiply_add(v4d l, v4d y, v4d acc) {
+#ifdef __FMA__
+  return v4d(_mm256_fmadd_pd(l, y, acc));
+#else
+  return acc + l * y;
+#endif
+}
+inline double fused_multiply_add(double l, double y, double acc) {
+#ifdef __FMA__
+  return std::fma(l, y, acc);
+#else
+  return acc + l * y;
+#endif
+}
+
 /// s[r][q] = sum_i c_q(i) x_r(i) for four columns c_q and K vectors x_r: 4K sums, each kept in
 /// 4 lanes (i mod 4; GCC/Clang vector extension) so that the loop vectorises without reassociation.
+/// Rounding written out: every term is a fused multiply-add (where the target has FMA). Left to
+/// the compiler's contraction (-ffp-contract=fast, GCC's default) the fusing depended on the code
+/// the kernel was inlined into: the same product of the Krylov basis gave results differing in the
+/// last bit from two callers. Fusing every term is what GCC did for the Krylov basis before.
 template <int K>
 inline void dot4(const double* c0, const double* c1, const double* c2, const double* c3, int len,
                  const double* const (&x)[K], double (&s)[K][4]) {
-  using v4d = double __attribute__((vector_size(32)));
   auto load = [](const double* p) {
     v4d v;
     std::memcpy(&v, p, sizeof v);
@@ -85,16 +110,16 @@ inline void dot4(const double* c0, const double* c1, const double* c2, const dou
     const v4d l0 = load(c0 + i), l1 = load(c1 + i), l2 = load(c2 + i), l3 = load(c3 + i);
     for (int r = 0; r < K; ++r) {  // unrolled (K is a constant)
       const v4d y = load(x[r] + i);
-      acc[r][0] += l0 * y;
-      acc[r][1] += l1 * y;
-      acc[r][2] += l2 * y;
-      acc[r][3] += l3 * y;
+      acc[r][0] = fused_multiply_add(l0, y, acc[r][0]);
+      acc[r][1] = fused_multiply_add(l1, y, acc[r][1]);
+      acc[r][2] = fused_multiply_add(l2, y, acc[r][2]);
+      acc[r][3] = fused_multiply_add(l3, y, acc[r][3]);
     }
   }
   for (; i < len; ++i) {
     const double l[4] = {c0[i], c1[i], c2[i], c3[i]};
     for (int r = 0; r < K; ++r)
-      for (int q = 0; q < 4; ++q) acc[r][q][0] += l[q] * x[r][i];
+      for (int q = 0; q < 4; ++q) acc[r][q][0] = fused_multiply_add(l[q], x[r][i], acc[r][q][0]);
   }
   for (int r = 0; r < K; ++r)
     for (int q = 0; q < 4; ++q) {

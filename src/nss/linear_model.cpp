@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "contact/element_operator.hpp"
@@ -426,119 +427,134 @@ Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<
 
 }  // namespace
 
-void LinearContactModel::start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eigen::Vector3d& g0) const {
+LinearContactModel::StartBlock LinearContactModel::start_block() const {
   // X = K0^{-1} [-Pi' W, s y], Z = K0 X; y = K0^{-1}(K1 x0 + rN1), x0 = K0^{-1} rN0 (G3).
   const Reduced& red = reduced();
-  Z.resize(r_, block_);
-  Z.leftCols(3) = Wr_;
-  g0 = dN_;
-  if (block_ == 4) Z.col(3) = rN0_;
-  X = red.solve(Z);
-  if (block_ == 3) return;
-  const Eigen::VectorXd x0 = X.col(3);
-  g0 += Lr_.transpose() * x0;
-  Z.col(3) = red.K1 * x0 + rN1_;
-  X.col(3) = red.solve(Z.col(3));
+  StartBlock b;
+  b.Z.resize(r_, block_);
+  b.Z.leftCols(3) = Wr_;
+  b.g0 = dN_;
+  if (block_ == 4) b.Z.col(3) = rN0_;
+  b.X = red.solve(b.Z);
+  if (block_ == 3) return b;
+  const Eigen::VectorXd x0 = b.X.col(3);
+  b.g0 += Lr_.transpose() * x0;
+  b.Z.col(3) = red.K1 * x0 + rN1_;
+  b.X.col(3) = red.solve(b.Z.col(3));
   // Scale y to the creepage columns (same K0-norm as the largest), so that the block's Gram
   // matrix, the decay test and the a-posteriori check weigh both inputs alike.
-  const double creep_norm = (X.leftCols(3).transpose() * Z.leftCols(3)).diagonal().maxCoeff();
-  const double load_norm = X.col(3).dot(Z.col(3));
-  load_scale_ = load_norm > 0.0 ? std::sqrt(creep_norm / load_norm) : 1.0;
-  X.col(3) *= load_scale_;
-  Z.col(3) *= load_scale_;
+  const double creep_norm = (b.X.leftCols(3).transpose() * b.Z.leftCols(3)).diagonal().maxCoeff();
+  const double load_norm = b.X.col(3).dot(b.Z.col(3));
+  b.load_scale = load_norm > 0.0 ? std::sqrt(creep_norm / load_norm) : 1.0;
+  b.X.col(3) *= b.load_scale;
+  b.Z.col(3) *= b.load_scale;
+  return b;
 }
 
-void LinearContactModel::store_markov(const std::vector<Eigen::MatrixXd>& h, const Eigen::Vector3d& g0) const {
-  markov_.clear();
-  load_markov_.assign(1, g0);
+LinearContactModel::MarkovModel LinearContactModel::markov_model(const std::vector<Eigen::MatrixXd>& h,
+                                                                 const StartBlock& start) const {
+  MarkovModel model;
+  model.load.assign(1, start.g0);
   for (const auto& hj : h) {
-    markov_.push_back(hj.leftCols(3));
-    if (block_ == 4) load_markov_.push_back(hj.col(3) / load_scale_);
+    model.creep.push_back(hj.leftCols(3));
+    if (block_ == 4) model.load.push_back(hj.col(3) / start.load_scale);
   }
+  return model;
 }
 
-bool LinearContactModel::exact_markov(int max_contact_lengths) const {
+std::optional<LinearContactModel::MarkovModel> LinearContactModel::exact_markov(int max_contact_lengths,
+                                                                                SweepInfo& info) const {
   // h_j = L' X_j, X_0 = K0^{-1}(-Pi' W), X_{j+1} = K0^{-1} K1 X_j (the same h_j as
   // L' (M0^{-1} M1)^j M0^{-1} W in the paper's form), until |h_j| < 1e-15 max |h| for a whole
   // contact length; the normal-load column started from y (G3).
   const Reduced& red = reduced();
-  Eigen::MatrixXd X0, Z0;
-  Eigen::Vector3d g0;
-  start_block(X0, Z0, g0);
+  const StartBlock start = start_block();
   std::vector<Eigen::MatrixXd> h;
   const bool ok = markov_sequence(
-      Lr_, X0,
-      [&](const Eigen::MatrixXd& X) {
-        return Eigen::MatrixXd(red.solve(red.K1 * X));
-      },
+      Lr_, start.X, [&](const Eigen::MatrixXd& X) { return Eigen::MatrixXd(red.solve(red.K1 * X)); },
       steps_per_contact_length_, max_contact_lengths * steps_per_contact_length_, h);
-  if (!ok) return false;
-  store_markov(h, g0);
-  info_.method = SweepInfo::Method::markov;
-  info_.block_steps = static_cast<int>(markov_.size());
+  if (!ok) return std::nullopt;
+  info.method = SweepInfo::Method::markov;
+  info.block_steps = static_cast<int>(h.size());
+  return markov_model(h, start);
+}
+
+namespace {
+
+// Orthonormalise the block X (K0 X = Z) in the K0 inner product: X' Z = R' R (Cholesky), X <- X R^{-1},
+// Z <- Z R^{-1}. Returns false when the block has (numerically) lost rank (smallest eigenvalue of
+// X' Z below 1e-24 `scale`): a breakdown of the block process.
+bool normalise_in_K0(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, double scale, Eigen::MatrixXd& R) {
+  Eigen::MatrixXd G = X.transpose() * Z;
+  G = 0.5 * (G + G.transpose()).eval();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(G, Eigen::EigenvaluesOnly);
+  if (!(es.eigenvalues()(0) > 1e-24 * scale)) return false;
+  const Eigen::LLT<Eigen::MatrixXd> g(G);
+  if (g.info() != Eigen::Success) return false;
+  R = g.matrixU();
+  X = R.triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(X);
+  Z = R.triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(Z);
   return true;
 }
 
-bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
-  info_ = SweepInfo{};
-  auto t0 = std::chrono::steady_clock::now();
-  const Reduced& red = reduced();
-  info_.factor_seconds = seconds_since(t0);
-  t0 = std::chrono::steady_clock::now();
-  const int Lc = steps_per_contact_length_;
-  const int max_markov = max_contact_lengths * Lc;
-  const int p = block_;  // block size: 3 creepages (+ 1 normal load, G3)
-  // Block steps: at most 10 contact lengths, and never more than the dimension allows.
-  const int max_blocks = std::min(10 * Lc, r_ / p - 1);
-  const int stride = std::max(4, (Lc + 2) / 3);  // block steps between checks
-  const double tolerance = 1e-10;
+// The block Arnoldi process on N = K0^{-1} K1 in the K0 inner product (step 2 at the top of the
+// file): the basis V (r x d, V' K0 V = I) grows by blocks of p columns, Y = K0 V alongside, and H
+// holds the Gram-Schmidt coefficients (the projection V' K1 V, block upper Hessenberg with upper
+// triangular subdiagonal blocks R). The caller forms the new block X = N V_{k-1} (K1 products and
+// K0 solves); this class only orthonormalises, stores and projects.
+class BlockArnoldi {
+ public:
+  BlockArnoldi(int rows, int block, int capacity)
+      : r_(rows), p_(block), cap_(capacity), V_(rows, capacity), Y_(rows, capacity),
+        H_(Eigen::MatrixXd::Zero(capacity, capacity)) {}
 
-  // Block Arnoldi in the K0 inner product (see the top of the file). V, Y = K0 V grow by blocks
-  // of p columns; H holds the Gram-Schmidt coefficients (the projection V' K1 V).
-  int cap = p * std::min(max_blocks + 2, 2 * Lc + 2);
-  Eigen::MatrixXd V(r_, cap), Y(r_, cap), H = Eigen::MatrixXd::Zero(cap, cap);
-  auto grow = [&](int need) {
-    if (need <= cap) return;
-    const int c = std::max(need, p * ((cap / p) * 3 / 2 + 1));
-    V.conservativeResize(Eigen::NoChange, c);
-    Y.conservativeResize(Eigen::NoChange, c);
-    H.conservativeResize(c, c);
-    H.rightCols(c - cap).setZero();
-    H.bottomRows(c - cap).setZero();
-    cap = c;
-  };
-  // Orthonormalise the block X (K0 X = Z) in the K0 inner product: X' Z = R' R (Cholesky).
-  // Returns false when the block has (numerically) lost rank: a breakdown of the block process.
-  auto normalise = [&](Eigen::MatrixXd& X, Eigen::MatrixXd& Z, double scale, Eigen::MatrixXd& R) {
-    Eigen::MatrixXd G = X.transpose() * Z;
-    G = 0.5 * (G + G.transpose()).eval();
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(G, Eigen::EigenvaluesOnly);
-    if (!(es.eigenvalues()(0) > 1e-24 * scale)) return false;
-    const Eigen::LLT<Eigen::MatrixXd> g(G);
-    if (g.info() != Eigen::Success) return false;
-    R = g.matrixU();
-    X = R.triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(X);
-    Z = R.triangularView<Eigen::Upper>().solve<Eigen::OnTheRight>(Z);
-    return true;
-  };
-
-  Eigen::MatrixXd X, Z, R0;
-  Eigen::Vector3d g0;
-  start_block(X, Z, g0);
-  {
+  /// The first block from X0 = K0^{-1} B (Z0 = B): X0 = V_0 R0. False on a breakdown.
+  bool start(Eigen::MatrixXd X, Eigen::MatrixXd Z) {
     const Eigen::MatrixXd G0 = X.transpose() * Z;
-    if (!normalise(X, Z, G0.diagonal().maxCoeff(), R0)) return false;
+    if (!normalise_in_K0(X, Z, G0.diagonal().maxCoeff(), R0_)) return false;
+    V_.leftCols(p_) = X;
+    Y_.leftCols(p_) = Z;
+    d_ = p_;
+    return true;
   }
-  V.leftCols(p) = X;
-  Y.leftCols(p) = Z;
-  int d = p;  // basis vectors so far
 
-  // The reduced model of the first k blocks (d = p k): Markov parameters of f_k (and g_k).
-  auto model_markov = [&](int dk, std::vector<Eigen::MatrixXd>& h) {
-    const Eigen::MatrixXd Hk = H.topLeftCorner(dk, dk);
+  /// The newest block V_{k-1} of the basis (k - 1 steps done).
+  Eigen::Ref<const Eigen::MatrixXd> last_block() const { return V_.middleCols(d_ - p_, p_); }
+
+  /// Block step k: orthogonalise X = N V_{k-1} (Z = K0 X = K1 V_{k-1}) against the basis, normalise
+  /// it and append it. The column block k-1 of H is complete either way, so the square model of
+  /// the first k blocks (model_dimension()) exists; false on a breakdown (nothing appended).
+  bool extend(Eigen::MatrixXd X, Eigen::MatrixXd Z) {
+    const Eigen::VectorXd norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
+    const double scale = norm0.maxCoeff();
+    const int d = d_;
+    grow(d + p_);
+    const Eigen::MatrixXd C = gram_schmidt(X, Z, norm0);
+    Eigen::MatrixXd R;
+    const bool ok = normalise_in_K0(X, Z, scale, R);
+    H_.block(0, d - p_, d, p_) = C;
+    if (ok) {
+      H_.block(d, d - p_, p_, p_) = R;
+      V_.middleCols(d, p_) = X;
+      Y_.middleCols(d, p_) = Z;
+      d_ += p_;
+    }
+    model_d_ = d;
+    return ok;
+  }
+
+  /// Dimension of the square reduced model after the last step (p k after k steps).
+  int model_dimension() const { return model_d_; }
+
+  /// Markov parameters of the reduced model of the first dk basis vectors: h_j = (V' L)' H^j e_1 R0
+  /// (exact for j < dk / p), until they decay (markov_sequence); false if they do not.
+  bool markov_parameters(int dk, const Eigen::MatrixXd& L, int quiet_steps, int max_steps,
+                         std::vector<Eigen::MatrixXd>& h) const {
+    const int p = p_;
+    const Eigen::MatrixXd Hk = H_.topLeftCorner(dk, dk);
     Eigen::MatrixXd S0 = Eigen::MatrixXd::Zero(dk, p);
-    S0.topRows(p) = R0;
-    const Eigen::MatrixXd Lh = V.leftCols(dk).transpose() * Lr_;
+    S0.topRows(p) = R0_;
+    const Eigen::MatrixXd Lh = V_.leftCols(dk).transpose() * L;
     // S -> H S with H block upper Hessenberg whose subdiagonal blocks R are upper triangular:
     // column c has non-zeros in rows <= c + p only, so columns q..q+3 in rows < q + p + 4.
     return markov_sequence(
@@ -548,118 +564,159 @@ bool LinearContactModel::krylov_markov(int max_contact_lengths) const {
           linalg::subtract_product(Hk, dk, dk, -S, next, [p](int q) { return q + p + 4; });
           return next;
         },
-        Lc, max_markov, h);
-  };
+        quiet_steps, max_steps, h);
+  }
 
-  std::vector<Eigen::MatrixXd> h_prev, h_cur;
-  bool have_prev = false;
-  int next_check = Lc;
-  for (int k = 1; k <= max_blocks; ++k) {
-    // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
-    Z = red.K1 * V.middleCols(d - p, p);
-    X = red.solve(Z);
-    const Eigen::VectorXd norm0 = (X.transpose() * Z).diagonal();  // squared K0-norms
-    const double scale = norm0.maxCoeff();
-    grow(d + p);
-    // Block classical Gram-Schmidt in the K0 inner product, repeated once when a column lost more
-    // than half of its squared norm ("twice is enough", Kahan-Parlett): one pass leaves the new
-    // column orthogonal to O(eps / ratio); away from cancellation one pass is as good as two. The
-    // rolling step mostly transports the traction into new directions (ratios ~0.9-1), with
-    // strong cancellation about once per contact length.
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, p);
+ private:
+  // Block classical Gram-Schmidt in the K0 inner product against the d_ basis vectors, repeated
+  // once when a column lost more than half of its squared norm ("twice is enough", Kahan-Parlett):
+  // one pass leaves the new column orthogonal to O(eps / ratio); away from cancellation one pass
+  // is as good as two. The rolling step mostly transports the traction into new directions
+  // (ratios ~0.9-1), with strong cancellation about once per contact length. Returns the
+  // coefficients C = V' K0 X (the new column block of H).
+  Eigen::MatrixXd gram_schmidt(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, const Eigen::VectorXd& norm0) const {
+    const int d = d_;
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, p_);
     for (int pass = 0; pass < 2; ++pass) {
-      const Eigen::MatrixXd Ci = linalg::transposed_product(Y, d, X);  // Y' X
-      linalg::subtract_product(V, r_, d, Ci, X);                        // X -= V Ci
-      linalg::subtract_product(Y, r_, d, Ci, Z);                        // Z -= Y Ci
+      const Eigen::MatrixXd Ci = linalg::transposed_product(Y_, d, X);  // Y' X
+      linalg::subtract_product(V_, r_, d, Ci, X);                        // X -= V Ci
+      linalg::subtract_product(Y_, r_, d, Ci, Z);                        // Z -= Y Ci
       C += Ci;
       const Eigen::VectorXd norm1 = (X.transpose() * Z).diagonal();
       if (pass == 0 && (norm1.array() > 0.5 * norm0.array()).all()) break;
     }
-    Eigen::MatrixXd R;
-    const bool ok = normalise(X, Z, scale, R);
-    H.block(0, d - p, d, p) = C;
-    if (ok) {
-      H.block(d, d - p, p, p) = R;
-      V.middleCols(d, p) = X;
-      Y.middleCols(d, p) = Z;
-    }
-    // After k steps the square model uses blocks 0..k-1 (d = p k); its H is complete.
-    if (k >= next_check || !ok || k == max_blocks) {
-      info_.krylov_seconds += seconds_since(t0);
-      t0 = std::chrono::steady_clock::now();
-      ++info_.checks;
-      if (!model_markov(d, h_cur)) {
-        have_prev = false;  // not decayed (yet): no usable model at this size
-      } else if (have_prev) {
-        const size_t J = std::max(h_cur.size(), h_prev.size());
-        int N = 64;
-        while (N < 4 * static_cast<int>(J)) N *= 2;
-        const auto fa = transfer_on_grid(h_prev, N), fb = transfer_on_grid(h_cur, N);
-        double err = 0.0;
-        for (size_t i = 0; i < fa.size(); ++i)
-          err = std::max(err, (fb[i] - fa[i]).norm() / std::max(fb[i].norm(), 1e-300));
-        info_.error_estimate = err;
-        if (err <= tolerance) {
-          info_.check_seconds += seconds_since(t0);
-          store_markov(h_cur, g0);
-          info_.method = SweepInfo::Method::krylov;
-          info_.block_steps = k;
-          info_.reduced_dimension = d;
-          return true;
-        }
+    return C;
+  }
+
+  void grow(int need) {
+    if (need <= cap_) return;
+    const int c = std::max(need, p_ * ((cap_ / p_) * 3 / 2 + 1));
+    V_.conservativeResize(Eigen::NoChange, c);
+    Y_.conservativeResize(Eigen::NoChange, c);
+    H_.conservativeResize(c, c);
+    H_.rightCols(c - cap_).setZero();
+    H_.bottomRows(c - cap_).setZero();
+    cap_ = c;
+  }
+
+  int r_, p_, cap_;
+  int d_ = 0;        // basis vectors so far
+  int model_d_ = 0;  // dimension of the square model after the last step
+  Eigen::MatrixXd V_, Y_, H_, R0_;
+};
+
+// The a-posteriori check (step 3 at the top of the file): max over N >= 4J equispaced points of
+// the unit circle of |f_a - f_b| / |f_b| (Frobenius norms) for the transfer functions of two
+// Markov sequences.
+double max_relative_difference(const std::vector<Eigen::MatrixXd>& ha, const std::vector<Eigen::MatrixXd>& hb) {
+  const size_t J = std::max(hb.size(), ha.size());
+  int N = 64;
+  while (N < 4 * static_cast<int>(J)) N *= 2;
+  const auto fa = transfer_on_grid(ha, N), fb = transfer_on_grid(hb, N);
+  double err = 0.0;
+  for (size_t i = 0; i < fa.size(); ++i) err = std::max(err, (fb[i] - fa[i]).norm() / std::max(fb[i].norm(), 1e-300));
+  return err;
+}
+
+}  // namespace
+
+std::optional<LinearContactModel::MarkovModel> LinearContactModel::krylov_markov(int max_contact_lengths,
+                                                                                 SweepInfo& info) const {
+  info = SweepInfo{};
+  auto t0 = std::chrono::steady_clock::now();
+  const Reduced& red = reduced();
+  info.factor_seconds = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  const int Lc = steps_per_contact_length_;
+  const int max_markov = max_contact_lengths * Lc;
+  const int p = block_;  // block size: 3 creepages (+ 1 normal load, G3)
+  // Block steps: at most 10 contact lengths, and never more than the dimension allows.
+  const int max_blocks = std::min(10 * Lc, r_ / p - 1);
+  const int stride = std::max(4, (Lc + 2) / 3);  // block steps between checks
+  const double tolerance = 1e-10;
+
+  const StartBlock start = start_block();
+  BlockArnoldi arnoldi(r_, p, p * std::min(max_blocks + 2, 2 * Lc + 2));
+  if (!arnoldi.start(start.X, start.Z)) return std::nullopt;
+
+  std::vector<Eigen::MatrixXd> h_prev, h_cur;  // Markov parameters of the last two checked models
+  bool have_prev = false;
+  int next_check = Lc;
+  for (int k = 1; k <= max_blocks; ++k) {
+    // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
+    Eigen::MatrixXd Z = red.K1 * arnoldi.last_block();
+    Eigen::MatrixXd X = red.solve(Z);
+    const bool ok = arnoldi.extend(std::move(X), std::move(Z));
+    if (k < next_check && ok && k < max_blocks) continue;
+    // Check: after k steps the square model uses blocks 0..k-1 (d = p k); its H is complete.
+    info.krylov_seconds += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    ++info.checks;
+    const int d = arnoldi.model_dimension();
+    if (!arnoldi.markov_parameters(d, Lr_, Lc, max_markov, h_cur)) {
+      have_prev = false;  // not decayed (yet): no usable model at this size
+    } else if (have_prev) {
+      info.error_estimate = max_relative_difference(h_prev, h_cur);
+      if (info.error_estimate <= tolerance) {
+        info.check_seconds += seconds_since(t0);
+        info.method = SweepInfo::Method::krylov;
+        info.block_steps = k;
+        info.reduced_dimension = d;
+        return markov_model(h_cur, start);
       }
-      if (!ok) return false;  // breakdown without a verified model
-      std::swap(h_prev, h_cur);
-      have_prev = !h_prev.empty() && h_prev.size() < static_cast<size_t>(max_markov);
-      next_check = k + stride;
-      info_.check_seconds += seconds_since(t0);
-      t0 = std::chrono::steady_clock::now();
     }
-    if (!ok) return false;
-    d += p;
+    if (!ok) return std::nullopt;  // breakdown without a verified model
+    std::swap(h_prev, h_cur);
+    have_prev = !h_prev.empty() && h_prev.size() < static_cast<size_t>(max_markov);
+    next_check = k + stride;
+    info.check_seconds += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
   }
-  return false;
+  return std::nullopt;
 }
 
-std::vector<CreepMatrix> LinearContactModel::horner(const std::vector<double>& frequencies) const {
-  std::vector<CreepMatrix> out;
-  out.reserve(frequencies.size());
-  for (double f : frequencies) {  // Horner: sum_j h_j z^j
-    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
-    CreepMatrix acc = CreepMatrix::Zero();
-    for (auto it = markov_.rbegin(); it != markov_.rend(); ++it) acc = acc * z + it->cast<std::complex<double>>();
-    out.push_back(-acc);
-  }
-  return out;
-}
+namespace {
 
-std::vector<LoadVector> LinearContactModel::horner_load(const std::vector<double>& frequencies) const {
-  std::vector<LoadVector> out;
+// sum_j h_j z^j by Horner at z = e^{-i w dt} for each frequency.
+template <class Out, class Term>
+std::vector<Out> horner(const std::vector<Term>& h, double dt, const std::vector<double>& frequencies) {
+  std::vector<Out> out;
   out.reserve(frequencies.size());
-  for (double f : frequencies) {  // g(z) = sum_j gm_j z^j (G3)
-    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt_);
-    LoadVector acc = LoadVector::Zero();
-    for (auto it = load_markov_.rbegin(); it != load_markov_.rend(); ++it)
-      acc = acc * z + it->cast<std::complex<double>>();
+  for (double f : frequencies) {
+    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * f * dt);
+    Out acc = Out::Zero();
+    for (auto it = h.rbegin(); it != h.rend(); ++it) acc = acc * z + it->template cast<std::complex<double>>();
     out.push_back(acc);
   }
   return out;
 }
 
+}  // namespace
+
+std::vector<CreepMatrix> LinearContactModel::creep_from_markov(const std::vector<Eigen::Matrix3d>& h,
+                                                               const std::vector<double>& frequencies) const {
+  std::vector<CreepMatrix> f = horner<CreepMatrix>(h, dt_, frequencies);  // f = -sum_j h_j z^j
+  for (auto& fk : f) fk = -fk;
+  return f;
+}
+
 bool LinearContactModel::build_markov(int max_contact_lengths) const {
   if (!markov_.empty()) return true;
   if (markov_failed_) return false;
-  if (krylov_markov(max_contact_lengths)) return true;
-  const SweepInfo failed = info_;
-  if (!exact_markov(max_contact_lengths)) {
-    info_.method = SweepInfo::Method::hessenberg;
-    info_.krylov_failed = true;
-    markov_failed_ = true;
-    return false;
+  SweepInfo info;
+  std::optional<MarkovModel> model = krylov_markov(max_contact_lengths, info);
+  if (!model) {  // the exact recursion, and failing that the Hessenberg form
+    info.krylov_failed = true;
+    model = exact_markov(max_contact_lengths, info);
+    if (!model) {
+      info.method = SweepInfo::Method::hessenberg;
+      markov_failed_ = true;
+    }
   }
-  info_.checks = failed.checks;
-  info_.error_estimate = failed.error_estimate;
-  info_.krylov_failed = true;
+  info_ = info;
+  if (!model) return false;
+  markov_ = std::move(model->creep);
+  load_markov_ = std::move(model->load);
   return true;
 }
 
@@ -667,14 +724,14 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients(const std::vecto
                                                                 int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
   if (!build_markov(max_contact_lengths)) return creep_coefficients_hessenberg(frequencies);
-  return horner(frequencies);
+  return creep_from_markov(markov_, frequencies);
 }
 
 std::vector<LoadVector> LinearContactModel::normal_load_coefficients(const std::vector<double>& frequencies,
                                                                      int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
   if (!has_normal_load_input()) return std::vector<LoadVector>(frequencies.size(), LoadVector::Zero());
-  if (build_markov(max_contact_lengths)) return horner_load(frequencies);
+  if (build_markov(max_contact_lengths)) return horner<LoadVector>(load_markov_, dt_, frequencies);  // (G3)
   std::vector<LoadVector> g;
   hessenberg_sweep(frequencies, nullptr, &g);
   return g;
@@ -684,18 +741,10 @@ std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std
                                                                        int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
   // Computed afresh (not cached), so that it stays an independent check of creep_coefficients.
-  std::vector<Eigen::Matrix3d> saved = std::move(markov_);
-  std::vector<Eigen::Vector3d> saved_load = std::move(load_markov_);
-  const SweepInfo saved_info = info_;
-  std::vector<CreepMatrix> out;
-  if (exact_markov(max_contact_lengths))
-    out = horner(frequencies);
-  else
-    out = creep_coefficients_hessenberg(frequencies);
-  markov_ = std::move(saved);
-  load_markov_ = std::move(saved_load);
-  info_ = saved_info;
-  return out;
+  SweepInfo info;
+  const std::optional<MarkovModel> model = exact_markov(max_contact_lengths, info);
+  if (!model) return creep_coefficients_hessenberg(frequencies);
+  return creep_from_markov(model->creep, frequencies);
 }
 
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients_hessenberg(

@@ -54,6 +54,7 @@
 #include <Eigen/Dense>
 #include <complex>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "contact/halfspace_operator.hpp"
@@ -185,15 +186,31 @@ class LinearContactModel {
   const Dense& dense() const;
   const Reduced& reduced() const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
-  bool krylov_markov(int max_contact_lengths) const;
-  bool exact_markov(int max_contact_lengths) const;
-  bool build_markov(int max_contact_lengths) const;  // false: fall back to the Hessenberg form
-  void store_markov(const std::vector<Eigen::MatrixXd>& h, const Eigen::Vector3d& g0) const;
+  /// Markov parameters of f (h_j) and of g (gm_j, G3), as one Markov route produced them.
+  struct MarkovModel {
+    std::vector<Eigen::Matrix3d> creep;
+    std::vector<Eigen::Vector3d> load;
+  };
   /// The starting block K0^{-1} [-Pi' W, s y] of the Markov sequence (r x block_), with Z = K0 X,
-  /// and gm_0 = dN + L' x0 of (G3); s scales y to the creepage columns (load_scale_).
-  void start_block(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, Eigen::Vector3d& g0) const;
-  std::vector<CreepMatrix> horner(const std::vector<double>& frequencies) const;
-  std::vector<LoadVector> horner_load(const std::vector<double>& frequencies) const;
+  /// gm_0 = dN + L' x0 of (G3), and the scale s of y (to the creepage columns).
+  struct StartBlock {
+    Eigen::MatrixXd X, Z;
+    Eigen::Vector3d g0 = Eigen::Vector3d::Zero();
+    double load_scale = 1.0;
+  };
+  StartBlock start_block() const;
+  /// The block Krylov reduced model (linear_model.cpp, steps 2-3); nothing if it fails its checks.
+  std::optional<MarkovModel> krylov_markov(int max_contact_lengths, SweepInfo& info) const;
+  /// The exact recursion; nothing if the h_j do not decay within max_contact_lengths.
+  std::optional<MarkovModel> exact_markov(int max_contact_lengths, SweepInfo& info) const;
+  /// Krylov, else exact, into markov_ and load_markov_; false: fall back to the Hessenberg form.
+  bool build_markov(int max_contact_lengths) const;
+  /// Split the Markov parameters of the block (3 creepage columns, 1 scaled load column) into f's
+  /// and g's.
+  MarkovModel markov_model(const std::vector<Eigen::MatrixXd>& h, const StartBlock& start) const;
+  /// f = -sum_j h_j z^j at the frequencies (Horner).
+  std::vector<CreepMatrix> creep_from_markov(const std::vector<Eigen::Matrix3d>& h,
+                                             const std::vector<double>& frequencies) const;
   /// f and/or g by the Hessenberg form (either pointer may be null).
   void hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
                         std::vector<LoadVector>* g) const;
@@ -222,7 +239,6 @@ class LinearContactModel {
   mutable std::vector<Eigen::Matrix3d> markov_;
   mutable std::vector<Eigen::Vector3d> load_markov_;
   mutable bool markov_failed_ = false;  ///< the Markov routes failed: sweeps use the Hessenberg form
-  mutable double load_scale_ = 1.0;
   mutable SweepInfo info_;
   // Hessenberg form of M0^{-1} M1 = Q H Q'
   mutable bool hessenberg_ = false;
