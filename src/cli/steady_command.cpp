@@ -52,8 +52,7 @@ std::vector<std::string> expand_sweep(const std::string& spec, const io::CaseRea
   std::istringstream is(rhs);
   if (!(is >> lo >> c1 >> hi >> c2 >> n) || c1 != ':' || c2 != ':' || n < 1)
     throw InputError("--sweep", "--sweep " + key + ": expected lo:hi:n or a TOML array, got '" + rhs + "'");
-  for (long i = 0; i < n; ++i) {
-    const double v = n == 1 ? lo : lo + (hi - lo) * double(i) / double(n - 1);
+  for (const double v : pipeline::linear_points(lo, hi, n)) {
     values.push_back(v);
     std::ostringstream val;
     val.precision(17);

@@ -6,6 +6,12 @@
 
 namespace rollnoise::pipeline {
 
+std::vector<double> linear_points(double lo, double hi, long n) {
+  std::vector<double> v;
+  for (long i = 0; i < n; ++i) v.push_back(n == 1 ? lo : lo + (hi - lo) * double(i) / double(n - 1));
+  return v;
+}
+
 std::vector<contact::TangentialSolution> steady_sweep(const ContactCase& base, const contact::ContactPatch& patch,
                                                       const std::vector<ContactCase>& points,
                                                       const SweepObserver& observe) {

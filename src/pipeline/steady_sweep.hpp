@@ -13,6 +13,9 @@
 
 namespace rollnoise::pipeline {
 
+/// n points from lo to hi, equally spaced (lo alone when n = 1): the values of a lo:hi:n sweep.
+std::vector<double> linear_points(double lo, double hi, long n);
+
 /// Called after each point with its index, case and solution (for a progress table).
 using SweepObserver = std::function<void(std::size_t, const ContactCase&, const contact::TangentialSolution&)>;
 
