@@ -1,5 +1,6 @@
 #include "pipeline/contact_case.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "contact/hertz.hpp"
@@ -23,20 +24,16 @@ void place_contact(ContactCase& c) {
 
 double nyquist_frequency(const ContactCase& c) { return 0.5 * c.speed / c.grid.dx; }
 
-std::string frequencies_above_nyquist(const ContactCase& c, const std::vector<double>& freq) {
+void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key) {
   const double fn = nyquist_frequency(c);
   double worst = 0.0;
   for (double f : freq) worst = std::max(worst, f);
   // the same relative margin as the linear model's own check (nss/linear_model.cpp)
-  if (!(worst > fn * (1 + 1e-12))) return {};
+  if (!(worst > fn * (1 + 1e-12))) return;
   char msg[200];
   std::snprintf(msg, sizeof msg, "%.6g Hz is above the grid's Nyquist limit V/(2 dx) = %.6g Hz: refine grid.nx or lower it",
                 worst, fn);
-  return msg;
-}
-
-void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key) {
-  if (const std::string above = frequencies_above_nyquist(c, freq); !above.empty()) throw InputError(key, above);
+  throw InputError(key, msg);
 }
 
 contact::ContactPatch solve_patch(const ContactCase& c) {

@@ -59,10 +59,6 @@ void place_contact_at(ContactCase& c, const geometry::ContactGeometry& point, do
 /// The grid's Nyquist limit V/(2 dx) (Hz): one rolling step dx/V per time step.
 double nyquist_frequency(const ContactCase& c);
 
-/// The message for each frequency above the Nyquist limit (empty if none), for an InputError
-/// naming `key`.
-std::string frequencies_above_nyquist(const ContactCase& c, const std::vector<double>& freq);
-
 /// InputError naming `key` when a frequency lies above the Nyquist limit. Called once the case is
 /// placed (before any solve) and again on the patch's grid, which profiles may have enlarged.
 void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key);

@@ -109,10 +109,10 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
 }
 
 ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {
+  for (double f : freq)  // before any work
+    if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
   ReceptanceResult r;
   r.curve = resolve_curve(c, nc);
-  for (double f : freq)
-    if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
   if (nc.use_nss) check_nyquist(c, freq, "frequency.f_max");
   r.contact = std::move(c);
   const ContactCase& cc = r.contact;
