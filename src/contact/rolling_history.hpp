@@ -12,6 +12,14 @@
 
 namespace rollnoise::contact {
 
+/// Steps k = 1..steps of `rolling` from the state it holds, step k with the creepage h.at(k dt)
+/// (taken at the end of the step, CONTACT's convention) and, unless `normal_force` is empty, the
+/// normal load normal_force[k] (N; after TransientRolling::set_normal_problem). `on_step(k, xi, s)`
+/// receives each step's creepage and solution.
+using StepCallback = std::function<void(long, const Creepage&, const TangentialSolution&)>;
+void roll(TransientRolling& rolling, const CreepageHistory& h, double dt, long steps,
+          const std::vector<double>& normal_force, const StepCallback& on_step);
+
 /// Total forces (Fx, Fy, Mz) (contact/forces.hpp) after steps k = 1..steps of `rolling` from the
 /// state it holds, step k with the creepage h.at(k dt) (taken at the end of the step, CONTACT's
 /// convention) and, unless `normal_force` is empty, the normal load normal_force[k] (N; after

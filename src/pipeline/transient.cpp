@@ -6,6 +6,7 @@
 #include <string>
 
 #include "contact/forces.hpp"
+#include "contact/rolling_history.hpp"
 #include "contact/steady_rolling.hpp"
 #include "contact/transient_rolling.hpp"
 #include "core/errors.hpp"
@@ -103,15 +104,15 @@ TransientResult run_transient(const ContactCase& c, const TransientInput& in, co
   };
   record(0, in.history.at(0.0), start);
   const auto t0 = std::chrono::steady_clock::now();
-  for (long k = 1; k <= r.steps; ++k) {
-    const contact::Creepage xi = in.history.at(k * r.dt);  // creepage of step k at t_k = k dt
-    const auto& s = r.varying_load ? rolling.step(xi, load[k]) : rolling.step(xi);
-    r.newton += s.iterations;
-    r.factorisations += s.factorisations;
-    r.gmres += s.linear_iterations;
-    record(k, xi, s);
-    if (observe) observe(k);
-  }
+  const std::vector<double> fixed_load;  // empty: the normal problem stays that of the patch
+  contact::roll(rolling, in.history, r.dt, r.steps, r.varying_load ? load : fixed_load,
+                [&](long k, const contact::Creepage& xi, const contact::TangentialSolution& s) {
+                  r.newton += s.iterations;
+                  r.factorisations += s.factorisations;
+                  r.gmres += s.linear_iterations;
+                  record(k, xi, s);
+                  if (observe) observe(k);
+                });
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.normal_solves = rolling.normal_solves();
   r.normal_iterations = rolling.normal_iterations();
