@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include "cli_support.hpp"
+
 #include <array>
 #include <complex>
 #include <cstdio>
@@ -15,31 +17,9 @@
 #include <cmath>
 
 namespace fs = std::filesystem;
+using namespace rollnoise::cli_test;
 
 namespace {
-
-struct Invocation {
-  int status;
-  std::string output;  // stdout + stderr
-};
-
-Invocation run(const std::string& args) {
-  const std::string cmd = std::string(ROLLNOISE_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int st = pclose(p);
-  return {WEXITSTATUS(st), out};
-}
-
-fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
-
-std::string paper_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/cases/hertz_paper.toml"; }
 
 std::string read_units(hid_t file, const char* path) {
   const hid_t set = H5Dopen2(file, path, H5P_DEFAULT);

@@ -1,0 +1,43 @@
+// Running the rollnoise program from a test: its exit status and what it printed.
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace rollnoise::cli_test {
+
+struct Invocation {
+  int status;
+  std::string output;  // stdout + stderr
+};
+
+/// `rollnoise ARGS` through the shell (ARGS may hold redirections); exit status and output.
+inline Invocation run(const std::string& args) {
+  const std::string cmd = std::string(ROLLNOISE_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int st = pclose(p);
+  return {WEXITSTATUS(st), out};
+}
+
+/// A scratch folder of this test process.
+inline std::filesystem::path temp_dir() {
+  const auto d = std::filesystem::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+inline std::string source_file(const std::string& relative) {
+  return std::string(ROLLNOISE_SOURCE_DIR) + "/" + relative;
+}
+
+inline std::string paper_case() { return source_file("cases/hertz_paper.toml"); }
+
+}  // namespace rollnoise::cli_test
