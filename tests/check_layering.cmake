@@ -31,8 +31,8 @@ endif()
 message(STATUS "layering ok")
 
 # Dependencies point one way: a folder includes only the headers of the folders below it
-# (CMakeLists.txt: contact, geometry, nss, dynamics, noise -> pipeline -> io -> cli).
-set(order contact geometry nss dynamics noise pipeline io cli)
+# (CMakeLists.txt: contact, geometry, nss, dynamics, noise -> pipeline -> io -> study -> cli).
+set(order contact geometry nss dynamics noise pipeline io study cli)
 set(wrong "")
 foreach(f IN LISTS files)
   if(NOT f MATCHES "/src/([a-z]+)/")
@@ -43,7 +43,7 @@ foreach(f IN LISTS files)
   if(own_rank LESS 0)
     continue()  # core, linalg: below everything, include nothing of the project's layers
   endif()
-  file(STRINGS ${f} includes REGEX "#include \"(contact|geometry|nss|dynamics|noise|pipeline|io|cli)/")
+  file(STRINGS ${f} includes REGEX "#include \"(contact|geometry|nss|dynamics|noise|pipeline|io|study|cli)/")
   foreach(line IN LISTS includes)
     string(REGEX MATCH "\"([a-z]+)/" _ "${line}")
     list(FIND order ${CMAKE_MATCH_1} rank)
@@ -55,6 +55,6 @@ foreach(f IN LISTS files)
   endforeach()
 endforeach()
 if(wrong)
-  message(FATAL_ERROR "includes against the layer order (contact..noise -> pipeline -> io -> cli):\n${wrong}")
+  message(FATAL_ERROR "includes against the layer order (contact..noise -> pipeline -> io -> study -> cli):\n${wrong}")
 endif()
 message(STATUS "include direction ok")

@@ -17,6 +17,19 @@ struct CommonOptions {
 /// Output path: -o, or CASENAME.h5.
 std::string output_path(const CommonOptions& o, const std::string& case_name);
 
+/// rollnoise study / collect.
+struct StudyOptions {
+  std::string study_file;
+  int workers = 0;         ///< -j; 0: the number of cores
+  std::string shard;       ///< --shard i/N; empty: from SLURM_ARRAY_TASK_* or the whole study
+  bool list = false;       ///< --list: print one command per case
+  long case_index = -1;    ///< --case K: run case K alone
+  bool no_reuse = false;   ///< --no-reuse: compute every case from scratch (benchmarks)
+  bool quiet = false;
+};
+int run_study(const StudyOptions& o);
+int run_collect(const StudyOptions& o);
+
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps);
 int run_transient(const CommonOptions& o);
 int run_creep(const CommonOptions& o, const std::string& csv, bool direct);

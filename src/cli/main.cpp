@@ -8,6 +8,8 @@
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise bench     CASE.toml [--nx 10,14,20,...] [--csv FILE]
+//   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
+//   rollnoise collect   STUDY.toml
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
@@ -74,6 +76,20 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   bench->add_option("--csv", bench_csv, "write the table as CSV (draw it with postprocess/plot_bench.py)");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
+  cli::StudyOptions study_options;
+  auto* study = app.add_subcommand("study", "run a parameter study of noise cases (docs/study.md)");
+  study->add_option("study", study_options.study_file, "study file (TOML)")->required();
+  study->add_option("-j,--jobs", study_options.workers, "worker processes (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
+  study->add_option("--shard", study_options.shard,
+                    "run shard i of N (i = 1..N); default from SLURM_ARRAY_TASK_ID/COUNT, else the whole study");
+  study->add_flag("--list", study_options.list, "print one self-contained command per case (GNU parallel, HyperQueue)");
+  study->add_option("--case", study_options.case_index, "run case K alone (what --list prints)")->check(CLI::NonNegativeNumber);
+  study->add_flag("--no-reuse", study_options.no_reuse, "compute every case from scratch (to measure the reuse)");
+  study->add_flag("-q,--quiet", study_options.quiet, "no progress output");
+  auto* collect = app.add_subcommand("collect", "merge a study's cases into OUTPUT/study.h5 and study.csv");
+  collect->add_option("study", study_options.study_file, "study file (TOML)")->required();
+  collect->add_flag("-q,--quiet", study_options.quiet, "no progress output");
 
   try {
     app.parse(argc, argv);
@@ -94,6 +110,8 @@ int main(int argc, char** argv) {
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
+    if (study->parsed()) return cli::run_study(study_options);
+    if (collect->parsed()) return cli::run_collect(study_options);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

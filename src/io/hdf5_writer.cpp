@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -74,6 +75,19 @@ void Hdf5Writer::write(const std::string& path, const std::vector<std::int8_t>& 
 void Hdf5Writer::write(const std::string& path, const std::vector<int>& data,
                        const std::vector<std::size_t>& dims, const std::string& units) {
   write_raw(path, H5T_NATIVE_INT, data.data(), dims, units);
+}
+
+void Hdf5Writer::write(const std::string& path, const std::vector<std::string>& data, const std::string& units) {
+  std::size_t width = 1;
+  for (const auto& s : data) width = std::max(width, s.size());
+  std::vector<char> buf(data.size() * width, '\0');
+  for (std::size_t i = 0; i < data.size(); ++i) std::copy(data[i].begin(), data[i].end(), buf.begin() + i * width);
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, width);
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  write_raw(path, type, buf.data(), {data.size()}, units);
+  H5Tclose(type);
 }
 
 void Hdf5Writer::write(const std::string& path, const std::vector<std::complex<double>>& data,

@@ -29,6 +29,8 @@ class Hdf5Writer {
              const std::vector<std::size_t>& dims, const std::string& units);
   void write(const std::string& path, const std::vector<std::complex<double>>& data,
              const std::vector<std::size_t>& dims, const std::string& units);
+  /// Strings (fixed length, UTF-8), e.g. a table's text column.
+  void write(const std::string& path, const std::vector<std::string>& data, const std::string& units);
   /// String attribute on a group or dataset (created as a group if missing).
   void attribute(const std::string& object, const std::string& name, const std::string& value);
 

@@ -1,5 +1,6 @@
 #include "io/noise_case.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -61,17 +62,25 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.flange_clearance = r.real("curve.flange_clearance"); });
   problems.check([&] { c.contact_angle = r.real("contact.angle"); });
 
+  std::string track_id, wheel_id;
   problems.check([&] {
-    const dynamics::TrackParameters track = read_track_parameters(resolve_model_file(r, "track.file"));
-    const bool discrete = r.string("track.support") == "discrete";
+    const std::string file = resolve_model_file(r, "track.file");
+    const dynamics::TrackParameters track = read_track_parameters(file);
+    const std::string support = r.string("track.support");
+    const double position = r.real("track.position");
     c.rail = std::make_unique<dynamics::RailModel>(
-        track, discrete ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
-        r.real("track.position"));
+        track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
+        position);
+    char pos[32];
+    std::snprintf(pos, sizeof pos, "%.17g", position);
+    track_id = "track " + file + ", " + support + ", " + pos;
   });
   problems.check([&] {
-    c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(resolve_model_file(r, "wheel.wheelset")),
-                                                     read_wheel_modes(resolve_model_file(r, "wheel.modes")));
+    const std::string wheelset = resolve_model_file(r, "wheel.wheelset"), modes = resolve_model_file(r, "wheel.modes");
+    c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
+    wheel_id = "wheel " + wheelset + ", " + modes;
   });
+  c.structures_id = track_id + "; " + wheel_id;
   problems.check([&] { c.rail_roughness = roughness(r, "roughness.rail"); });
   problems.check([&] { c.wheel_roughness = roughness(r, "roughness.wheel"); });
   problems.check([&] {

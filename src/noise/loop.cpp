@@ -74,37 +74,70 @@ Receptance6 wheelset_centre_receptance(const dynamics::RigidWheelset& w, double 
   return a;
 }
 
-Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y) {
+namespace {
+
+// The wheel at the contact point: the rigid wheelset moved from its centre, plus the modal part
+// (given at the reference point) moved by the contact's lateral shift.
+Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, const Receptance4& modal_at_reference,
+                              double shift_y) {
   const dynamics::RigidWheelset& w = wheel.wheelset();
   const Receptance6 rigid =
       move_point(wheelset_centre_receptance(w, frequency),
                  Eigen::Vector3d(0.0, w.contact_offset_y + shift_y, -w.wheel_radius));
-  Receptance6 modal = embed(wheel.modal_receptance(frequency));
+  Receptance6 modal = embed(modal_at_reference);
   if (shift_y != 0.0) modal = move_point(modal, Eigen::Vector3d(0.0, shift_y, 0.0));
   return rigid + modal;
 }
 
-Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y) {
-  check_frequency(frequency);
-  Receptance6 a = embed(rail.receptance(frequency));
+// The rail at the contact point: its receptance at the centre line moved by the offset.
+Receptance6 rail_receptance6(const Receptance4& at_centre_line, double offset_y) {
+  Receptance6 a = embed(at_centre_line);
   if (offset_y != 0.0) a = move_point(a, Eigen::Vector3d(0.0, offset_y, 0.0));
   return a;
+}
+
+}  // namespace
+
+Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y) {
+  return wheel_receptance6(wheel, frequency, wheel.modal_receptance(frequency), shift_y);
+}
+
+Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y) {
+  check_frequency(frequency);
+  return rail_receptance6(rail.receptance(frequency), offset_y);
+}
+
+StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
+                                   const std::vector<double>& frequencies) {
+  StructureSpectra s;
+  s.frequency = frequencies;
+  for (double f : frequencies) {
+    check_frequency(f);
+    s.wheel_modal.push_back(wheel.modal_receptance(f));
+    s.rail.push_back(rail.receptance(f));
+  }
+  return s;
+}
+
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
+                                             const ContactPosition& position) {
+  StructuralReceptances s;
+  s.frequency = spectra.frequency;
+  s.position = position;
+  for (std::size_t k = 0; k < spectra.frequency.size(); ++k) {
+    s.wheel.push_back(wheel_receptance6(wheel, spectra.frequency[k], spectra.wheel_modal[k], position.wheel_shift_y));
+    s.rail.push_back(rail_receptance6(spectra.rail[k], position.rail_offset_y));
+    s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
+    s.rail_contact.push_back(to_contact_frame(s.rail.back(), position.contact_angle));
+  }
+  return s;
 }
 
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const dynamics::RailModel& rail,
                                              const ContactPosition& position,
                                              const std::vector<double>& frequencies) {
-  StructuralReceptances s;
-  s.frequency = frequencies;
-  s.position = position;
-  for (double f : frequencies) {
-    s.wheel.push_back(wheel_receptance6(wheel, f, position.wheel_shift_y));
-    s.rail.push_back(rail_receptance6(rail, f, position.rail_offset_y));
-    s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
-    s.rail_contact.push_back(to_contact_frame(s.rail.back(), position.contact_angle));
-  }
-  return s;
+  return structural_receptances(wheel, structure_spectra(wheel, rail, frequencies), position);
 }
 
 StructuralReceptances structural_receptances(const std::vector<double>& frequencies,

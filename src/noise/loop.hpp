@@ -101,6 +101,20 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const ContactPosition& position,
                                              const std::vector<double>& frequencies);
 
+/// The costly, position-independent part of structural_receptances: the wheel's modal receptance
+/// at its reference point and the rail's at its centre line, per frequency. Cases with the same
+/// wheel, track and frequencies share it (a study computes it once, docs/study.md).
+struct StructureSpectra {
+  std::vector<double> frequency;  ///< Hz
+  std::vector<Receptance4> wheel_modal, rail;
+};
+StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
+                                   const std::vector<double>& frequencies);
+/// The receptances at `position` from the spectra: the same arithmetic as the overload above
+/// (the rigid wheelset, the lever arms and the contact frame are cheap), so the same bits.
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
+                                             const ContactPosition& position);
+
 /// From 4x4 (z, x, y, rot z) receptances at the contact point, e.g. read from files (no lever
 /// arm: the shifts in `position` must be zero; the contact angle is applied).
 StructuralReceptances structural_receptances(const std::vector<double>& frequencies,

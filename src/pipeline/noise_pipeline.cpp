@@ -30,7 +30,7 @@ noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t
 
 ContactStage contact_stage(const ContactCase& c, bool with_model) {
   ContactStage s;
-  s.patch = std::make_unique<contact::ContactPatch>(solve_patch(c));
+  s.patch = std::make_shared<const contact::ContactPatch>(solve_patch(c));
   const contact::HalfSpaceOperator op(s.patch->influence, contact::Problem::Normal, 0, c.backend);
   s.normal_stiffness = contact::normal_load_sensitivity(s.patch->grid, op, s.patch->normal).stiffness();
   s.steady = contact::solve_steady_rolling(s.patch->influence, s.patch->normal.pn, c.steady_input(), c.tangential);
@@ -47,7 +47,36 @@ BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
   return a;
 }
 
-NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
+std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCase& nc,
+                                                                   const std::vector<double>& frequency) {
+  if (nc.structures_id.empty()) {
+    ++computed_;
+    return std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, frequency));
+  }
+  // the key: the models' id and the frequencies' bits
+  std::string key = nc.structures_id;
+  key.append(reinterpret_cast<const char*>(frequency.data()), frequency.size() * sizeof(double));
+  auto it = spectra_.find(key);
+  if (it != spectra_.end()) {
+    ++reused_;
+    return it->second;
+  }
+  ++computed_;
+  if (spectra_.size() >= 64) spectra_.clear();  // a bound on memory (about 1 MB each)
+  auto s = std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, frequency));
+  spectra_.emplace(std::move(key), s);
+  return s;
+}
+
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
+  const auto t0 = Clock::now();
+  NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
+  add_bands(r, nc);
+  r.seconds_total = seconds_since(t0);
+  return r;
+}
+
+NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
   NoiseResult r;
   r.curve = resolve_curve(c, nc);  // 1
@@ -70,7 +99,8 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   // 4. structures once, then the loop per contact model
   const auto t1 = Clock::now();
   const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
+      reuse ? noise::structural_receptances(*nc.wheel, *reuse->spectra(nc, freq), r.curve.position)
+            : noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
   r.seconds_structures = seconds_since(t1);
   using Baseline = NoiseCase::Baseline;
   noise::LoopVariantsInput in;
@@ -87,8 +117,15 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   r.coupled = nc.normal_coupling && !in.model.load.empty();
   r.variants = noise::solve_loop_variants(structures, in);
   r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
+  r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
+  r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
+  r.seconds_total = seconds_since(t0);
+  return r;
+}
 
+void add_bands(NoiseResult& r, const NoiseCase& nc) {
   // 5. roughness and bands
+  const ContactCase& cc = r.contact;
   noise::ContactFilter filter;
   filter.model = nc.filter;
   filter.a = cc.a;
@@ -102,10 +139,6 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
     r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
   }
   if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
-  r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
-  r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
-  r.seconds_total = seconds_since(t0);
-  return r;
 }
 
 ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,10 +36,10 @@ namespace rollnoise::pipeline {
 
 /// Stage 3: the contact at the mean state.
 struct ContactStage {
-  std::unique_ptr<contact::ContactPatch> patch;
+  std::shared_ptr<const contact::ContactPatch> patch;
   double normal_stiffness = 0.0;  ///< k_N = dN/d(delta) on the frozen contact area (N/m)
   contact::TangentialSolution steady;
-  std::unique_ptr<nss::LinearContactModel> model;
+  std::shared_ptr<const nss::LinearContactModel> model;
 };
 
 /// Patch, normal stiffness, steady rolling and (with_model) the linear model of a placed case.
@@ -74,8 +75,32 @@ struct NoiseResult {
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_total = 0.0;
 };
 
+/// What the cases of a study share (docs/study.md). The wheel's modal and the rail's receptances
+/// depend only on the models and the frequencies (not on the contact position, speed or roughness):
+/// they are computed once per NoiseCase::structures_id and frequency axis and reused, which gives
+/// the same bits as computing them again.
+class NoiseReuse {
+ public:
+  /// The spectra of the case's models at `frequency`: from the store or computed (and stored).
+  std::shared_ptr<const noise::StructureSpectra> spectra(const NoiseCase& nc, const std::vector<double>& frequency);
+  long spectra_computed() const { return computed_; }
+  long spectra_reused() const { return reused_; }
+
+ private:
+  std::map<std::string, std::shared_ptr<const noise::StructureSpectra>> spectra_;
+  long computed_ = 0, reused_ = 0;
+};
+
+/// Stages 1-4 (curve state, bands' frequencies, contact, structures, loop): everything but the
+/// roughness and the contact filter, which only stage 5 uses. `reuse` may be null.
+NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
+/// Stage 5: the effective roughness (the case's roughness spectra and contact filter) and the band
+/// levels of every loop variant. Cases that differ only in roughness share stages 1-4: a copy of
+/// one run_noise_loop result, then add_bands with each case's NoiseCase.
+void add_bands(NoiseResult& r, const NoiseCase& nc);
+
 /// The whole pipeline for a read noise case (stages 1-5).
-NoiseResult run_noise(ContactCase c, const NoiseCase& nc);
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
 
 /// `rollnoise receptance`: wheel, rail and contact receptances at the contact point and mean state
 /// of the noise case (contact frame: normal, x, y, rotation about the normal).

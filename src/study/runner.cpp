@@ -1,0 +1,269 @@
+#include "study/runner.hpp"
+
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <new>
+#include <optional>
+
+#include "core/errors.hpp"
+#include "io/noise_case.hpp"
+#include "io/study_output.hpp"
+#include "pipeline/noise_pipeline.hpp"
+
+namespace rollnoise::study {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+constexpr int kMaxWorkers = 256;
+
+// Counters the workers share with the parent (anonymous shared memory: they are separate processes).
+struct Shared {
+  std::atomic<long> next_group{0}, done{0}, failed{0};
+  std::atomic<long> loops_computed{0}, loops_reused{0}, spectra_computed{0}, spectra_reused{0};
+  std::atomic<long> current[kMaxWorkers];  ///< the case each worker is running, -1: none
+};
+
+class SharedCounters {
+ public:
+  explicit SharedCounters(bool across_processes) {
+    void* p = across_processes ? ::mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0)
+                               : ::operator new(sizeof(Shared));
+    if (p == MAP_FAILED) throw NumericalError("study: cannot share memory with the worker processes");
+    shared_ = new (p) Shared;
+    for (auto& c : shared_->current) c = -1;
+    mapped_ = across_processes;
+  }
+  ~SharedCounters() {
+    shared_->~Shared();
+    if (mapped_)
+      ::munmap(shared_, sizeof(Shared));
+    else
+      ::operator delete(shared_);
+  }
+  SharedCounters(const SharedCounters&) = delete;
+  SharedCounters& operator=(const SharedCounters&) = delete;
+  Shared* operator->() { return shared_; }
+  Shared& get() { return *shared_; }
+
+ private:
+  Shared* shared_;
+  bool mapped_;
+};
+
+// A case that failed: its error file (and no results file of an earlier run with other inputs).
+void record_failure(const pipeline::StudyPlan& plan, std::size_t index, const std::string& message) {
+  std::error_code ec;
+  fs::remove(pipeline::case_output(plan, index), ec);
+  io::write_case_error(pipeline::case_error(plan, index), message);
+}
+
+// The cases of one reuse group, in this process: stages 1-4 once (when reusing), each case's bands,
+// each case's file.
+void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
+               const std::vector<std::size_t>& group, pipeline::NoiseReuse* reuse, Shared& shared, int slot,
+               const std::function<void()>& after_case) {
+  std::optional<pipeline::NoiseResult> loop;
+  for (std::size_t index : group) {
+    const pipeline::StudyCase& c = cases[index];
+    shared.current[slot] = long(index);
+    const auto t0 = Clock::now();
+    try {
+      const io::CaseReader reader = io::CaseReader::from_file(plan.base, pipeline::overrides(plan, c));
+      io::NoiseInputs in = io::read_noise_inputs(reader);
+      pipeline::NoiseResult r;
+      if (loop) {
+        r = *loop;  // the same inputs up to the roughness (reuse_groups): the same stages 1-4
+        ++shared.loops_reused;
+      } else {
+        r = io::within_case(reader, [&] { return pipeline::run_noise_loop(std::move(in.contact), in.noise, reuse); });
+        ++shared.loops_computed;
+        if (reuse) loop = r;
+      }
+      io::within_case(reader, [&] { pipeline::add_bands(r, in.noise); });
+      io::write_study_case(pipeline::case_output(plan, index), reader, in.noise, r, case_stamp(plan, c),
+                           seconds_since(t0));
+      std::error_code ec;
+      fs::remove(pipeline::case_error(plan, index), ec);
+      ++shared.done;
+    } catch (const InputError& e) {
+      record_failure(plan, index, std::string("input error: ") + e.what());
+      ++shared.failed;
+    } catch (const NumericalError& e) {
+      record_failure(plan, index, std::string("numerical failure: ") + e.what());
+      ++shared.failed;
+    } catch (const std::exception& e) {
+      record_failure(plan, index, std::string("failure: ") + e.what());
+      ++shared.failed;
+    }
+    shared.current[slot] = -1;
+    if (after_case) after_case();
+  }
+}
+
+// Take groups from the shared queue until it is empty.
+void work(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
+          const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot,
+          const std::function<void()>& after_case) {
+  pipeline::NoiseReuse spectra;
+  for (long g = shared.next_group++; g < long(groups.size()); g = shared.next_group++)
+    run_group(plan, cases, groups[g], reuse ? &spectra : nullptr, shared, slot, after_case);
+  shared.spectra_computed += spectra.spectra_computed();
+  shared.spectra_reused += spectra.spectra_reused();
+}
+
+// A worker process in `slot`; it dies with the parent (a killed study leaves no orphans).
+pid_t start_worker(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
+                   const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot) {
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw NumericalError("study: cannot start a worker process");
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() == 1) ::_exit(1);  // the parent is already gone
+    work(plan, cases, groups, reuse, shared, slot, {});
+    std::fflush(nullptr);
+    ::_exit(0);
+  }
+  return pid;
+}
+
+void prepare_output(const pipeline::StudyPlan& plan) {
+  std::error_code ec;
+  fs::create_directories(plan.output, ec);
+  if (ec || !fs::is_directory(plan.output))
+    throw InputError("output", plan.file + ": output: cannot create the folder " + plan.output);
+}
+
+}  // namespace
+
+std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+  return "base " + plan.base + "; case " + std::to_string(c.index) + ": " + pipeline::describe(plan, c);
+}
+
+bool is_complete(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+  const auto stamp = io::read_case_stamp(pipeline::case_output(plan, c.index));
+  return stamp && *stamp == case_stamp(plan, c);
+}
+
+std::vector<std::vector<std::size_t>> reuse_groups(const pipeline::StudyPlan& plan,
+                                                   const std::vector<pipeline::StudyCase>& cases,
+                                                   const std::vector<std::size_t>& selection) {
+  // The key: the values of every axis but the roughness.* ones (only stage 5 reads those).
+  std::map<std::string, std::size_t> group_of;
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t index : selection) {
+    std::string key;
+    for (std::size_t a = 0; a < plan.axes.size(); ++a)
+      if (plan.axes[a].key.rfind("roughness.", 0) != 0) key += plan.axes[a].key + "=" + cases[index].values[a].toml + "\n";
+    const auto [it, added] = group_of.emplace(key, groups.size());
+    if (added) groups.emplace_back();
+    groups[it->second].push_back(index);
+  }
+  return groups;
+}
+
+RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
+  const auto t0 = Clock::now();
+  const std::vector<pipeline::StudyCase> cases = pipeline::expand(plan);
+  prepare_output(plan);
+  RunSummary s;
+  std::vector<std::size_t> selection;
+  for (const auto& c : cases) {
+    if (!o.shard.contains(c.index)) continue;
+    ++s.cases;
+    if (is_complete(plan, c))
+      ++s.skipped;
+    else
+      selection.push_back(c.index);
+  }
+  std::vector<std::vector<std::size_t>> groups;
+  if (o.reuse) {
+    groups = reuse_groups(plan, cases, selection);
+  } else {
+    for (std::size_t i : selection) groups.push_back({i});
+  }
+  const long total = long(selection.size());
+  const int workers = int(std::min<long>({long(std::max(1, o.workers)), long(groups.size()), long(kMaxWorkers)}));
+
+  SharedCounters shared(workers > 1);
+  auto report = [&] {
+    if (o.progress) o.progress(shared->done + shared->failed, total);
+  };
+  if (workers <= 1) {
+    work(plan, cases, groups, o.reuse, shared.get(), 0, report);
+  } else {
+    std::map<pid_t, int> slot_of;
+    for (int k = 0; k < workers; ++k) slot_of[start_worker(plan, cases, groups, o.reuse, shared.get(), k)] = k;
+    while (!slot_of.empty()) {
+      int status = 0;
+      const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+      if (pid > 0 && slot_of.count(pid)) {
+        const int slot = slot_of[pid];
+        slot_of.erase(pid);
+        const long index = shared->current[slot];
+        if (index >= 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+          // the worker died inside a case (a crash, or killed): that case failed, the queue goes on
+          record_failure(plan, std::size_t(index),
+                         WIFSIGNALED(status) ? "failure: the worker process died of signal " +
+                                                   std::to_string(WTERMSIG(status)) + " while running this case"
+                                             : "failure: the worker process stopped while running this case");
+          ++shared->failed;
+          shared->current[slot] = -1;
+          if (shared->next_group < long(groups.size()))
+            slot_of[start_worker(plan, cases, groups, o.reuse, shared.get(), slot)] = slot;
+        }
+      } else if (pid < 0) {
+        break;
+      } else {
+        report();
+        ::usleep(100000);
+      }
+    }
+  }
+  report();
+  s.completed = shared->done;
+  s.failed = shared->failed;
+  s.loops_computed = shared->loops_computed;
+  s.loops_reused = shared->loops_reused;
+  s.spectra_computed = shared->spectra_computed;
+  s.spectra_reused = shared->spectra_reused;
+  s.seconds = seconds_since(t0);
+  return s;
+}
+
+RunSummary run_one_case(const pipeline::StudyPlan& plan, std::size_t index) {
+  const auto t0 = Clock::now();
+  const std::vector<pipeline::StudyCase> cases = pipeline::expand(plan);
+  if (index >= cases.size())
+    throw InputError("--case", "the study has cases 0 to " + std::to_string(cases.size() - 1) + ", not " +
+                                   std::to_string(index));
+  prepare_output(plan);
+  RunSummary s;
+  s.cases = 1;
+  if (is_complete(plan, cases[index])) {
+    s.skipped = 1;
+  } else {
+    SharedCounters shared(false);
+    work(plan, cases, {{index}}, false, shared.get(), 0, {});
+    s.completed = shared->done;
+    s.failed = shared->failed;
+    s.loops_computed = shared->loops_computed;
+    s.spectra_computed = shared->spectra_computed;
+  }
+  s.seconds = seconds_since(t0);
+  return s;
+}
+
+}  // namespace rollnoise::study

@@ -1,0 +1,64 @@
+// Running the cases of a study (docs/study.md): locally with worker processes, one shard of it (a
+// Slurm array task or a GNU parallel job), or one case; resuming where a run stopped.
+//
+// Each case is `rollnoise noise BASE --set key=value ...` run in a worker: its file case_NNNN.h5
+// is written whole or not at all, so a complete file is a finished case and a rerun skips it (its
+// `study_case` attribute must name the same parameters). A case that fails gets case_NNNN.error
+// with its message; the others go on.
+//
+// Reuse (what a case does not need to compute again):
+//   - cases that differ only in roughness.* keys share the curve state, the contact, the creep
+//     sweep and the loop (stages 1-4 of pipeline/noise_pipeline.hpp): the study runs them as one
+//     group in one worker, computes the loop once and adds each case's bands;
+//   - cases with the same wheel, track and frequencies share the wheel's modal and the rail's
+//     receptances (pipeline::NoiseReuse), whatever their contact position.
+// Both give the same bits as computing again.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pipeline/study_plan.hpp"
+
+namespace rollnoise::study {
+
+struct RunOptions {
+  int workers = 1;          ///< worker processes
+  pipeline::Shard shard;    ///< the part of the study to run
+  bool reuse = true;        ///< false: every case computes everything (for benchmarks)
+  /// Called now and then with the cases finished (complete or failed) and the cases to run.
+  std::function<void(long done, long total)> progress;
+};
+
+struct RunSummary {
+  long cases = 0;      ///< in the shard
+  long skipped = 0;    ///< already complete
+  long completed = 0;  ///< run now, complete
+  long failed = 0;
+  long loops_computed = 0, loops_reused = 0;      ///< stages 1-4
+  long spectra_computed = 0, spectra_reused = 0;  ///< wheel and rail receptances
+  double seconds = 0.0;
+};
+
+/// Run the cases of the shard that are not complete. InputError for a study that cannot run (its
+/// output folder cannot be created).
+RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& options);
+
+/// Case `index` alone, in this process (skipped when complete): `rollnoise study STUDY --case K`,
+/// the command `--list` prints for each case. InputError naming --case when out of range.
+RunSummary run_one_case(const pipeline::StudyPlan& plan, std::size_t index);
+
+/// The stamp that marks a complete case of this study in its file (base case and parameters).
+std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
+/// Whether the case's file is complete and of this study (same stamp).
+bool is_complete(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
+
+/// The groups of cases that share stages 1-4 (equal overrides but for roughness.* keys), in the
+/// order of their first case.
+std::vector<std::vector<std::size_t>> reuse_groups(const pipeline::StudyPlan& plan,
+                                                   const std::vector<pipeline::StudyCase>& cases,
+                                                   const std::vector<std::size_t>& selection);
+
+}  // namespace rollnoise::study
