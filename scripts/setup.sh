@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PACKAGES=(g++ cmake make pkg-config libeigen3-dev libfftw3-dev libgsl-dev libhdf5-dev libcli11-dev
-          libtomlplusplus-dev libgtest-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib)
+          libtomlplusplus-dev libgtest-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib
+          parallel)  # GNU parallel: the study tests run shards under it (docs/study.md)
 missing=()
 for p in "${PACKAGES[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -gt 0 ]; then
