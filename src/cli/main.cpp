@@ -18,6 +18,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "cli/command_suggestion.hpp"
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
@@ -75,6 +76,10 @@ int main(int argc, char** argv) {
   bench->add_option("--csv", bench_csv, "write the table as CSV (draw it with postprocess/plot_bench.py)");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 
+  if (const std::string msg = cli::check_command(app, argc, argv); !msg.empty()) {
+    std::fprintf(stderr, "rollnoise: error: %s\n", msg.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
