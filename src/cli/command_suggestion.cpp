@@ -21,7 +21,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-std::string unknown_command_message(const std::string& given, const std::vector<std::string>& commands) {
+std::string unknown_command_message(const std::string& given,
+                                    const std::vector<std::string>& commands) {
   std::string msg = "unknown command '" + given + "'";
   const std::string* best = nullptr;
   std::size_t best_distance = 0;
@@ -29,7 +30,8 @@ std::string unknown_command_message(const std::string& given, const std::vector<
     const std::size_t d = edit_distance(given, c);
     if (!best || d < best_distance) best = &c, best_distance = d;
   }
-  if (best && best_distance <= std::max<std::size_t>(2, best->size() / 3)) msg += "; did you mean '" + *best + "'?";
+  if (best && best_distance <= std::max<std::size_t>(2, best->size() / 3))
+    msg += "; did you mean '" + *best + "'?";
   msg += "\n  commands:";
   for (const auto& c : commands) msg += " " + c;
   return msg + "\n  (rollnoise --help for all, rollnoise COMMAND --help for one)";
@@ -38,7 +40,8 @@ std::string unknown_command_message(const std::string& given, const std::vector<
 std::string check_command(const CLI::App& app, int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return "";
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
   if (std::find(names.begin(), names.end(), argv[1]) != names.end()) return "";
   return unknown_command_message(argv[1], names);
 }

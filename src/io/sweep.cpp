@@ -41,7 +41,8 @@ bool whole_real(const std::string& s, double& out) {
 
 SweepSpec parse_sweep(const std::string& arg) {
   const auto eq = arg.find('=');
-  if (eq == std::string::npos || eq == 0) bad(arg, "expected KEY=lo:hi:n, KEY[i]=lo:hi:n or KEY=[v1, v2, ...]");
+  if (eq == std::string::npos || eq == 0)
+    bad(arg, "expected KEY=lo:hi:n, KEY[i]=lo:hi:n or KEY=[v1, v2, ...]");
   SweepSpec s;
   s.key = arg.substr(0, eq);
   const std::string rhs = arg.substr(eq + 1);
@@ -49,11 +50,14 @@ SweepSpec parse_sweep(const std::string& arg) {
     const std::string index = s.key.substr(br + 1);
     s.key = s.key.substr(0, br);
     long i = 0;
-    if (index.empty() || index.back() != ']' || !whole_integer(index.substr(0, index.size() - 1), i))
+    if (index.empty() || index.back() != ']' ||
+        !whole_integer(index.substr(0, index.size() - 1), i))
       bad(arg, "the component of " + s.key + "[i] must be a non-negative integer index");
     const KeySpec* spec = find_key(s.key);
-    if (spec && spec->type != KeyType::Real3) bad(arg, s.key + " is not an array of three numbers: no [i]");
-    if (i > 2) bad(arg, "component index " + std::to_string(i) + " of " + s.key + " must be 0, 1 or 2");
+    if (spec && spec->type != KeyType::Real3)
+      bad(arg, s.key + " is not an array of three numbers: no [i]");
+    if (i > 2)
+      bad(arg, "component index " + std::to_string(i) + " of " + s.key + " must be 0, 1 or 2");
     s.component = static_cast<int>(i);
   }
   if (!find_key(s.key)) bad(arg, "unknown key " + s.key + " (see 'rollnoise keys')");
@@ -65,7 +69,8 @@ SweepSpec parse_sweep(const std::string& arg) {
   const auto c1 = rhs.find(':'), c2 = c1 == std::string::npos ? c1 : rhs.find(':', c1 + 1);
   if (c2 == std::string::npos || rhs.find(':', c2 + 1) != std::string::npos)
     bad(arg, "expected lo:hi:n or a TOML array after '='");
-  if (!whole_real(rhs.substr(0, c1), s.lo)) bad(arg, "lo '" + rhs.substr(0, c1) + "' is not a finite number");
+  if (!whole_real(rhs.substr(0, c1), s.lo))
+    bad(arg, "lo '" + rhs.substr(0, c1) + "' is not a finite number");
   if (!whole_real(rhs.substr(c1 + 1, c2 - c1 - 1), s.hi))
     bad(arg, "hi '" + rhs.substr(c1 + 1, c2 - c1 - 1) + "' is not a finite number");
   const std::string n = rhs.substr(c2 + 1);
@@ -74,12 +79,13 @@ SweepSpec parse_sweep(const std::string& arg) {
   return s;
 }
 
-std::vector<std::string> expand_sweep(const std::string& arg, const CaseReader& base, const pipeline::ContactCase& c,
-                                      std::vector<double>& values) {
+std::vector<std::string> expand_sweep(const std::string& arg, const CaseReader& base,
+                                      const pipeline::ContactCase& c, std::vector<double>& values) {
   const SweepSpec s = parse_sweep(arg);
   const double count = s.list.empty() ? double(s.n) : double(s.list.size());
   try {
-    pipeline::check_size(c.limits, "--sweep", count, "sweep points", pipeline::sweep_bytes(c, count));
+    pipeline::check_size(c.limits, "--sweep", count, "sweep points",
+                         pipeline::sweep_bytes(c, count));
   } catch (const InputError& e) {
     bad(arg, e.what());
   }

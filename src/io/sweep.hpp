@@ -17,10 +17,10 @@
 namespace rollnoise::io {
 
 struct SweepSpec {
-  std::string key;          ///< the swept case key
-  int component = -1;       ///< KEY[i]: i; -1 for a scalar key or a list
+  std::string key;     ///< the swept case key
+  int component = -1;  ///< KEY[i]: i; -1 for a scalar key or a list
   double lo = 0.0, hi = 0.0;
-  long n = 0;               ///< lo:hi:n points; 0 for a list
+  long n = 0;                     ///< lo:hi:n points; 0 for a list
   std::vector<std::string> list;  ///< KEY=[...]: the TOML value of each point
 };
 

@@ -22,7 +22,7 @@ namespace rollnoise::pipeline {
 struct ContactCase;
 
 struct Limits {
-  double memory = 0.0;  ///< bytes; 0: default_memory_limit()
+  double memory = 0.0;   ///< bytes; 0: default_memory_limit()
   long steps = 1000000;  ///< time steps, sweep points or frequencies of one count
 
   double memory_bytes() const;
@@ -34,10 +34,12 @@ double default_memory_limit();
 /// InputError naming `key` when `count` (of `what`, e.g. "time steps") exceeds limits.steps or
 /// `bytes` (what they keep) exceeds the memory limit. Doubles, so that absurd inputs (2.9e13
 /// steps) are compared without overflow; NaN counts as over the limit.
-void check_size(const Limits& limits, const std::string& key, double count, const std::string& what, double bytes);
+void check_size(const Limits& limits, const std::string& key, double count, const std::string& what,
+                double bytes);
 
 /// InputError naming `key` when `bytes` (needed by `what`) exceeds the memory limit.
-void check_memory(const Limits& limits, const std::string& key, const std::string& what, double bytes);
+void check_memory(const Limits& limits, const std::string& key, const std::string& what,
+                  double bytes);
 
 /// Memory of the contact problem on the case's grid (bytes): the dense matrices over the grid
 /// elements that the tangential solvers factorise (Newton Jacobian) and the linear model holds

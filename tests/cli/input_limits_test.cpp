@@ -38,8 +38,9 @@ struct Refusal {
 
 // `rollnoise COMMAND CASE ARGS -o OUT`: exit 2, every `names` in the message, no file starting
 // with OUT's name, CASE unchanged.
-Refusal expect_refusal(const std::string& command, const std::string& case_file, const std::string& args,
-                       const std::vector<std::string>& names, const std::string& tag) {
+Refusal expect_refusal(const std::string& command, const std::string& case_file,
+                       const std::string& args, const std::vector<std::string>& names,
+                       const std::string& tag) {
   const fs::path dir = temp_dir() / tag;
   fs::create_directories(dir);
   const fs::path out = dir / (tag + ".h5");
@@ -49,15 +50,28 @@ Refusal expect_refusal(const std::string& command, const std::string& case_file,
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.result.status, 2) << tag << ": " << r.result.output;
   for (const auto& n : names)
-    EXPECT_NE(r.result.output.find(n), std::string::npos) << tag << ": the message must name '" << n << "': "
-                                                          << r.result.output;
+    EXPECT_NE(r.result.output.find(n), std::string::npos)
+        << tag << ": the message must name '" << n << "': " << r.result.output;
   EXPECT_FALSE(any_file_starting_with(dir, tag)) << tag << ": an output file was left behind";
   EXPECT_EQ(slurp(case_file), before) << tag << ": the case file changed";
   return r;
 }
 
-std::string s33_case() { return source_file("cases/paper_s33_pseudorandom.toml"); }
-std::string noise_case() { return source_file("cases/curve_300m_hertz.toml"); }
+// `rollnoise ARGS -q -o temp/OUT`: exit 0 and OUT written.
+Invocation expect_success(const std::string& args, const std::string& out_name) {
+  const fs::path out = temp_dir() / out_name;
+  const Invocation r = run(args + " -q -o " + out.string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out)) << out;
+  return r;
+}
+
+std::string s33_case() {
+  return source_file("cases/paper_s33_pseudorandom.toml");
+}
+std::string noise_case() {
+  return source_file("cases/curve_300m_hertz.toml");
+}
 
 // A refusal from a size estimate: no allocation, no solve, so far below a second (a run that
 // allocated 1e9 frequencies or started 2.9e13 steps would take minutes or fail with bad_alloc).
@@ -81,15 +95,17 @@ TEST(SizeLimits, HundredMillionPointsPerBandAreRefusedBeforeTheCurveStage) {
 
 TEST(SizeLimits, TwoBillionExcitationFrequenciesAreRefusedBeforeAllocating) {
   for (const char* command : {"response", "transient"}) {
-    const Refusal r = expect_refusal(command, s33_case(), "--set excitation.count=2000000000",
-                                     {"excitation.count", "limits.steps"}, std::string("exc_count_") + command);
+    const Refusal r =
+        expect_refusal(command, s33_case(), "--set excitation.count=2000000000",
+                       {"excitation.count", "limits.steps"}, std::string("exc_count_") + command);
     EXPECT_LT(r.seconds, kFastSeconds) << command;
   }
 }
 
 TEST(SizeLimits, HundredMillionSweepPointsAreRefusedBeforeAnyPointIsRead) {
-  const Refusal r = expect_refusal("steady", paper_case(), "--sweep friction.mu=0.1:0.5:100000000",
-                                   {"--sweep", "friction.mu=0.1:0.5:100000000", "limits.steps"}, "sweep_points");
+  const Refusal r =
+      expect_refusal("steady", paper_case(), "--sweep friction.mu=0.1:0.5:100000000",
+                     {"--sweep", "friction.mu=0.1:0.5:100000000", "limits.steps"}, "sweep_points");
   EXPECT_LT(r.seconds, kFastSeconds);
 }
 
@@ -97,7 +113,8 @@ TEST(SizeLimits, TransientOf29e13StepsIsRefusedBeforeTheFirstStep) {
   const Refusal r = expect_refusal("transient", paper_case(), "--set transient.duration=1e9",
                                    {"transient.duration", "limits.steps"}, "duration");
   EXPECT_LT(r.seconds, kFastSeconds);
-  // the refusal counts the steps dt = dx/V: 1e9 s / (2 * 1.1333 * 7.18 mm / 34 / 13.89 m/s) = 2.9e13
+  // the refusal counts the steps dt = dx/V: 1e9 s / (2 * 1.1333 * 7.18 mm / 34 / 13.89 m/s)
+  // = 2.9e13
   EXPECT_NE(r.result.output.find("2.9"), std::string::npos) << r.result.output;
 }
 
@@ -110,20 +127,22 @@ TEST(SizeLimits, GridWhoseDenseMatricesExceedTheMemoryLimitIsRefused) {
                                    {"grid.nx", "limits.memory", "1.6 GB"}, "grid_memory");
   EXPECT_LT(r.seconds, kFastSeconds);
   for (const char* command : {"creep", "transient"})
-    expect_refusal(command, paper_case(), "--set grid.nx=100 --set grid.ny=100 --set limits.memory=1e9",
+    expect_refusal(command, paper_case(),
+                   "--set grid.nx=100 --set grid.ny=100 --set limits.memory=1e9",
                    {"grid.nx", "limits.memory"}, std::string("grid_memory_") + command);
 }
 
 TEST(SizeLimits, RaisingOrLoweringLimitsStepsMovesTheRefusal) {
   // limits.steps = 3 refuses 4 sweep points and accepts 3 (which run and write their curve)
-  expect_refusal("steady", paper_case(), "--set grid.nx=16 --set grid.ny=12 --set limits.steps=3 "
-                 "--sweep friction.mu=0.2:0.5:4", {"--sweep", "limits.steps = 3"}, "steps_lowered");
-  const fs::path out = temp_dir() / "steps_ok.h5";
-  const Invocation ok = run("steady " + paper_case() + " --set grid.nx=16 --set grid.ny=12 --set limits.steps=3 "
-                            "--sweep friction.mu=0.2:0.5:3 -q -o " + out.string());
-  EXPECT_EQ(ok.status, 0) << ok.output;
+  expect_refusal("steady", paper_case(),
+                 "--set grid.nx=16 --set grid.ny=12 --set limits.steps=3 "
+                 "--sweep friction.mu=0.2:0.5:4",
+                 {"--sweep", "limits.steps = 3"}, "steps_lowered");
+  const Invocation ok = expect_success("steady " + paper_case() +
+                                           " --set grid.nx=16 --set grid.ny=12 "
+                                           "--set limits.steps=3 --sweep friction.mu=0.2:0.5:3",
+                                       "steps_ok.h5");
   EXPECT_NE(ok.output.find("(3 points)"), std::string::npos) << ok.output;
-  EXPECT_TRUE(fs::exists(out));
 }
 
 // ---- fault 5: integers read as 64 bits and range-checked, never truncated ----
@@ -134,14 +153,15 @@ TEST(IntegerKeys, ValuesBeyondTheTargetTypeAreRefusedNotTruncated) {
                  {"excitation.count", "between 1 and 2147483647", "4294967297"}, "count_2p32");
   expect_refusal("steady", paper_case(), "--set solver.max_iterations=4294967297",
                  {"solver.max_iterations", "between 1 and 2147483647"}, "iterations_2p32");
-  expect_refusal("steady", paper_case(), "--set solver.max_iterations=-1", {"solver.max_iterations"},
-                 "iterations_negative");
+  expect_refusal("steady", paper_case(), "--set solver.max_iterations=-1",
+                 {"solver.max_iterations"}, "iterations_negative");
 }
 
 TEST(IntegerKeys, NonIntegersAreRefusedForIntegerKeys) {
-  expect_refusal("response", s33_case(), "--set excitation.count=1e3", {"excitation.count", "integer"}, "count_real");
-  expect_refusal("steady", paper_case(), "--set solver.max_iterations=ten", {"solver.max_iterations", "integer"},
-                 "iterations_word");
+  expect_refusal("response", s33_case(), "--set excitation.count=1e3",
+                 {"excitation.count", "integer"}, "count_real");
+  expect_refusal("steady", paper_case(), "--set solver.max_iterations=ten",
+                 {"solver.max_iterations", "integer"}, "iterations_word");
 }
 
 // ---- fault 6: --sweep parsed strictly ----
@@ -149,37 +169,38 @@ TEST(IntegerKeys, NonIntegersAreRefusedForIntegerKeys) {
 TEST(SweepArgument, MalformedArgumentsAreRefusedNamingTheArgument) {
   int i = 0;
   for (const std::string arg :
-       {"friction.mu=0.1:0.5:1e1",       // n not an integer (ran 1 point)
-        "friction.mu=:3xyz",             // accepted before
-        "friction.mu=0.1:0.5:3xyz",      // trailing text
-        "friction.mu=0.1:0.5:0",         // no points
-        "friction.mu=0.1x:0.5:3",        // lo not a number
-        "friction.mu=0.1:0.5:3:4",       // too many fields
-        "creepage.mean[x]=0:0.001:3",    // stoi: exit 1 before
+       {"friction.mu=0.1:0.5:1e1",               // n not an integer (ran 1 point)
+        "friction.mu=:3xyz",                     // accepted before
+        "friction.mu=0.1:0.5:3xyz",              // trailing text
+        "friction.mu=0.1:0.5:0",                 // no points
+        "friction.mu=0.1x:0.5:3",                // lo not a number
+        "friction.mu=0.1:0.5:3:4",               // too many fields
+        "creepage.mean[x]=0:0.001:3",            // stoi: exit 1 before
         "creepage.mean[99999999999]=0:0.001:3",  // stoi out of range: exit 1 before
-        "creepage.mean[3]=0:0.001:3",    // past the array
+        "creepage.mean[3]=0:0.001:3",            // past the array
         "creepage.mean[-1]=0:0.001:3",
-        "friction.mu[0]=0.1:0.5:3",      // not an array key
-        "friction.muu=0.1:0.5:3"}) {     // unknown key
-    expect_refusal("steady", paper_case(), "--sweep '" + arg + "'", {"--sweep", arg}, "sweep_" + std::to_string(i++));
+        "friction.mu[0]=0.1:0.5:3",   // not an array key
+        "friction.muu=0.1:0.5:3"}) {  // unknown key
+    expect_refusal("steady", paper_case(), "--sweep '" + arg + "'", {"--sweep", arg},
+                   "sweep_" + std::to_string(i++));
   }
 }
 
 TEST(SweepArgument, WellFormedComponentSweepRunsEveryPoint) {
-  const fs::path out = temp_dir() / "sweep_ok.h5";
-  const Invocation r = run("steady " + paper_case() + " --set grid.nx=16 --set grid.ny=12 "
-                           "--sweep 'creepage.mean[1]=0:0.002:4' -q -o " + out.string());
-  ASSERT_EQ(r.status, 0) << r.output;
+  const Invocation r = expect_success("steady " + paper_case() +
+                                          " --set grid.nx=16 --set grid.ny=12 "
+                                          "--sweep 'creepage.mean[1]=0:0.002:4'",
+                                      "sweep_ok.h5");
   EXPECT_NE(r.output.find("(4 points)"), std::string::npos) << r.output;
 }
 
 // ---- fault 10: the curve radius printed as a number ----
 
 TEST(NoiseSummary, HugeCurveRadiusPrintsAsANumberNotAnOverflowedInt) {
-  const fs::path out = temp_dir() / "radius.h5";
-  const Invocation r = run("noise " + noise_case() + " --set curve.radius=1e12 --set noise.points_per_band=4 "
-                           "--set grid.nx=16 --set grid.ny=12 -q -o " + out.string());
-  ASSERT_EQ(r.status, 0) << r.output;
+  const Invocation r = expect_success("noise " + noise_case() +
+                                          " --set curve.radius=1e12 --set noise.points_per_band=4 "
+                                          "--set grid.nx=16 --set grid.ny=12",
+                                      "radius.h5");
   EXPECT_NE(r.output.find("curve R = 1e+12 m"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("-2147483648"), std::string::npos) << r.output;
 }
@@ -188,8 +209,8 @@ TEST(NoiseSummary, HugeCurveRadiusPrintsAsANumberNotAnOverflowedInt) {
 
 TEST(MaterialKeys, ModulusOutsidePhysicalRangeIsInputNotANumericalFailure) {
   for (const char* E : {"1e-300", "1e5", "1e14"})
-    expect_refusal("steady", paper_case(), std::string("--set material.E=") + E, {"material.E", "[1e6, 1e13] Pa"},
-                   std::string("modulus_") + E);
+    expect_refusal("steady", paper_case(), std::string("--set material.E=") + E,
+                   {"material.E", "[1e6, 1e13] Pa"}, std::string("modulus_") + E);
   expect_refusal("steady", paper_case(), "--set material.nu=0.5", {"material.nu"}, "nu_half");
 }
 
@@ -204,7 +225,8 @@ TEST(CaseFile, DirectoryMissingOrUnreadableCaseSaysSo) {
   EXPECT_EQ(r.output.find("required but missing"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(temp_dir() / "dir.h5"));
 
-  r = run("steady " + (dir / "absent.toml").string() + " -q -o " + (temp_dir() / "absent.h5").string());
+  r = run("steady " + (dir / "absent.toml").string() + " -q -o " +
+          (temp_dir() / "absent.h5").string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("absent.toml: no such case file"), std::string::npos) << r.output;
 
@@ -215,7 +237,8 @@ TEST(CaseFile, DirectoryMissingOrUnreadableCaseSaysSo) {
     r = run("steady " + locked.string() + " -q -o " + (temp_dir() / "locked.h5").string());
     fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_write);
     EXPECT_EQ(r.status, 2) << r.output;
-    EXPECT_NE(r.output.find("locked.toml: cannot open the case file: Permission denied"), std::string::npos)
+    EXPECT_NE(r.output.find("locked.toml: cannot open the case file: Permission denied"),
+              std::string::npos)
         << r.output;
     EXPECT_FALSE(fs::exists(temp_dir() / "locked.h5"));
   }
@@ -228,7 +251,8 @@ TEST(CommandLine, MistypedCommandIsNamedWithTheNearestSuggestedAndTheValidOnesLi
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("unknown command 'stedy'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("did you mean 'steady'?"), std::string::npos) << r.output;
-  for (const char* c : {"steady", "transient", "creep", "response", "validate", "noise", "receptance", "bench", "keys"})
+  for (const char* c : {"steady", "transient", "creep", "response", "validate", "noise",
+                        "receptance", "bench", "keys"})
     EXPECT_NE(r.output.find(std::string(" ") + c), std::string::npos) << c << ": " << r.output;
   r = run("recepttance " + paper_case());
   EXPECT_NE(r.output.find("did you mean 'receptance'?"), std::string::npos) << r.output;

@@ -30,9 +30,10 @@ TEST(SweepParse, TomlListGivesOneValuePerPoint) {
 }
 
 TEST(SweepParse, PartlyNumericTokensAreRefused) {
-  for (const char* arg : {"friction.mu=0.1:0.5:1e1", "friction.mu=0.1:0.5: 3", "friction.mu=0.1 :0.5:3",
-                          "friction.mu=0.1:0.5:+3", "friction.mu=nan:0.5:3", "friction.mu=0.1:inf:3",
-                          "creepage.mean[1 ]=0:1:3", "creepage.mean[1=0:1:3", "=0:1:3"})
+  for (const char* arg :
+       {"friction.mu=0.1:0.5:1e1", "friction.mu=0.1:0.5: 3", "friction.mu=0.1 :0.5:3",
+        "friction.mu=0.1:0.5:+3", "friction.mu=nan:0.5:3", "friction.mu=0.1:inf:3",
+        "creepage.mean[1 ]=0:1:3", "creepage.mean[1=0:1:3", "=0:1:3"})
     EXPECT_THROW(io::parse_sweep(arg), InputError) << arg;
 }
 
@@ -45,7 +46,8 @@ TEST(SizeCheck, CountsBeyondLongAndNaNAreOverTheLimit) {
   EXPECT_THROW(pipeline::check_size(l, "k", 2.9e13, "steps", 0), InputError);
   EXPECT_THROW(pipeline::check_size(l, "k", std::nan(""), "steps", 0), InputError);
   EXPECT_THROW(pipeline::check_size(l, "k", 1, "steps", 1001), InputError);
-  EXPECT_THROW(pipeline::check_size(l, "k", 1, "steps", std::numeric_limits<double>::infinity()), InputError);
+  EXPECT_THROW(pipeline::check_size(l, "k", 1, "steps", std::numeric_limits<double>::infinity()),
+               InputError);
   try {
     pipeline::check_size(l, "transient.duration", 11, "steps", 0);
   } catch (const InputError& e) {
