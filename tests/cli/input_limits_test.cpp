@@ -66,6 +66,14 @@ Invocation expect_success(const std::string& args, const std::string& out_name) 
   return r;
 }
 
+// A steady sweep on a coarse grid: exit 0, `points` points run.
+void expect_sweep_runs(const std::string& args, int points, const std::string& out_name) {
+  const Invocation r = expect_success(
+      "steady " + paper_case() + " --set grid.nx=16 --set grid.ny=12 " + args, out_name);
+  EXPECT_NE(r.output.find("(" + std::to_string(points) + " points)"), std::string::npos)
+      << r.output;
+}
+
 std::string s33_case() {
   return source_file("cases/paper_s33_pseudorandom.toml");
 }
@@ -138,11 +146,7 @@ TEST(SizeLimits, RaisingOrLoweringLimitsStepsMovesTheRefusal) {
                  "--set grid.nx=16 --set grid.ny=12 --set limits.steps=3 "
                  "--sweep friction.mu=0.2:0.5:4",
                  {"--sweep", "limits.steps = 3"}, "steps_lowered");
-  const Invocation ok = expect_success("steady " + paper_case() +
-                                           " --set grid.nx=16 --set grid.ny=12 "
-                                           "--set limits.steps=3 --sweep friction.mu=0.2:0.5:3",
-                                       "steps_ok.h5");
-  EXPECT_NE(ok.output.find("(3 points)"), std::string::npos) << ok.output;
+  expect_sweep_runs("--set limits.steps=3 --sweep friction.mu=0.2:0.5:3", 3, "steps_ok.h5");
 }
 
 // ---- fault 5: integers read as 64 bits and range-checked, never truncated ----
@@ -187,11 +191,7 @@ TEST(SweepArgument, MalformedArgumentsAreRefusedNamingTheArgument) {
 }
 
 TEST(SweepArgument, WellFormedComponentSweepRunsEveryPoint) {
-  const Invocation r = expect_success("steady " + paper_case() +
-                                          " --set grid.nx=16 --set grid.ny=12 "
-                                          "--sweep 'creepage.mean[1]=0:0.002:4'",
-                                      "sweep_ok.h5");
-  EXPECT_NE(r.output.find("(4 points)"), std::string::npos) << r.output;
+  expect_sweep_runs("--sweep 'creepage.mean[1]=0:0.002:4'", 4, "sweep_ok.h5");
 }
 
 // ---- fault 10: the curve radius printed as a number ----
