@@ -20,6 +20,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "cli/command_suggestion.hpp"
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
@@ -91,6 +92,10 @@ int main(int argc, char** argv) {
   collect->add_option("study", study_options.study_file, "study file (TOML)")->required();
   collect->add_flag("-q,--quiet", study_options.quiet, "no progress output");
 
+  if (const std::string msg = cli::check_command(app, argc, argv); !msg.empty()) {
+    std::fprintf(stderr, "rollnoise: error: %s\n", msg.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

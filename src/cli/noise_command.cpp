@@ -43,11 +43,11 @@ int run_noise(const CommonOptions& o) {
   const pipeline::ContactCase& cc = r.contact;
   const auto& variants = r.variants;
   const auto& centres = r.axis.centres;
+  char track[64] = "tangent track";  // the radius as a number: any size prints (no int cast)
+  if (nc.curve_radius > 0) std::snprintf(track, sizeof track, "curve R = %.6g m", nc.curve_radius);
   std::printf("%s: %s, V = %.3g m/s; leading outer wheel: creepages (%.4g, %.4g, %.4g rad/m), "
               "contact angle %.3g rad\n",
-              reader.name().c_str(),
-              nc.curve_radius > 0 ? ("curve R = " + std::to_string(int(nc.curve_radius)) + " m").c_str()
-                                  : "tangent track",
+              reader.name().c_str(), track,
               cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.curve.position.contact_angle);
   print_contact_state(r.curve);
   std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "

@@ -13,11 +13,13 @@
 #include "contact/forces.hpp"
 #include "contact/rolling_history.hpp"
 #include "contact/transient_rolling.hpp"
+#include "io/contact_case.hpp"
 #include "io/contact_output.hpp"
 #include "io/excitation.hpp"
 #include "io/validation_output.hpp"
 #include "nss/linear_response.hpp"
 #include "nss/validation.hpp"
+#include "pipeline/limits.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -42,7 +44,12 @@ void check_excitation_resolved(const io::CaseReader& r, const contact::CreepageH
 
 long steps_of(const io::CaseReader& reader, double dt) {
   const double duration = reader.real("transient.duration");
-  const long steps = std::lround(std::floor(duration / dt + 1e-9));
+  const double count = std::floor(duration / dt + 1e-9);
+  io::within_case(reader, [&] {
+    pipeline::check_size(io::read_limits(reader), "transient.duration", count, "time steps of dt = dx/V",
+                         pipeline::transient_bytes(count));
+  });
+  const long steps = std::lround(count);
   if (steps < 1) reader.fail("transient.duration", "shorter than one time step dx/V");
   return steps;
 }

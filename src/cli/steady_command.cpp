@@ -3,7 +3,6 @@
 #include <chrono>
 #include <memory>
 #include <cstdio>
-#include <sstream>
 
 #include "cli/commands.hpp"
 #include "contact/forces.hpp"
@@ -11,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/contact_case.hpp"
 #include "io/contact_output.hpp"
+#include "io/sweep.hpp"
 #include "pipeline/steady_sweep.hpp"
 
 namespace rollnoise::cli {
@@ -19,53 +19,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-// "--sweep KEY=[v1, v2, ...]" (one TOML value per point), "KEY=lo:hi:n" (scalar key, linear),
-// or "KEY[i]=lo:hi:n" (component i of an array key, the others from the case). Returns the
-// overrides "KEY=value", one per point, and the swept values for the output.
-std::vector<std::string> expand_sweep(const std::string& spec, const io::CaseReader& base,
-                                      std::vector<double>& values) {
-  const auto eq = spec.find('=');
-  if (eq == std::string::npos) throw InputError("--sweep", "--sweep expects KEY=VALUES, got '" + spec + "'");
-  std::string key = spec.substr(0, eq);
-  const std::string rhs = spec.substr(eq + 1);
-  int component = -1;
-  if (const auto br = key.find('['); br != std::string::npos) {
-    component = std::stoi(key.substr(br + 1));
-    key = key.substr(0, br);
-    if (component < 0 || component > 2)
-      throw InputError("--sweep", "--sweep " + key + ": component index must be 0, 1 or 2");
-  }
-  std::vector<std::string> out;
-  if (!rhs.empty() && rhs.front() == '[') {
-    if (component >= 0) throw InputError("--sweep", "--sweep KEY[i] takes lo:hi:n");
-    for (const auto& v : io::split_toml_array(rhs, "--sweep " + key)) {
-      values.push_back(double(out.size()));
-      out.push_back(key + "=" + v);
-    }
-    return out;
-  }
-  double lo, hi;
-  long n;
-  char c1, c2;
-  std::istringstream is(rhs);
-  if (!(is >> lo >> c1 >> hi >> c2 >> n) || c1 != ':' || c2 != ':' || n < 1)
-    throw InputError("--sweep", "--sweep " + key + ": expected lo:hi:n or a TOML array, got '" + rhs + "'");
-  for (const double v : pipeline::linear_points(lo, hi, n)) {
-    values.push_back(v);
-    std::ostringstream val;
-    val.precision(17);
-    if (component >= 0) {
-      auto arr = base.real3(key);
-      arr[component] = v;
-      val << "[" << arr[0] << ", " << arr[1] << ", " << arr[2] << "]";
-    } else {
-      val << v;
-    }
-    out.push_back(key + "=" + val.str());
-  }
-  return out;
 }
 
 void print_solution(const contact::Grid& g, const contact::TangentialSolution& s, double ms) {
@@ -87,13 +40,12 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
   if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
   // Read every sweep point before any work, so that bad input fails early.
   std::vector<double> values;
-  std::vector<io::CaseReader> points;
-  std::vector<io::ContactCase> point_cases;
+  std::vector<io::ContactCase> point_cases;  // the points' readers are not kept (memory)
   if (!sweeps.empty())
-    for (const auto& kv : expand_sweep(sweeps[0], reader, values)) {
-      points.push_back(reader.with(kv));
-      point_cases.push_back(io::read_contact_case(points.back()));
-      io::within_case(points.back(), [&] { pipeline::place_contact(point_cases.back()); });
+    for (const auto& kv : io::expand_sweep(sweeps[0], reader, cc, values)) {
+      const io::CaseReader point = reader.with(kv);
+      point_cases.push_back(io::read_contact_case(point));
+      io::within_case(point, [&] { pipeline::place_contact(point_cases.back()); });
     }
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
@@ -122,7 +74,7 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
     std::vector<double> force, creep;
     std::vector<int> n_adh, n_slip, iters;
     std::printf("sweep %s (%zu points):\n%12s %12s %12s %12s %8s %8s\n", sweeps[0].c_str(),
-                points.size(), "value", "Fx [N]", "Fy [N]", "Mz [N m]", "adhesion", "slip");
+                point_cases.size(), "value", "Fx [N]", "Fy [N]", "Mz [N m]", "adhesion", "slip");
     io::within_case(reader, [&] {
       return pipeline::steady_sweep(cc, patch, point_cases, [&](std::size_t i, const io::ContactCase& pc,
                                                                 const contact::TangentialSolution& s) {
@@ -136,7 +88,7 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
         iters.push_back(s.iterations);
       });
     });
-    const std::size_t n = points.size();
+    const std::size_t n = point_cases.size();
     w.attribute("/sweep", "spec", sweeps[0]);
     w.write("/sweep/value", values, {n}, "as the swept key (index for TOML-array sweeps)");
     w.write("/sweep/creepage", creep, {n, 3}, "-, -, rad/m");

@@ -1,6 +1,9 @@
 #include "io/case_reader.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -91,10 +94,16 @@ CaseReader CaseReader::from_string(const std::string& text, const std::string& n
 
 CaseReader CaseReader::from_file(const std::string& path,
                                  const std::vector<std::string>& overrides) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw InputError("(file)", path + ": no such case file");
+  if (fs::is_directory(st)) throw InputError("(file)", path + ": is a directory, not a case file (TOML)");
   std::ifstream in(path);
-  if (!in) throw InputError("(file)", path + ": cannot open the case file");
+  if (!in) throw InputError("(file)", path + ": cannot open the case file: " + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw InputError("(file)", path + ": cannot read the case file");
   return from_string(ss.str(), path, overrides);
 }
 
@@ -196,12 +205,14 @@ double CaseReader::real(const std::string& key) const {
 
 long CaseReader::integer(const std::string& key) const {
   const Value v = lookup(*this, doc_->table, key);
-  if (!v.node->is_integer()) fail(key, "expected an integer, got " + describe(*v.node));
-  const long x = static_cast<long>(v.node->as_integer()->get());
+  // TOML integers are 64-bit (toml++ int64_t): read whole, then range-checked into the target
   const KeySpec& spec = *find_key(key);
-  if (x < spec.minimum)
-    fail(key, "must be at least " + std::to_string(spec.minimum) + ", got " + std::to_string(x));
-  return x;
+  const std::string range =
+      "must be an integer between " + std::to_string(spec.minimum) + " and " + std::to_string(spec.maximum);
+  if (!v.node->is_integer()) fail(key, range + ", got " + describe(*v.node));
+  const std::int64_t x = v.node->as_integer()->get();
+  if (x < spec.minimum || x > spec.maximum) fail(key, range + ", got " + std::to_string(x));
+  return static_cast<long>(x);
 }
 
 std::string CaseReader::string(const std::string& key) const {

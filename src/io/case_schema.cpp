@@ -1,11 +1,20 @@
 #include "io/case_schema.hpp"
 
+#include <climits>
+#include <cstdio>
 #include <sstream>
+
+#include "pipeline/limits.hpp"
 
 namespace rollnoise::io {
 
 const std::vector<KeySpec>& case_schema() {
   using T = KeyType;
+  static const std::string memory_default = [] {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.6e", pipeline::default_memory_limit());
+    return std::string(text);
+  }();
   static const std::vector<KeySpec> schema = {
       // material, friction, rolling
       {"material.E", T::PositiveReal, "210e9", "Pa", "Young's modulus of wheel and rail"},
@@ -64,7 +73,7 @@ const std::vector<KeySpec>& case_schema() {
       {"excitation.f_min", T::PositiveReal, "100.0", "Hz", "multiharmonic: lowest frequency"},
       {"excitation.f_max", T::PositiveReal, "5000.0", "Hz", "multiharmonic: highest frequency"},
       {"excitation.count", T::Integer, "1000", "-", "multiharmonic: number of frequencies", {}, 1},
-      {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0},
+      {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0, LONG_MAX},
       {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi and optionally dN (normal-load variation, N)"},
       // transient
       {"transient.duration", T::PositiveReal, "0.01", "s", "simulated time"},
@@ -134,6 +143,12 @@ const std::vector<KeySpec>& case_schema() {
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
+      // limits (pipeline/limits.hpp; docs/conventions.md, Limits)
+      {"limits.memory", T::PositiveReal, memory_default, "B",
+       "memory a run may use, estimated before allocating (default: half the physical memory of this machine)"},
+      {"limits.steps", T::Integer, "1000000", "-",
+       "the most time steps of a run, points of a sweep, or frequencies of an axis, excitation or bands",
+       {}, 1, LONG_MAX},
   };
   return schema;
 }

@@ -3,6 +3,7 @@
 // it; the reader rejects any key not declared here, naming it.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ enum class KeyType {
   Real,          ///< finite real number
   PositiveReal,  ///< finite, > 0
   NonNegReal,    ///< finite, >= 0
-  Integer,       ///< integer >= minimum
+  Integer,       ///< integer in [minimum, maximum] (read as 64 bits, then range-checked)
   String,        ///< one of `allowed` (any string if empty)
   Real3,         ///< array of three finite reals
   RealList,      ///< array of finite reals
@@ -27,6 +28,7 @@ struct KeySpec {
   std::string help;
   std::vector<std::string> allowed = {};
   long minimum = 0;           ///< for Integer
+  long maximum = std::numeric_limits<int>::max();  ///< for Integer: the target's range (int by default)
 };
 
 /// All declared keys, in the order they are documented.

@@ -52,9 +52,22 @@ void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& 
 
 }  // namespace
 
+pipeline::Limits read_limits(const CaseReader& r) {
+  pipeline::Limits l;
+  if (r.has("limits.memory")) l.memory = r.real("limits.memory");
+  l.steps = r.integer("limits.steps");
+  return l;
+}
+
 ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
   ContactCase c;
-  problems.check([&] { c.material.E = r.real("material.E"); });
+  problems.check([&] { c.limits = read_limits(r); });
+  problems.check([&] {
+    // from soft polymers (~1 MPa) to the stiffest solids (diamond ~1.2e12 Pa): outside, a typo
+    // (units, exponent) that the solvers would only report as a numerical failure
+    c.material.E = r.real("material.E");
+    if (!(c.material.E >= 1e6 && c.material.E <= 1e13)) r.fail("material.E", "must lie in [1e6, 1e13] Pa");
+  });
   problems.check([&] {
     c.material.nu = r.real("material.nu");
     if (!(c.material.nu >= 0.0 && c.material.nu < 0.5)) r.fail("material.nu", "must lie in [0, 0.5)");

@@ -11,6 +11,10 @@ namespace rollnoise::io {
 
 using pipeline::ContactCase;
 
+/// The [limits] of a case (limits.memory, limits.steps; pipeline/limits.hpp). limits.memory
+/// absent: 0, i.e. half the physical memory.
+pipeline::Limits read_limits(const CaseReader& r);
+
 /// Read and check the contact keys of a case, recording every problem in `problems`.
 ContactCase read_contact_case(const CaseReader& r, InputProblems& problems);
 

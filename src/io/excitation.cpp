@@ -1,5 +1,7 @@
 #include "io/excitation.hpp"
 
+#include "io/contact_case.hpp"
+#include "pipeline/limits.hpp"
 #include "pipeline/transient.hpp"
 
 #include <cmath>
@@ -44,9 +46,14 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
     if (f1 < f0) r.fail("excitation.f_max", "must not be below excitation.f_min");
     // The minimum over all times is not known in closed form: checked on the time steps of a run
     // (normal_load_series).
+    const long count = r.integer("excitation.count");
+    // per frequency: its value and 4 phases (3 creepages, normal load)
+    within_case(r, [&] {
+      pipeline::check_size(read_limits(r), "excitation.count", double(count), "excitation frequencies",
+                           5.0 * sizeof(double) * double(count));
+    });
     return contact::CreepageHistory::multiharmonic(
-        mean, r.real3("excitation.amplitude"), f0, f1,
-        static_cast<int>(r.integer("excitation.count")),
+        mean, r.real3("excitation.amplitude"), f0, f1, static_cast<int>(count),
         static_cast<std::uint64_t>(r.integer("excitation.seed")),
         r.real("excitation.normal_amplitude"));
   }

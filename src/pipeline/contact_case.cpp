@@ -15,10 +15,11 @@ void place_contact_at(ContactCase& c, const geometry::ContactGeometry& point, do
   const auto hz = geometry::hertz_estimate(c.contact_point, c.normal_force, c.material, c.grid_options);
   c.a = hz.a, c.b = hz.b;  // Hertz's estimate from the curvatures at the contact point
   c.placed = true;
+  check_contact_size(c);
 }
 
 void place_contact(ContactCase& c) {
-  if (c.placed || !c.profiles) return;
+  if (c.placed || !c.profiles) return check_contact_size(c);
   place_contact_at(c, geometry::find_contact(*c.profiles, c.wheelset), c.normal_force);
 }
 

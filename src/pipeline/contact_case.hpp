@@ -21,6 +21,7 @@
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "pipeline/limits.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -44,12 +45,15 @@ struct ContactCase {
   geometry::GridOptions grid_options;
   contact::NormalSolverSettings normal;
   contact::TangentialSolverSettings tangential;
+  Limits limits;  ///< [limits]: memory and step counts a run may use (pipeline/limits.hpp)
 
   contact::SteadyRollingInput steady_input() const { return {mu, speed, creepage, spin_offset}; }
 };
 
 /// Profiles: find the contact point at `c.wheelset`, choose the grid around it and set a, b from
-/// Hertz's estimate. Hertzian cases are placed when read; a placed case is left unchanged.
+/// Hertz's estimate. Hertzian cases are placed when read; a placed case is left unchanged. Either
+/// way InputError naming grid.nx when the contact problem on the grid exceeds limits.memory
+/// (check_contact_size), before anything is solved.
 void place_contact(ContactCase& c);
 
 /// Profiles: the contact point given (the curve contact state found it) with its normal force;

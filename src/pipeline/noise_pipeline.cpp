@@ -38,10 +38,23 @@ ContactStage contact_stage(const ContactCase& c, bool with_model) {
   return s;
 }
 
+namespace {
+
+// The 1/3-octave centres of the case, their narrow-band samples checked against c.limits (cheap:
+// run before the curve stage, so that a huge noise.points_per_band is refused at once).
+std::vector<double> band_centres(const ContactCase& c, const NoiseCase& nc) {
+  std::vector<double> centres = noise::third_octave_centres(nc.band_min, nc.band_max);
+  if (centres.empty()) throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
+  const double count = double(centres.size()) * double(nc.points_per_band);
+  check_size(c.limits, "noise.points_per_band", count, "narrow-band frequencies", frequency_bytes(count));
+  return centres;
+}
+
+}  // namespace
+
 BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
   BandAxis a;
-  a.centres = noise::third_octave_centres(nc.band_min, nc.band_max);
-  if (a.centres.empty()) throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
+  a.centres = band_centres(c, nc);
   a.frequency = noise::band_frequencies(a.centres, nc.points_per_band);
   check_nyquist(c, a.frequency, "noise.band_max");
   return a;
@@ -79,6 +92,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
   NoiseResult r;
+  band_centres(c, nc);             // the sizes, before any work
   r.curve = resolve_curve(c, nc);  // 1
   r.axis = band_axis(c, nc);       // 2, before anything is solved
   r.contact = std::move(c);

@@ -51,7 +51,7 @@ struct BandAxis {
   std::vector<double> frequency;  ///< narrow-band samples (Hz)
 };
 /// InputError naming noise.band_max when no band lies in the range or the samples exceed the
-/// Nyquist limit of the placed case.
+/// Nyquist limit of the placed case, noise.points_per_band when their count exceeds c.limits.
 BandAxis band_axis(const ContactCase& c, const NoiseCase& nc);
 
 struct NoiseResult {

@@ -15,7 +15,9 @@ namespace rollnoise::pipeline {
 
 long transient_steps(const ContactCase& c, double duration, double dx) {
   const double dt = dx / c.speed;
-  const long steps = std::lround(std::floor(duration / dt + 1e-9));
+  const double count = std::floor(duration / dt + 1e-9);
+  check_size(c.limits, "transient.duration", count, "time steps of dt = dx/V", transient_bytes(count));
+  const long steps = std::lround(count);
   if (steps < 1)
     throw InputError("transient.duration", "shorter than one time step dx/V = " + std::to_string(dt) + " s");
   return steps;

@@ -15,7 +15,7 @@
 namespace rollnoise::pipeline {
 
 /// The number of time steps dt = dx/V in `duration`; InputError naming transient.duration when
-/// it is shorter than one step.
+/// it is shorter than one step or beyond c.limits (steps, memory of the per-step results).
 long transient_steps(const ContactCase& c, double duration, double dx);
 
 /// The total normal load N_mean + dN(t_k) of every step k = 0..steps (N); InputError naming
