@@ -25,6 +25,13 @@ namespace {
 const std::map<std::string, std::string> kPseudoKeys = {
     {"(file)", "the case file itself could not be opened"},
     {"(syntax)", "the case file is not valid TOML"},
+    // the keys of a study file (io/study_file.hpp, docs/study.md), not of a case file
+    {"base", "study file: the base case"},
+    {"output", "study file: the output folder"},
+    {"combine", "study file: product or zip"},
+    {"axes", "study file: the [axes] table"},
+    {"axes.", "study file: one axis, axes.KEY (KEY a case key)"},
+    {"SLURM_ARRAY_TASK_ID", "environment of a Slurm job array: the shard of a study"},
     {"grid", "the potential contact area as a whole: grid.scale or the explicit extent grid.x_min..y_max, "
              "whichever the case uses, or the grid the profile geometry chose"},
     {"geometry", "the wheel and rail profiles with the lateral displacement (contact.* or wheelset.*, "
