@@ -139,6 +139,15 @@ pid_t start_worker(const pipeline::StudyPlan& plan, const std::vector<pipeline::
   return pid;
 }
 
+void add_counts(RunSummary& s, const Shared& shared) {
+  s.completed = shared.done;
+  s.failed = shared.failed;
+  s.loops_computed = shared.loops_computed;
+  s.loops_reused = shared.loops_reused;
+  s.spectra_computed = shared.spectra_computed;
+  s.spectra_reused = shared.spectra_reused;
+}
+
 void prepare_output(const pipeline::StudyPlan& plan) {
   std::error_code ec;
   fs::create_directories(plan.output, ec);
@@ -233,12 +242,7 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
     }
   }
   report();
-  s.completed = shared->done;
-  s.failed = shared->failed;
-  s.loops_computed = shared->loops_computed;
-  s.loops_reused = shared->loops_reused;
-  s.spectra_computed = shared->spectra_computed;
-  s.spectra_reused = shared->spectra_reused;
+  add_counts(s, shared.get());
   s.seconds = seconds_since(t0);
   return s;
 }
@@ -257,10 +261,7 @@ RunSummary run_one_case(const pipeline::StudyPlan& plan, std::size_t index) {
   } else {
     SharedCounters shared(false);
     work(plan, cases, {{index}}, false, shared.get(), 0, {});
-    s.completed = shared->done;
-    s.failed = shared->failed;
-    s.loops_computed = shared->loops_computed;
-    s.spectra_computed = shared->spectra_computed;
+    add_counts(s, shared.get());
   }
   s.seconds = seconds_since(t0);
   return s;
