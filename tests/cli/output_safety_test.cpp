@@ -4,8 +4,8 @@
 // are written to unique temporaries renamed atomically (two concurrent runs to one file each leave
 // a complete file, a killed run leaves nothing); stdout is line-buffered; every HDF5 file records
 // program_version, command_line, date (and seed where randomness is used) on its root group.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <hdf5.h>
 #include <signal.h>
 #include <spawn.h>
@@ -68,7 +68,8 @@ fs::path copy_case(const fs::path& d) {
 void expect_refused(const Invocation& r, const std::string& option, const std::string& path) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("error: " + option + " " + path), std::string::npos) << r.output;
-  EXPECT_EQ(r.output.find("normal problem"), std::string::npos) << "refused after computing:\n" << r.output;
+  EXPECT_EQ(r.output.find("normal problem"), std::string::npos) << "refused after computing:\n"
+                                                                << r.output;
 }
 
 // A string attribute of the root group, or "(missing)".
@@ -165,11 +166,14 @@ TEST(OutputSafety, OutputNamingTheCaseFileIsRefusedAndTheCaseUnchanged) {
   const std::string before = slurp(c);
   expect_refused(run("steady " + c.string() + " -o " + c.string()), "-o", c.string());
   // the same file by another spelling, a symlink and a hard link
-  expect_refused(run("steady " + c.string() + " -o " + (d / "." / "c.toml").string()), "-o", (d / "." / "c.toml").string());
+  expect_refused(run("steady " + c.string() + " -o " + (d / "." / "c.toml").string()), "-o",
+                 (d / "." / "c.toml").string());
   fs::create_symlink(c, d / "sym.h5");
   fs::create_hard_link(c, d / "hard.h5");
-  expect_refused(run("steady " + c.string() + " -o " + (d / "sym.h5").string()), "-o", (d / "sym.h5").string());
-  expect_refused(run("transient " + c.string() + " -o " + (d / "hard.h5").string()), "-o", (d / "hard.h5").string());
+  expect_refused(run("steady " + c.string() + " -o " + (d / "sym.h5").string()), "-o",
+                 (d / "sym.h5").string());
+  expect_refused(run("transient " + c.string() + " -o " + (d / "hard.h5").string()), "-o",
+                 (d / "hard.h5").string());
   EXPECT_EQ(slurp(c), before);
   EXPECT_EQ(listing(d), (std::vector<std::string>{"c.toml", "hard.h5", "sym.h5"}));
 }
@@ -179,7 +183,8 @@ TEST(OutputSafety, CsvNamingTheCaseOrTheHdf5OutputIsRefused) {
   const fs::path c = copy_case(d);
   const std::string before = slurp(c);
   const std::string h5 = (d / "x.h5").string();
-  expect_refused(run("creep " + c.string() + " -o " + h5 + " --csv " + c.string()), "--csv", c.string());
+  expect_refused(run("creep " + c.string() + " -o " + h5 + " --csv " + c.string()), "--csv",
+                 c.string());
   // --csv and -o naming one new file (spelled differently): the second output is refused
   const std::string same = (d / ".." / d.filename() / "x.h5").string();
   const Invocation r = run("creep " + c.string() + " -o " + h5 + " --csv " + same);
@@ -193,10 +198,12 @@ TEST(OutputSafety, OutputNamingAModelFileOfTheCaseIsRefused) {
   const fs::path d = fresh_dir("out_model");
   fs::copy_file(source_file("models/profiles/MBench_S1002_v3.prw"), d / "w.prw");
   const std::string profile = slurp(d / "w.prw");
-  std::ofstream(d / "p.toml") << "[contact]\ngeometry = \"profiles\"\nnormal_force = 98100\nwheel_profile = \"w.prw\"\n"
-                                 "[creepage]\nmean = [0.001, 0.001, 0.0]\n";
+  std::ofstream(d / "p.toml")
+      << "[contact]\ngeometry = \"profiles\"\nnormal_force = 98100\nwheel_profile = \"w.prw\"\n"
+         "[creepage]\nmean = [0.001, 0.001, 0.0]\n";
   std::ofstream(d / "e.csv") << "0, 0.001, 0, 0\n0.001, 0.002, 0, 0\n";
-  std::ofstream(d / "h.toml") << slurp(paper_case()) << "\n[excitation]\ntype = \"csv\"\nfile = \"e.csv\"\n";
+  std::ofstream(d / "h.toml") << slurp(paper_case())
+                              << "\n[excitation]\ntype = \"csv\"\nfile = \"e.csv\"\n";
   const std::string csv = slurp(d / "e.csv");
 
   Invocation r = run("steady " + (d / "p.toml").string() + " -o " + (d / "w.prw").string());
@@ -216,10 +223,12 @@ TEST(OutputSafety, EveryDefaultedFileKeyIsAnInputOfTheCheck) {
   int file_keys = 0;
   for (const auto& spec : rollnoise::io::case_schema()) {
     if (spec.type != rollnoise::io::KeyType::String || spec.default_value.size() < 3) continue;
-    const std::string value = spec.default_value.substr(1, spec.default_value.size() - 2);  // unquoted
+    const std::string value =
+        spec.default_value.substr(1, spec.default_value.size() - 2);  // unquoted
     if (!fs::is_regular_file(source_file(value))) continue;
     ++file_keys;
-    EXPECT_NE(std::find(keys.begin(), keys.end(), spec.key), keys.end()) << spec.key << " = " << value;
+    EXPECT_NE(std::find(keys.begin(), keys.end(), spec.key), keys.end())
+        << spec.key << " = " << value;
   }
   EXPECT_GE(file_keys, 5);  // wheel and rail profile, track, wheelset, modes
 }
@@ -233,7 +242,8 @@ TEST(OutputSafety, FolderAsOutputIsRefusedBeforeComputingAndLeavesNoCsv) {
   const std::string csv = (d / "t.csv").string();
   expect_refused(run("creep " + c.string() + " -o " + (d / "sub").string() + " --csv " + csv), "-o",
                  (d / "sub").string());
-  expect_refused(run("creep " + c.string() + " -o " + (d / "x.h5").string() + " --csv " + (d / "sub").string()),
+  expect_refused(run("creep " + c.string() + " -o " + (d / "x.h5").string() + " --csv " +
+                     (d / "sub").string()),
                  "--csv", (d / "sub").string());
   EXPECT_TRUE(fs::is_empty(d / "sub"));
   EXPECT_EQ(listing(d), (std::vector<std::string>{"c.toml", "sub"}));
@@ -246,9 +256,11 @@ TEST(OutputSafety, MissingOrUnwritableFolderIsRefused) {
   Invocation r = run("steady " + c.string() + " -o " + missing);
   expect_refused(r, "-o", missing);
   EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
-  expect_refused(run("creep " + c.string() + " -o " + (d / "x.h5").string() + " --csv " + missing), "--csv", missing);
+  expect_refused(run("creep " + c.string() + " -o " + (d / "x.h5").string() + " --csv " + missing),
+                 "--csv", missing);
   // /proc takes no new file, even for root (for whom access() and chmod do not tell)
-  expect_refused(run("steady " + c.string() + " -o /proc/rollnoise_test.h5"), "-o", "/proc/rollnoise_test.h5");
+  expect_refused(run("steady " + c.string() + " -o /proc/rollnoise_test.h5"), "-o",
+                 "/proc/rollnoise_test.h5");
   expect_refused(run("steady " + c.string() + " -o /dev/null"), "-o", "/dev/null");
   EXPECT_EQ(listing(d), std::vector<std::string>{"c.toml"});
 }
@@ -262,10 +274,10 @@ TEST(OutputSafety, ConcurrentRunsToOneOutputLeaveOneCompleteConsistentFile) {
   const fs::path d = fresh_dir("out_concurrent");
   const fs::path c = copy_case(d);
   const fs::path out = d / "out.h5";
-  const std::string cmd = "HDF5_USE_FILE_LOCKING=FALSE " + std::string(ROLLNOISE_BINARY) + " steady " + c.string() +
-                          " -o " + out.string() + " --set friction.mu=";
-  const int st = std::system((cmd + "0.2 > " + (d / "a.log").string() + " 2>&1 & " + cmd + "0.25 > " +
-                              (d / "b.log").string() + " 2>&1; wait")
+  const std::string cmd = "HDF5_USE_FILE_LOCKING=FALSE " + std::string(ROLLNOISE_BINARY) +
+                          " steady " + c.string() + " -o " + out.string() + " --set friction.mu=";
+  const int st = std::system((cmd + "0.2 > " + (d / "a.log").string() + " 2>&1 & " + cmd +
+                              "0.25 > " + (d / "b.log").string() + " 2>&1; wait")
                                  .c_str());
   ASSERT_EQ(st, 0);
   const std::string a = slurp(d / "a.log"), b = slurp(d / "b.log");
@@ -334,14 +346,17 @@ TEST(OutputSafety, Hdf5FilesRecordVersionCommandLineAndDate) {
   const fs::path d = fresh_dir("out_provenance");
   const fs::path out = d / "out file.h5";  // a space: the command line must quote it
   const std::time_t before = std::time(nullptr);
-  const Invocation r = run("steady " + paper_case() + " -o '" + out.string() + "' --set grid.nx=20 --set grid.ny=15");
+  const Invocation r = run("steady " + paper_case() + " -o '" + out.string() +
+                           "' --set grid.nx=20 --set grid.ny=15");
   ASSERT_EQ(r.status, 0) << r.output;
 
   const std::string version = root_attribute(out, "program_version");
-  EXPECT_TRUE(version == "unknown" || std::regex_match(version, std::regex("[0-9A-Za-z.+_-]*[0-9a-f]{7,}(-dirty)?")))
+  EXPECT_TRUE(version == "unknown" ||
+              std::regex_match(version, std::regex("[0-9A-Za-z.+_-]*[0-9a-f]{7,}(-dirty)?")))
       << version;
   const std::string cmd = root_attribute(out, "command_line");
-  EXPECT_NE(cmd.find(std::string(ROLLNOISE_BINARY) + " steady " + paper_case() + " -o '" + out.string() + "'"),
+  EXPECT_NE(cmd.find(std::string(ROLLNOISE_BINARY) + " steady " + paper_case() + " -o '" +
+                     out.string() + "'"),
             std::string::npos)
       << cmd;
   // the quoted command line gives the same arguments back through a shell
@@ -361,9 +376,10 @@ TEST(OutputSafety, Hdf5FilesRecordVersionCommandLineAndDate) {
 
 TEST(OutputSafety, RandomPhasesRecordTheirSeed) {
   const fs::path out = fresh_dir("out_seed") / "r.h5";
-  const Invocation r = run("response " + source_file("cases/paper_s33_pseudorandom.toml") + " -o " + out.string() +
-                           " --set grid.nx=20 --set grid.ny=15 --set excitation.count=20 --set excitation.seed=7 "
-                           "--set transient.duration=0.005");
+  const Invocation r =
+      run("response " + source_file("cases/paper_s33_pseudorandom.toml") + " -o " + out.string() +
+          " --set grid.nx=20 --set grid.ny=15 --set excitation.count=20 --set excitation.seed=7 "
+          "--set transient.duration=0.005");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(root_attribute(out, "seed"), "7");
 }
@@ -372,17 +388,22 @@ TEST(OutputSafety, CreepMethodNamesTheRouteTaken) {
   const fs::path d = fresh_dir("out_method");
   const std::string common = " --set grid.nx=20 --set grid.ny=15 --set frequency.count=5";
   ASSERT_EQ(run("creep " + paper_case() + " -o " + (d / "fast.h5").string() + common).status, 0);
-  ASSERT_EQ(run("creep " + paper_case() + " -o " + (d / "lu.h5").string() + common + " --direct").status, 0);
-  EXPECT_NE(group_attribute(d / "fast.h5", "/creep", "method").find("block Krylov"), std::string::npos);
-  EXPECT_NE(group_attribute(d / "lu.h5", "/creep", "method").find("complex LU per frequency"), std::string::npos);
+  ASSERT_EQ(
+      run("creep " + paper_case() + " -o " + (d / "lu.h5").string() + common + " --direct").status,
+      0);
+  EXPECT_NE(group_attribute(d / "fast.h5", "/creep", "method").find("block Krylov"),
+            std::string::npos);
+  EXPECT_NE(group_attribute(d / "lu.h5", "/creep", "method").find("complex LU per frequency"),
+            std::string::npos);
 }
 
 // A CSV output is written whole or not at all, and beside it no temporary stays.
 TEST(OutputSafety, CsvIsCompleteAndNoTemporaryStays) {
   const fs::path d = fresh_dir("out_csvok");
   const fs::path csv = d / "t.csv";
-  const Invocation r = run("creep " + paper_case() + " -o " + (d / "c.h5").string() + " --csv " + csv.string() +
-                           " --set grid.nx=20 --set grid.ny=15 --set frequency.count=7");
+  const Invocation r =
+      run("creep " + paper_case() + " -o " + (d / "c.h5").string() + " --csv " + csv.string() +
+          " --set grid.nx=20 --set grid.ny=15 --set frequency.count=7");
   ASSERT_EQ(r.status, 0) << r.output;
   std::ifstream in(csv);
   std::string line;
