@@ -20,6 +20,7 @@
 
 #include "cli/command_suggestion.hpp"
 #include "cli/commands.hpp"
+#include "cli/run_files.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
 
@@ -33,6 +34,7 @@ std::string output_path(const CommonOptions& o, const std::string& case_name) {
 
 int main(int argc, char** argv) {
   using namespace rollnoise;
+  cli::start_process(argc, argv);  // stdout line-buffered; command line kept for the provenance
   gsl_set_error_handler_off();  // GSL errors are checked where they matter
   CLI::App app{"rollnoise: railway rolling contact and rolling noise in the frequency domain"};
   app.require_subcommand(1);
@@ -91,6 +93,8 @@ int main(int argc, char** argv) {
       std::cout << io::describe_schema();
       return 0;
     }
+    // the output files, before any computation (bench writes HDF5 only when -o is given)
+    cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "", !bench->parsed());
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
     if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
