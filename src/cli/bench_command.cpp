@@ -5,13 +5,14 @@
 // writes them as CSV (postprocess/plot_bench.py draws it).
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "io/contact_case.hpp"
+#include "io/output_files.hpp"
 #include "linalg/convergence.hpp"
 #include "noise/kalker_linear.hpp"
 #include "nss/grid_study.hpp"
@@ -129,11 +130,9 @@ void print_orders(const std::vector<nss::GridMeasurement>& res, const nss::GridS
   }
 }
 
-void write_csv(const std::string& csv, const std::string& case_file, const std::vector<nss::GridMeasurement>& res,
-               const nss::GridStudyErrors& err, const std::vector<Quantity>& quantities,
-               const nss::GridStudySettings& s, double c11_table) {
-  std::ofstream out(csv);
-  if (!out) throw InputError("--csv", "cannot write " + csv);
+void write_table(std::ostream& out, const std::string& case_file, const std::vector<nss::GridMeasurement>& res,
+                 const nss::GridStudyErrors& err, const std::vector<Quantity>& quantities,
+                 const nss::GridStudySettings& s, double c11_table) {
   out << "# rollnoise bench " << case_file << ": errors relative to the finest grid (nx = " << res.back().nx
       << "); err_C11_kalker against Kalker's table (" << c11_table
       << "); err_f: largest of f11, f22, f23; err_transient: complex amplitudes of Fx, Fy at "
@@ -153,6 +152,15 @@ void write_csv(const std::string& csv, const std::string& case_file, const std::
     for (const auto& q : quantities) out << "," << (*q.err)[i];
     out << "," << err.transient_vs_linear[i] << "\n";
   }
+}
+
+// The table as CSV, written atomically (io/output_files.hpp).
+void write_csv(const std::string& csv, const std::string& case_file, const std::vector<nss::GridMeasurement>& res,
+               const nss::GridStudyErrors& err, const std::vector<Quantity>& quantities,
+               const nss::GridStudySettings& s, double c11_table) {
+  io::write_text_file(csv, "--csv", [&](std::ostream& out) {
+    write_table(out, case_file, res, err, quantities, s, c11_table);
+  }).commit();
   const std::string png =
       (csv.size() > 4 && csv.substr(csv.size() - 4) == ".csv" ? csv.substr(0, csv.size() - 4) : csv) + ".png";
   std::printf("wrote %s\ndraw it (from the source tree): /usr/bin/python3 postprocess/plot_bench.py %s -o %s\n",

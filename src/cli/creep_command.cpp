@@ -2,6 +2,7 @@
 // the linear NSS model at the case's mean creepage (paper Eqs. 28-30), on the case's frequency
 // axis: read the case, run the creep pipeline (pipeline/creep.hpp), write /creep/* and the CSV.
 #include <cstdio>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "io/contact_case.hpp"
@@ -25,8 +26,10 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_creep(w, reader, freq, r, direct);
-  if (!csv.empty()) io::write_creep_csv(csv, freq, r);
+  std::optional<io::TemporaryFile> table;  // committed with the HDF5 file, not before
+  if (!csv.empty()) table.emplace(io::write_creep_csv(csv, freq, r));
   w.commit();
+  if (table) table->commit();
   std::printf("%s: linear NSS model on %d contact elements (%d adhesion, %d slip), %d unknowns\n",
               reader.name().c_str(), model.adhesion_elements() + model.slip_elements(), model.adhesion_elements(),
               model.slip_elements(), model.unknowns());

@@ -22,6 +22,7 @@
 
 #include "cli/command_suggestion.hpp"
 #include "cli/commands.hpp"
+#include "cli/run_files.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
 
@@ -35,6 +36,7 @@ std::string output_path(const CommonOptions& o, const std::string& case_name) {
 
 int main(int argc, char** argv) {
   using namespace rollnoise;
+  cli::start_process(argc, argv);  // stdout line-buffered; command line kept for the provenance
   gsl_set_error_handler_off();  // GSL errors are checked where they matter
   CLI::App app{"rollnoise: railway rolling contact and rolling noise in the frequency domain"};
   app.require_subcommand(1);
@@ -107,6 +109,10 @@ int main(int argc, char** argv) {
       std::cout << io::describe_schema();
       return 0;
     }
+    if (study->parsed()) return cli::run_study(study_options);  // its own output folder (docs/study.md)
+    if (collect->parsed()) return cli::run_collect(study_options);
+    // the output files, before any computation (bench writes HDF5 only when -o is given)
+    cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "", !bench->parsed());
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
     if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
@@ -115,8 +121,6 @@ int main(int argc, char** argv) {
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
-    if (study->parsed()) return cli::run_study(study_options);
-    if (collect->parsed()) return cli::run_collect(study_options);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "io/output_files.hpp"
 #include "io/study_file.hpp"
 #include "study/collect.hpp"
 #include "study/runner.hpp"
@@ -24,14 +25,6 @@ std::string program_path() {
   return n > 0 ? std::string(buf, std::size_t(n)) : std::string("rollnoise");
 }
 
-std::string shell_quote(const std::string& s) {
-  if (s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:,+") == std::string::npos)
-    return s;
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 }  // namespace
 
 int run_study(const StudyOptions& o) {
@@ -40,7 +33,7 @@ int run_study(const StudyOptions& o) {
   const std::vector<pipeline::StudyCase> cases = pipeline::expand(plan);
 
   if (o.list) {  // one self-contained command per case, for GNU parallel or HyperQueue
-    const std::string program = shell_quote(program_path()), file = shell_quote(plan.file);
+    const std::string program = io::shell_quote({program_path()}), file = io::shell_quote({plan.file});
     for (const auto& c : cases)
       if (shard.contains(c.index)) std::printf("%s study %s --case %zu -q\n", program.c_str(), file.c_str(), c.index);
     return 0;

@@ -50,6 +50,7 @@ CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
   h.freq_.resize(count);
   for (int n = 0; n < count; ++n)
     h.freq_[n] = count == 1 ? f_min : f_min + (f_max - f_min) * n / double(count - 1);
+  h.seed_ = seed;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.0, 2.0 * M_PI);
   for (int j = 0; j < 3; ++j) {

@@ -67,6 +67,8 @@ class CreepageHistory {
   double normal_amplitude() const { return normal_amp_; }
   /// harmonic, multiharmonic: the phase of dN at each of frequencies() (rad); empty otherwise.
   const std::vector<double>& normal_phases() const { return normal_phase_; }
+  /// multiharmonic: the seed of the random phases; 0 otherwise (no randomness).
+  std::uint64_t seed() const { return seed_; }
 
  private:
   Kind kind_ = Kind::constant;
@@ -79,6 +81,7 @@ class CreepageHistory {
   double normal_amp_ = 0.0;
   std::vector<double> normal_phase_;
   std::vector<double> normal_values_;  // samples: dN per time, or empty
+  std::uint64_t seed_ = 0;
 };
 
 }  // namespace rollnoise::contact

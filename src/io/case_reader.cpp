@@ -274,15 +274,20 @@ std::vector<std::string> split_toml_array(const std::string& text, const std::st
 
 namespace fs = std::filesystem;
 
-std::string resolve_model_file(const CaseReader& r, const std::string& key) {
+std::string find_model_file(const CaseReader& r, const std::string& key) {
   const fs::path given = r.string(key);
-  if (given.is_absolute()) {
-    if (!fs::exists(given)) r.fail(key, "file " + given.string() + " does not exist");
-    return given.string();
-  }
+  if (given.is_absolute()) return fs::exists(given) ? given.string() : std::string();
   const fs::path folder = r.folder().empty() ? fs::path(".") : fs::path(r.folder());
   for (const fs::path& base : {folder, folder / "..", fs::path(ROLLNOISE_SOURCE_DIR)})
     if (fs::exists(base / given)) return (base / given).lexically_normal().string();
+  return {};
+}
+
+std::string resolve_model_file(const CaseReader& r, const std::string& key) {
+  const std::string found = find_model_file(r, key);
+  if (!found.empty()) return found;
+  const fs::path given = r.string(key);
+  if (given.is_absolute()) r.fail(key, "file " + given.string() + " does not exist");
   r.fail(key, "file " + given.string() + " found neither beside the case file, in its parent folder, "
               "nor in the source tree");
 }

@@ -70,6 +70,8 @@ auto within_case(const CaseReader& r, Stage&& stage) {
 /// Resolve a model file: as given if absolute, else relative to the case file's folder, its
 /// parent, or the source tree (in that order). InputError naming `key` if none exists.
 std::string resolve_model_file(const CaseReader& r, const std::string& key);
+/// The file resolve_model_file would return, or "" if there is none (no error).
+std::string find_model_file(const CaseReader& r, const std::string& key);
 
 /// The elements of a TOML array given as text ("[1, 2]" or "[[0,0,0],[1,0,0]]"), each as TOML text.
 /// `what` names the option in error messages.

@@ -13,8 +13,12 @@ namespace rollnoise::io {
 void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& freq, const pipeline::CreepResult& c,
                  bool direct);
 
-/// One row per frequency: frequency_Hz, re_f11, im_f11, ..., re_g3, im_g3. InputError naming --csv
-/// when the file cannot be written.
-void write_creep_csv(const std::string& path, const std::vector<double>& freq, const pipeline::CreepResult& c);
+/// The creep sweep's method as written to /creep@method.
+std::string creep_method(const pipeline::CreepResult& c, bool direct);
+
+/// One row per frequency: frequency_Hz, re_f11, im_f11, ..., re_g3, im_g3, written to a temporary
+/// beside `path` that the caller commits (output_files.hpp). InputError naming --csv when the file
+/// cannot be written.
+TemporaryFile write_creep_csv(const std::string& path, const std::vector<double>& freq, const pipeline::CreepResult& c);
 
 }  // namespace rollnoise::io

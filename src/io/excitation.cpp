@@ -25,6 +25,12 @@ void check_positive_load(const CaseReader& r, const std::string& key, double tot
 
 }  // namespace
 
+std::string excitation_file_path(const CaseReader& r) {
+  std::filesystem::path file = r.string("excitation.file");
+  if (file.is_relative() && !r.folder().empty()) file = std::filesystem::path(r.folder()) / file;
+  return file.string();
+}
+
 contact::CreepageHistory read_excitation(const CaseReader& r) {
   const auto m = r.real3("creepage.mean");
   const contact::Creepage mean{m[0], m[1], m[2]};
@@ -58,8 +64,7 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
         r.real("excitation.normal_amplitude"));
   }
   // csv
-  std::filesystem::path file = r.string("excitation.file");
-  if (file.is_relative() && !r.folder().empty()) file = std::filesystem::path(r.folder()) / file;
+  const std::filesystem::path file = excitation_file_path(r);
   std::ifstream in(file);
   if (!in) r.fail("excitation.file", "cannot open " + file.string());
   std::vector<double> t;
@@ -120,6 +125,8 @@ void write_excitation(Hdf5Writer& w, const std::string& group, const contact::Cr
     w.write(group + "/normal_amplitude", h.normal_amplitude(), "N");
     w.write(group + "/normal_phase", h.normal_phases(), {n}, "rad");
   }
+  // provenance: the seed behind the random phases, on the root group (docs/conventions.md)
+  if (h.kind() == contact::CreepageHistory::Kind::multiharmonic) w.attribute("/", "seed", h.seed());
 }
 
 std::vector<double> normal_load_series(const CaseReader& r, const contact::CreepageHistory& h,

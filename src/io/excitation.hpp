@@ -15,6 +15,9 @@ namespace rollnoise::io {
 /// multiharmonic ones on the time steps of a run by normal_load_series.
 contact::CreepageHistory read_excitation(const CaseReader& r);
 
+/// The path of excitation.file: relative to the case file's folder unless absolute.
+std::string excitation_file_path(const CaseReader& r);
+
 /// The total normal load N_k = normal_mean + dN(k dt), k = 0..steps. InputError naming
 /// excitation.normal_amplitude (excitation.file for a CSV history) unless every N_k is finite and
 /// positive.

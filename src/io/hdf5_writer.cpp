@@ -3,8 +3,6 @@
 #include <hdf5.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
 
 #include "core/errors.hpp"
 
@@ -30,17 +28,23 @@ void set_string_attribute(hid_t obj, const std::string& name, const std::string&
 
 }  // namespace
 
-Hdf5Writer::Hdf5Writer(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+Hdf5Writer::Hdf5Writer(std::string path) : path_(std::move(path)), temp_(path_, "-o") {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by exceptions here
-  file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw InputError("-o", "cannot create the output file " + partial_);
+  file_ = H5Fcreate(temp_.path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw InputError("-o", "-o " + path_ + ": cannot create the HDF5 file " + temp_.path());
+  try {
+    const Provenance& p = provenance();
+    attribute("/", "program_version", p.program_version);
+    attribute("/", "command_line", p.command_line);
+    attribute("/", "date", p.date);
+  } catch (...) {
+    H5Fclose(file_);  // the destructor does not run for a throwing constructor
+    throw;
+  }
 }
 
 Hdf5Writer::~Hdf5Writer() {
-  if (!committed_) {
-    if (file_ >= 0) H5Fclose(file_);
-    std::remove(partial_.c_str());
-  }
+  if (file_ >= 0) H5Fclose(file_);  // then temp_ removes the temporary unless committed
 }
 
 void Hdf5Writer::write_raw(const std::string& path, long type, const void* data,
@@ -99,8 +103,7 @@ void Hdf5Writer::write(const std::string& path, const std::vector<std::complex<d
   H5Tclose(type);
 }
 
-void Hdf5Writer::attribute(const std::string& object, const std::string& name,
-                           const std::string& value) {
+long Hdf5Writer::open_object(const std::string& object) {
   hid_t obj = -1;
   if (object == "/" || H5Lexists(file_, object.c_str(), H5P_DEFAULT) > 0) {
     obj = H5Oopen(file_, object.c_str(), H5P_DEFAULT);
@@ -111,15 +114,30 @@ void Hdf5Writer::attribute(const std::string& object, const std::string& name,
     H5Pclose(lcpl);
   }
   if (obj < 0) throw std::runtime_error("HDF5: cannot open " + object);
+  return obj;
+}
+
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
+  const hid_t obj = open_object(object);
   set_string_attribute(obj, name, value);
   H5Oclose(obj);
 }
 
+void Hdf5Writer::attribute(const std::string& object, const std::string& name, std::uint64_t value) {
+  const hid_t obj = open_object(object);
+  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr = H5Acreate2(obj, name.c_str(), H5T_NATIVE_UINT64, space, H5P_DEFAULT, H5P_DEFAULT);
+  check(H5Awrite(attr, H5T_NATIVE_UINT64, &value), "attribute " + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Oclose(obj);
+}
+
 void Hdf5Writer::commit() {
-  check(H5Fclose(file_), "close " + partial_);
+  check(H5Fclose(file_), "close " + temp_.path());
   file_ = -1;
-  std::filesystem::rename(partial_, path_);
-  committed_ = true;
+  temp_.commit();
 }
 
 }  // namespace rollnoise::io

@@ -1,8 +1,10 @@
 // Results files in HDF5 with the layout of docs/conventions.md Sec. 4.
 //
 // Every dataset carries a string attribute `units`; complex values use the compound type {r, i}
-// (what h5py and NumPy read as complex). The file is written as OUT.h5.partial and renamed to
-// OUT.h5 only by commit(): a run that fails leaves no file that looks complete.
+// (what h5py and NumPy read as complex). The file is written to a unique temporary beside OUT.h5
+// (io/output_files.hpp) and renamed to OUT.h5 only by commit(): a run that fails or is
+// interrupted leaves neither the temporary nor a file that looks complete. The root group holds
+// the provenance attributes program_version, command_line and date (output_files.hpp).
 #pragma once
 
 #include <complex>
@@ -10,12 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "io/output_files.hpp"
+
 namespace rollnoise::io {
 
 class Hdf5Writer {
  public:
   explicit Hdf5Writer(std::string path);
-  ~Hdf5Writer();  // removes the partial file unless committed
+  ~Hdf5Writer();  // removes the temporary unless committed
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
@@ -33,6 +37,8 @@ class Hdf5Writer {
   void write(const std::string& path, const std::vector<std::string>& data, const std::string& units);
   /// String attribute on a group or dataset (created as a group if missing).
   void attribute(const std::string& object, const std::string& name, const std::string& value);
+  /// Unsigned 64-bit integer attribute (e.g. a seed) on a group or dataset.
+  void attribute(const std::string& object, const std::string& name, std::uint64_t value);
 
   /// Close the file and move it to its final name.
   void commit();
@@ -41,9 +47,10 @@ class Hdf5Writer {
  private:
   void write_raw(const std::string& path, long type, const void* data,
                  const std::vector<std::size_t>& dims, const std::string& units);
-  std::string path_, partial_;
+  long open_object(const std::string& object);  // group or dataset (a group is created if missing)
+  std::string path_;
+  TemporaryFile temp_;
   long file_ = -1;
-  bool committed_ = false;
 };
 
 }  // namespace rollnoise::io

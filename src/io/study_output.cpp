@@ -1,7 +1,5 @@
 #include "io/study_output.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,32 +13,12 @@
 #include "io/hdf5_reader.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/noise_output.hpp"
+#include "io/output_files.hpp"
 
 namespace rollnoise::io {
 namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Write `text` to `path` whole or not at all: a unique temporary in the same folder, renamed.
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::filesystem::path p(path);
-  std::string tmp = (p.parent_path() / ("." + p.filename().string() + ".XXXXXX")).string();
-  const int fd = ::mkstemp(tmp.data());
-  if (fd < 0) throw InputError("-o", "cannot create a file in " + p.parent_path().string());
-  ::close(fd);
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << text;
-    if (!out.flush()) {
-      std::remove(tmp.c_str());
-      throw InputError("-o", "cannot write " + path);
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError("-o", "cannot write " + path);
-  }
-}
 
 std::string csv_cell(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -78,7 +56,9 @@ std::optional<std::string> read_case_stamp(const std::string& path) {
   return Hdf5Reader(path).attribute("/", "study_case");
 }
 
-void write_case_error(const std::string& path, const std::string& message) { write_text_atomically(path, message + "\n"); }
+void write_case_error(const std::string& path, const std::string& message) {
+  write_text_file(path, "output", [&](std::ostream& out) { out << message << "\n"; }).commit();
+}
 
 std::optional<std::string> read_case_error(const std::string& path) {
   std::ifstream in(path);
@@ -230,7 +210,7 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
         for (int j = 0; j < 4; ++j) csv << "," << number(velocity[(i * nb + b) * 8 + side * 4 + j]);
     csv << "," << csv_cell(r.message) << "\n";
   }
-  write_text_atomically(csv_path, csv.str());
+  write_text_file(csv_path, "output", [&](std::ostream& out) { out << csv.str(); }).commit();
 }
 
 }  // namespace rollnoise::io

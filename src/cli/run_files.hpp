@@ -1,0 +1,21 @@
+// What every run does around its command: the process set-up (stdout line-buffered, the command
+// line recorded for the files' provenance) and the check of the run's output files before any
+// computation (io/output_files.hpp).
+#pragma once
+
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace rollnoise::cli {
+
+/// Call first in main: stdout line-buffered (a redirected log fills as the run goes and keeps what
+/// was printed if the run is killed), and the command line and start time kept for the HDF5 files.
+void start_process(int argc, char** argv);
+
+/// InputError (exit 2, naming the option and the path) unless every output of the run can be
+/// written without overwriting an input or another output: -o (or CASENAME.h5 when
+/// `default_output`; bench writes no HDF5 unless -o is given) and `csv` (--csv, if not empty).
+void check_run_files(const CommonOptions& o, const std::string& csv, bool default_output);
+
+}  // namespace rollnoise::cli
