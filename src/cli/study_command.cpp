@@ -65,8 +65,11 @@ int run_study(const StudyOptions& o) {
               s.completed, s.skipped, s.failed, ro.workers, s.seconds,
               s.seconds > 0 ? double(s.completed + s.failed) / s.seconds : 0.0, s.loops_computed, s.loops_reused,
               s.spectra_computed, s.spectra_reused, plan.output.c_str());
-  if (s.failed) std::fprintf(stderr, "warning: %ld cases failed: their messages are in %s/case_*.error and in the "
-                             "table of 'rollnoise collect'\n", s.failed, plan.output.c_str());
+  if (!s.failures.empty()) {  // the log of failures (also in OUTPUT/case_NNNN.error and the collected table)
+    std::fprintf(stderr, "%zu cases failed:\n", s.failures.size());
+    for (const auto& [index, message] : s.failures)
+      std::fprintf(stderr, "  case %zu (%s): %s\n", index, pipeline::describe(plan, cases[index]).c_str(), message.c_str());
+  }
   return 0;
 }
 

@@ -27,8 +27,12 @@ std::vector<double> log_range(double from, double to, long count) {
 }
 
 AxisValue number_value(double v) {
+  // the shortest of 15, 16, 17 significant digits that reads back to v (0.2, not 0.20000000000000001)
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
   std::string s = buf;
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // a float for TOML, not an integer
   return {s, v};

@@ -28,8 +28,8 @@ struct Axis {
 std::vector<double> linear_range(double from, double to, long count);
 /// `count` values evenly spaced in log(value), from `from` to `to` (both > 0).
 std::vector<double> log_range(double from, double to, long count);
-/// A number as TOML text that reads back to the same double (17 significant digits, with a
-/// decimal point or exponent so that TOML reads it as a float).
+/// A number as TOML text that reads back to the same double (the shortest of 15 to 17 significant
+/// digits, with a decimal point or exponent so that TOML reads it as a float).
 AxisValue number_value(double v);
 
 enum class Combine { kProduct, kZip };

@@ -243,6 +243,8 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
   }
   report();
   add_counts(s, shared.get());
+  for (std::size_t index : selection)
+    if (const auto message = io::read_case_error(pipeline::case_error(plan, index))) s.failures.push_back({index, *message});
   s.seconds = seconds_since(t0);
   return s;
 }

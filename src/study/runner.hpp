@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pipeline/study_plan.hpp"
@@ -40,6 +41,8 @@ struct RunSummary {
   long loops_computed = 0, loops_reused = 0;      ///< stages 1-4
   long spectra_computed = 0, spectra_reused = 0;  ///< wheel and rail receptances
   double seconds = 0.0;
+  /// The cases that failed in this run, with their messages (also in their .error files).
+  std::vector<std::pair<std::size_t, std::string>> failures;
 };
 
 /// Run the cases of the shard that are not complete. InputError for a study that cannot run (its
