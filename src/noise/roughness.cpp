@@ -101,6 +101,14 @@ int third_octave_index(double f) {
   return static_cast<int>(std::floor(10.0 * std::log10(f / 1000.0) + 0.5));
 }
 
+double nominal_centre(double f) {
+  // IEC 61260-1 Annex E: the nominal mid-band frequencies of one decade, 1000 ... 8000 Hz
+  static const double kDecade[10] = {1000, 1250, 1600, 2000, 2500, 3150, 4000, 5000, 6300, 8000};
+  const int n = third_octave_index(f);
+  const int decade = static_cast<int>(std::floor(n / 10.0));
+  return kDecade[n - 10 * decade] * std::pow(10.0, decade);
+}
+
 std::vector<double> third_octave_centres(double f_min, double f_max) {
   if (!(f_min > 0.0) || !(f_max >= f_min))
     throw InputError("frequency", "third-octave bands need 0 < f_min <= f_max");

@@ -182,6 +182,7 @@ TEST(ThirdOctaveBands, LimitsSelectBandsByNominalCentre) {
     const auto one = rn::third_octave_centres(nominal[i], nominal[i]);
     ASSERT_EQ(one.size(), 1u) << nominal[i];
     EXPECT_NEAR(one[0] / nominal[i], 1.0, 0.03) << nominal[i];
+    EXPECT_EQ(rn::nominal_centre(one[0]), nominal[i]);  // and back to its label
     for (int j = i; j < n; ++j)
       EXPECT_EQ(rn::third_octave_centres(nominal[i], nominal[j]).size(), std::size_t(j - i + 1))
           << nominal[i] << " ... " << nominal[j] << " Hz";
