@@ -10,8 +10,6 @@ index (a TOML-array sweep of vectors). The Coulomb bound +-mu N is drawn dotted 
 panels (mu and N of the case, unless the sweep varies them); the last panel counts adhesion and
 slip elements per point.
 """
-import argparse
-
 import matplotlib
 
 matplotlib.use("Agg")
@@ -25,23 +23,20 @@ CREEPAGE_NAMES = ["xi_x [-]", "xi_y [-]", "phi [rad/m]"]
 
 def x_axis(spec, value, creepage):
     """(x values, label) for the sweep `spec`."""
-    key = spec.split("=", 1)[0].strip()
+    key, _, values = spec.partition("=")
+    key = key.strip()
     varying = [j for j in range(3) if np.ptp(creepage[:, j]) > 0]
     if key.startswith("creepage.mean") and len(varying) == 1:
         j = varying[0]
         return creepage[:, j], f"{['xi_x', 'xi_y', 'phi'][j]} (creepage.mean[{j}]) [{['-', '-', 'rad/m'][j]}]"
-    if "[" in spec.split("=", 1)[1] if "=" in spec else False:  # a TOML array of values
+    if values.strip().startswith("["):  # a TOML array of values: one point each
         return np.arange(len(value)), f"point of --sweep {spec}"
     return value, key
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("file")
-    ap.add_argument("-o", "--output", default=None)
-    args = ap.parse_args()
-    out = args.output or args.file.rsplit(".", 1)[0] + "_sweep.png"
-    with rh.open_output(args.file, "/sweep/force", "/sweep/creepage", "/sweep/value",
+    file, out = rh.file_and_output(__doc__, "_sweep.png")
+    with rh.open_output(file, "/sweep/force", "/sweep/creepage", "/sweep/value",
                         command="rollnoise steady --sweep") as f:
         force = rh.values(f, "/sweep/force")
         units = rh.component_units(f, "/sweep/force", 3)
@@ -73,7 +68,7 @@ def main():
     axes[3].set_ylabel("elements")
     axes[3].grid(alpha=0.3)
     axes[3].set_xlabel(xlabel)
-    axes[0].set_title(f"{args.file}: --sweep {spec} ({len(value)} points)", fontsize=9)
+    axes[0].set_title(f"{file}: --sweep {spec} ({len(value)} points)", fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     print("wrote", out)

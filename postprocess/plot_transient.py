@@ -8,8 +8,6 @@ Left: Fx, Fy, Mz and the normal force N against time (units from the datasets; a
 also shows the harmonic synthesis, paper Eqs. 33-34, when it has one). Right: the creepages
 xi_x, xi_y, phi and, for a transient run, the adhesion and slip element counts.
 """
-import argparse
-
 import matplotlib
 
 matplotlib.use("Agg")
@@ -19,17 +17,13 @@ import rollnoise_h5 as rh  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("file")
-    ap.add_argument("-o", "--output", default=None)
-    args = ap.parse_args()
-    out = args.output or args.file.rsplit(".", 1)[0] + "_forces.png"
-    with rh.open_output(args.file, ("/transient/force", "/response/force"),
+    file, out = rh.file_and_output(__doc__, "_forces.png")
+    with rh.open_output(file, ("/transient/force", "/response/force"),
                         command="rollnoise transient` or `rollnoise response") as f:
         g = "/transient" if "/transient/force" in f else "/response"
         for name in ("time", "creepage"):
             if f"{g}/{name}" not in f:
-                rh.fail(f"{args.file}: no {g}/{name}")
+                rh.fail(f"{file}: no {g}/{name}")
         t = rh.values(f, g + "/time")
         force = rh.values(f, g + "/force")
         units = rh.component_units(f, g + "/force", 3)
@@ -65,7 +59,7 @@ def main():
         ax.grid(alpha=0.3)
     for ax in axes[3]:
         ax.set_xlabel("t [ms]")
-    fig.suptitle(f"{args.file}: {g[1:]} ({len(t)} steps)", fontsize=9)
+    fig.suptitle(f"{file}: {g[1:]} ({len(t)} steps)", fontsize=9)
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     print("wrote", out)

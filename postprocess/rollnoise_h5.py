@@ -38,6 +38,18 @@ def run(main):
         sys.exit(2)
 
 
+def file_and_output(doc, suffix):
+    """Parses `SCRIPT FILE [-o OUT.png]` (usage text `doc`); (file, output), the output defaulting
+    to FILE without its extension + `suffix`."""
+    import argparse
+
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("file")
+    ap.add_argument("-o", "--output", default=None, help=f"PNG file (default FILE{suffix})")
+    args = ap.parse_args()
+    return args.file, args.output or args.file.rsplit(".", 1)[0] + suffix
+
+
 def check_file(path):
     """The path names a readable regular file."""
     if not os.path.exists(path):
