@@ -104,7 +104,8 @@ TEST(TransientCommand, ExcitationPhaseIsReadAndWrittenInRadians) {
 }
 
 TEST(TransientCommand, PhaseBeyondTwoPiIsRefusedAsProbablyDegrees) {
-  for (const std::string set : {"'excitation.phase=[0.0, 90.0, 0.0]'", "excitation.normal_phase=180"}) {
+  for (const std::string set :
+       {"'excitation.phase=[0.0, 90.0, 0.0]'", "excitation.normal_phase=180"}) {
     const fs::path out = temp_dir() / "phase_deg.h5";
     const Invocation r = run("transient " + paper_case() + " -q -o " + out.string() +
                              " --set excitation.type='\"harmonic\"' --set " + set);

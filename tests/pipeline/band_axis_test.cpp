@@ -15,13 +15,16 @@ namespace {
 
 using namespace rollnoise;
 
-// The paper's Hertzian case (34 x 25, V = 13.9 m/s): Nyquist V/(2 dx) = 14.5 kHz, above every band here.
+// The paper's Hertzian case (34 x 25, V = 13.9 m/s): Nyquist V/(2 dx) = 14.5 kHz, above every band
+// here.
 pipeline::ContactCase fine_hertz_case() {
   return io::read_contact_case(
       io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/hertz_paper.toml"));
 }
 
-double exact_centre(int n) { return 1000.0 * std::pow(10.0, n / 10.0); }
+double exact_centre(int n) {
+  return 1000.0 * std::pow(10.0, n / 10.0);
+}
 
 TEST(BandAxis, DefaultLimitsIncludeTheFiveKilohertzBand) {
   const pipeline::NoiseCase nc;  // band_min = 100, band_max = 5000 Hz
@@ -38,7 +41,7 @@ TEST(BandAxis, DefaultLimitsIncludeTheFiveKilohertzBand) {
 
 TEST(BandAxis, NominalLimitsSelectTheirOwnBands) {
   pipeline::NoiseCase nc;
-  nc.band_min = 400.0;  // exact centre 398.1 Hz
+  nc.band_min = 400.0;   // exact centre 398.1 Hz
   nc.band_max = 1600.0;  // exact centre 1584.9 Hz
   const pipeline::BandAxis axis = pipeline::band_axis(fine_hertz_case(), nc);
   ASSERT_EQ(axis.centres.size(), 7u);  // 400, 500, 630, 800, 1000, 1250, 1600
