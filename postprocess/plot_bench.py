@@ -26,12 +26,25 @@ import matplotlib.ticker  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+import rollnoise_h5 as rh  # noqa: E402
+
+NEEDED = ["nx", "dx_m", "t_steady_s", "t_creep_s", "err_force_rel", "err_C11_kalker_rel"]
+
 
 def read_table(name):
     """The CSV as a dict column -> numpy array (NaN for missing or unparsable cells)."""
-    with open(name, newline="") as f:
-        rows = [r for r in csv.reader(line for line in f if line.strip() and not line.startswith("#"))]
+    rh.check_file(name)
+    try:
+        with open(name, newline="") as f:
+            rows = [r for r in csv.reader(line for line in f if line.strip() and not line.startswith("#"))]
+    except UnicodeDecodeError:
+        rh.fail(f"{name}: not a text file (expected the CSV of `rollnoise bench --csv`)")
+    if len(rows) < 2:
+        rh.fail(f"{name}: no table (expected the CSV of `rollnoise bench --csv`)")
     header, body = rows[0], rows[1:]
+    missing = [c for c in NEEDED if c not in [h.strip() for h in header]]
+    if missing:
+        rh.fail(f"{name}: no column {', '.join(missing)}: not the CSV of `rollnoise bench --csv`")
     cols = {}
     for j, h in enumerate(header):
         vals = []
@@ -136,4 +149,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    rh.run(main)

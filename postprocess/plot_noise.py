@@ -8,24 +8,21 @@ model with the normal -> tangential coupling (solid), without it (dashed, /noise
 comparison baseline (dotted, /noise/quasi_steady or /noise/kalker), with the effective roughness
 and, on the Fy panel, the mu-scaled normal force 20 log10|Fy_mean/N| + L_Fz) and PREFIX_transfer.png
 (narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants).
-Files written before the coupling existed (only /noise/kalker) are plotted too.
+Files written before the coupling existed (only /noise/kalker) are plotted too. Band axes are
+labelled with the nominal band centres (..., 400, 500, 630, ..., 5000 Hz).
 """
 import argparse
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+import rollnoise_h5 as rh  # noqa: E402
+
 LABELS = ["Fz", "Fx", "Fy", "Mz"]
 BASELINES = [("/noise/quasi_steady", "quasi-steady f(0), g(0)"), ("/noise/kalker", "Kalker steady")]
-
-
-def attr(group, name, default):
-    v = group.attrs.get(name, default)
-    return v.decode() if isinstance(v, bytes) else v
 
 
 def main():
@@ -34,13 +31,15 @@ def main():
     ap.add_argument("--prefix", default=None)
     args = ap.parse_args()
     prefix = args.prefix or args.file.rsplit(".", 1)[0]
-    with h5py.File(args.file, "r") as f:
+    needed = ["/noise/bands/centre", "/noise/bands/force_level", "/noise/bands/roughness_level",
+              "/noise/frequency", "/noise/force", "/steady/creepage"]
+    with rh.open_output(args.file, *needed, command="rollnoise noise") as f:
         centre = f["/noise/bands/centre"][:]
         rough = f["/noise/bands/roughness_level"][:]
         freq = f["/noise/frequency"][:]
         creep = f["/steady/creepage"][:]
-        model = attr(f["/noise"], "contact_model", "contact model")
-        coupling = attr(f["/noise"], "normal_coupling", "off")
+        model = rh.attribute(f["/noise"], "contact_model", "contact model")
+        coupling = rh.attribute(f["/noise"], "normal_coupling", "off")
         mean = f["/steady/force"][:] if "/steady/force" in f else None
         normal = f["/noise/contact/normal_force"][()] if "/noise/contact/normal_force" in f else None
         # variants: (label, band levels, narrow-band force, line style)
@@ -66,11 +65,8 @@ def main():
         ax.plot(x, rough, "-.", color="0.6", lw=0.8, label="effective roughness, dB re 1 um")
         ax.set_title(LABELS[j], fontsize=10, color=colours[j])
         ax.set_ylabel("dB re 1 N m" if j == 3 else "dB re 1 N")
-        ax.set_xticks(x[::2])
-        ax.set_xticklabels([f"{c:.0f}" for c in centre[::2]], rotation=45)
+        rh.set_band_axis(ax, centre, every=1 if len(centre) <= 20 else 2, label=j >= 2)
         ax.grid(alpha=0.3)
-    for ax in axes[1]:
-        ax.set_xlabel("1/3-octave band centre [Hz]")
     axes[0, 0].legend(fontsize=7)
     axes[1, 0].legend(fontsize=7)
     fig.suptitle(title + f"; normal coupling {coupling}", fontsize=9)
@@ -92,4 +88,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    rh.run(main)

@@ -65,7 +65,7 @@ int run_noise(const CommonOptions& o) {
               "dFz", "dFx", "dFy", "dMz", "muFz", "bFz", "bFy");
   for (size_t i = 0; i < centres.size(); ++i) {
     const auto& L = r.bands.force_level[i];
-    std::printf("  %6.0f %6.1f %6.1f %6.1f %6.1f %6.1f |", centres[i], r.bands.roughness_level[i], L[0], L[1], L[2], L[3]);
+    std::printf("  %6.0f %6.1f %6.1f %6.1f %6.1f %6.1f |", noise::nominal_centre(centres[i]), r.bands.roughness_level[i], L[0], L[1], L[2], L[3]);
     if (variants.has_uncoupled()) {
       const auto& d = r.coupling_difference[i];
       std::printf(" %6.1f %6.1f %6.1f %6.1f |", d[0], d[1], d[2], d[3]);

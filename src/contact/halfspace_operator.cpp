@@ -141,7 +141,7 @@ class FftImpl final : public HalfSpaceOperator::Impl {
 }  // namespace
 
 Backend HalfSpaceOperator::auto_backend(int unknowns) {
-  // Crossover measured with `rollnoise_bench --benchmark_filter=HalfSpace` (README, Benchmarks).
+  // Crossover measured with `rollnoise_bench --benchmark_filter=HalfSpace` (docs/accuracy.md, Benchmarks).
   // Measured (tangential, 2 x n^2 unknowns): dense 1.6 us vs FFT 2.6 us at 128 unknowns, dense
   // 37 us vs FFT 11 us at 512.
   return unknowns <= 256 ? Backend::Dense : Backend::Fft;

@@ -4,7 +4,7 @@
 //   Fft    zero-pad the nx by ny grid to 2nx by 2ny, embed the kernel as a circulant and multiply
 //          in Fourier space (FFTW, real-to-complex): O(N log N) per product, exact to round-off.
 //   Dense  assemble the full matrix once (Eigen) and multiply: O(N^2), faster for small grids.
-// Auto picks Dense up to a size measured with bench/ (see README, "Benchmarks").
+// Auto picks Dense up to a size measured with bench/ (see docs/accuracy.md, "Benchmarks").
 //
 // `column_shift` = 1 gives the matrix A0 of the rolling step (Kalker 1990, Sec. 5.3;
 // docs/conventions.md Secs. 1-2): the influence at x_I + dx of the previous position, A0(I,J) = A(di + 1, dj).

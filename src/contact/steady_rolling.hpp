@@ -8,8 +8,8 @@
 // summation, and amplifies the downstream influence: we measured divergence by a factor 3 per sweep
 // on the paper's grid even at creepage 1e-9 (and a 2-cycle with slip). Marching the other way stalls.
 // Newton steps are solved by GMRES with FFT products (coulomb_newton.hpp): on the paper's grids a
-// steady solve takes 40-80 GMRES iterations per Newton step and no factorisation at all; see README
-// "Performance" for sizes and timings.
+// steady solve takes 40-80 GMRES iterations per Newton step and no factorisation at all; see
+// docs/accuracy.md ("Benchmarks") for sizes and timings.
 #pragma once
 
 #include "contact/influence.hpp"

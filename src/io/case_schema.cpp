@@ -1,5 +1,6 @@
 #include "io/case_schema.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cstdio>
 #include <sstream>
@@ -26,9 +27,12 @@ const std::vector<KeySpec>& case_schema() {
        "\"hertz\": quadratic undeformed distance from the semi-axes a, b; \"profiles\": "
        "wheel and rail profiles",
        {"hertz", "profiles"}},
-      {"contact.normal_force", T::PositiveReal, "", "N", "prescribed total normal force N"},
-      {"contact.a", T::PositiveReal, "", "m", "hertz: semi-axis in the rolling direction x"},
-      {"contact.b", T::PositiveReal, "", "m", "hertz: lateral semi-axis y"},
+      {"contact.normal_force", T::PositiveReal, "", "N", "prescribed total normal force N", {}, 0,
+       "required"},
+      {"contact.a", T::PositiveReal, "", "m", "hertz: semi-axis in the rolling direction x", {}, 0,
+       "required with contact.geometry = \"hertz\""},
+      {"contact.b", T::PositiveReal, "", "m", "hertz: lateral semi-axis y", {}, 0,
+       "required with contact.geometry = \"hertz\""},
       {"contact.wheel_profile", T::String, "\"models/profiles/MBench_S1002_v3.prw\"", "-",
        "profiles: wheel profile (SIMPACK .prw or CSV y, z in mm)"},
       {"contact.rail_profile", T::String, "\"models/profiles/MBench_UIC60_v3.prr\"", "-",
@@ -41,10 +45,14 @@ const std::vector<KeySpec>& case_schema() {
       {"grid.scale", T::PositiveReal, "1.1333333333333333", "-",
        "hertz: the potential contact area spans +-scale*a by +-scale*b (CONTACT's IPOTCN = -3); "
        "profiles: at least +-scale times the Hertz estimate (and where the gap is small)"},
-      {"grid.x_min", T::Real, "", "m", "explicit grid: left edge (with x_max, y_min, y_max)"},
-      {"grid.x_max", T::Real, "", "m", "explicit grid: right edge"},
-      {"grid.y_min", T::Real, "", "m", "explicit grid: lower edge"},
-      {"grid.y_max", T::Real, "", "m", "explicit grid: upper edge"},
+      {"grid.x_min", T::Real, "", "m", "explicit grid: left edge (with x_max, y_min, y_max)", {}, 0,
+       "optional (hertz): without it the grid spans +-grid.scale*a by +-grid.scale*b"},
+      {"grid.x_max", T::Real, "", "m", "explicit grid: right edge", {}, 0,
+       "required with grid.x_min"},
+      {"grid.y_min", T::Real, "", "m", "explicit grid: lower edge", {}, 0,
+       "required with grid.x_min"},
+      {"grid.y_max", T::Real, "", "m", "explicit grid: upper edge", {}, 0,
+       "required with grid.x_min"},
       {"grid.spin_offset", T::Real, "0.0", "-",
        "spin term of the rigid slip taken at x + spin_offset*dx: 0 = paper Eq. 21, "
        "1/6 = CONTACT's default"},
@@ -64,17 +72,21 @@ const std::vector<KeySpec>& case_schema() {
        {"none", "harmonic", "multiharmonic", "csv"}},
       {"excitation.amplitude", T::Real3, "[0.0, 0.0, 0.0]", "-, -, rad/m",
        "amplitude per creepage component (harmonic, multiharmonic)"},
-      {"excitation.phase", T::Real3, "[0.0, 0.0, 0.0]", "deg", "harmonic: phase per component"},
+      {"excitation.phase", T::Real3, "[0.0, 0.0, 0.0]", "rad",
+       "harmonic: phase per component, in radians (as written to the output), within +-2 pi: "
+       "amplitude cos(2 pi f t + phase)"},
       {"excitation.normal_amplitude", T::Real, "0.0", "N",
        "normal-load variation about contact.normal_force: harmonic amplitude, or multiharmonic "
        "amplitude per frequency (own seeded phases); transient only"},
-      {"excitation.normal_phase", T::Real, "0.0", "deg", "harmonic: phase of the normal-load variation"},
+      {"excitation.normal_phase", T::Real, "0.0", "rad",
+       "harmonic: phase of the normal-load variation, in radians, within +-2 pi"},
       {"excitation.frequency", T::PositiveReal, "1000.0", "Hz", "harmonic: frequency"},
       {"excitation.f_min", T::PositiveReal, "100.0", "Hz", "multiharmonic: lowest frequency"},
       {"excitation.f_max", T::PositiveReal, "5000.0", "Hz", "multiharmonic: highest frequency"},
       {"excitation.count", T::Integer, "1000", "-", "multiharmonic: number of frequencies", {}, 1},
-      {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0, LONG_MAX},
-      {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi and optionally dN (normal-load variation, N)"},
+      {"excitation.seed", T::Integer, "1", "-", "multiharmonic: seed of the random phases", {}, 0, "", LONG_MAX},
+      {"excitation.file", T::String, "", "-", "csv: file with columns t, xi_x, xi_y, phi and optionally dN (normal-load variation, N)", {}, 0,
+       "required with excitation.type = \"csv\""},
       // transient
       {"transient.duration", T::PositiveReal, "0.01", "s", "simulated time"},
       {"transient.start", T::String, "\"steady\"", "-",
@@ -88,7 +100,8 @@ const std::vector<KeySpec>& case_schema() {
       {"frequency.count", T::Integer, "500", "-", "number of frequencies", {}, 1},
       {"frequency.spacing", T::String, "\"log\"", "-", "frequency spacing",
        {"linear", "log", "third-octave"}},
-      {"frequency.list", T::RealList, "", "Hz", "explicit list of frequencies (overrides the rest)"},
+      {"frequency.list", T::RealList, "", "Hz", "explicit list of frequencies (overrides the rest)", {},
+       0, "optional: without it f_min, f_max, count and spacing give the frequencies"},
       // curving (noise)
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
       {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
@@ -105,11 +118,11 @@ const std::vector<KeySpec>& case_schema() {
       {"wheelset.yaw", T::Real, "0.0", "rad",
        "curve.creepage = \"multibody\": yaw angle (angle of attack, positive turning towards the outer rail)"},
       {"wheelset.wheel_load", T::PositiveReal, "", "N",
-       "curve.creepage = \"multibody\": vertical load of the outer wheel's tread contact "
-       "(default contact.normal_force)"},
+       "curve.creepage = \"multibody\": vertical load of the outer wheel's tread contact",
+       {}, 0, "optional (default: contact.normal_force)"},
       {"wheelset.creepage", T::Real3, "", "-, -, rad/m",
-       "curve.creepage = \"multibody\": creepages (xi_x, xi_y, phi) of the outer wheel; default: "
-       "kinematic (K2) from the position"},
+       "curve.creepage = \"multibody\": creepages (xi_x, xi_y, phi) of the outer wheel", {}, 0,
+       "optional (default: kinematic (K2) from the wheelset's position)"},
       {"curve.wheelbase", T::PositiveReal, "2.5", "m", "bogie wheelbase"},
       {"curve.wheel_radius", T::PositiveReal, "0.46", "m", "nominal rolling radius"},
       {"curve.conicity", T::PositiveReal, "0.15", "-", "equivalent conicity of the conical tread"},
@@ -139,7 +152,8 @@ const std::vector<KeySpec>& case_schema() {
        "/noise/quasi_steady), Kalker's full-adhesion coefficients (/noise/kalker) or none",
        {"quasi-steady", "kalker", "none"}},
       {"noise.compare_kalker", T::String, "", "-",
-       "optional, deprecated alias of noise.compare: \"yes\" = \"kalker\", \"no\" = \"none\"", {"yes", "no"}},
+       "deprecated alias of noise.compare: \"yes\" = \"kalker\", \"no\" = \"none\"", {"yes", "no"}, 0,
+       "optional (default: noise.compare decides)"},
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
@@ -148,7 +162,7 @@ const std::vector<KeySpec>& case_schema() {
        "memory a run may use, estimated before allocating (default: half the physical memory of this machine)"},
       {"limits.steps", T::Integer, "1000000", "-",
        "the most time steps of a run, points of a sweep, or frequencies of an axis, excitation or bands",
-       {}, 1, LONG_MAX},
+       {}, 1, "", LONG_MAX},
   };
   return schema;
 }
@@ -160,21 +174,32 @@ const KeySpec* find_key(const std::string& key) {
 }
 
 std::string describe_schema() {
-  std::ostringstream os;
-  std::string section;
+  // One block per table in the order of first appearance (the schema lists some keys next to
+  // the ones they work with, e.g. contact.angle with the [curve] keys).
+  std::vector<std::string> tables;
   for (const auto& k : case_schema()) {
-    const std::string s = k.key.substr(0, k.key.find('.'));
-    if (s != section) os << "\n[" << (section = s) << "]\n";
-    os << "  " << k.key.substr(k.key.find('.') + 1) << " = "
-       << (k.default_value.empty() ? "(required where used)" : k.default_value);
-    if (k.units != "-") os << "   [" << k.units << "]";
-    os << "\n      " << k.help;
-    if (!k.allowed.empty()) {
-      os << " (one of:";
-      for (const auto& a : k.allowed) os << " \"" << a << "\"";
-      os << ")";
+    const std::string t = k.key.substr(0, k.key.find('.'));
+    if (std::find(tables.begin(), tables.end(), t) == tables.end()) tables.push_back(t);
+  }
+  std::ostringstream os;
+  os << "Case keys (TOML tables and keys; --set TABLE.KEY=VALUE overrides one). Each key shows\n"
+        "its default, or whether it is required or optional when it has none.\n";
+  for (const auto& t : tables) {
+    os << "\n[" << t << "]\n";
+    for (const auto& k : case_schema()) {
+      if (k.key.compare(0, t.size() + 1, t + ".") != 0) continue;
+      os << "  " << k.key.substr(t.size() + 1) << " = "
+         << (k.default_value.empty() ? "(" + k.absent + ")" : k.default_value);
+      if (k.units != "-") os << "   [" << k.units << "]";
+      os << "\n      " << k.help;
+      if (!k.allowed.empty()) {
+        os << " (one of:";
+        for (const auto& a : k.allowed) os << " \"" << a << "\"";
+        os << ")";
+      }
+      if (k.type == KeyType::Integer) os << " (integer >= " << k.minimum << ")";
+      os << "\n";
     }
-    os << "\n";
   }
   return os.str();
 }

@@ -23,11 +23,13 @@ enum class KeyType {
 struct KeySpec {
   std::string key;            ///< dotted TOML key, e.g. "grid.nx"
   KeyType type;
-  std::string default_value;  ///< TOML text of the default; empty: required where used
+  std::string default_value;  ///< TOML text of the default; empty: see `absent`
   std::string units;
   std::string help;
   std::vector<std::string> allowed = {};
   long minimum = 0;           ///< for Integer
+  /// Keys without a default: "required" (and where), or "optional: " and what happens without it.
+  std::string absent = {};
   long maximum = std::numeric_limits<int>::max();  ///< for Integer: the target's range (int by default)
 };
 
@@ -35,7 +37,9 @@ struct KeySpec {
 const std::vector<KeySpec>& case_schema();
 /// The spec of `key`, or nullptr if the key is not declared.
 const KeySpec* find_key(const std::string& key);
-/// Human-readable listing of the schema (for `rollnoise keys`).
+/// Human-readable listing of the schema (for `rollnoise keys`): one block per table ([material],
+/// [contact], ...) in the order of first appearance, each key with its default, or "required ..."
+/// or "optional: ..." for keys without one, units, help and allowed values.
 std::string describe_schema();
 
 }  // namespace rollnoise::io

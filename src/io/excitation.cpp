@@ -23,6 +23,14 @@ void check_positive_load(const CaseReader& r, const std::string& key, double tot
                     std::to_string(total) + " N" + where + "; it must stay positive");
 }
 
+void check_phase(const CaseReader& r, const std::string& key, double phase) {
+  if (std::abs(phase) <= 2.0 * M_PI) return;
+  std::ostringstream s;
+  s << "phases are in radians and must lie within +-2 pi (6.2832); got " << phase
+    << " (if meant in degrees: " << phase * M_PI / 180.0 << " rad)";
+  r.fail(key, s.str());
+}
+
 }  // namespace
 
 std::string excitation_file_path(const CaseReader& r) {
@@ -37,15 +45,18 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
   const std::string type = r.string("excitation.type");
   if (type == "none") return contact::CreepageHistory::constant(mean);
   if (type == "harmonic") {
+    // Phases in radians (SI, as /excitation/phase is written). Any phase is expressible within
+    // +-2 pi; a larger value is most likely meant in degrees (the unit of earlier versions).
     const auto ph = r.real3("excitation.phase");
+    for (double p : ph) check_phase(r, "excitation.phase", p);
+    const double normal_phase = r.real("excitation.normal_phase");
+    check_phase(r, "excitation.normal_phase", normal_phase);
     const double dN = r.real("excitation.normal_amplitude");
     if (dN != 0.0)  // the minimum of N_mean + dN cos(.) over all times
       check_positive_load(r, "excitation.normal_amplitude",
                           r.real("contact.normal_force") - std::abs(dN), " at its minimum");
     return contact::CreepageHistory::harmonic(
-        mean, r.real3("excitation.amplitude"), r.real("excitation.frequency"),
-        {ph[0] * M_PI / 180, ph[1] * M_PI / 180, ph[2] * M_PI / 180}, dN,
-        r.real("excitation.normal_phase") * M_PI / 180);
+        mean, r.real3("excitation.amplitude"), r.real("excitation.frequency"), ph, dN, normal_phase);
   }
   if (type == "multiharmonic") {
     const double f0 = r.real("excitation.f_min"), f1 = r.real("excitation.f_max");

@@ -94,12 +94,26 @@ double energy_sum_db(double a, double b) {
   return m + 10.0 * std::log10(std::pow(10.0, (a - m) / 10.0) + std::pow(10.0, (b - m) / 10.0));
 }
 
+int third_octave_index(double f) {
+  // The band n holds f_c 10^{-1/20} <= f < f_c 10^{1/20}, f_c = 1000 10^{n/10} (IEC 61260-1 base
+  // 10): n = round(10 log10(f / 1000)). So a nominal frequency names its own band: 5000 Hz is the
+  // band of exact centre 5011.9 Hz, 400 Hz that of 398.1 Hz.
+  return static_cast<int>(std::floor(10.0 * std::log10(f / 1000.0) + 0.5));
+}
+
+double nominal_centre(double f) {
+  // IEC 61260-1 Annex E: the nominal mid-band frequencies of one decade, 1000 ... 8000 Hz
+  static const double kDecade[10] = {1000, 1250, 1600, 2000, 2500, 3150, 4000, 5000, 6300, 8000};
+  const int n = third_octave_index(f);
+  const int decade = static_cast<int>(std::floor(n / 10.0));
+  return kDecade[n - 10 * decade] * std::pow(10.0, decade);
+}
+
 std::vector<double> third_octave_centres(double f_min, double f_max) {
   if (!(f_min > 0.0) || !(f_max >= f_min))
     throw InputError("frequency", "third-octave bands need 0 < f_min <= f_max");
   std::vector<double> out;
-  const int n0 = static_cast<int>(std::ceil(10.0 * std::log10(f_min / 1000.0) - 1e-9));
-  const int n1 = static_cast<int>(std::floor(10.0 * std::log10(f_max / 1000.0) + 1e-9));
+  const int n0 = third_octave_index(f_min), n1 = third_octave_index(f_max);
   for (int n = n0; n <= n1; ++n) out.push_back(1000.0 * std::pow(10.0, n / 10.0));
   return out;
 }

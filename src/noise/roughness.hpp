@@ -53,7 +53,18 @@ RoughnessSpectrum wheel_roughness_disc_braked();
 /// 10 log10(10^{a/10} + 10^{b/10}).
 double energy_sum_db(double a, double b);
 
-/// Exact 1/3-octave band centres 1000 * 10^{n/10} Hz within [f_min, f_max] (IEC 61260 base 10).
+/// Index n of the base-10 1/3-octave band (exact centre 1000 * 10^{n/10} Hz) that contains f:
+/// the band whose nominal centre (100, 125, ..., 4000, 5000 Hz) is nearest to f on a log scale.
+int third_octave_index(double f);
+
+/// The nominal centre (IEC 61260-1: ..., 100, 125, 160, ..., 4000, 5000, 6300, ... Hz) of the band
+/// that contains f, e.g. 5000 for the exact centre 5011.9 Hz: the label of a band.
+double nominal_centre(double f);
+
+/// Exact 1/3-octave band centres 1000 * 10^{n/10} Hz (IEC 61260 base 10) from the band that
+/// contains f_min to the band that contains f_max: the limits select bands by nominal centre, so
+/// (100, 5000) gives the 18 bands 100 ... 5012 Hz (nominal 100 ... 5000 Hz) although the exact
+/// centre 5011.9 Hz lies above 5000 Hz.
 std::vector<double> third_octave_centres(double f_min, double f_max);
 
 /// Width of the 1/3-octave band centred at f: f (10^{1/20} - 10^{-1/20}) ~= 0.2308 f.

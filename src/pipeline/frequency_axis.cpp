@@ -1,8 +1,10 @@
 #include "pipeline/frequency_axis.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "noise/roughness.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -11,11 +13,10 @@ std::vector<double> frequencies(const FrequencyAxis& a) {
   const double f0 = a.f_min, f1 = a.f_max;
   std::vector<double> f;
   if (a.spacing == "third-octave") {
-    // exact base-10 band centres 10^(n/10) Hz (IEC 61260)
-    for (int n = -10; n <= 50; ++n) {
-      const double c = std::pow(10.0, n / 10.0);
-      if (c >= f0 * (1 - 1e-9) && c <= f1 * (1 + 1e-9)) f.push_back(c);
-    }
+    // exact base-10 band centres (IEC 61260) from 0.1 Hz, the limits selecting bands by nominal
+    // centre as for the noise bands (noise::third_octave_centres: f_max = 5000 includes 5012 Hz)
+    if (f1 >= f0 && noise::third_octave_index(f1) >= -40)  // band -40: 0.1 Hz
+      f = noise::third_octave_centres(std::max(f0, 0.1), f1);
     if (f.empty()) throw InputError("frequency.f_max", "no 1/3-octave band centre between f_min and f_max");
     return f;
   }

@@ -500,7 +500,7 @@ TEST(Program, KeysListsTheSchemaWithDefaults) {
 TEST(TransientCommand, NormalAmplitudeIsWrittenAsTheHarmonicNormalForceHistory) {
   const fs::path out = temp_dir() / "tr_normal.h5";
   const Invocation r = run("transient " + paper_case() + " -q --set grid.nx=20 --set grid.ny=15 "
-                           "--set excitation.normal_amplitude=981 --set excitation.normal_phase=30 "
+                           "--set excitation.normal_amplitude=981 --set excitation.normal_phase=0.5235987755982988 "
                            "--set excitation.frequency=1000 --set transient.duration=0.002 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);

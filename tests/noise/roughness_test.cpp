@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "core/errors.hpp"
@@ -161,10 +162,40 @@ TEST(ContactRoughness, PsdIntegratesToBandMeanSquare) {
 
 TEST(ThirdOctaveBands, CentresAreExactBase10) {
   const auto c = rn::third_octave_centres(100.0, 5000.0);
-  ASSERT_EQ(c.size(), 17u);  // 100 ... 3981 Hz (5012 > 5000)
+  ASSERT_EQ(c.size(), 18u);  // 100 ... 5012 Hz: nominal 100 ... 5000 Hz
   EXPECT_DOUBLE_EQ(c.front(), 100.0);
   EXPECT_NEAR(c[10], 1000.0, 1e-9);
   for (std::size_t i = 1; i < c.size(); ++i)
     EXPECT_NEAR(c[i] / c[i - 1], std::pow(10.0, 0.1), 1e-12);
   EXPECT_NEAR(rn::third_octave_bandwidth(1000.0), 230.77, 0.01);
+}
+
+// The limits name bands by their nominal centres (IEC 61260-1: 100, 125, 160, 200, 250, 315, 400,
+// 500, 630, 800, 1000, ..., 5000 Hz), whose exact base-10 centres lie up to 2.5 % away (398.1 for
+// 400, 5011.9 for 5000): each limit selects the band that contains it.
+TEST(ThirdOctaveBands, LimitsSelectBandsByNominalCentre) {
+  const double nominal[] = {100, 125, 160, 200, 250, 315, 400, 500, 630, 800, 1000,
+                            1250, 1600, 2000, 2500, 3150, 4000, 5000, 6300, 8000, 10000};
+  const int n = static_cast<int>(std::size(nominal));
+  for (int i = 0; i < n; ++i) {
+    // the band of a nominal centre is the band whose exact centre 1000 10^{k/10} is within 3 %
+    const auto one = rn::third_octave_centres(nominal[i], nominal[i]);
+    ASSERT_EQ(one.size(), 1u) << nominal[i];
+    EXPECT_NEAR(one[0] / nominal[i], 1.0, 0.03) << nominal[i];
+    EXPECT_EQ(rn::nominal_centre(one[0]), nominal[i]);  // and back to its label
+    for (int j = i; j < n; ++j)
+      EXPECT_EQ(rn::third_octave_centres(nominal[i], nominal[j]).size(), std::size_t(j - i + 1))
+          << nominal[i] << " ... " << nominal[j] << " Hz";
+  }
+  // a limit inside a band selects that band; the band edges are f_c 10^{+-1/20}
+  const auto c = rn::third_octave_centres(400.0 * std::pow(10.0, -0.04), 5000.0 * std::pow(10.0, 0.04));
+  ASSERT_EQ(c.size(), 12u);
+  EXPECT_NEAR(c.front(), 1000.0 * std::pow(10.0, -0.4), 1e-9);
+  EXPECT_NEAR(c.back(), 1000.0 * std::pow(10.0, 0.7), 1e-9);
+  EXPECT_GT(c.back(), 5000.0);
+  // the default noise band axis (noise.band_min = 100, band_max = 5000) reaches the 5 kHz band
+  // and stops below the 6.3 kHz one
+  EXPECT_EQ(rn::third_octave_index(5000.0), 7);
+  EXPECT_EQ(rn::third_octave_index(5500.0), 7);
+  EXPECT_EQ(rn::third_octave_index(6000.0), 8);
 }

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Smoke test of the plot scripts (postprocess/): each runs on a real, small output of the
+program (Agg backend, coarse grids) and writes its PNG files; a wrong input file (missing, not
+HDF5, another command's output) gives one line on stderr and exit status 2, no traceback.
+
+  /usr/bin/python3 tests/postprocess/smoke_test.py ROLLNOISE_BINARY WORKDIR
+
+Run by CTest (test `postprocess_plots_smoke`, CMakeLists.txt). Prints 'N passed, M failed'.
+"""
+import contextlib
+import io
+import os
+import runpy
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+POST = os.path.join(ROOT, "postprocess")
+CASES = os.path.join(ROOT, "cases")
+sys.path.insert(0, POST)  # the scripts' shared module, as when they run from postprocess/
+COARSE = ["--set", "grid.nx=20", "--set", "grid.ny=15"]
+
+# another command's output, which the script cannot plot
+OTHER_OUTPUT = {"plot_patch.py": "sweep.h5", "plot_creep.py": "steady.h5"}
+
+passed, failed = 0, []
+
+
+def check(name, ok, detail=""):
+    global passed
+    if ok:
+        passed += 1
+    else:
+        failed.append(name)
+        print(f"FAIL {name}: {detail}")
+
+
+def rollnoise(binary, work, *args):
+    r = subprocess.run([binary, *args, "-q"], cwd=work, capture_output=True, text=True, timeout=120)
+    if r.returncode != 0:
+        print(f"rollnoise {' '.join(args)} failed ({r.returncode}):\n{r.stdout}{r.stderr}")
+        sys.exit(1)
+
+
+def plot(script, *args):
+    """Runs postprocess/SCRIPT in this process (matplotlib is imported once); (status, stderr)."""
+    argv, sys.argv = sys.argv, [os.path.join(POST, script), *args]
+    err = io.StringIO()
+    status = 0
+    try:
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            runpy.run_path(sys.argv[0], run_name="__main__")
+    except SystemExit as e:
+        status = e.code if isinstance(e.code, int) else 1
+    except Exception as e:  # a traceback is a failure of the script
+        status, err = -1, io.StringIO(f"{type(e).__name__}: {e}")
+    finally:
+        sys.argv = argv
+    return status, err.getvalue()
+
+
+def main():
+    binary, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    t0 = time.time()
+    hertz = os.path.join(CASES, "hertz_paper.toml")
+    rollnoise(binary, work, "steady", hertz, "-o", "steady.h5", *COARSE)
+    rollnoise(binary, work, "steady", hertz, "-o", "sweep.h5", *COARSE, "--sweep", "creepage.mean[0]=0:0.004:5")
+    rollnoise(binary, work, "transient", hertz, "-o", "transient.h5", *COARSE, "--set", "transient.duration=0.002",
+              "--set", "transient.snapshots=[0.001, 0.002]", "--set", "excitation.amplitude=[5e-5, 0, 0]")
+    rollnoise(binary, work, "creep", hertz, "-o", "creep.h5", *COARSE, "--set", "frequency.count=20")
+    rollnoise(binary, work, "validate", os.path.join(CASES, "paper_s32_combined.toml"), "-o", "validate.h5",
+              *COARSE, "--set", "transient.duration=0.003", "--set", "transient.analysis_start=0.001")
+    rollnoise(binary, work, "response", os.path.join(CASES, "paper_s32_combined.toml"), "-o", "response.h5",
+              *COARSE, "--set", "transient.duration=0.002")
+    rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "noise.h5", *COARSE,
+              "--set", "noise.points_per_band=4", "--set", "track.support=\"continuous\"")
+    rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
+    t_runs = time.time() - t0
+    j = lambda name: os.path.join(work, name)  # noqa: E731
+    runs = [  # script, arguments, files it must write
+        ("plot_patch.py", [j("steady.h5"), "-o", j("patch.png")], ["patch.png"]),
+        ("plot_patch.py", [j("transient.h5"), "--snapshot", "1", "-o", j("patch_snap.png")], ["patch_snap.png"]),
+        ("plot_sweep.py", [j("sweep.h5"), "-o", j("sweep.png")], ["sweep.png"]),
+        ("plot_transient.py", [j("transient.h5"), "-o", j("forces.png")], ["forces.png"]),
+        ("plot_transient.py", [j("response.h5"), "-o", j("response.png")], ["response.png"]),
+        ("plot_creep.py", [j("creep.h5"), "--entries", "11,22,23,33", "-o", j("creep.png")], ["creep.png"]),
+        ("plot_validate.py", [j("validate.h5"), "--prefix", j("val")], ["val_time.png", "val_spectra.png"]),
+        ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png"]),
+        ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
+    ]
+    for script, args, outputs in runs:
+        status, err = plot(script, *args)
+        check(f"{script} {os.path.basename(args[0])}", status == 0 and all(os.path.getsize(j(o)) > 0 for o in outputs
+                                                                          if os.path.exists(j(o))) and
+              all(os.path.exists(j(o)) for o in outputs), f"status {status}: {err}")
+    # wrong inputs: one line naming the file, exit status 2
+    with open(j("not_hdf5.h5"), "w") as f:
+        f.write("not HDF5\n")
+    wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
+                                "plot_validate.py", "plot_noise.py", "plot_bench.py"]
+             for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
+    for script, bad in wrong:
+        status, err = plot(script, bad)
+        lines = err.strip().splitlines()
+        check(f"{script} {os.path.basename(bad)} refused", status == 2 and len(lines) == 1 and bad in lines[0]
+              and "Traceback" not in err, f"status {status}, stderr {err!r}")
+    # the same through a real process: the exit status a shell sees
+    r = subprocess.run(["/usr/bin/python3", os.path.join(POST, "plot_noise.py"), j("not_hdf5.h5")],
+                       capture_output=True, text=True)
+    check("plot_noise.py process exit 2", r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1, r.stderr)
+    print(f"(program runs {t_runs:.1f} s, plots {time.time() - t0 - t_runs:.1f} s)")
+    print(f"{passed} passed, {len(failed)} failed")
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
