@@ -2,29 +2,22 @@
 """Band levels of a study against one or two of its parameters (docs/study.md).
 
   /usr/bin/python3 postprocess/plot_study.py OUTPUT/study.h5 --x curve.radius [--curves rolling.speed]
-                                             [--band 1000] [--quantity Fy] [--out fig.png]
+                                             [--band 1000] [--quantity Fy] [-o fig.png]
 
 Reads the table `rollnoise collect` writes. Draws the level of QUANTITY (Fz, Fx, Fy, Mz: contact-force
-band levels; wheel_vz, rail_vz, ...: velocity levels) in the 1/3-octave band nearest BAND Hz against
-the parameter X, one curve per value of CURVES (other parameters: every case is drawn, so fix them
-by the study's axes). Failed and missing cases are left out and counted in the title.
+band levels; wheel_vz, rail_vy, ...: velocity levels) in the 1/3-octave band nearest BAND Hz against
+the parameter X, one curve per value of CURVES. Failed and missing cases are left out and counted
+in the title.
 """
 import argparse
-import sys
+import os
 
 import numpy as np
 
+import rollnoise_h5 as rh
+
 FORCES = ["Fz", "Fx", "Fy", "Mz"]
 VELOCITIES = ["vz", "vx", "vy", "wz"]
-
-
-def fail(message):
-    print(f"plot_study.py: error: {message}", file=sys.stderr)
-    sys.exit(2)
-
-
-def text(v):
-    return v.decode() if isinstance(v, bytes) else str(v)
 
 
 def main():
@@ -34,46 +27,39 @@ def main():
     ap.add_argument("--curves", help="one curve per value of this parameter")
     ap.add_argument("--band", type=float, default=1000.0, help="band centre (Hz), the nearest band is drawn")
     ap.add_argument("--quantity", default="Fz", help="Fz, Fx, Fy, Mz or wheel_vz, rail_vy, ... (default Fz)")
-    ap.add_argument("--out", help="figure file (default: next to the table, study_QUANTITY_BAND.png)")
+    ap.add_argument("-o", "--output", help="PNG file (default: study_QUANTITY_BANDHz.png beside the table)")
     args = ap.parse_args()
 
-    import h5py
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    try:
-        f = h5py.File(args.file, "r")
-    except OSError as e:
-        fail(f"cannot read {args.file} as HDF5 ({e})")
-    with f:
-        if "study" not in f:
-            fail(f"{args.file} has no /study group: give the study.h5 that 'rollnoise collect' writes")
+    with rh.open_output(args.file, "/study/parameters", "/study/force_level", command="rollnoise collect") as f:
         s = f["study"]
         params = s["parameters"]
         for key in [args.x] + ([args.curves] if args.curves else []):
             if key not in params:
-                fail(f"'{key}' is not a parameter of the study (its axes: {', '.join(params.keys())})")
+                rh.fail(f"{args.file}: '{key}' is not a parameter of the study (its axes: {', '.join(params.keys())})")
         status = s["status"][:]
         centres = s["band_centre"][:]
         if centres.size == 0:
-            fail("no complete case in the study: nothing to draw")
+            rh.fail(f"{args.file}: no complete case in the study, nothing to draw")
         b = int(np.argmin(np.abs(np.log(centres / args.band))))
         q = args.quantity
+        side, _, comp = q.partition("_")
         if q in FORCES:
             level = s["force_level"][:, b, FORCES.index(q)]
             units = "dB re 1 N m" if q == "Mz" else "dB re 1 N"
-        elif "_" in q and q.split("_", 1)[0] in ("wheel", "rail") and q.split("_", 1)[1] in VELOCITIES:
-            side, comp = q.split("_", 1)
+        elif side in ("wheel", "rail") and comp in VELOCITIES:
             level = s["velocity_level"][:, b, 0 if side == "wheel" else 1, VELOCITIES.index(comp)]
             units = "dB re 1e-9 rad/s" if comp == "wz" else "dB re 1e-9 m/s"
         else:
-            fail(f"unknown quantity '{q}' (Fz, Fx, Fy, Mz, wheel_vz, rail_vy, ...)")
+            rh.fail(f"unknown quantity '{q}' (Fz, Fx, Fy, Mz, wheel_vz, rail_vy, ...)")
         x = params[args.x][:]
         if x.dtype.kind not in "fiu":
-            fail(f"'{args.x}' is not numeric: choose a numeric parameter for the horizontal axis")
-        x_units = text(params[args.x].attrs.get("units", "-"))
+            rh.fail(f"{args.file}: '{args.x}' is not numeric: choose a numeric parameter for the horizontal axis")
+        x_units = rh.units(f, f"/study/parameters/{args.x}", "-")
         groups = [(None, np.ones(len(x), bool))]
         if args.curves:
             c = params[args.curves][:]
@@ -83,22 +69,23 @@ def main():
         for value, sel in groups:
             m = sel & ok
             order = np.argsort(x[m])
-            label = None if value is None else f"{args.curves} = {text(value)}"
+            label = None if value is None else f"{args.curves} = {rh.text(value)}"
             ax.plot(x[m][order], level[m][order], "o-", ms=3, label=label)
-        if np.all(x[ok] > 0) and x[ok].max() > 5 * x[ok].min():
+        if ok.any() and np.all(x[ok] > 0) and x[ok].max() > 5 * x[ok].min():
             ax.set_xscale("log")
         ax.set_xlabel(f"{args.x} [{x_units}]")
-        ax.set_ylabel(f"{q} in the {centres[b]:.0f} Hz band [{units}]")
+        ax.set_ylabel(f"{q}, {rh.band_label(centres[b])} Hz band [{units}]")
         bad = int(np.sum(~ok))
         ax.set_title(f"{len(x)} cases" + (f", {bad} failed or missing (not drawn)" if bad else ""))
         if args.curves:
             ax.legend(fontsize=8)
         ax.grid(True, which="both", alpha=0.3)
-        out = args.out or args.file.rsplit("/", 1)[0] + f"/study_{q}_{centres[b]:.0f}Hz.png" if "/" in args.file else f"study_{q}.png"
+        out = args.output or os.path.join(os.path.dirname(args.file),
+                                          f"study_{q}_{rh.band_label(centres[b])}Hz.png")
         fig.tight_layout()
         fig.savefig(out, dpi=120)
         print(f"wrote {out}")
 
 
 if __name__ == "__main__":
-    main()
+    rh.run(main)

@@ -14,6 +14,7 @@
 #include "io/hdf5_writer.hpp"
 #include "io/noise_output.hpp"
 #include "io/output_files.hpp"
+#include "noise/roughness.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -189,11 +190,11 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
   const char* velocity_names[4] = {"vz", "vx", "vy", "wz"};
   const char* velocity_ref[4] = {"dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 rad/s"};
   for (std::size_t b = 0; b < nb; ++b)
-    for (int j = 0; j < 4; ++j) csv << "," << force_names[j] << "_" << number(centres[b]) << "Hz [" << force_ref[j] << "]";
+    for (int j = 0; j < 4; ++j) csv << "," << force_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz [" << force_ref[j] << "]";
   for (int side = 0; side < 2; ++side)
     for (std::size_t b = 0; b < nb; ++b)
       for (int j = 0; j < 4; ++j)
-        csv << "," << (side ? "rail_" : "wheel_") << velocity_names[j] << "_" << number(centres[b]) << "Hz ["
+        csv << "," << (side ? "rail_" : "wheel_") << velocity_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz ["
             << velocity_ref[j] << "]";
   csv << ",message\n";
   for (std::size_t i = 0; i < n; ++i) {

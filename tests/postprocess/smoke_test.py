@@ -24,6 +24,7 @@ COARSE = ["--set", "grid.nx=20", "--set", "grid.ny=15"]
 
 # another command's output, which the script cannot plot
 OTHER_OUTPUT = {"plot_patch.py": "sweep.h5", "plot_creep.py": "steady.h5"}
+EXTRA_ARGS = {"plot_study.py": ["--x", "curve.radius"]}  # options a script requires
 
 passed, failed = 0, []
 
@@ -79,6 +80,11 @@ def main():
     rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "noise.h5", *COARSE,
               "--set", "noise.points_per_band=4", "--set", "track.support=\"continuous\"")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
+    with open(os.path.join(work, "study.toml"), "w") as f:  # 4 cases of the small study case
+        f.write(f'base = "{os.path.join(ROOT, "tests/data/study/curve_small.toml")}"\noutput = "study"\n[axes]\n'
+                '"curve.radius" = [300.0, 600.0]\n"roughness.wheel" = ["cast-iron", "disc-braked"]\n')
+    rollnoise(binary, work, "study", "study.toml", "-j", "1")
+    rollnoise(binary, work, "collect", "study.toml")
     t_runs = time.time() - t0
     j = lambda name: os.path.join(work, name)  # noqa: E731
     runs = [  # script, arguments, files it must write
@@ -91,6 +97,8 @@ def main():
         ("plot_validate.py", [j("validate.h5"), "--prefix", j("val")], ["val_time.png", "val_spectra.png"]),
         ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png"]),
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
+        ("plot_study.py", [j("study/study.h5"), "--x", "curve.radius", "--curves", "roughness.wheel", "-o",
+                           j("study.png")], ["study.png"]),
     ]
     for script, args, outputs in runs:
         status, err = plot(script, *args)
@@ -101,10 +109,10 @@ def main():
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
-                                "plot_validate.py", "plot_noise.py", "plot_bench.py"]
+                                "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
-        status, err = plot(script, bad)
+        status, err = plot(script, bad, *EXTRA_ARGS.get(script, []))
         lines = err.strip().splitlines()
         check(f"{script} {os.path.basename(bad)} refused", status == 2 and len(lines) == 1 and bad in lines[0]
               and "Traceback" not in err, f"status {status}, stderr {err!r}")
