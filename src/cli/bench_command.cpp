@@ -2,7 +2,7 @@
 // The study itself (what is measured on each grid, the errors, the half-step phase lead, the
 // length of the transient runs) is nss/grid_study.hpp; the observed orders of convergence are
 // linalg/convergence.hpp. This file reads the options, runs the grids, prints the tables and
-// writes them as CSV (postprocess/plot_bench.py draws it).
+// writes them to HDF5 (/bench/*, default CASENAME.h5) and as CSV (postprocess/plot_bench.py draws it).
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "io/bench_output.hpp"
 #include "io/contact_case.hpp"
 #include "io/output_files.hpp"
 #include "linalg/convergence.hpp"
@@ -51,11 +52,12 @@ void print_header(const std::string& name, const nss::GridStudyCase& c, const ns
 }
 
 std::vector<nss::GridMeasurement> measure_grids(const nss::GridStudyCase& c, const nss::GridStudySettings& s,
-                                                const nss::GridStudyExcitation& e, const std::vector<int>& grids) {
+                                                const nss::GridStudyExcitation& e, const std::vector<int>& grids,
+                                                bool quiet) {
   std::vector<nss::GridMeasurement> res;
   for (int nx : grids) {
     res.push_back(nss::measure_grid(c, s, e, nx));
-    std::fprintf(stderr, "  %d x %d done\n", res.back().nx, res.back().ny);
+    if (!quiet) std::fprintf(stderr, "  %d x %d done\n", res.back().nx, res.back().ny);
   }
   return res;
 }
@@ -173,13 +175,13 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const io::ContactCase base = io::read_contact_case(reader);
   if (base.geometry != "hertz") reader.fail("contact.geometry", "bench needs a Hertzian case");
-  if (grids.empty()) throw InputError("--nx", "needs at least one grid");
   const nss::GridStudyCase study = study_case(reader, base);
+  nss::check_study_grids(study, grids);  // before any solve
   const nss::GridStudySettings settings;
   const nss::GridStudyExcitation excitation = nss::grid_study_excitation(study, settings);
 
   print_header(reader.name(), study, settings, excitation);
-  const std::vector<nss::GridMeasurement> res = measure_grids(study, settings, excitation, grids);
+  const std::vector<nss::GridMeasurement> res = measure_grids(study, settings, excitation, grids, o.quiet);
   const double c11_table = noise::kalker_coefficients(base.a / base.b, base.material.nu).C11;
   const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table);
   const std::vector<Quantity> table = quantities(err);
@@ -187,6 +189,16 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   print_grids(res, err, settings, base, c11_table);
   print_errors(res, err, table, settings);
   print_orders(res, err, table);
+  std::vector<io::BenchColumn> columns;
+  for (const auto& q : table) columns.push_back({q.column, q.name, q.err});
+  columns.push_back({"err_C11_kalker_rel", "C11 against Kalker's table", &err.c11_table});
+  columns.push_back({"err_transient_vs_linear_rel", "transient against the linear model on the same grid",
+                     &err.transient_vs_linear});
+  const std::string out = output_path(o, reader.name());
+  io::Hdf5Writer w(out);
+  io::write_bench(w, reader, res, columns, c11_table);
+  w.commit();
+  std::printf("wrote %s\n", out.c_str());
   if (csv.empty())
     std::printf("(--csv FILE writes the table; postprocess/plot_bench.py FILE draws it)\n");
   else

@@ -111,8 +111,8 @@ int main(int argc, char** argv) {
     }
     if (study->parsed()) return cli::run_study(study_options);  // its own output folder (docs/study.md)
     if (collect->parsed()) return cli::run_collect(study_options);
-    // the output files, before any computation (bench writes HDF5 only when -o is given)
-    cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "", !bench->parsed());
+    // the output files, before any computation
+    cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "");
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
     if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);

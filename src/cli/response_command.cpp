@@ -20,6 +20,7 @@
 #include "nss/linear_response.hpp"
 #include "nss/validation.hpp"
 #include "pipeline/limits.hpp"
+#include "pipeline/transient.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -31,15 +32,6 @@ Eigen::Vector3d mean_force(const MeanState& ms) {
 
 nss::LinearResponse linear_response(const MeanState& ms, const contact::CreepageHistory& h, long steps) {
   return nss::linear_response(*ms.model, mean_force(ms), ms.contact.normal_force, h, steps);
-}
-
-void check_excitation_resolved(const io::CaseReader& r, const contact::CreepageHistory& h,
-                               const nss::LinearContactModel& m) {
-  for (double f : h.frequencies())
-    if (f > m.nyquist_frequency())
-      r.fail(h.frequencies().size() == 1 ? "excitation.frequency" : "excitation.f_max",
-             std::to_string(f) + " Hz is above the grid's Nyquist limit V/(2 dx) = " +
-                 std::to_string(m.nyquist_frequency()) + " Hz");
 }
 
 long steps_of(const io::CaseReader& reader, double dt) {
@@ -60,7 +52,7 @@ int run_response(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const contact::CreepageHistory h = io::read_excitation(reader);
   MeanState ms = solve_mean_state(reader, true);
-  check_excitation_resolved(reader, h, *ms.model);
+  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact, h); });
   const long steps = steps_of(reader, ms.model->time_step());
   io::normal_load_series(reader, h, ms.contact.normal_force, ms.model->time_step(), steps);  // N_k > 0
   const auto t0 = std::chrono::steady_clock::now();
@@ -88,7 +80,7 @@ int run_validate(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const contact::CreepageHistory h = io::read_excitation(reader);
   MeanState ms = solve_mean_state(reader, true);
-  check_excitation_resolved(reader, h, *ms.model);
+  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact, h); });
   const double dt = ms.model->time_step();
   const long steps = steps_of(reader, dt);
   io::normal_load_series(reader, h, ms.contact.normal_force, dt, steps);  // N_k > 0, else InputError

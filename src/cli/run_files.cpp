@@ -12,10 +12,10 @@ void start_process(int argc, char** argv) {
   io::record_invocation(argc, argv);
 }
 
-void check_run_files(const CommonOptions& o, const std::string& csv, bool default_output) {
+void check_run_files(const CommonOptions& o, const std::string& csv) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   std::vector<io::OutputFile> outputs;
-  if (default_output || !o.output.empty()) outputs.push_back({"-o", output_path(o, reader.name())});
+  outputs.push_back({"-o", output_path(o, reader.name())});
   if (!csv.empty()) outputs.push_back({"--csv", csv});
   io::check_outputs(outputs, io::case_input_files(reader));
 }

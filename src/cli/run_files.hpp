@@ -14,8 +14,8 @@ namespace rollnoise::cli {
 void start_process(int argc, char** argv);
 
 /// InputError (exit 2, naming the option and the path) unless every output of the run can be
-/// written without overwriting an input or another output: -o (or CASENAME.h5 when
-/// `default_output`; bench writes no HDF5 unless -o is given) and `csv` (--csv, if not empty).
-void check_run_files(const CommonOptions& o, const std::string& csv, bool default_output);
+/// written without overwriting an input or another output: -o (or CASENAME.h5) and `csv` (--csv,
+/// if not empty).
+void check_run_files(const CommonOptions& o, const std::string& csv);
 
 }  // namespace rollnoise::cli

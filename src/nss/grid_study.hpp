@@ -100,6 +100,11 @@ struct GridMeasurement {
   double window_error = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// InputError naming --nx unless `grids` holds at least two grids, strictly increasing (the last is
+/// the reference the others are compared with), each fine enough for the patch (at least 4
+/// elements across 2a and 2b, as for a case's grid.nx / grid.ny).
+void check_study_grids(const GridStudyCase& c, const std::vector<int>& grids);
+
 /// Everything above on the grid with `nx` elements in x.
 GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
                              const GridStudyExcitation& e, int nx);

@@ -38,7 +38,12 @@ std::vector<double> normal_load_series(const contact::CreepageHistory& h, double
   return N;
 }
 
+void check_excitation_nyquist(const ContactCase& c, const contact::CreepageHistory& h) {
+  check_nyquist(c, h.frequencies(), h.frequencies().size() == 1 ? "excitation.frequency" : "excitation.f_max");
+}
+
 void check_transient(const ContactCase& c, const TransientInput& in) {
+  check_excitation_nyquist(c, in.history);
   const long steps = transient_steps(c, in.duration, c.grid.dx);
   normal_load_series(in.history, c.normal_force, c.grid.dx / c.speed, steps);
   for (double t : in.snapshots)
@@ -68,6 +73,9 @@ TransientResult run_transient(const ContactCase& c, const TransientInput& in, co
   const contact::ContactPatch& patch = *r.patch;
   const contact::Grid& g = patch.grid;
   r.dt = g.dx / c.speed;
+  ContactCase on_patch = c;
+  on_patch.grid = g;
+  check_excitation_nyquist(on_patch, in.history);  // profiles may have enlarged the grid
   r.steps = transient_steps(c, in.duration, g.dx);
   r.load = normal_load_series(in.history, c.normal_force, r.dt, r.steps);
   r.varying_load = in.history.has_normal_variation();

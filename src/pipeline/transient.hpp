@@ -51,8 +51,13 @@ struct TransientResult {
   double normal_iterations = 0.0, normal_seconds = 0.0, seconds = 0.0;
 };
 
-/// The checks of run_transient that need no solve (steps, loads, snapshot times) on the placed
-/// case; InputError naming the key.
+/// InputError naming excitation.frequency (harmonic) or excitation.f_max when a frequency of the
+/// history lies above the Nyquist limit of the case's grid: one step per dx/V cannot resolve it
+/// (it would alias onto a lower frequency).
+void check_excitation_nyquist(const ContactCase& c, const contact::CreepageHistory& h);
+
+/// The checks of run_transient that need no solve (steps, loads, snapshot times, the excitation's
+/// frequencies against the Nyquist limit) on the placed case; InputError naming the key.
 void check_transient(const ContactCase& c, const TransientInput& in);
 
 /// Called after every step k = 1..steps (for progress).

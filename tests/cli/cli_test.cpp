@@ -445,8 +445,8 @@ TEST(NonHertzianContact, LinearModelSpectraWithin1dBOfTheUnsteadySolverOnTheS100
 }
 
 TEST(BenchCommand, RefinementTableShowsTheErrorsFallingTowardsTheFinestGrid) {
-  const fs::path csv = temp_dir() / "bench.csv";
-  const Invocation r = run("bench " + paper_case() + " --nx 10,14,20,34 --csv " + csv.string());
+  const fs::path csv = temp_dir() / "bench.csv", h5 = temp_dir() / "bench.h5";
+  const Invocation r = run("bench " + paper_case() + " --nx 10,14,20,34 -q --csv " + csv.string() + " -o " + h5.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("postprocess/plot_bench.py"), std::string::npos) << r.output;
   std::ifstream in(csv);
@@ -488,6 +488,22 @@ TEST(BenchCommand, RefinementTableShowsTheErrorsFallingTowardsTheFinestGrid) {
     for (double v : col(name)) EXPECT_TRUE(std::isfinite(v) && v >= 0) << name;
   // the unsteady solver agrees with the linear model on every grid (docs/conventions.md Sec. 3: 0.1 %)
   for (double v : col("err_transient_vs_linear_rel")) EXPECT_LT(v, 1e-3);
+  // the same table in HDF5 (/bench/*, issue 16 fault 13), with units
+  const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0) << "bench -o wrote no HDF5 file";
+  for (const char* name : {"err_force_rel", "err_f_1kHz_rel", "err_transient_vs_linear_rel"}) {
+    const std::string path = std::string("/bench/error/") + name;
+    std::vector<double> v(4, NAN);
+    const hid_t set = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+    ASSERT_GE(set, 0) << path;
+    H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    H5Dclose(set);
+    const auto c = col(name);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(v[i], c[i], 1e-7 * std::abs(c[i]) + 1e-300) << path << " " << i;
+  }
+  EXPECT_EQ(read_units(f, "/bench/time_creep").rfind("s", 0), 0u);
+  EXPECT_EQ(read_units(f, "/bench/dx"), "m");
+  H5Fclose(f);
 }
 
 TEST(Program, KeysListsTheSchemaWithDefaults) {
