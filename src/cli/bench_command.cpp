@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "core/errors.hpp"
 #include "io/bench_output.hpp"
 #include "io/contact_case.hpp"
@@ -55,10 +56,12 @@ std::vector<nss::GridMeasurement> measure_grids(const nss::GridStudyCase& c, con
                                                 const nss::GridStudyExcitation& e, const std::vector<int>& grids,
                                                 bool quiet) {
   std::vector<nss::GridMeasurement> res;
+  Progress progress("bench", long(grids.size()), quiet, "grids");
   for (int nx : grids) {
     res.push_back(nss::measure_grid(c, s, e, nx));
-    if (!quiet) std::fprintf(stderr, "  %d x %d done\n", res.back().nx, res.back().ny);
+    progress.update(long(res.size()));
   }
+  progress.finish();
   return res;
 }
 

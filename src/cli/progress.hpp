@@ -1,5 +1,6 @@
-// A progress bar on stderr for runs longer than a second; silent with --quiet or when stderr is not
-// a terminal.
+// Progress on stderr: a bar for runs longer than a second when stderr is a terminal, and at the end
+// one summary line ("transient: 291 of 291 steps in 6.3 s") that also reaches a log file; silent
+// with --quiet.
 #pragma once
 
 #include <unistd.h>
@@ -12,11 +13,15 @@ namespace rollnoise::cli {
 
 class Progress {
  public:
-  Progress(std::string what, long total, bool quiet)
-      : what_(std::move(what)), total_(total), enabled_(!quiet && isatty(STDERR_FILENO)),
-        start_(std::chrono::steady_clock::now()) {}
-  ~Progress() { finish(); }
+  /// `what` names the work and its unit, e.g. "transient" and "steps".
+  Progress(std::string what, long total, bool quiet, std::string unit = "")
+      : what_(std::move(what)), unit_(std::move(unit)), total_(total), quiet_(quiet),
+        enabled_(!quiet && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+  ~Progress() {  // a run that stopped early ends the bar's line, without a summary
+    if (shown_) std::fprintf(stderr, "\n");
+  }
   void update(long done) {
+    done_ = done;
     if (!enabled_) return;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (s < 1.0 || (done < total_ && s - last_ < 0.1)) return;
@@ -26,15 +31,21 @@ class Progress {
                  std::string(width - filled, ' ').c_str(), done, total_, s);
     shown_ = true;
   }
+  /// Ends the bar and prints the summary line (once).
   void finish() {
     if (shown_) std::fprintf(stderr, "\n");
     shown_ = false;
+    if (quiet_ || summarised_) return;
+    summarised_ = true;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stderr, "%s: %ld of %ld%s%s in %.1f s\n", what_.c_str(), done_, total_, unit_.empty() ? "" : " ",
+                 unit_.c_str(), s);
   }
 
  private:
-  std::string what_;
-  long total_;
-  bool enabled_, shown_ = false;
+  std::string what_, unit_;
+  long total_, done_ = 0;
+  bool quiet_, enabled_, shown_ = false, summarised_ = false;
   std::chrono::steady_clock::time_point start_;
   double last_ = 0.0;
 };

@@ -99,7 +99,7 @@ int run_validate(const CommonOptions& o) {
   std::vector<Eigen::Vector3d> unsteady = {mean_force(ms)};
   const auto t0 = std::chrono::steady_clock::now();
   {
-    Progress progress("unsteady", steps, o.quiet);
+    Progress progress("unsteady solver", steps, o.quiet, "steps");
     const auto forces =
         contact::rolling_forces(rolling, ms.patch->grid, h, dt, steps,
                                 varying_load ? lin.normal_force : std::vector<double>{},

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "contact/forces.hpp"
 #include "contact/steady_rolling.hpp"
 #include "core/errors.hpp"
@@ -75,9 +76,11 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
     std::vector<int> n_adh, n_slip, iters;
     std::printf("sweep %s (%zu points):\n%12s %12s %12s %12s %8s %8s\n", sweeps[0].c_str(),
                 point_cases.size(), "value", "Fx [N]", "Fy [N]", "Mz [N m]", "adhesion", "slip");
+    Progress progress("sweep", long(point_cases.size()), o.quiet, "points");
     io::within_case(reader, [&] {
       return pipeline::steady_sweep(cc, patch, point_cases, [&](std::size_t i, const io::ContactCase& pc,
                                                                 const contact::TangentialSolution& s) {
+        progress.update(long(i) + 1);
         const auto f = contact::total_forces(pc.grid, s.px, s.py);
         std::printf("%12.6g %12.6g %12.6g %12.6g %8d %8d\n", values[i], f.Fx, f.Fy, f.Mz,
                     s.count(contact::ElementState::adhesion), s.count(contact::ElementState::slip));
@@ -88,6 +91,7 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
         iters.push_back(s.iterations);
       });
     });
+    progress.finish();
     const std::size_t n = point_cases.size();
     w.attribute("/sweep", "spec", sweeps[0]);
     w.write("/sweep/value", values, {n}, "as the swept key (index for TOML-array sweeps)");

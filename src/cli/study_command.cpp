@@ -52,7 +52,7 @@ int run_study(const StudyOptions& o) {
   ro.reuse = !o.no_reuse;
   std::optional<Progress> progress;  // once the cases to run are known
   ro.progress = [&](long done, long total) {
-    if (!progress) progress.emplace("study", total, o.quiet);
+    if (!progress) progress.emplace("study", total, o.quiet, "cases");
     progress->update(done);
   };
   const study::RunSummary s = study::run_study(plan, ro);

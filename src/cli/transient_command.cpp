@@ -24,7 +24,7 @@ int run_transient(const CommonOptions& o) {
   });
   const std::string out = output_path(o, reader.name());
 
-  Progress progress("transient", pipeline::transient_steps(cc, in.duration, cc.grid.dx), o.quiet);
+  Progress progress("transient", pipeline::transient_steps(cc, in.duration, cc.grid.dx), o.quiet, "steps");
   const pipeline::TransientResult r =
       io::within_case(reader, [&] { return pipeline::run_transient(cc, in, [&](long k) { progress.update(k); }); });
   progress.finish();
