@@ -119,16 +119,28 @@ int run_validate(const CommonOptions& o) {
   io::write_linear_response(w, "/validate/linear", lin);
   io::write_excitation(w, "/validate/excitation", h);
   io::write_validation(w, lin, unsteady, v, fr);
+  const char* name[] = {"Fx", "Fy", "Mz"};
   if (v.fitted && fr.size() <= 5)
-    for (size_t k = 0; k < fr.size(); ++k)
-      std::printf("  %.1f Hz: amplitude error Fx %.3f %%, Fy %.3f %%; phase error Fx %.3f deg, Fy %.3f deg\n",
-                  fr[k], 100 * v.amplitude_error[k], 100 * v.amplitude_error[fr.size() + k], v.phase_error[k],
-                  v.phase_error[fr.size() + k]);
+    for (size_t k = 0; k < fr.size(); ++k) {
+      std::printf("  %.1f Hz:", fr[k]);
+      for (int j = 0; j < 2; ++j)
+        if (v.excited[j])
+          std::printf(" %s amplitude error %.3f %%, phase error %.3f deg;", name[j], 100 * v.amplitude_error[j * fr.size() + k],
+                      v.phase_error[j * fr.size() + k]);
+        else
+          std::printf(" %s not excited;", name[j]);
+      std::printf("\n");
+    }
   w.commit();
-  std::printf("%s: unsteady solver %ld steps in %.1f s; linear model RMS error after %.4g s: Fx %.3g %%, "
-              "Fy %.3g %%, Mz %.3g %% of the RMS variation%s\nwrote %s\n",
-              reader.name().c_str(), steps, ms_unsteady / 1e3, t_start, 100 * v.rms_relative(0),
-              100 * v.rms_relative(1), 100 * v.rms_relative(2),
+  std::string rms;
+  for (int j = 0; j < 3; ++j) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, v.excited[j] ? "%s %.3g %%" : "%s not excited", name[j], 100 * v.rms_relative(j));
+    rms += (j ? ", " : "") + std::string(buf);
+  }
+  std::printf("%s: unsteady solver %ld steps in %.1f s; linear model RMS error after %.4g s (of the RMS variation): "
+              "%s%s\nwrote %s\n",
+              reader.name().c_str(), steps, ms_unsteady / 1e3, t_start, rms.c_str(),
               v.fitted ? "" : " (record too short for per-frequency errors)", out.c_str());
   return 0;
 }

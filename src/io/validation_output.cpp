@@ -28,7 +28,9 @@ void write_validation(Hdf5Writer& w, const nss::LinearResponse& lin,
   w.write("/validate/unsteady/force", flatten(unsteady), {n, 3}, "N, N, N m");
   w.write("/validate/errors/rms_relative",
           std::vector<double>{v.rms_relative(0), v.rms_relative(1), v.rms_relative(2)}, {3},
-          "RMS(linear - unsteady) / RMS(unsteady variation), t >= analysis_start; Fx, Fy, Mz");
+          "RMS(linear - unsteady) / RMS(unsteady variation), t >= analysis_start; Fx, Fy, Mz; NaN: not excited");
+  w.write("/validate/errors/excited", std::vector<int>{v.excited[0], v.excited[1], v.excited[2]}, {3},
+          "1 excited, 0 not excited (variation below 1e-9 of the force scale, nss/validation.hpp); Fx, Fy, Mz");
   // spectra (Hann window over t >= analysis_start)
   for (int j = 0; j < 3; ++j) {
     const nss::Spectrum &su = v.unsteady_spectrum[j], &sl = v.linear_spectrum[j];

@@ -1,5 +1,8 @@
 #include "nss/validation.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include <cmath>
 
 #include "linalg/multisine_fit.hpp"
@@ -34,7 +37,15 @@ ValidationErrors compare_linear_unsteady(const std::vector<double>& time,
       sq_err(j) += std::pow(qu[j][i] - ql[j][i], 2);
       sq_var(j) += std::pow(qu[j][i] - mean_u(j), 2);
     }
-  for (int j = 0; j < 3; ++j) v.rms_relative(j) = sq_var(j) > 0 ? std::sqrt(sq_err(j) / sq_var(j)) : 0.0;
+  // excited components: RMS variation above 1e-9 of the force scale (header)
+  const double n_samples = double(ta.size());
+  const double scale = std::max({std::abs(mean_u(0)), std::abs(mean_u(1)), std::sqrt(sq_var(0) / n_samples),
+                                 std::sqrt(sq_var(1) / n_samples)});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int j = 0; j < 3; ++j) {
+    v.excited[j] = std::sqrt(sq_var(j) / n_samples) > 1e-9 * scale;
+    v.rms_relative(j) = v.excited[j] ? std::sqrt(sq_err(j) / sq_var(j)) : nan;
+  }
 
   for (int j = 0; j < 3; ++j) {
     v.unsteady_spectrum[j] = amplitude_spectrum(qu[j], dt);
@@ -49,8 +60,10 @@ ValidationErrors compare_linear_unsteady(const std::vector<double>& time,
       for (int j = 0; j < 3; ++j) {
         const auto au = linalg::fit_multisine(ta, qu[j], fr), al = linalg::fit_multisine(ta, ql[j], fr);
         for (size_t k = 0; k < fr.size(); ++k) {
-          v.amplitude_error.push_back(std::abs(au[k]) > 0 ? std::abs(al[k]) / std::abs(au[k]) - 1 : 0.0);
-          v.phase_error.push_back(std::remainder(std::arg(al[k]) - std::arg(au[k]), 2 * M_PI) * 180 / M_PI);
+          const bool meaningful = v.excited[j] && std::abs(au[k]) > 0;
+          v.amplitude_error.push_back(meaningful ? std::abs(al[k]) / std::abs(au[k]) - 1 : nan);
+          v.phase_error.push_back(meaningful ? std::remainder(std::arg(al[k]) - std::arg(au[k]), 2 * M_PI) * 180 / M_PI
+                                             : nan);
         }
       }
       v.fitted = true;

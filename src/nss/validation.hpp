@@ -10,6 +10,11 @@
 //                  phase error arg a_lin - arg a_uns wrapped to (-180, 180] deg; only when the
 //                  window holds more than 2N + 1 samples and resolves the frequencies (length x
 //                  spacing >= 1; one frequency: at least one period).
+//   not excited    a component whose RMS variation in the unsteady run is at most 1e-9 of the
+//                  force scale max(|mean Fx|, |mean Fy|, RMS variation of Fx, Fy) is not excited
+//                  (e.g. Fy under a pure xi_x variation, or every component at zero amplitude): its
+//                  variation is round-off of the solvers (tolerance 1e-12), and errors relative to
+//                  it mean nothing. Its errors are NaN, and `excited` says so.
 #pragma once
 
 #include <Eigen/Dense>
@@ -23,10 +28,12 @@ namespace rollnoise::nss {
 
 struct ValidationErrors {
   std::vector<double> time;                 ///< the analysed t_k >= t_start (s)
-  Eigen::Vector3d rms_relative = Eigen::Vector3d::Zero();  ///< e_j above (0 without variation)
+  Eigen::Vector3d rms_relative = Eigen::Vector3d::Zero();  ///< e_j above (NaN when not excited)
+  std::array<bool, 3> excited = {false, false, false};     ///< see "not excited" above
   std::array<Spectrum, 3> unsteady_spectrum, linear_spectrum;  ///< Fx, Fy, Mz
   bool fitted = false;                      ///< per-frequency errors computed
-  /// 3 x frequencies, row-major (Fx, Fy, Mz): relative amplitude error, phase error (deg)
+  /// 3 x frequencies, row-major (Fx, Fy, Mz): relative amplitude error, phase error (deg); NaN
+  /// for a component that is not excited
   std::vector<double> amplitude_error, phase_error;
 };
 
