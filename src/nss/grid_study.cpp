@@ -137,18 +137,18 @@ GridStudyExcitation grid_study_excitation(const GridStudyCase& c, const GridStud
 void check_study_grids(const GridStudyCase& c, const std::vector<int>& grids) {
   std::string list;
   for (int nx : grids) list += (list.empty() ? "" : ",") + std::to_string(nx);
-  auto fail = [&](const std::string& what) { throw InputError("--nx", "--nx " + list + ": " + what); };
-  if (grids.size() < 2) fail("needs at least two grids, coarse to fine (the finest is the reference)");
+  auto refuse = [&](const std::string& what) { throw InputError("--nx", "--nx " + list + ": " + what); };
+  if (grids.size() < 2) refuse("needs at least two grids, coarse to fine (the finest is the reference)");
   for (std::size_t i = 0; i < grids.size(); ++i) {
     const int nx = grids[i];
     if (i > 0 && nx <= grids[i - 1])
-      fail("grids must be given coarse to fine, strictly increasing: " + std::to_string(grids[i - 1]) + " then " +
+      refuse("grids must be given coarse to fine, strictly increasing: " + std::to_string(grids[i - 1]) + " then " +
            std::to_string(nx));
-    if (nx < 1 || nx > 4000) fail("a grid needs 1 to 4000 elements in x, got " + std::to_string(nx));
+    if (nx < 1 || nx > 4000) refuse("a grid needs 1 to 4000 elements in x, got " + std::to_string(nx));
     int ny = 0;
     const contact::Grid g = study_grid(c, nx, &ny);
     if (2.0 * c.a / g.dx < 4.0 || 2.0 * c.b / g.dy < 4.0)
-      fail(std::to_string(nx) + " x " + std::to_string(ny) +
+      refuse(std::to_string(nx) + " x " + std::to_string(ny) +
            " is too coarse for the patch: fewer than 4 elements across 2a or 2b");
   }
 }
