@@ -1,16 +1,18 @@
 // rollnoise: railway rolling-contact and rolling-noise analysis in the frequency domain.
 //
 //   rollnoise steady    CASE.toml [-o OUT.h5] [--set key=value]... [--sweep KEY=VALUES]
-//   rollnoise transient CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
+//   rollnoise transient CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise creep     CASE.toml [-o OUT.h5] [--set key=value]... [--csv FILE] [--direct]
 //   rollnoise response  CASE.toml [-o OUT.h5] [--set key=value]...
-//   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]... [--quiet]
+//   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
-//   rollnoise bench     CASE.toml [--nx 10,14,20,...] [--csv FILE]
+//   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
 //   rollnoise collect   STUDY.toml
 //   rollnoise keys                      the declared case keys with defaults and help
+//
+// Every command but keys takes -q (no progress output). Commands and options: docs/interface.md.
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
 #include <CLI/CLI.hpp>
