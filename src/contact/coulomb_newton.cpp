@@ -29,6 +29,26 @@ struct FixedPointResidual {
 // took 100 s against ~2 ms per GMRES iteration).
 int unpreconditioned_budget(int unknowns) { return unknowns <= 2000 ? 8 : unknowns / 4; }
 
+// Tiny tractions (issue 16, fault 7). The problem is positively homogeneous: if p solves it for the
+// right-hand side w and the bounds g, then sigma p solves it for sigma w and sigma g (sigma > 0; the
+// element law of coulomb.hpp and R are homogeneous of degree 1). The solver, though, is not scale
+// free in floating point: squared norms (|R|_2 in GMRES and the line search) underflow below
+// ~1e-154, and the float LU factors see residuals below ~1e-38 as zero; creepages below ~1e-46 then
+// stalled Newton. So when the traction scale of the problem, max(|w|/d, |p_start|) (d the smaller
+// diagonal of S: the adhesion traction of an element alone), is below 2^-40 Pa (tractions from
+// creepages below ~1e-23), the problem is solved for sigma = 2^k that brings it to ~1 Pa (bounds
+// at most 2^1000, no overflow), and the tractions divided by sigma. A power of two is exact, so the
+// iterates are those of the scaled problem to the bit; above the floor nothing changes (sigma = 1).
+// The convergence test needs no change: it is relative to the tractions present.
+int traction_scale_exponent(const Eigen::VectorXd& w, const Eigen::VectorXd& p, double d,
+                            const std::vector<double>& bound) {
+  const double c = std::max(w.cwiseAbs().maxCoeff() / d, p.cwiseAbs().maxCoeff());
+  if (!(c > 0.0 && c < 0x1p-40)) return 0;  // zero or normal scale (or NaN: reported as before)
+  const double g = bound.empty() ? 0.0 : *std::max_element(bound.begin(), bound.end());
+  const int k = g > 0.0 ? std::min(-std::ilogb(c), 1000 - std::ilogb(g)) : -std::ilogb(c);
+  return std::max(k, 0);
+}
+
 }  // namespace
 
 CoulombNewton::CoulombNewton(const SlipOperator& S, std::vector<int> elements,
@@ -124,10 +144,21 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     w(2 * a) = rhs_x[k], w(2 * a + 1) = rhs_y[k];
     p(2 * a) = px[k], p(2 * a + 1) = py[k];
   }
+  // tiny tractions: solve sigma times the problem (see traction_scale_exponent)
+  const int scale_exponent = m > 0 ? traction_scale_exponent(w, p, std::min(d1_, d2_), bound_) : 0;
+  std::vector<double> scaled_bound;
+  if (scale_exponent != 0) {
+    const double sigma = std::ldexp(1.0, scale_exponent);
+    w *= sigma;
+    p *= sigma;
+    scaled_bound = bound_;
+    for (double& b : scaled_bound) b *= sigma;
+  }
+  const std::vector<double>& bound = scale_exponent != 0 ? scaled_bound : bound_;
   auto project = [&](Eigen::VectorXd q) {
     for (int a = 0; a < m; ++a) {
       const double len = std::hypot(q(2 * a), q(2 * a + 1));
-      if (len > bound_[a]) q.segment<2>(2 * a) *= bound_[a] / len;
+      if (len > bound[a]) q.segment<2>(2 * a) *= bound[a] / len;
     }
     return q;
   };
@@ -141,7 +172,7 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     r.local.resize(m);
     for (int a = 0; a < m; ++a) {
       const double bx = s(2 * a) - d1_ * q(2 * a), by = s(2 * a + 1) - d2_ * q(2 * a + 1);
-      r.local[a] = solve_coulomb_element(bx, by, d1_, d2_, bound_[a]);
+      r.local[a] = solve_coulomb_element(bx, by, d1_, d2_, bound[a]);
       r.R(2 * a) = q(2 * a) - r.local[a].px;
       r.R(2 * a + 1) = q(2 * a + 1) - r.local[a].py;
       const double len = std::hypot(r.R(2 * a), r.R(2 * a + 1));
@@ -250,8 +281,8 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     if (bound_[a] == 0.0) continue;  // out of contact at this load (set_bounds): p = 0
     const int k = elements_[a];
     const ElementTraction& e = r.local[a];
-    sol.px[k] = e.px, sol.py[k] = e.py;
-    if (e.slip) sol.sx[k] = e.sx, sol.sy[k] = e.sy;
+    sol.px[k] = std::ldexp(e.px, -scale_exponent), sol.py[k] = std::ldexp(e.py, -scale_exponent);
+    if (e.slip) sol.sx[k] = std::ldexp(e.sx, -scale_exponent), sol.sy[k] = std::ldexp(e.sy, -scale_exponent);
     sol.state[k] = static_cast<std::int8_t>(e.slip ? ElementState::slip : ElementState::adhesion);
   }
   return sol;
