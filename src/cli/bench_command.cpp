@@ -22,12 +22,8 @@
 namespace rollnoise::cli {
 namespace {
 
-// A tabulated error: name (orders table), CSV column, header in the printed error table (empty:
-// not printed there), and its values per grid.
-struct Quantity {
-  std::string name, column, header;
-  const std::vector<double>* err;
-};
+// A tabulated error (io/bench_output.hpp): name, CSV column, printed header, values per grid.
+using Quantity = io::BenchColumn;
 
 nss::GridStudyCase study_case(const io::CaseReader& reader, const io::ContactCase& base) {
   nss::GridStudyCase c;
@@ -192,10 +188,9 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   print_grids(res, err, settings, base, c11_table);
   print_errors(res, err, table, settings);
   print_orders(res, err, table);
-  std::vector<io::BenchColumn> columns;
-  for (const auto& q : table) columns.push_back({q.column, q.name, q.err});
-  columns.push_back({"err_C11_kalker_rel", "C11 against Kalker's table", &err.c11_table});
-  columns.push_back({"err_transient_vs_linear_rel", "transient against the linear model on the same grid",
+  std::vector<Quantity> columns = table;
+  columns.push_back({"C11 against Kalker's table", "err_C11_kalker_rel", "", &err.c11_table});
+  columns.push_back({"transient against the linear model on the same grid", "err_transient_vs_linear_rel", "",
                      &err.transient_vs_linear});
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);

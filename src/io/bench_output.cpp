@@ -29,8 +29,8 @@ void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::Grid
   w.write("/bench/C11", column([](const auto& g) { return g.c11; }), {n}, "-");
   w.write("/bench/C11_kalker_table", c11_table, "-");
   for (const auto& e : errors) {
-    w.write("/bench/error/" + e.name, *e.values, {n}, "- (relative)");
-    w.attribute("/bench/error/" + e.name, "description", e.description);
+    w.write("/bench/error/" + e.column, *e.err, {n}, "- (relative)");
+    w.attribute("/bench/error/" + e.column, "description", e.name);
   }
   w.attribute("/bench", "reference", "errors relative to the finest grid (the last), C11 also against Kalker's table");
 }

@@ -11,11 +11,12 @@
 
 namespace rollnoise::io {
 
-/// A column of relative errors (one value per grid) and what it measures.
+/// A quantity of the refinement table: its relative errors, one per grid.
 struct BenchColumn {
-  std::string name;         ///< dataset name under /bench/error/, e.g. "err_f_1kHz_rel"
-  std::string description;  ///< its `description` attribute
-  const std::vector<double>* values;
+  std::string name;    ///< what it measures (the printed tables; the dataset's `description`)
+  std::string column;  ///< CSV column and dataset name under /bench/error/, e.g. "err_f_1kHz_rel"
+  std::string header;  ///< header in the printed error table (empty: not printed there)
+  const std::vector<double>* err;
 };
 
 void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::GridMeasurement>& grids,

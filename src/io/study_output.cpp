@@ -180,38 +180,38 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
     w.commit();
   }
 
-  std::ostringstream csv;
-  csv << "case";
-  for (const auto& a : plan.axes) csv << "," << csv_cell(a.key + " [" + units_of(a.key) + "]");
-  csv << ",status,run_time [s],xi_x [-],xi_y [-],phi [rad/m],contact_angle [rad],normal_force [N],"
-         "adhesion_elements [-],slip_elements [-]";
-  const char* force_names[4] = {"Fz", "Fx", "Fy", "Mz"};
-  const char* force_ref[4] = {"dB re 1 N", "dB re 1 N", "dB re 1 N", "dB re 1 N m"};
-  const char* velocity_names[4] = {"vz", "vx", "vy", "wz"};
-  const char* velocity_ref[4] = {"dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 rad/s"};
-  for (std::size_t b = 0; b < nb; ++b)
-    for (int j = 0; j < 4; ++j) csv << "," << force_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz [" << force_ref[j] << "]";
-  for (int side = 0; side < 2; ++side)
+  write_text_file(csv_path, "output", [&](std::ostream& csv) {
+    csv << "case";
+    for (const auto& a : plan.axes) csv << "," << csv_cell(a.key + " [" + units_of(a.key) + "]");
+    csv << ",status,run_time [s],xi_x [-],xi_y [-],phi [rad/m],contact_angle [rad],normal_force [N],"
+           "adhesion_elements [-],slip_elements [-]";
+    const char* force_names[4] = {"Fz", "Fx", "Fy", "Mz"};
+    const char* force_ref[4] = {"dB re 1 N", "dB re 1 N", "dB re 1 N", "dB re 1 N m"};
+    const char* velocity_names[4] = {"vz", "vx", "vy", "wz"};
+    const char* velocity_ref[4] = {"dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 rad/s"};
     for (std::size_t b = 0; b < nb; ++b)
-      for (int j = 0; j < 4; ++j)
-        csv << "," << (side ? "rail_" : "wheel_") << velocity_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz ["
-            << velocity_ref[j] << "]";
-  csv << ",message\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    const StudyRow& r = rows[i];
-    csv << r.parameters.index;
-    for (const auto& v : r.parameters.values) csv << "," << csv_cell(v.toml);
-    csv << "," << status_name(r.status) << "," << number(run_time[i]);
-    for (int k = 0; k < 3; ++k) csv << "," << number(creepage[3 * i + k]);
-    csv << "," << number(angle[i]) << "," << number(normal[i]) << "," << number(adhesion[i]) << "," << number(slip[i]);
-    for (std::size_t b = 0; b < nb; ++b)
-      for (int j = 0; j < 4; ++j) csv << "," << number(force[(i * nb + b) * 4 + j]);
+      for (int j = 0; j < 4; ++j) csv << "," << force_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz [" << force_ref[j] << "]";
     for (int side = 0; side < 2; ++side)
       for (std::size_t b = 0; b < nb; ++b)
-        for (int j = 0; j < 4; ++j) csv << "," << number(velocity[(i * nb + b) * 8 + side * 4 + j]);
-    csv << "," << csv_cell(r.message) << "\n";
-  }
-  write_text_file(csv_path, "output", [&](std::ostream& out) { out << csv.str(); }).commit();
+        for (int j = 0; j < 4; ++j)
+          csv << "," << (side ? "rail_" : "wheel_") << velocity_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz ["
+              << velocity_ref[j] << "]";
+    csv << ",message\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      const StudyRow& r = rows[i];
+      csv << r.parameters.index;
+      for (const auto& v : r.parameters.values) csv << "," << csv_cell(v.toml);
+      csv << "," << status_name(r.status) << "," << number(run_time[i]);
+      for (int k = 0; k < 3; ++k) csv << "," << number(creepage[3 * i + k]);
+      csv << "," << number(angle[i]) << "," << number(normal[i]) << "," << number(adhesion[i]) << "," << number(slip[i]);
+      for (std::size_t b = 0; b < nb; ++b)
+        for (int j = 0; j < 4; ++j) csv << "," << number(force[(i * nb + b) * 4 + j]);
+      for (int side = 0; side < 2; ++side)
+        for (std::size_t b = 0; b < nb; ++b)
+          for (int j = 0; j < 4; ++j) csv << "," << number(velocity[(i * nb + b) * 8 + side * 4 + j]);
+      csv << "," << csv_cell(r.message) << "\n";
+    }
+  }).commit();
 }
 
 }  // namespace rollnoise::io

@@ -54,7 +54,6 @@ class SharedCounters {
   }
   SharedCounters(const SharedCounters&) = delete;
   SharedCounters& operator=(const SharedCounters&) = delete;
-  Shared* operator->() { return shared_; }
   Shared& get() { return *shared_; }
 
  private:
@@ -208,7 +207,7 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
 
   SharedCounters shared(workers > 1);
   auto report = [&] {
-    if (o.progress) o.progress(shared->done + shared->failed, total);
+    if (o.progress) o.progress(shared.get().done + shared.get().failed, total);
   };
   if (workers <= 1) {
     work(plan, cases, groups, o.reuse, shared.get(), 0, report);
@@ -221,16 +220,16 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
       if (pid > 0 && slot_of.count(pid)) {
         const int slot = slot_of[pid];
         slot_of.erase(pid);
-        const long index = shared->current[slot];
+        const long index = shared.get().current[slot];
         if (index >= 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
           // the worker died inside a case (a crash, or killed): that case failed, the queue goes on
           record_failure(plan, std::size_t(index),
                          WIFSIGNALED(status) ? "failure: the worker process died of signal " +
                                                    std::to_string(WTERMSIG(status)) + " while running this case"
                                              : "failure: the worker process stopped while running this case");
-          ++shared->failed;
-          shared->current[slot] = -1;
-          if (shared->next_group < long(groups.size()))
+          ++shared.get().failed;
+          shared.get().current[slot] = -1;
+          if (shared.get().next_group < long(groups.size()))
             slot_of[start_worker(plan, cases, groups, o.reuse, shared.get(), slot)] = slot;
         }
       } else if (pid < 0) {
