@@ -24,6 +24,7 @@ void write_statespace(Hdf5Writer& w, const CaseReader& r, const pipeline::StateS
 std::vector<std::string> statespace_csv_paths(const std::string& prefix);
 
 /// Write them to temporaries beside the final paths, returned uncommitted (output_files.hpp).
-std::vector<TemporaryFile> write_statespace_csv(const std::string& prefix, const pipeline::StateSpaceResult& s);
+std::vector<TemporaryFile> write_statespace_csv(const std::string& prefix,
+                                                const pipeline::StateSpaceResult& s);
 
 }  // namespace rollnoise::io

@@ -51,7 +51,8 @@ std::vector<Eigen::VectorXd> simulate_first_order_hold(const StateSpace& m, doub
   M.block(0, n, n, q) = m.B * h;
   M.block(n, n + q, q, q) = Eigen::MatrixXd::Identity(q, q);
   const Eigen::MatrixXd E = M.exp();
-  const Eigen::MatrixXd Phi = E.topLeftCorner(n, n), G1 = E.block(0, n, n, q), G2 = E.block(0, n + q, n, q);
+  const Eigen::MatrixXd Phi = E.topLeftCorner(n, n), G1 = E.block(0, n, n, q),
+                        G2 = E.block(0, n + q, n, q);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   for (size_t k = 0; k < u.size(); ++k) {
     y.push_back(m.C * x + m.D * u[k]);
@@ -71,7 +72,8 @@ IoScaling equilibrate(const Eigen::MatrixXd& peak) {
     P = r.cwiseInverse().asDiagonal() * P * c.cwiseInverse().asDiagonal();
     s.output = s.output.cwiseProduct(r);
     s.input = s.input.cwiseProduct(c);
-    if ((r.array() - 1.0).abs().maxCoeff() < 1e-6 && (c.array() - 1.0).abs().maxCoeff() < 1e-6) break;
+    if ((r.array() - 1.0).abs().maxCoeff() < 1e-6 && (c.array() - 1.0).abs().maxCoeff() < 1e-6)
+      break;
   }
   return s;
 }
@@ -85,10 +87,11 @@ Realisation eigensystem_realisation(const std::vector<Eigen::MatrixXd>& markov, 
   r.scaling = equilibrate(peak);
   const Eigen::VectorXd so = r.scaling.output, si = r.scaling.input;
   std::vector<Eigen::MatrixXd> hs;
-  for (const auto& h : markov) hs.push_back(so.cwiseInverse().asDiagonal() * h * si.cwiseInverse().asDiagonal());
+  for (const auto& h : markov)
+    hs.push_back(so.cwiseInverse().asDiagonal() * h * si.cwiseInverse().asDiagonal());
   r.model.D = markov[0];
-  // H_1 ... H_L: Hankel matrices of `rows` x `cols` blocks use H_1 ... H_{rows+cols} (the shifted one;
-  // a short sequence is continued by zeros)
+  // H_1 ... H_L: Hankel matrices of `rows` x `cols` blocks use H_1 ... H_{rows+cols} (the shifted
+  // one; a short sequence is continued by zeros)
   const int L = static_cast<int>(markov.size()) - 1;
   const int rows = std::max(1, L / 2), cols = std::max(1, L - rows);
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(p, m);  // beyond the given sequence (decayed)
@@ -106,14 +109,16 @@ Realisation eigensystem_realisation(const std::vector<Eigen::MatrixXd>& markov, 
   while (n < sv.size() && sv(n) > tolerance * sv(0)) ++n;
   const Eigen::VectorXd sq = sv.head(n).cwiseSqrt(), isq = sq.cwiseInverse();
   const Eigen::MatrixXd Un = svd.matrixU().leftCols(n), Vn = svd.matrixV().leftCols(n);
-  r.model.A = isq.asDiagonal() * (Un.transpose() * H1 * Vn) * isq.asDiagonal();  // Juang-Pappa Eq. 21
+  r.model.A =
+      isq.asDiagonal() * (Un.transpose() * H1 * Vn) * isq.asDiagonal();  // Juang-Pappa Eq. 21
   r.model.B = (sq.asDiagonal() * Vn.transpose()).leftCols(m) * si.asDiagonal();
   r.model.C = so.asDiagonal() * (Un * sq.asDiagonal()).topRows(p);
   // the check: the realisation's Markov parameters against the given ones (scaled)
   double err = 0.0, ref = 0.0;
   Eigen::MatrixXd AkB = r.model.B;
   for (int j = 1; j <= L; ++j) {
-    const Eigen::MatrixXd hj = so.cwiseInverse().asDiagonal() * (r.model.C * AkB) * si.cwiseInverse().asDiagonal();
+    const Eigen::MatrixXd hj =
+        so.cwiseInverse().asDiagonal() * (r.model.C * AkB) * si.cwiseInverse().asDiagonal();
     err = std::max(err, (hj - hs[j]).norm());
     ref = std::max(ref, hs[j].norm());
     AkB = r.model.A * AkB;

@@ -19,17 +19,17 @@ struct StateSpace {
   Eigen::MatrixXcd response(std::complex<double> s) const;
   /// Continuous model at s = 2 pi i f (f in Hz).
   Eigen::MatrixXcd frequency_response(double frequency) const;
-  /// Discrete model with step dt at z = e^{i w dt}: D + C (zI - A)^{-1} B, i.e. sum_j H_j e^{-i w j dt}
-  /// with the Markov parameters H_0 = D, H_j = C A^{j-1} B.
+  /// Discrete model with step dt at z = e^{i w dt}: D + C (zI - A)^{-1} B, i.e. sum_j H_j e^{-i w j
+  /// dt} with the Markov parameters H_0 = D, H_j = C A^{j-1} B.
   Eigen::MatrixXcd discrete_frequency_response(double frequency, double dt) const;
   /// The discrete model's Markov parameters H_0 ... H_{count-1}.
   std::vector<Eigen::MatrixXd> markov_parameters(int count) const;
 };
 
-/// The continuous model's output y(t_k), t_k = k h, from x(0) = 0, for the input u(t) linear between
-/// the samples u_k = u(t_k) (first-order hold): exact, by the matrix exponential of the augmented
-/// system [[A, B, 0], [0, 0, I], [0, 0, 0]] h (Franklin, Powell, Workman, Digital Control of
-/// Dynamic Systems, 3rd ed., Sec. 6.3.2, "triangle-hold equivalent").
+/// The continuous model's output y(t_k), t_k = k h, from x(0) = 0, for the input u(t) linear
+/// between the samples u_k = u(t_k) (first-order hold): exact, by the matrix exponential of the
+/// augmented system [[A, B, 0], [0, 0, I], [0, 0, 0]] h (Franklin, Powell, Workman, Digital Control
+/// of Dynamic Systems, 3rd ed., Sec. 6.3.2, "triangle-hold equivalent").
 std::vector<Eigen::VectorXd> simulate_first_order_hold(const StateSpace& m, double h,
                                                        const std::vector<Eigen::VectorXd>& u);
 
@@ -61,6 +61,7 @@ struct Realisation {
   /// max_j |S(C A^{j-1} B - H_j)|_F / max_j |S H_j|_F over the given H_j, j >= 1, S the scaling
   double markov_error = 0.0;
 };
-Realisation eigensystem_realisation(const std::vector<Eigen::MatrixXd>& markov, double tolerance = 1e-10);
+Realisation eigensystem_realisation(const std::vector<Eigen::MatrixXd>& markov,
+                                    double tolerance = 1e-10);
 
 }  // namespace rollnoise::linalg

@@ -58,16 +58,16 @@ Eigen::VectorXd least_squares(Eigen::MatrixXd A, const Eigen::VectorXd& b) {
 
 // The data: scaled entries H_s,e(s_k) (only entries that are not identically zero) and weights.
 struct Data {
-  Eigen::VectorXcd s;                 // s'_k = 2 pi i f_k / w_ref
-  Eigen::VectorXd weight;             // 1 / |H_s(f_k)|_F
-  std::vector<Eigen::VectorXcd> entry;  // weighted: weight_k H_s,e(s_k)
+  Eigen::VectorXcd s;                      // s'_k = 2 pi i f_k / w_ref
+  Eigen::VectorXd weight;                  // 1 / |H_s(f_k)|_F
+  std::vector<Eigen::VectorXcd> entry;     // weighted: weight_k H_s,e(s_k)
   std::vector<std::pair<int, int>> index;  // (i, j) of each entry
 };
 
 // One pole relocation with relaxation (Gustavsen 2006, Eq. 8) in the fast QR form (Deschrijver et
 // al. 2008): per entry e, the equations w (phi c_e + d_e) - w H_e (phi c~ + d~) = 0; a QR of each
-// entry's block leaves R22 [c~; d~] = 0 for sigma's unknowns; the stacked R22 with the normalisation
-// Re sum_k (phi_k c~ + d~) = K give c~, d~, and the new poles are the zeros of sigma,
+// entry's block leaves R22 [c~; d~] = 0 for sigma's unknowns; the stacked R22 with the
+// normalisation Re sum_k (phi_k c~ + d~) = K give c~, d~, and the new poles are the zeros of sigma,
 // eig(Lambda - b c~' / d~) (Gustavsen-Semlyen 1999, Eq. A.8). Unstable poles are flipped.
 std::vector<cd> relocate(const Data& d, const std::vector<cd>& poles, int& flipped) {
   const Eigen::MatrixXcd phi = basis(d.s, poles);
@@ -95,7 +95,8 @@ std::vector<cd> relocate(const Data& d, const std::vector<cd>& poles, int& flipp
   Eigen::VectorXd x = least_squares(big, rhs);
   Eigen::VectorXd ct = x.head(N);
   double dt = x(N);
-  if (!(std::abs(dt) > 1e-8)) {  // d~ ~ 0: the relaxed solution is degenerate, fix d~ = 1 (1999 form)
+  if (!(std::abs(dt) >
+        1e-8)) {  // d~ ~ 0: the relaxed solution is degenerate, fix d~ = 1 (1999 form)
     const Eigen::MatrixXd A = big.topRows(E * (N + 1));
     ct = least_squares(A.leftCols(N), -A.col(N));
     dt = 1.0;
@@ -115,19 +116,21 @@ std::vector<cd> relocate(const Data& d, const std::vector<cd>& poles, int& flipp
       col += 2;
     }
   }
-  const Eigen::VectorXcd z = Eigen::EigenSolver<Eigen::MatrixXd>(Lambda - b * ct.transpose() / dt, false).eigenvalues();
+  const Eigen::VectorXcd z =
+      Eigen::EigenSolver<Eigen::MatrixXd>(Lambda - b * ct.transpose() / dt, false).eigenvalues();
   std::vector<cd> out;
   for (Eigen::Index i = 0; i < z.size(); ++i) {
     cd a = z(i);
-    if (a.imag() < 0.0) continue;  // the pair's other half
-    if (a.real() > 0.0) a = cd(-a.real(), a.imag()), ++flipped;  // flip into the left half-plane
+    if (a.imag() < 0.0) continue;                                 // the pair's other half
+    if (a.real() > 0.0) a = cd(-a.real(), a.imag()), ++flipped;   // flip into the left half-plane
     if (a.real() == 0.0) a = cd(-1e-12 * std::abs(a), a.imag());  // strictly stable
     out.push_back(a);
   }
   // EigenSolver returns exact conjugate pairs (real Schur form); guard against a lost partner
   if (pole_count(out) != N) {
     out.clear();
-    for (Eigen::Index i = 0; i < z.size(); ++i) out.push_back(cd(-std::abs(z(i).real()) - 1e-12 * std::abs(z(i)), 0.0));
+    for (Eigen::Index i = 0; i < z.size(); ++i)
+      out.push_back(cd(-std::abs(z(i).real()) - 1e-12 * std::abs(z(i)), 0.0));
   }
   std::sort(out.begin(), out.end(), [](cd a, cd b) { return std::abs(a) < std::abs(b); });
   return out;
@@ -156,7 +159,8 @@ double weighted_error(const Data& d, const Eigen::MatrixXcd& phi, const Eigen::M
   const Eigen::Index N = phi.cols();
   for (size_t e = 0; e < d.entry.size(); ++e) {
     const Eigen::VectorXcd fit =
-        d.weight.asDiagonal() * (phi * coef.col(e).head(N).cast<cd>() + Eigen::VectorXcd::Constant(d.s.size(), coef(N, e)));
+        d.weight.asDiagonal() *
+        (phi * coef.col(e).head(N).cast<cd>() + Eigen::VectorXcd::Constant(d.s.size(), coef(N, e)));
     err2 += (fit - d.entry[e]).cwiseAbs2();
   }
   return std::sqrt(err2.maxCoeff());  // the weights make |H_s(f_k)|_F = 1
@@ -188,7 +192,8 @@ StateSpace realise(const std::vector<cd>& poles, const std::vector<Eigen::Matrix
   for (size_t n = 0; n < poles.size(); ++n) {
     const cd a = poles[n];
     if (a.imag() == 0.0) {  // a real residue: the real SVD
-      Eigen::JacobiSVD<Eigen::MatrixXd> svd(residues[n].real(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(residues[n].real(),
+                                            Eigen::ComputeFullU | Eigen::ComputeFullV);
       const Eigen::VectorXd sv = svd.singularValues();
       int r = 0;
       while (r < sv.size() && sv(r) > 1e-13 * sv(0)) ++r;
@@ -196,12 +201,14 @@ StateSpace realise(const std::vector<cd>& poles, const std::vector<Eigen::Matrix
       Bb.push_back(sv.head(r).cwiseSqrt().asDiagonal() * svd.matrixV().leftCols(r).transpose());
       Cb.push_back(svd.matrixU().leftCols(r) * sv.head(r).cwiseSqrt().asDiagonal());
     } else {
-      Eigen::JacobiSVD<Eigen::MatrixXcd> svd(residues[n], Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Eigen::JacobiSVD<Eigen::MatrixXcd> svd(residues[n],
+                                             Eigen::ComputeFullU | Eigen::ComputeFullV);
       const Eigen::VectorXd sv = svd.singularValues();
       int r = 0;
       while (r < sv.size() && sv(r) > 1e-13 * sv(0)) ++r;
       const Eigen::MatrixXcd c = svd.matrixU().leftCols(r) * sv.head(r).cwiseSqrt().asDiagonal();
-      const Eigen::MatrixXcd b = sv.head(r).cwiseSqrt().asDiagonal() * svd.matrixV().leftCols(r).adjoint();
+      const Eigen::MatrixXcd b =
+          sv.head(r).cwiseSqrt().asDiagonal() * svd.matrixV().leftCols(r).adjoint();
       for (int l = 0; l < r; ++l) {
         Eigen::Matrix2d A2;
         A2 << a.real(), -a.imag(), a.imag(), a.real();
@@ -231,12 +238,15 @@ StateSpace realise(const std::vector<cd>& poles, const std::vector<Eigen::Matrix
 
 }  // namespace
 
-double relative_response_error(const std::vector<Eigen::MatrixXcd>& H, const std::vector<Eigen::MatrixXcd>& Hm,
-                               const IoScaling& s, size_t* at) {
+double relative_response_error(const std::vector<Eigen::MatrixXcd>& H,
+                               const std::vector<Eigen::MatrixXcd>& Hm, const IoScaling& s,
+                               size_t* at) {
   double worst = -1.0;
   for (size_t k = 0; k < H.size(); ++k) {
-    const Eigen::MatrixXcd Hs = s.output.cwiseInverse().asDiagonal() * H[k] * s.input.cwiseInverse().asDiagonal();
-    const Eigen::MatrixXcd dH = s.output.cwiseInverse().asDiagonal() * (Hm[k] - H[k]) * s.input.cwiseInverse().asDiagonal();
+    const Eigen::MatrixXcd Hs =
+        s.output.cwiseInverse().asDiagonal() * H[k] * s.input.cwiseInverse().asDiagonal();
+    const Eigen::MatrixXcd dH =
+        s.output.cwiseInverse().asDiagonal() * (Hm[k] - H[k]) * s.input.cwiseInverse().asDiagonal();
     const double ref = Hs.norm();
     const double e = ref > 0 ? dH.norm() / ref : dH.norm();
     if (e > worst) {
@@ -247,27 +257,32 @@ double relative_response_error(const std::vector<Eigen::MatrixXcd>& H, const std
   return std::max(worst, 0.0);
 }
 
-RationalFit fit_rational(const std::vector<double>& frequency, const std::vector<Eigen::MatrixXcd>& H,
-                         const RationalFitOptions& o) {
+RationalFit fit_rational(const std::vector<double>& frequency,
+                         const std::vector<Eigen::MatrixXcd>& H, const RationalFitOptions& o) {
   const size_t K = frequency.size();
-  if (K < 2 || H.size() != K) throw std::invalid_argument("fit_rational: need two or more samples, one per frequency");
+  if (K < 2 || H.size() != K)
+    throw std::invalid_argument("fit_rational: need two or more samples, one per frequency");
   const Eigen::Index p = H[0].rows(), m = H[0].cols();
   for (const auto& h : H)
-    if (h.rows() != p || h.cols() != m) throw std::invalid_argument("fit_rational: samples differ in size");
+    if (h.rows() != p || h.cols() != m)
+      throw std::invalid_argument("fit_rational: samples differ in size");
   double f_max = 0.0, f_lo = std::numeric_limits<double>::infinity();
   for (double f : frequency) {
-    if (!(f >= 0.0) || !std::isfinite(f)) throw std::invalid_argument("fit_rational: frequencies must be >= 0");
+    if (!(f >= 0.0) || !std::isfinite(f))
+      throw std::invalid_argument("fit_rational: frequencies must be >= 0");
     f_max = std::max(f_max, f);
     if (f > 0) f_lo = std::min(f_lo, f);
   }
   if (!(f_max > 0)) throw std::invalid_argument("fit_rational: no positive frequency");
   const double w_ref = 2.0 * M_PI * f_max;
-  const double lo = std::max(f_lo / f_max, 1e-4);  // starting poles from the lowest sample (relative)
+  const double lo =
+      std::max(f_lo / f_max, 1e-4);  // starting poles from the lowest sample (relative)
 
   RationalFit best;
   Eigen::MatrixXd peak = Eigen::MatrixXd::Zero(p, m);
   for (const auto& h : H) peak = peak.cwiseMax(h.cwiseAbs());
-  best.scaling = o.scaling.output.size() == p && o.scaling.input.size() == m ? o.scaling : equilibrate(peak);
+  best.scaling =
+      o.scaling.output.size() == p && o.scaling.input.size() == m ? o.scaling : equilibrate(peak);
   const IoScaling& sc = best.scaling;
 
   Data d;
@@ -306,14 +321,16 @@ RationalFit fit_rational(const std::vector<double>& frequency, const std::vector
     for (int it = 0; it < o.iterations; ++it) {
       const std::vector<cd> next = relocate(d, poles, flipped);
       double moved = 0.0;
-      for (size_t i = 0; i < next.size() && i < poles.size(); ++i) moved = std::max(moved, std::abs(next[i] - poles[i]) / std::abs(next[i]));
+      for (size_t i = 0; i < next.size() && i < poles.size(); ++i)
+        moved = std::max(moved, std::abs(next[i] - poles[i]) / std::abs(next[i]));
       poles = next;
       if (it >= 2 && moved < 1e-10) break;  // converged
     }
     const Eigen::MatrixXcd phi = basis(d.s, poles);
     const Eigen::MatrixXd coef = fit_residues(d, phi);
     const double err = weighted_error(d, phi, coef);
-    if (err < best_err) best_err = err, best_poles = poles, best_coef = coef, best_flipped = flipped;
+    if (err < best_err)
+      best_err = err, best_poles = poles, best_coef = coef, best_flipped = flipped;
     if (best_err <= o.target) break;
   }
 
@@ -353,7 +370,9 @@ RationalFit fit_rational(const std::vector<double>& frequency, const std::vector
   for (size_t k = 0; k < K; ++k)
     for (Eigen::Index i = 0; i < p; ++i)
       for (Eigen::Index j = 0; j < m; ++j)
-        if (peak(i, j) > 0) best.element_error = std::max(best.element_error, std::abs(Hm[k](i, j) - H[k](i, j)) / peak(i, j));
+        if (peak(i, j) > 0)
+          best.element_error =
+              std::max(best.element_error, std::abs(Hm[k](i, j) - H[k](i, j)) / peak(i, j));
   best.reached_target = best.error <= o.target;
   return best;
 }

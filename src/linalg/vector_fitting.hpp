@@ -31,8 +31,8 @@
 //
 // Order: adaptive. Starting from one complex pair, the number of poles grows by `pole_step` (fresh
 // starting poles: complex pairs with imaginary parts log-spaced over the band and real parts 1/100
-// of them, Gustavsen-Semlyen Sec. IV) until the error is at most `target` or `max_poles` is reached;
-// the fit with the smallest error is returned (reached_target tells).
+// of them, Gustavsen-Semlyen Sec. IV) until the error is at most `target` or `max_poles` is
+// reached; the fit with the smallest error is returned (reached_target tells).
 #pragma once
 
 #include <Eigen/Dense>
@@ -52,25 +52,27 @@ struct RationalFitOptions {
 };
 
 struct RationalFit {
-  StateSpace model;                          ///< real realisation (minimal per pole, see the .cpp)
-  std::vector<std::complex<double>> poles;   ///< all poles (pairs both listed), rad/s
-  double error = 0.0;                        ///< max relative error over the samples (see above)
-  double element_error = 0.0;                ///< max entry error relative to the entry's peak
-  double worst_frequency = 0.0;              ///< Hz, where `error` is attained
-  int flipped = 0;                           ///< unstable poles flipped during the fit
+  StateSpace model;                         ///< real realisation (minimal per pole, see the .cpp)
+  std::vector<std::complex<double>> poles;  ///< all poles (pairs both listed), rad/s
+  double error = 0.0;                       ///< max relative error over the samples (see above)
+  double element_error = 0.0;               ///< max entry error relative to the entry's peak
+  double worst_frequency = 0.0;             ///< Hz, where `error` is attained
+  int flipped = 0;                          ///< unstable poles flipped during the fit
   bool reached_target = false;
-  IoScaling scaling;                         ///< the scaling the error is measured in
+  IoScaling scaling;  ///< the scaling the error is measured in
 };
 
 /// Fit `H` (K samples of p x m, at `frequency` in Hz, f >= 0; the response of a real system:
 /// H(-i w) = conj H(i w)) by a stable common-pole rational model. std::invalid_argument when the
 /// sizes disagree or fewer than two samples are given.
-RationalFit fit_rational(const std::vector<double>& frequency, const std::vector<Eigen::MatrixXcd>& H,
+RationalFit fit_rational(const std::vector<double>& frequency,
+                         const std::vector<Eigen::MatrixXcd>& H,
                          const RationalFitOptions& options = {});
 
 /// The error measure of fit_rational for any model response `Hm` against `H` in scaling `s`
 /// (max over the samples of the scaled relative Frobenius error); `at` gets the sample index.
-double relative_response_error(const std::vector<Eigen::MatrixXcd>& H, const std::vector<Eigen::MatrixXcd>& Hm,
-                               const IoScaling& s, size_t* at = nullptr);
+double relative_response_error(const std::vector<Eigen::MatrixXcd>& H,
+                               const std::vector<Eigen::MatrixXcd>& Hm, const IoScaling& s,
+                               size_t* at = nullptr);
 
 }  // namespace rollnoise::linalg

@@ -23,22 +23,26 @@ std::vector<Eigen::MatrixXd> contact_markov_parameters(const nss::LinearContactM
   const auto& hf = model.markov_parameters();
   const auto& hg = model.load_markov_parameters();
   if (hf.empty())
-    throw NumericalError("statespace: the fast sweep has no Markov parameters (it fell back to the Hessenberg "
-                         "form: the impulse response did not decay within 60 contact lengths)");
+    throw NumericalError(
+        "statespace: the fast sweep has no Markov parameters (it fell back to the Hessenberg "
+        "form: the impulse response did not decay within 60 contact lengths)");
   std::vector<Eigen::MatrixXd> H(std::max(hf.size(), hg.size()), Eigen::MatrixXd::Zero(3, 4));
   for (size_t j = 0; j < hf.size(); ++j) H[j].leftCols(3) = hf[j];  // -f = sum_j h_j z^j
   for (size_t j = 0; j < hg.size(); ++j) H[j].col(3) = hg[j];
   return H;
 }
 
-StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq, const StateSpaceOptions& o,
-                                const std::string& frequency_key) {
+StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq,
+                                const StateSpaceOptions& o, const std::string& frequency_key) {
   using Clock = std::chrono::steady_clock;
-  auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  auto seconds = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
   StateSpaceResult r;
   r.band_min = *std::min_element(freq.begin(), freq.end());
   r.band_max = *std::max_element(freq.begin(), freq.end());
-  if (!(r.band_max > 0)) throw InputError(frequency_key, "the state-space fit needs a positive frequency");
+  if (!(r.band_max > 0))
+    throw InputError(frequency_key, "the state-space fit needs a positive frequency");
   r.frequency = freq;
   std::sort(r.frequency.begin(), r.frequency.end());
   r.frequency.erase(std::unique(r.frequency.begin(), r.frequency.end()), r.frequency.end());

@@ -34,8 +34,9 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
   const std::string c = case_copy();
   const auto out = temp_dir() / "ss.h5";
   const auto prefix = (temp_dir() / "ss").string();
-  const auto r = run("statespace " + c + " --set frequency.count=60 --set frequency.f_max=5000 -q -o " + out.string() +
-                     " --csv " + prefix);
+  const auto r =
+      run("statespace " + c + " --set frequency.count=60 --set frequency.f_max=5000 -q -o " +
+          out.string() + " --csv " + prefix);
   ASSERT_EQ(r.status, 0) << r.output;
   rollnoise::io::Hdf5Reader h(out.string());
   std::vector<std::size_t> dA, dB, dC, dD, dF;
@@ -53,8 +54,9 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
   const auto freq = *h.numbers("/creep/frequency", &dF);
   EXPECT_EQ(dF[0], 61u);  // 0 Hz and the case's 60
   EXPECT_EQ(freq[0], 0.0);
-  for (const char* d : {"/statespace/discrete/A", "/statespace/discrete/B", "/statespace/discrete/C",
-                        "/statespace/discrete/D", "/statespace/discrete/dt"})
+  for (const char* d :
+       {"/statespace/discrete/A", "/statespace/discrete/B", "/statespace/discrete/C",
+        "/statespace/discrete/D", "/statespace/discrete/dt"})
     EXPECT_TRUE(h.numbers(d)) << d;
   // one CSV per matrix, rows as lines
   for (const char* m : {"A", "B", "C", "D", "Ad", "Bd", "Cd", "Dd"}) {
@@ -73,8 +75,9 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
 TEST(StatespaceCommand, BadBandsAndTolerancesAreRefusedNamingTheKeyAndLeaveNoFile) {
   const std::string c = case_copy();
   const std::vector<std::pair<std::string, std::string>> faults = {
-      {"--set frequency.f_max=60000", "frequency.f_max"},                           // above the Nyquist limit
-      {"--set frequency.f_min=6000 --set frequency.f_max=5000", "frequency.f_max"},  // an empty band
+      {"--set frequency.f_max=60000", "frequency.f_max"},  // above the Nyquist limit
+      {"--set frequency.f_min=6000 --set frequency.f_max=5000",
+       "frequency.f_max"},  // an empty band
       {"--set 'frequency.list=[100, 60000]'", "frequency.list"},
       {"--set statespace.tolerance=1.5", "statespace.tolerance"},
   };

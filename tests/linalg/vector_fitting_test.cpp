@@ -1,5 +1,7 @@
 // linalg::fit_rational (vector fitting with relaxation and pole flipping), the state-space helpers
 // and the Eigensystem Realization Algorithm on systems whose answers are known.
+#include "linalg/vector_fitting.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <vector>
 
 #include "linalg/state_space.hpp"
-#include "linalg/vector_fitting.hpp"
 
 namespace {
 
@@ -46,7 +47,8 @@ PoleResidue random_system(std::mt19937_64& rng, const std::vector<cd>& poles, in
   for (const cd& a : poles) {
     Eigen::MatrixXcd R(p, m);
     for (int i = 0; i < p; ++i)
-      for (int j = 0; j < m; ++j) R(i, j) = std::abs(a) * (a.imag() == 0.0 ? cd(g(rng), 0.0) : cd(g(rng), g(rng)));
+      for (int j = 0; j < m; ++j)
+        R(i, j) = std::abs(a) * (a.imag() == 0.0 ? cd(g(rng), 0.0) : cd(g(rng), g(rng)));
     sys.residues.push_back(R);
   }
   return sys;
@@ -55,7 +57,8 @@ PoleResidue random_system(std::mt19937_64& rng, const std::vector<cd>& poles, in
 TEST(VectorFitting, AKnownStableRationalSystemIsRecoveredToRoundOff) {
   std::mt19937_64 rng(12);
   const double w = 2.0 * M_PI;
-  const std::vector<cd> poles = {{-w * 40.0, 0.0}, {-w * 30.0, w * 300.0}, {-w * 400.0, w * 2000.0}, {-w * 900.0, 0.0}};
+  const std::vector<cd> poles = {
+      {-w * 40.0, 0.0}, {-w * 30.0, w * 300.0}, {-w * 400.0, w * 2000.0}, {-w * 900.0, 0.0}};
   const PoleResidue sys = random_system(rng, poles, 3, 4);
   const std::vector<double> f = log_axis(1.0, 1e4, 300);
   std::vector<Eigen::MatrixXcd> H;
@@ -105,7 +108,8 @@ TEST(VectorFitting, AnUnstablePoleIsFlippedIntoTheLeftHalfPlane) {
     const Eigen::VectorXcd ev = fit.model.A.eigenvalues();
     EXPECT_LT(ev(i).real(), 0.0);
   }
-  // a stable model cannot have the unstable response's phase: the error says so, and it is the true one
+  // a stable model cannot have the unstable response's phase: the error says so, and it is the true
+  // one
   std::vector<Eigen::MatrixXcd> Hm;
   for (double fk : f) Hm.push_back(fit.model.frequency_response(fk));
   EXPECT_NEAR(fit.error, relative_response_error(H, Hm, fit.scaling), 1e-14);
@@ -148,7 +152,8 @@ TEST(StateSpace, TheRealisationOfAKnownDiscreteImpulseResponseIsMinimalAndExact)
   // a stable discrete system of order 7 (3 outputs, 4 inputs) and its Markov parameters
   StateSpace sys;
   Eigen::MatrixXd Q = Eigen::MatrixXd::NullaryExpr(7, 7, [&] { return g(rng); });
-  const Eigen::VectorXd eig = (Eigen::VectorXd(7) << 0.9, -0.7, 0.5, 0.3, -0.2, 0.8, 0.1).finished();
+  const Eigen::VectorXd eig =
+      (Eigen::VectorXd(7) << 0.9, -0.7, 0.5, 0.3, -0.2, 0.8, 0.1).finished();
   sys.A = Q * eig.asDiagonal() * Q.inverse();
   sys.B = Eigen::MatrixXd::NullaryExpr(7, 4, [&] { return g(rng); });
   sys.C = Eigen::MatrixXd::NullaryExpr(3, 7, [&] { return g(rng); });
@@ -164,9 +169,11 @@ TEST(StateSpace, TheRealisationOfAKnownDiscreteImpulseResponseIsMinimalAndExact)
   EXPECT_EQ(r.model.order(), 7);
   EXPECT_LT(r.markov_error, 1e-10);
   for (double fdt : {0.0, 0.01, 0.2, 0.5}) {
-    const Eigen::MatrixXcd a = r.model.discrete_frequency_response(fdt, 1.0), b = sys.discrete_frequency_response(fdt, 1.0);
+    const Eigen::MatrixXcd a = r.model.discrete_frequency_response(fdt, 1.0),
+                           b = sys.discrete_frequency_response(fdt, 1.0);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 4; ++j) EXPECT_LT(std::abs(a(i, j) - b(i, j)), 1e-9 * so(i) * si(j)) << fdt << " " << i << j;
+      for (int j = 0; j < 4; ++j)
+        EXPECT_LT(std::abs(a(i, j) - b(i, j)), 1e-9 * so(i) * si(j)) << fdt << " " << i << j;
   }
 }
 
