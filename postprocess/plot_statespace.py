@@ -30,15 +30,6 @@ def response(A, B, C, D, s):
     return np.array([D + C @ np.linalg.solve(sk * np.eye(n) - A, B) for sk in s])
 
 
-def parse_entries(text):
-    entries = []
-    for e in text.split(","):
-        e = e.strip()
-        if len(e) != 2 or e[0] not in "123" or e[1] not in "1234":
-            rh.fail(f"--entries: '{e}' is not an entry ij with i in 1..3, j in 1..4 (e.g. 11,22,14)")
-        entries.append((int(e[0]) - 1, int(e[1]) - 1))
-    return entries
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -46,7 +37,7 @@ def main():
     ap.add_argument("--entries", default="11,22,14,24", help="entries ij of [-f | g] to draw")
     ap.add_argument("-o", "--output", default=None, help="PNG file (default FILE_statespace.png)")
     args = ap.parse_args()
-    entries = parse_entries(args.entries)
+    entries = rh.matrix_entries(args.entries, 3, 4)
     out = args.output or args.file.rsplit(".", 1)[0] + "_statespace.png"
     with rh.open_output(args.file, "/statespace/A", "/statespace/discrete/A", "/creep/f",
                         command="rollnoise statespace") as f:

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/case_reader.hpp"
+#include "io/contact_case.hpp"
 #include "linalg/state_space.hpp"
 
 namespace {
@@ -19,19 +21,17 @@ struct Fixture {
   std::vector<double> band;
 };
 
-// 20 x 15 elements over the paper's ellipse, combined creepage with spin (adhesion and slip, so g
-// is not 0); the band 10 Hz .. Nyquist/2 on a log axis of 120 points.
+// The paper's Hertzian case on 20 x 15 elements at 25 m/s and 80 kN, combined creepage with spin
+// (adhesion and slip, so g is not 0); the band 10 Hz .. Nyquist/2 on a log axis of 120 points.
 const Fixture& fixture() {
   static const Fixture fx = [] {
-    pipeline::ContactCase c;
-    c.material = {210e9, 0.28};
-    c.mu = 0.3;
-    c.speed = 25.0;
-    c.normal_force = 80e3;
-    c.a = 7.18e-3, c.b = 5.29e-3;
-    c.grid = contact::Grid::around_ellipse(20, 15, c.a, c.b, 1.2);
-    c.creepage = {0.0012, -0.0008, -0.1};
-    c.placed = true;
+    const io::CaseReader reader = io::CaseReader::from_file(
+        std::string(ROLLNOISE_SOURCE_DIR) + "/cases/hertz_paper.toml",
+        {"grid.nx=20", "grid.ny=15", "rolling.speed=25.0", "contact.normal_force=80e3",
+         "creepage.mean=[0.0012, -0.0008, -0.1]"});
+    io::InputProblems problems;
+    pipeline::ContactCase c = io::read_contact_case(reader, problems);
+    problems.throw_if_any();
     const double fn = pipeline::nyquist_frequency(c);
     Fixture f;
     for (int i = 0; i < 120; ++i) f.band.push_back(10.0 * std::pow(0.5 * fn / 10.0, i / 119.0));
