@@ -20,15 +20,6 @@ import numpy as np  # noqa: E402
 import rollnoise_h5 as rh  # noqa: E402
 
 
-def parse_entries(text):
-    entries = []
-    for e in text.split(","):
-        e = e.strip()
-        if len(e) != 2 or e[0] not in "123" or e[1] not in "123":
-            rh.fail(f"--entries: '{e}' is not an entry jk with j, k in 1..3 (e.g. 11,22,23)")
-        entries.append((int(e[0]) - 1, int(e[1]) - 1))
-    return entries
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -37,7 +28,7 @@ def main():
     ap.add_argument("--kalker", type=float, default=None, help="Kalker's C11 for the reference line")
     ap.add_argument("-o", "--output", default="creep.png")
     args = ap.parse_args()
-    entries = parse_entries(args.entries)
+    entries = rh.matrix_entries(args.entries)
     curves = []  # (label, unit, frequency, values)
     case = None
     for name in args.files:

@@ -161,6 +161,18 @@ def creep_entry_units(unit_text):
     return out
 
 
+def matrix_entries(text, rows=3, cols=3):
+    """`--entries` of a matrix plot: "11,22,23" -> [(0, 0), (1, 1), (1, 2)] (1-based row and
+    column digits within rows x cols); a wrong entry is an input error."""
+    entries = []
+    for e in text.split(","):
+        e = e.strip()
+        if len(e) != 2 or not ("1" <= e[0] <= str(rows)) or not ("1" <= e[1] <= str(cols)):
+            fail(f"--entries: '{e}' is not an entry ij with i in 1..{rows}, j in 1..{cols} (e.g. 11,22)")
+        entries.append((int(e[0]) - 1, int(e[1]) - 1))
+    return entries
+
+
 def pretty(u):
     """A unit for an axis label: "N m^2" -> "N m²"."""
     return u.replace("^2", "\u00b2").replace("^3", "\u00b3")

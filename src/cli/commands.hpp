@@ -37,6 +37,8 @@ int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);
 int run_receptance(const CommonOptions& o);
+/// rollnoise statespace (statespace_command.cpp); `csv_prefix` may be empty.
+int run_statespace(const CommonOptions& o, const std::string& csv_prefix);
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv);
 
 }  // namespace rollnoise::cli

@@ -7,6 +7,7 @@
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
+//   rollnoise statespace CASE.toml [-o OUT.h5] [--set key=value]... [--csv PREFIX]
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
 //   rollnoise collect   STUDY.toml
@@ -80,6 +81,10 @@ int main(int argc, char** argv) {
   bench->add_option("--nx", bench_grids, "elements in x of the grids, coarse to fine (the last is the reference)")
       ->delimiter(',');
   bench->add_option("--csv", bench_csv, "write the table as CSV (draw it with postprocess/plot_bench.py)");
+  std::string statespace_csv;
+  auto* statespace = app.add_subcommand("statespace", "the contact as a state-space model (continuous fit, discrete ERA)");
+  add_common(statespace);
+  statespace->add_option("--csv", statespace_csv, "also write each matrix as PREFIX_A.csv, ..., PREFIX_Dd.csv");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
   cli::StudyOptions study_options;
   auto* study = app.add_subcommand("study", "run a parameter study of noise cases (docs/study.md)");
@@ -123,6 +128,7 @@ int main(int argc, char** argv) {
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
+    if (statespace->parsed()) return cli::run_statespace(common, statespace_csv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
     return 2;

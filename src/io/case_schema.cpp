@@ -102,6 +102,12 @@ const std::vector<KeySpec>& case_schema() {
        {"linear", "log", "third-octave"}},
       {"frequency.list", T::RealList, "", "Hz", "explicit list of frequencies (overrides the rest)", {},
        0, "optional: without it f_min, f_max, count and spacing give the frequencies"},
+      // state-space export (statespace; docs/statespace.md)
+      {"statespace.tolerance", T::PositiveReal, "1e-5", "-",
+       "continuous model: the fit's order grows until its max relative error over the fitted frequencies is at most this"},
+      {"statespace.max_poles", T::Integer, "60", "-", "continuous model: most poles of the fit", {}, 2},
+      {"statespace.hankel_tolerance", T::PositiveReal, "1e-10", "-",
+       "discrete model: Hankel singular values kept, relative to the largest"},
       // curving (noise)
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
       {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},

@@ -73,6 +73,7 @@ def main():
     rollnoise(binary, work, "transient", hertz, "-o", "transient.h5", *COARSE, "--set", "transient.duration=0.002",
               "--set", "transient.snapshots=[0.001, 0.002]", "--set", "excitation.amplitude=[5e-5, 0, 0]")
     rollnoise(binary, work, "creep", hertz, "-o", "creep.h5", *COARSE, "--set", "frequency.count=20")
+    rollnoise(binary, work, "statespace", hertz, "-o", "statespace.h5", *COARSE, "--set", "frequency.count=30")
     rollnoise(binary, work, "validate", os.path.join(CASES, "paper_s32_combined.toml"), "-o", "validate.h5",
               *COARSE, "--set", "transient.duration=0.003", "--set", "transient.analysis_start=0.001")
     rollnoise(binary, work, "response", os.path.join(CASES, "paper_s32_combined.toml"), "-o", "response.h5",
@@ -94,6 +95,7 @@ def main():
         ("plot_transient.py", [j("transient.h5"), "-o", j("forces.png")], ["forces.png"]),
         ("plot_transient.py", [j("response.h5"), "-o", j("response.png")], ["response.png"]),
         ("plot_creep.py", [j("creep.h5"), "--entries", "11,22,23,33", "-o", j("creep.png")], ["creep.png"]),
+        ("plot_statespace.py", [j("statespace.h5"), "-o", j("statespace.png")], ["statespace.png"]),
         ("plot_validate.py", [j("validate.h5"), "--prefix", j("val")], ["val_time.png", "val_spectra.png"]),
         ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png"]),
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
@@ -109,7 +111,7 @@ def main():
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
-                                "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py"]
+                                "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
         status, err = plot(script, bad, *EXTRA_ARGS.get(script, []))
