@@ -16,7 +16,7 @@
 // strictly decreasing, so the slip speed is unique, iff every h_k increases:
 //   1 + d_k g'(l) > 0 for all l,  i.e.  d_max mu_s pn (1 - A) B < 1          (uniqueness)
 // (the steepest slope is at l = 0). Beyond it phi can have several roots: the element law is
-// non-unique (a negative slip compliance larger than the elastic one; docs/squeal.md, Sec. 3).
+// non-unique (a negative slip compliance larger than the elastic one; docs/falling_friction.md, Sec. 3).
 // The root is found by Newton safeguarded by bisection on [0, |b|] (phi(|b|) < 0 as h_k > l);
 // phi need not be convex here. Differentiating u_k h_k = b_k, |u| = 1 (u = s/l):
 //   dl = u'G db / (u'G H' u),  dp = -g(l) G db + (g(l) G H' u - g'(l) u) dl,

@@ -278,7 +278,7 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     }
     if (falling_.active() && !(trial.R.norm() <= (1.0 - 1e-4 * t) * r2)) {
       // No descent along the Newton direction: with falling friction the solution need not be
-      // unique or exist (docs/squeal.md, Sec. 3); report instead of iterating on.
+      // unique or exist (docs/falling_friction.md, Sec. 3); report instead of iterating on.
       std::ostringstream msg;
       msg << solver << " (semismooth Newton): the line search stalled at relative residual "
           << relative(r) << " after " << it

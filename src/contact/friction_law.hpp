@@ -1,4 +1,4 @@
-// Slip-velocity-dependent (falling) friction, per contact element (docs/squeal.md, Sec. 1):
+// Slip-velocity-dependent (falling) friction, per contact element (docs/falling_friction.md, Sec. 1):
 //
 //   mu(v) = mu_s [ (1 - A) e^{-B v} + A ],   v = |s| the local slip speed (m/s),
 //

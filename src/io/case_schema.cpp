@@ -24,7 +24,7 @@ const std::vector<KeySpec>& case_schema() {
        "Coulomb friction coefficient; with friction.law = \"falling\" the static one, mu_s = mu(0)"},
       {"friction.law", T::String, "\"constant\"", "-",
        "\"constant\": mu; \"falling\": mu(v) = mu [(1 - A) exp(-B v) + A] with v the local slip "
-       "speed (Polach 2005; docs/squeal.md)",
+       "speed (Polach 2005; docs/falling_friction.md)",
        {"constant", "falling"}},
       {"friction.kinetic_ratio", T::PositiveReal, "", "-",
        "falling: A = mu(inf)/mu, in (0, 1]", {}, 0, "required with friction.law = \"falling\""},

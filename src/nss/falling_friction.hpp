@@ -1,5 +1,5 @@
 // Falling friction in full slip: the point-contact (rigid) limit of the creep coefficients and the
-// classical single-mode squeal criterion (docs/squeal.md, Sec. 4).
+// classical single-mode squeal criterion (docs/falling_friction.md, Sec. 4).
 //
 // Full slip, rigid bodies: F = -mu(v) N s^, v = V |xi| the slip speed, s^ = xi/|xi| (xi = (xi_x,
 // xi_y), no spin). With the paper's F~ = -f xi~ (Eqs. 28-30), f = -dF/dxi:
@@ -7,7 +7,7 @@
 // along the slip direction f_par = N V mu'(v) (< 0 for falling friction: negative damping),
 // across it N mu(v)/|xi| (the rotation of the force, paper Eq. 9). The NSS model's f tends to (S1)
 // at low frequency in full slip up to the elastic slip of the patch (second order at w = 0, see
-// docs/squeal.md; tests/nss/falling_friction_test.cpp measures it).
+// docs/falling_friction.md; tests/nss/falling_friction_test.cpp measures it).
 //
 // One wheel mode (modal mass m, natural frequency w_n, damping ratio zeta, mode shape psi at the
 // contact in the slip direction) on a rigid rail: the wheel velocity psi q' adds psi q'/V to the

@@ -50,7 +50,7 @@
 // so the block of 3 creepage vectors becomes a block of 4 (one more column per Cholesky pass of
 // the factor, which is streamed once for all of them).
 //
-// Falling friction (contact/friction_law.hpp, docs/squeal.md Sec. 2). With mu = mu(|s|) the slip
+// Falling friction (contact/friction_law.hpp, docs/falling_friction.md Sec. 2). With mu = mu(|s|) the slip
 // element law p = -mu(|s|) pn s/|s| linearises to (sign convention: P~ = K_e S~, K_e negative
 // semi-definite for constant friction)
 //   K_e = -(mu pn/|s_bar|) t t' - mu'(|s_bar|) pn s^ s^',   s^ = s_bar/|s_bar|,  mu = mu(|s_bar|),

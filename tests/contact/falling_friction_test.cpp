@@ -159,7 +159,7 @@ TEST(FallingFriction, SteadyStateIsAFixedPointOfTheTransientSolver) {
   // Rolling on at the constant mean creepage from the steady solution with falling friction must
   // stay there: the two solvers share the element law (paper Eq. 2 with p = p0 is Eq. 3).
   // A tenth of the steady element-level limit (4.4 s/m here): the transient step's own global
-  // limit is lower (docs/squeal.md, Sec. 3: measured, its steps converge up to B = 8 s/m).
+  // limit is lower (docs/falling_friction.md, Sec. 3: measured, its steps converge up to B = 8 s/m).
   const ContactPatch& p = paper_patch("coarse");
   const FallingFriction falling{0.5, 0.1 * steady_decay_limit(0.5)};
   const Creepage c{0.001, 0.001, -0.053};
@@ -180,7 +180,7 @@ TEST(FallingFriction, SteadyStateIsAFixedPointOfTheTransientSolver) {
 
 TEST(FallingFriction, TransientStepBeyondItsGlobalLimitStopsWithAnErrorNamingFrictionDecay) {
   // Half the steady element limit (22 s/m) exceeds what the transient step's collective compliance
-  // A/dt allows (the sufficient global bound is 2.2 s/m here, docs/squeal.md Sec. 3): the line
+  // A/dt allows (the sufficient global bound is 2.2 s/m here, docs/falling_friction.md Sec. 3): the line
   // search stalls and the solver says so instead of iterating to solver.max_iterations.
   const ContactPatch& p = paper_patch("coarse");
   const FallingFriction falling{0.5, 0.5 * steady_decay_limit(0.5)};

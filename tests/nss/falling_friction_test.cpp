@@ -1,4 +1,4 @@
-// The linear NSS model with falling friction (linear_model.hpp, "Falling friction"; docs/squeal.md):
+// The linear NSS model with falling friction (linear_model.hpp, "Falling friction"; docs/falling_friction.md):
 // its w -> 0 limit against the steady solver's tangent, its routes against the direct solve, the
 // constant-friction limit, the unsteady solver's response, and the full-slip point-contact limit.
 #include <gtest/gtest.h>
@@ -114,7 +114,7 @@ TEST(FallingFrictionModel, ConstantFrictionLimitsReproduceTheCoulombModel) {
 TEST(FallingFrictionModel, TimeResponseIsTheImpulseResponseOfTheCreepCoefficients) {
   // The LU recursion of the paper form (time_response with falling friction) against f: the
   // response to a unit impulse of xi_y is h_j with f(w) = -sum_j h_j z^j.
-  // B = 4 s/m: the recursion decays (it grows for B = 10 s/m here: docs/squeal.md, Sec. 3)
+  // B = 4 s/m: the recursion decays (it grows for B = 10 s/m here: docs/falling_friction.md, Sec. 3)
   const auto m = model({0.001, 0.001, -0.053}, {0.5, 4.0});
   std::vector<Eigen::Vector3d> xi(900, Eigen::Vector3d::Zero());
   xi[0](1) = 1.0;
@@ -130,7 +130,7 @@ TEST(FallingFrictionModel, TimeResponseIsTheImpulseResponseOfTheCreepCoefficient
 
 TEST(FallingFrictionModel, UnsteadySolverResponseToSmallHarmonicCreepageEqualsTheLinearModel) {
   // The validate check with falling friction: the paper's Sec. 3.2 mean state, xi_x varied by 5 %
-  // at 500 Hz and 1 kHz; B = 4 s/m, where the contact is stable (docs/squeal.md Sec. 3: beyond,
+  // at 500 Hz and 1 kHz; B = 4 s/m, where the contact is stable (docs/falling_friction.md Sec. 3: beyond,
   // the transient step stalls and the linear recursion grows). The falling branch changes f by
   // more than the error allowed.
   const ContactPatch& p = coarse();
