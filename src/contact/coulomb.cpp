@@ -4,17 +4,24 @@
 
 namespace rollnoise::contact {
 
+namespace {
+
+// The adhesion trial p = -D^{-1} b: true (and e set) if it satisfies the bound g (the static one).
+bool adhesion_trial(double bx, double by, double d1, double d2, double g, ElementTraction& e) {
+  const double qx = -bx / d1, qy = -by / d2;
+  if (!(qx * qx + qy * qy <= g * g)) return false;
+  e.px = qx;
+  e.py = qy;
+  e.dp_db[0] = -1.0 / d1;
+  e.dp_db[3] = -1.0 / d2;
+  return true;
+}
+
+}  // namespace
+
 ElementTraction solve_coulomb_element(double bx, double by, double d1, double d2, double g) {
   ElementTraction e;
-  // adhesion trial
-  const double qx = -bx / d1, qy = -by / d2;
-  if (qx * qx + qy * qy <= g * g) {
-    e.px = qx;
-    e.py = qy;
-    e.dp_db[0] = -1.0 / d1;
-    e.dp_db[3] = -1.0 / d2;
-    return e;
-  }
+  if (adhesion_trial(bx, by, d1, d2, g, e)) return e;
   e.slip = true;
   if (g <= 0.0) {  // no normal pressure: free slip, no traction
     e.sx = bx;
@@ -54,14 +61,7 @@ ElementTraction solve_coulomb_element(double bx, double by, double d1, double d2
                                       const FallingFriction& law) {
   if (!law.active() || g <= 0.0) return solve_coulomb_element(bx, by, d1, d2, g);
   ElementTraction e;
-  const double qx = -bx / d1, qy = -by / d2;
-  if (qx * qx + qy * qy <= g * g) {  // adhesion: the bound is g = mu_s pn, as with constant mu
-    e.px = qx;
-    e.py = qy;
-    e.dp_db[0] = -1.0 / d1;
-    e.dp_db[3] = -1.0 / d2;
-    return e;
-  }
+  if (adhesion_trial(bx, by, d1, d2, g, e)) return e;  // the bound g = mu_s pn, as with constant mu
   e.slip = true;
   // phi(l) = sum (b_k/h_k)^2 - 1, h_k = l + d_k g r(l): Newton with a bisection safeguard on the
   // bracket [lo, hi], phi(lo) > 0 > phi(hi) (header).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "contact/coulomb.hpp"
@@ -57,6 +58,24 @@ LawCheck check_law(const ContactPatch& p, const TangentialSolution& s, const Fri
     }
   }
   return c;
+}
+
+// Transient rolling on the coarse patch with the falling law, started from the steady solution at
+// the mean creepage (F0: its forces).
+struct FromSteady {
+  TangentialSolution steady;
+  TransientRolling rolling;
+  TangentialForces F0;
+};
+
+std::unique_ptr<FromSteady> from_steady(const FallingFriction& falling, const Creepage& c) {
+  const ContactPatch& p = paper_patch("coarse");
+  auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, 0.0, falling});
+  auto r = std::unique_ptr<FromSteady>(
+      new FromSteady{s, TransientRolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0), total_forces(p.grid, s.px, s.py)});
+  r->rolling.set_falling_friction(falling);
+  r->rolling.set_tractions(s.px, s.py);
+  return r;
 }
 
 }  // namespace
@@ -160,18 +179,14 @@ TEST(FallingFriction, SteadyStateIsAFixedPointOfTheTransientSolver) {
   // stay there: the two solvers share the element law (paper Eq. 2 with p = p0 is Eq. 3).
   // A tenth of the steady element-level limit (4.4 s/m here): the transient step's own global
   // limit is lower (docs/falling_friction.md, Sec. 3: measured, its steps converge up to B = 8 s/m).
-  const ContactPatch& p = paper_patch("coarse");
-  const FallingFriction falling{0.5, 0.1 * steady_decay_limit(0.5)};
   const Creepage c{0.001, 0.001, -0.053};
-  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, 0.0, falling});
-  TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
-  rolling.set_falling_friction(falling);
-  rolling.set_tractions(s.px, s.py);
-  const auto F0 = total_forces(p.grid, s.px, s.py);
+  const auto run = from_steady({0.5, 0.1 * steady_decay_limit(0.5)}, c);
+  const Grid& g = paper_patch("coarse").grid;
+  const TangentialForces F0 = run->F0;
   double drift = 0.0;
   for (int k = 0; k < 40; ++k) {
-    const auto& t = rolling.step(c);
-    const auto F = total_forces(p.grid, t.px, t.py);
+    const auto& t = run->rolling.step(c);
+    const auto F = total_forces(g, t.px, t.py);
     drift = std::max(drift, std::hypot(F.Fx - F0.Fx, F.Fy - F0.Fy) / std::hypot(F0.Fx, F0.Fy));
   }
   std::printf("transient from the steady state with falling friction: max force drift %.2e\n", drift);
@@ -182,15 +197,10 @@ TEST(FallingFriction, TransientStepBeyondItsGlobalLimitStopsWithAnErrorNamingFri
   // Half the steady element limit (22 s/m) exceeds what the transient step's collective compliance
   // A/dt allows (the sufficient global bound is 2.2 s/m here, docs/falling_friction.md Sec. 3): the line
   // search stalls and the solver says so instead of iterating to solver.max_iterations.
-  const ContactPatch& p = paper_patch("coarse");
-  const FallingFriction falling{0.5, 0.5 * steady_decay_limit(0.5)};
   const Creepage c{0.001, 0.001, -0.053};
-  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, 0.0, falling});
-  TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
-  rolling.set_falling_friction(falling);
-  rolling.set_tractions(s.px, s.py);
+  const auto run = from_steady({0.5, 0.5 * steady_decay_limit(0.5)}, c);
   try {
-    for (int k = 0; k < 40; ++k) rolling.step(c);
+    for (int k = 0; k < 40; ++k) run->rolling.step(c);
     ADD_FAILURE() << "the transient steps converged beyond the global limit";
   } catch (const NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("friction.decay"), std::string::npos) << e.what();
