@@ -92,6 +92,7 @@ int run_validate(const CommonOptions& o) {
   // the unsteady reference from the same steady state
   contact::TransientRolling rolling(ms.patch->influence, ms.patch->normal.pn, ms.contact.mu, ms.contact.speed,
                                     ms.contact.spin_offset, ms.contact.backend, ms.contact.tangential);
+  rolling.set_falling_friction(ms.contact.falling);
   rolling.set_tractions(ms.steady.px, ms.steady.py);
   const bool varying_load = h.has_normal_variation();
   if (varying_load)  // the normal problem is re-solved at every step (transient_rolling.hpp)

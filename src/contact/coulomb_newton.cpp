@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "contact/coulomb.hpp"
+#include "contact/friction_law.hpp"
 #include "core/errors.hpp"
 #include "linalg/gmres.hpp"
 
@@ -82,6 +83,22 @@ void CoulombNewton::set_bounds(std::vector<int> elements, const GridField& bound
   for (int a = 0; a < m; ++a) bound_[a] = bound[elements_[a]];
 }
 
+void CoulombNewton::check_falling_uniqueness() const {
+  // Element-level uniqueness of the slip speed (coulomb.hpp): d_max g_max (1 - A) B < 1 with
+  // g = mu_s pn, i.e.  B < B_max = 1 / (d_max mu_s pn_max (1 - A)).
+  const double g_max = bound_.empty() ? 0.0 : *std::max_element(bound_.begin(), bound_.end());
+  const double d_max = std::max(d1_, d2_);
+  if (!(d_max * g_max * falling_.steepest_ratio_slope() < 1.0)) {
+    std::ostringstream msg;
+    msg << "the falling friction law is steeper than the contact's elastic slip compliance allows: "
+           "the slip of an element is not unique when mu_s pn (1 - A) B d >= 1 (d = "
+        << d_max << " (m/s)/Pa the element's self slip compliance, mu_s pn_max = " << g_max
+        << " Pa, 1 - A = " << 1.0 - falling_.kinetic_ratio << "); friction.decay must be below "
+        << 1.0 / (d_max * g_max * (1.0 - falling_.kinetic_ratio)) << " s/m, got " << falling_.decay;
+    throw InputError("friction.decay", msg.str());
+  }
+}
+
 void CoulombNewton::apply_S(const Eigen::VectorXd& q, Eigen::VectorXd& s) const {
   s.resize(S_elements_.size());
   S_elements_.apply(q.data(), s.data());
@@ -144,8 +161,11 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     w(2 * a) = rhs_x[k], w(2 * a + 1) = rhs_y[k];
     p(2 * a) = px[k], p(2 * a + 1) = py[k];
   }
-  // tiny tractions: solve sigma times the problem (see traction_scale_exponent)
-  const int scale_exponent = m > 0 ? traction_scale_exponent(w, p, std::min(d1_, d2_), bound_) : 0;
+  if (falling_.active()) check_falling_uniqueness();
+  // tiny tractions: solve sigma times the problem (see traction_scale_exponent); not with falling
+  // friction, whose element law is not homogeneous (mu depends on |s|)
+  const int scale_exponent =
+      m > 0 && !falling_.active() ? traction_scale_exponent(w, p, std::min(d1_, d2_), bound_) : 0;
   std::vector<double> scaled_bound;
   if (scale_exponent != 0) {
     const double sigma = std::ldexp(1.0, scale_exponent);
@@ -172,7 +192,8 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     r.local.resize(m);
     for (int a = 0; a < m; ++a) {
       const double bx = s(2 * a) - d1_ * q(2 * a), by = s(2 * a + 1) - d2_ * q(2 * a + 1);
-      r.local[a] = solve_coulomb_element(bx, by, d1_, d2_, bound[a]);
+      r.local[a] = falling_.active() ? solve_coulomb_element(bx, by, d1_, d2_, bound[a], falling_)
+                                     : solve_coulomb_element(bx, by, d1_, d2_, bound[a]);
       r.R(2 * a) = q(2 * a) - r.local[a].px;
       r.R(2 * a + 1) = q(2 * a + 1) - r.local[a].py;
       const double len = std::hypot(r.R(2 * a), r.R(2 * a + 1));
@@ -254,6 +275,16 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
       t *= 0.5;
       next = project(p + t * dp);
       trial = residual(next);
+    }
+    if (falling_.active() && !(trial.R.norm() <= (1.0 - 1e-4 * t) * r2)) {
+      // No descent along the Newton direction: with falling friction the solution need not be
+      // unique or exist (docs/falling_friction.md, Sec. 3); report instead of iterating on.
+      std::ostringstream msg;
+      msg << solver << " (semismooth Newton): the line search stalled at relative residual "
+          << relative(r) << " after " << it
+          << " iterations with falling friction; the falling branch may be too steep for a unique"
+             " solution: lower friction.decay or raise friction.kinetic_ratio";
+      throw NumericalError(msg.str());
     }
     p = std::move(next);
     r = std::move(trial);

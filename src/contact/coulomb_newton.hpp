@@ -56,6 +56,12 @@ class CoulombNewton {
   /// elements are the same, else dropped.
   void set_bounds(std::vector<int> elements, const GridField& bound);
 
+  /// Falling friction (friction_law.hpp): `bound` stays mu_s pn (the adhesion limit) and the slip
+  /// traction is bound * ratio(|s|). solve() throws InputError naming friction.decay when the
+  /// element law is not unique (d_max bound_max (1 - A) B >= 1, coulomb.hpp), and NumericalError
+  /// naming it when the line search stalls (a non-unique or non-existent global solution).
+  void set_falling_friction(const FallingFriction& falling) { falling_ = falling; }
+
   /// Solve with the rigid-slip-like right-hand side (grid fields) from the start tractions
   /// (grid fields; projected onto the bounds). Throws NumericalError naming `solver`.
   TangentialSolution solve(const GridField& rhs_x, const GridField& rhs_y, const GridField& px,
@@ -69,6 +75,7 @@ class CoulombNewton {
 
  private:
   /// s = S q on the contact elements (q, s interleaved x, y per element), by FFT on the grid.
+  void check_falling_uniqueness() const;
   void apply_S(const Eigen::VectorXd& q, Eigen::VectorXd& s) const;
   /// The contact-element operator of S on elements_.
   ElementOperator element_operator() const;
@@ -82,6 +89,7 @@ class CoulombNewton {
   std::vector<int> elements_;
   ElementOperator S_elements_;  // S on the contact elements (every element free)
   std::vector<double> bound_;
+  FallingFriction falling_;
   double d1_ = 0.0, d2_ = 0.0;
   Eigen::PartialPivLU<Eigen::MatrixXf> lu_float_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_double_;

@@ -1,5 +1,6 @@
 // Steady rolling with Coulomb friction (paper Eq. 3):  s = w + V (A - A0) p / dx  at every contact
-// element, |p| <= mu pn, adhesion s = 0, slip p = -mu pn s/|s|.
+// element, |p| <= mu pn, adhesion s = 0, slip p = -mu pn s/|s| (with falling friction
+// -mu(|s|) pn s/|s|, friction_law.hpp; mu = mu_s bounds the adhesion tractions).
 //
 // Solver: the semismooth Newton method of coulomb_newton.hpp with S = V (A - A0)/dx, rhs = w.
 //
@@ -12,16 +13,24 @@
 // docs/accuracy.md ("Benchmarks") for sizes and timings.
 #pragma once
 
+#include "contact/friction_law.hpp"
 #include "contact/influence.hpp"
 #include "contact/tangential_solver.hpp"
 
 namespace rollnoise::contact {
 
 struct SteadyRollingInput {
+  // A constructor rather than an aggregate, so that {mu, speed, creepage, spin_offset} stays valid
+  // (without -Wmissing-field-initializers) now that `falling` follows.
+  SteadyRollingInput(double mu_ = 0.3, double speed_ = 0.0, Creepage creepage_ = {},
+                     double spin_offset_ = 0.0, FallingFriction falling_ = {})
+      : mu(mu_), speed(speed_), creepage(creepage_), spin_offset(spin_offset_), falling(falling_) {}
   double mu = 0.3;           ///< friction coefficient (-)
   double speed = 0.0;        ///< rolling speed V (m/s)
   Creepage creepage;         ///< mean creepages
   double spin_offset = 0.0;  ///< spin term at x + spin_offset dx (0: paper Eq. 21; 1/6: CONTACT)
+  /// Falling friction mu(|s|) = mu [(1 - A) e^{-B |s|} + A] (friction_law.hpp; default constant).
+  FallingFriction falling;
 };
 
 /// Steady rolling for the pressure pn on the grid of `A`. `start` (optional) warm-starts from a

@@ -37,6 +37,11 @@ TransientRolling::TransientRolling(const InfluenceTable& A, const GridField& pn,
   current_.state.assign(n, 0);
 }
 
+void TransientRolling::set_falling_friction(const FallingFriction& falling) {
+  check_falling_friction(falling);
+  newton_.set_falling_friction(falling);
+}
+
 void TransientRolling::set_tractions(const GridField& px, const GridField& py) {
   current_.px = px;
   current_.py = py;

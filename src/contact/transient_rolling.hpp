@@ -57,6 +57,9 @@ class TransientRolling {
                    const TangentialSolverSettings& settings = {});
 
   double time_step() const { return dt_; }
+  /// Falling friction mu(|s|) (friction_law.hpp; constant until called): mu of the constructor
+  /// is mu_s. InputError (friction.kinetic_ratio, friction.decay) for bad values.
+  void set_falling_friction(const FallingFriction& falling);
   /// Set the current tractions (e.g. the steady solution at the mean creepage, or zero).
   void set_tractions(const GridField& px, const GridField& py);
   /// Advance one step with the creepage of the new time; returns the new state.

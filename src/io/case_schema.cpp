@@ -20,7 +20,16 @@ const std::vector<KeySpec>& case_schema() {
       // material, friction, rolling
       {"material.E", T::PositiveReal, "210e9", "Pa", "Young's modulus of wheel and rail"},
       {"material.nu", T::Real, "0.28", "-", "Poisson's ratio of wheel and rail (0 <= nu < 0.5)"},
-      {"friction.mu", T::PositiveReal, "0.3", "-", "Coulomb friction coefficient"},
+      {"friction.mu", T::PositiveReal, "0.3", "-",
+       "Coulomb friction coefficient; with friction.law = \"falling\" the static one, mu_s = mu(0)"},
+      {"friction.law", T::String, "\"constant\"", "-",
+       "\"constant\": mu; \"falling\": mu(v) = mu [(1 - A) exp(-B v) + A] with v the local slip "
+       "speed (Polach 2005; docs/falling_friction.md)",
+       {"constant", "falling"}},
+      {"friction.kinetic_ratio", T::PositiveReal, "", "-",
+       "falling: A = mu(inf)/mu, in (0, 1]", {}, 0, "required with friction.law = \"falling\""},
+      {"friction.decay", T::Real, "", "s/m", "falling: B >= 0, the decay of mu with the slip speed", {}, 0,
+       "required with friction.law = \"falling\""},
       {"rolling.speed", T::PositiveReal, "13.8888888888889", "m/s", "rolling speed V"},
       // contact geometry and load
       {"contact.geometry", T::String, "\"hertz\"", "-",

@@ -50,6 +50,24 @@ void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& 
   problems.check([&] { c.grid_options.scale = std::max(1.25, r.real("grid.scale")); });
 }
 
+// friction.law: "constant" (A, B must not be given) or "falling" (both required, checked).
+contact::FallingFriction read_falling_friction(const CaseReader& r) {
+  contact::FallingFriction f;
+  if (r.string("friction.law") == "constant") {
+    for (const char* key : {"friction.kinetic_ratio", "friction.decay"})
+      if (r.has(key)) r.fail(key, "is used only with friction.law = \"falling\"");
+    return f;
+  }
+  f.kinetic_ratio = r.real("friction.kinetic_ratio");
+  f.decay = r.real("friction.decay");
+  try {
+    contact::check_falling_friction(f);
+  } catch (const InputError& e) {
+    r.fail(e.key(), e.what());
+  }
+  return f;
+}
+
 }  // namespace
 
 pipeline::Limits read_limits(const CaseReader& r) {
@@ -73,6 +91,7 @@ ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
     if (!(c.material.nu >= 0.0 && c.material.nu < 0.5)) r.fail("material.nu", "must lie in [0, 0.5)");
   });
   problems.check([&] { c.mu = r.real("friction.mu"); });
+  problems.check([&] { c.falling = read_falling_friction(r); });
   problems.check([&] { c.speed = r.real("rolling.speed"); });
   problems.check([&] { c.normal_force = r.real("contact.normal_force"); });
   problems.check([&] {

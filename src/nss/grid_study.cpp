@@ -76,6 +76,7 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   const auto t = Clock::now();
   contact::TransientRolling rolling(patch.influence, patch.normal.pn, c.steady.mu, c.steady.speed,
                                     c.steady.spin_offset, c.backend, c.tangential);
+  rolling.set_falling_friction(c.steady.falling);
   rolling.set_tractions(steady.px, steady.py);
   const auto F = contact::rolling_forces(rolling, patch.grid, e.history, dt, r.steps);
   std::vector<double> time = {0.0}, fx = {r.force(0)}, fy = {r.force(1)};
@@ -170,7 +171,7 @@ GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
   const auto F = contact::total_forces(g, steady.px, steady.py);
   r.force << F.Fx, F.Fy, F.Mz;
   t = Clock::now();
-  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset});
+  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, c.steady.falling});
   measure_creep(m, s, r);
   r.t_creep = seconds(t);
   t = Clock::now();

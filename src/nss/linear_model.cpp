@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
@@ -125,6 +126,10 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
   offset_.resize(m);
   t_.assign(m, Eigen::Vector2d::Zero());
   c_.assign(m, 0.0);
+  kappa_.assign(m, 0.0);
+  contact::check_falling_friction(in.falling);
+  const contact::FrictionLaw law{in.mu, in.falling};
+  std::vector<double> mu_bar(m, in.mu);  // mu(|s_bar|) at the slip elements
   slip_.assign(m, 0);
   for (int a = 0; a < m; ++a) {
     const int k = el_[a];
@@ -132,7 +137,11 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
     if (mean.state[k] == static_cast<std::int8_t>(ElementState::slip)) {
       const double s1 = mean.sx[k], s2 = mean.sy[k], s = std::hypot(s1, s2);
       t_[a] = Eigen::Vector2d(s2 / s, -s1 / s);
-      c_[a] = std::max(s / (in.mu * patch.normal.pn[k]), 1e-12 * self);
+      mu_bar[a] = law.mu(s);  // in.mu itself for constant friction
+      c_[a] = std::max(s / (mu_bar[a] * patch.normal.pn[k]), 1e-12 * self);
+      // radial term of K_e (header): kappa = mu'(|s|) |s| / mu(|s|)
+      if (in.falling.active()) kappa_[a] = law.slope(s) * s / mu_bar[a];
+      if (kappa_[a] != 0.0) falling_ = true;
       slip_[a] = 1;
       ++n_slip_;
       r_ += 1;
@@ -157,7 +166,7 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
     Eigen::Matrix<double, 2, 3> U;  // U1, U2, Usp0 at this element
     U << 1, 0, -y, 0, 1, x;
     if (slip_[a]) {
-      const Eigen::Matrix2d B = -t_[a] * t_[a].transpose();
+      const Eigen::Matrix2d B = slip_traction_matrix(a);
       L_.block<2, 3>(2 * a, 0) = area * B.transpose() * U;
       Wr_.row(offset_[a]) = -t_[a].transpose() * W_.block<2, 3>(2 * a, 0);
       Lr_.row(offset_[a]) = area * t_[a].transpose() * U;
@@ -182,8 +191,8 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
       if (!slip_[a]) continue;
       const int k = el_[a];
       const double s = std::hypot(mean.sx[k], mean.sy[k]);
-      b[k] = -in.mu * sens.dpn_dN[k] * mean.sx[k] / s;
-      b[N + k] = -in.mu * sens.dpn_dN[k] * mean.sy[k] / s;
+      b[k] = -mu_bar[a] * sens.dpn_dN[k] * mean.sx[k] / s;
+      b[N + k] = -mu_bar[a] * sens.dpn_dN[k] * mean.sy[k] / s;
       const double x = g.x(k % g.nx), y = g.y(k / g.nx);
       dN_ += area * Eigen::Vector3d(b[k], b[N + k], x * b[N + k] - y * b[k]);
     }
@@ -235,7 +244,7 @@ const LinearContactModel::Dense& LinearContactModel::dense() const {
   d->M1.resize(n, n);
   for (int b = 0; b < m; ++b) {
     const int ixb = el_[b] % g.nx, iyb = el_[b] / g.nx;
-    const Eigen::Matrix2d B = slip_[b] ? Eigen::Matrix2d(-t_[b] * t_[b].transpose()) : Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d B = slip_[b] ? slip_traction_matrix(b) : Eigen::Matrix2d::Identity();
     double* c0x = d->M0.col(2 * b).data();
     double* c0y = d->M0.col(2 * b + 1).data();
     double* c1x = d->M1.col(2 * b).data();
@@ -263,8 +272,21 @@ const LinearContactModel::Dense& LinearContactModel::dense() const {
   return *dense_;
 }
 
+Eigen::Matrix2d LinearContactModel::slip_traction_matrix(int a) const {
+  // B_e = -t t' - kappa s^ s^' (header, "Falling friction"); s^ = (-t2, t1) as t = (s2, -s1)/|s|
+  Eigen::Matrix2d B = -t_[a] * t_[a].transpose();
+  if (kappa_[a] != 0.0) {
+    const Eigen::Vector2d sh(-t_[a](1), t_[a](0));
+    B -= kappa_[a] * sh * sh.transpose();
+  }
+  return B;
+}
+
 const LinearContactModel::Reduced& LinearContactModel::reduced() const {
   if (reduced_) return *reduced_;
+  if (falling_)
+    throw std::logic_error(
+        "linear contact model: the reduced form K0 (Cholesky) does not hold falling friction (linear_model.hpp)");
   const contact::Grid& g = table_.grid();
   auto red = std::make_unique<Reduced>(contact::ElementOperator(A0_op_, g, el_, slip_, t_, dt_));
   const int m = static_cast<int>(el_.size());
@@ -723,7 +745,8 @@ bool LinearContactModel::build_markov(int max_contact_lengths) const {
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients(const std::vector<double>& frequencies,
                                                                 int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
-  if (!build_markov(max_contact_lengths)) return creep_coefficients_hessenberg(frequencies);
+  if (falling_) info_.method = SweepInfo::Method::hessenberg;  // the paper form only (header)
+  if (falling_ || !build_markov(max_contact_lengths)) return creep_coefficients_hessenberg(frequencies);
   return creep_from_markov(markov_, frequencies);
 }
 
@@ -731,7 +754,8 @@ std::vector<LoadVector> LinearContactModel::normal_load_coefficients(const std::
                                                                      int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
   if (!has_normal_load_input()) return std::vector<LoadVector>(frequencies.size(), LoadVector::Zero());
-  if (build_markov(max_contact_lengths)) return horner<LoadVector>(load_markov_, dt_, frequencies);  // (G3)
+  if (!falling_ && build_markov(max_contact_lengths))
+    return horner<LoadVector>(load_markov_, dt_, frequencies);  // (G3)
   std::vector<LoadVector> g;
   hessenberg_sweep(frequencies, nullptr, &g);
   return g;
@@ -740,6 +764,7 @@ std::vector<LoadVector> LinearContactModel::normal_load_coefficients(const std::
 std::vector<CreepMatrix> LinearContactModel::creep_coefficients_markov(const std::vector<double>& frequencies,
                                                                        int max_contact_lengths) const {
   for (double f : frequencies) check_frequency(f);
+  if (falling_) return creep_coefficients_hessenberg(frequencies);  // no reduced form (header)
   // Computed afresh (not cached), so that it stays an independent check of creep_coefficients.
   SweepInfo info;
   const std::optional<MarkovModel> model = exact_markov(max_contact_lengths, info);
@@ -796,6 +821,7 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
   // M1 Q_{k-1} + W xi_k + (A bN N~_k - A0 bN N~_{k-1})/dt, G2), F_k = dx dy U' (Pi pi_k + bN N~_k).
   if (dN.size() != xi.size())
     throw InputError("excitation", "time_response: the normal-load and creepage histories differ in length");
+  if (falling_) return time_response_dense(xi, dN);
   const Reduced& red = reduced();
   std::vector<Eigen::Vector3d> F;
   F.reserve(xi.size());
@@ -806,6 +832,26 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
     if (block_ == 4) rhs += rN0_ * dN[k] + rN1_ * previous;
     p = red.solve(rhs);
     F.push_back(Lr_.transpose() * p + dN_ * dN[k]);
+    previous = dN[k];
+  }
+  return F;
+}
+
+std::vector<Eigen::Vector3d> LinearContactModel::time_response_dense(const std::vector<Eigen::Vector3d>& xi,
+                                                                     const std::vector<double>& dN) const {
+  // The paper form in time (G2 with z the one-step delay): M0 Q_k = M1 Q_{k-1} + W xi_k +
+  // wN0 N~_k - wN1 N~_{k-1},  F_k = L' Q_k + dN N~_k; one LU factorisation of M0.
+  const Dense& d = dense();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(d.M0);
+  std::vector<Eigen::Vector3d> F;
+  F.reserve(xi.size());
+  Eigen::VectorXd Q = Eigen::VectorXd::Zero(W_.rows());
+  double previous = 0.0;
+  for (size_t k = 0; k < xi.size(); ++k) {
+    Eigen::VectorXd rhs = d.M1 * Q + W_ * xi[k];
+    if (block_ == 4) rhs += wN0_ * dN[k] - wN1_ * previous;
+    Q = lu.solve(rhs);
+    F.push_back(L_.transpose() * Q + dN_ * dN[k]);
     previous = dN[k];
   }
   return F;

@@ -49,6 +49,20 @@
 //   g(z) = dx dy U' bN + L' x0 + z sum_j z^j L' N^j y                                       (G3)
 // so the block of 3 creepage vectors becomes a block of 4 (one more column per Cholesky pass of
 // the factor, which is streamed once for all of them).
+//
+// Falling friction (contact/friction_law.hpp, docs/falling_friction.md Sec. 2). With mu = mu(|s|) the slip
+// element law p = -mu(|s|) pn s/|s| linearises to (sign convention: P~ = K_e S~, K_e negative
+// semi-definite for constant friction)
+//   K_e = -(mu pn/|s_bar|) t t' - mu'(|s_bar|) pn s^ s^',   s^ = s_bar/|s_bar|,  mu = mu(|s_bar|),
+// Eq. 9 plus a radial term (a positive, i.e. negative-stiffness, entry along s^ for mu' < 0). In
+// the scaled unknowns S~_e = c_e q_e (c_e = |s_bar|/(mu pn), mu at the mean slip speed):
+//   P~_e = B_e q_e,  B_e = -t t' - kappa_e s^ s^',  kappa_e = mu'(|s_bar|) |s_bar| / mu(|s_bar|),
+// so the slip element carries a second, radial traction amplitude; bN_e uses mu(|s_bar|). The
+// paper form (Dense: creep_coefficients_direct, normal_load_coefficients_direct, the Hessenberg
+// sweep) takes B_e as it is. The reduced form above does not (its K0 would get the radial unknown
+// with the diagonal entry 1/(mu' pn) < 0: symmetric indefinite), so with falling friction every
+// route uses the paper form: creep_coefficients / normal_load_coefficients / creep_coefficients_markov
+// the Hessenberg sweep, time_response an LU recursion of M0, and the K0 diagnostics throw.
 #pragma once
 
 #include <Eigen/Dense>
@@ -57,6 +71,7 @@
 #include <optional>
 #include <vector>
 
+#include "contact/friction_law.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
@@ -69,9 +84,17 @@ using CreepMatrix = Eigen::Matrix3cd;
 using LoadVector = Eigen::Vector3cd;
 
 struct LinearModelInput {
+  // A constructor rather than an aggregate: {mu, speed, spin_offset} stays valid (see
+  // contact::SteadyRollingInput).
+  LinearModelInput(double mu_ = 0.3, double speed_ = 0.0, double spin_offset_ = 0.0,
+                   contact::FallingFriction falling_ = {})
+      : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_) {}
   double mu = 0.3;           ///< friction coefficient
   double speed = 0.0;        ///< rolling speed V (m/s)
   double spin_offset = 0.0;  ///< as in the steady solution (grid.spin_offset)
+  /// Falling friction mu(|s|) = mu [(1 - A) e^{-B|s|} + A] as in the steady solution (constant
+  /// by default; see "Falling friction" above).
+  contact::FallingFriction falling;
 };
 
 /// How creep_coefficients() obtained its Markov parameters (for benchmarks and tests).
@@ -151,6 +174,9 @@ class LinearContactModel {
   const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
   /// dx dy U' bN of (G2): the instantaneous part of g (the frozen-slip-direction response, -, -, m).
   const Eigen::Vector3d& load_direct_term() const { return dN_; }
+  /// Whether falling friction enters the model (some slip element has mu' != 0); then every sweep
+  /// uses the exact paper form (Hessenberg), see "Falling friction" above.
+  bool falling_friction() const { return falling_; }
   /// Whether there is a normal-load input at all (slip elements exist); without it g = 0.
   bool has_normal_load_input() const { return block_ == 4; }
   /// How the last creep_coefficients() built its Markov parameters.
@@ -181,9 +207,14 @@ class LinearContactModel {
   Eigen::VectorXd step_matrix_slip_diagonal() const;
 
  private:
+  /// time_response in the paper form (falling friction).
+  std::vector<Eigen::Vector3d> time_response_dense(const std::vector<Eigen::Vector3d>& xi,
+                                                   const std::vector<double>& dN) const;
   struct Dense;    // the paper's formulation, assembled densely on demand
   struct Reduced;  // the symmetric reduced formulation (Cholesky of K0, FFT operator for K1)
   const Dense& dense() const;
+  /// B_e of a slip element: -t t' (constant friction) - kappa s^ s^' (falling friction).
+  Eigen::Matrix2d slip_traction_matrix(int a) const;
   const Reduced& reduced() const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
   /// Markov parameters of f (h_j) and of g (gm_j, G3), as one Markov route produced them.
@@ -225,6 +256,8 @@ class LinearContactModel {
   std::vector<Eigen::Vector2d> t_;       ///< slip elements: traction direction t_e (unused for adhesion)
   std::vector<double> c_;                ///< slip elements: c_e = |s_bar|/(mu pn) (0 for adhesion)
   std::vector<char> slip_;               ///< 1 for slip elements
+  std::vector<double> kappa_;            ///< slip elements: mu' |s_bar| / mu (falling friction), else 0
+  bool falling_ = false;                 ///< some kappa_e != 0: the paper form only (see above)
   Eigen::MatrixXd W_;   ///< n x 3 inputs per unit creepage: V U1, V U2, V Usp
   Eigen::MatrixXd L_;   ///< n x 3 outputs: dx dy B' U1, B' U2, B' Usp0
   Eigen::MatrixXd Wr_;  ///< r x 3 reduced inputs  -Pi' W

@@ -27,7 +27,8 @@ namespace rollnoise::pipeline {
 
 struct ContactCase {
   contact::Material material;
-  double mu = 0.3;
+  double mu = 0.3;                  ///< friction.mu: mu_s with falling friction
+  contact::FallingFriction falling;  ///< friction.law = "falling": A, B (default: constant mu)
   double speed = 0.0;
   std::string geometry = "hertz";  ///< "hertz" or "profiles"
   double normal_force = 0.0;
@@ -47,7 +48,7 @@ struct ContactCase {
   contact::TangentialSolverSettings tangential;
   Limits limits;  ///< [limits]: memory and step counts a run may use (pipeline/limits.hpp)
 
-  contact::SteadyRollingInput steady_input() const { return {mu, speed, creepage, spin_offset}; }
+  contact::SteadyRollingInput steady_input() const { return {mu, speed, creepage, spin_offset, falling}; }
 };
 
 /// Profiles: find the contact point at `c.wheelset`, choose the grid around it and set a, b from

@@ -93,6 +93,7 @@ TransientResult run_transient(const ContactCase& c, const TransientInput& in, co
 
   contact::TransientRolling rolling(patch.influence, patch.normal.pn, c.mu, c.speed, c.spin_offset, c.backend,
                                     c.tangential);
+  rolling.set_falling_friction(c.falling);
   if (r.varying_load) rolling.set_normal_problem(patch.undeformed_distance, c.normal_force, c.normal);
   contact::TangentialSolution start = zero_tractions(patch);
   if (in.from_steady) {
