@@ -80,6 +80,11 @@ int main(int argc, char** argv) {
   bench->add_option("--nx", bench_grids, "elements in x of the grids, coarse to fine (the last is the reference)")
       ->delimiter(',');
   bench->add_option("--csv", bench_csv, "write the table as CSV (draw it with postprocess/plot_bench.py)");
+  std::vector<int> sweep_cost_grids;
+  bench->add_option("--sweep-cost", sweep_cost_grids,
+                    "instead: time and peak memory of the 1000-frequency sweep, dense and matrix-free, on "
+                    "these grids (nx, e.g. 34,68,100,200)")
+      ->delimiter(',');
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
   cli::StudyOptions study_options;
   auto* study = app.add_subcommand("study", "run a parameter study of noise cases (docs/study.md)");
@@ -122,6 +127,7 @@ int main(int argc, char** argv) {
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
+    if (bench->parsed() && !sweep_cost_grids.empty()) return cli::run_sweep_cost(common, sweep_cost_grids);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "rollnoise: error: %s\n", e.what());
