@@ -81,6 +81,46 @@
 // 180 block steps, 4.1 s. Coarse grid (34 x 25): 0.08-0.13 s. The exact recursion needs 1132
 // (fine) sequential steps instead of 140 (9-12 s), the paper's form a 4192 x 4192 LU per
 // frequency (12 s).
+//
+// Matrix-free path (solver.linear_model = "matrix_free", or "auto" above kDenseReducedUnknowns =
+// 11000 reduced unknowns, where the dense factor passes ~1 GB). K0 x = D x + Pi' A (Pi x)/dt is one
+// FFT convolution (contact::ElementOperator with the shift-0 kernel, like K1 with shift 1), and
+// K0 solves are preconditioned CG (Reduced::pcg). Preconditioner: M^{-1} = W Pi' (dt C^{-1}) Pi W,
+// C^{-1} the inverse of the zero-padded circulant of the compliance, 2 x 2 per Fourier bin
+// (HalfSpaceOperator::inverse_circulant; its eigenvalues floored at 0.1 of the self-compliance:
+// the truncated kernel's circulant has a few slightly negative bins, 17 of 6800 on 68 x 50, which
+// unfloored took the iterations from 16 to 65), W = 1 on adhesion unknowns and
+// sqrt(kappa_e/(kappa_e + c_e)) on slip unknowns (kappa_e = t_e' A_ee t_e/dt): where c_e dominates
+// (deep slip, pn -> 0 at the edges) K0 is nearly diagonal and the full-space inverse would
+// overweight those rows. For the adhesion block R C^{-1} R' >= (R C R')^{-1} (Schur complement),
+// the restricted hypersingular-like inverse with log-type growth only. Measured PCG iterations per
+// solve at tolerance 1e-12 (tests/nss/matrix_free_test.cpp, time responses): full adhesion 14.3,
+// 15.1, 16.7, 17.5 on 24x18, 34x25, 68x50, 100x100; partial slip (paper state) 19.2, 21.7, 26.8,
+// 29.5; full sliding 39, 61, 81 on 34x25, 68x50, 100x100 (grows: there K0 ~ D + A/dt with c_e
+// ~30 kappa_e, and neither W nor C^{-1} alone approximates (c + sigma/dt)^{-1}; a symbol with a
+// representative c would be the next step). Without W: 85-95 in partial slip. Starting from the
+// rolled traction (Pi' S Pi x_prev, S one element in x) saves ~5 % in the recursion and
+// time_response and nothing in the Krylov steps (the orthonormalised block is not a traction
+// history), so the Krylov solves start from zero.
+// Tolerance: relative residual 1e-12. The Krylov process then runs with an inexact N (each
+// block X = N V + E, |E|_K0 <~ 1e-12 cond-weighted), i.e. exactly for a perturbed rolling step; the
+// Markov parameters move by O(1e-12) relative and the a-posteriori check (1e-10 between models
+// s steps apart) still measures the truncation, which dominates: measured f against the dense path
+// 2e-13 - 1e-11 over [0, Nyquist] (adhesion, partial slip, full sliding, spin), the same block
+// steps as the dense path. Orthogonalisation uses K0 X = apply_K0(X) of the computed X (so X' Z is
+// the exact K0-Gram matrix of the stored basis); Y = K0 V is kept while it takes < 256 MB,
+// otherwise recomputed (memory r d instead of 2 r d: 200 x 200 partial slip, r ~ 41500, d ~ 1600,
+// 0.53 GB instead of 1.06 GB).
+// Cost (measured under load ~3-6 on this 2-core machine, bench --sweep-cost): one PCG iteration =
+// two FFT convolutions (K0 and M^{-1}, 8 transforms of the padded grid) ~0.13 ms on 34x25, ~1.3-1.8
+// ms on 68x50 and 100x100. The sweep needs 4 (block) x 2.3 Lc solves of ~25-30 iterations:
+// 34x25 1.45 s (dense 0.19 s), 68x50 20.7 s (dense 4.3 s), 100x100 partial slip 162 s (dense ~45 s,
+// 0.86 GB). So the matrix-free path is the memory-scalable one, not the fast one: each dense block
+// step is one streamed triangular solve (~7 ms on 68x50), each matrix-free one ~110 FFT
+// convolutions. Reaching the times (68x50 < 0.5 s, 200x200 < 10 s) needs ~1-2 convolutions
+// per column and step instead of ~60, i.e. a different use of the operator (e.g. rational Krylov at
+// a few frequencies with a preconditioned solver for K0 - z K1, or a multigrid K0 solve reaching
+// 1e-12 in ~3 V-cycles), not a better constant.
 
 namespace rollnoise::nss {
 
