@@ -25,7 +25,9 @@ namespace {
 // A tabulated error (io/bench_output.hpp): name, CSV column, printed header, values per grid.
 using Quantity = io::BenchColumn;
 
-nss::GridStudyCase study_case(const io::CaseReader& reader, const io::ContactCase& base) {
+}  // namespace
+
+nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::ContactCase& base) {
   nss::GridStudyCase c;
   c.material = base.material;
   c.normal_force = base.normal_force;
@@ -36,6 +38,8 @@ nss::GridStudyCase study_case(const io::CaseReader& reader, const io::ContactCas
   c.tangential = base.tangential;
   return c;
 }
+
+namespace {
 
 void print_header(const std::string& name, const nss::GridStudyCase& c, const nss::GridStudySettings& s,
                   const nss::GridStudyExcitation& e) {
@@ -174,7 +178,7 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const io::ContactCase base = io::read_contact_case(reader);
   if (base.geometry != "hertz") reader.fail("contact.geometry", "bench needs a Hertzian case");
-  const nss::GridStudyCase study = study_case(reader, base);
+  const nss::GridStudyCase study = bench_study_case(reader, base);
   nss::check_study_grids(study, grids);  // before any solve
   const nss::GridStudySettings settings;
   const nss::GridStudyExcitation excitation = nss::grid_study_excitation(study, settings);

@@ -85,6 +85,11 @@ int main(int argc, char** argv) {
   auto* statespace = app.add_subcommand("statespace", "the contact as a state-space model (continuous fit, discrete ERA)");
   add_common(statespace);
   statespace->add_option("--csv", statespace_csv, "also write each matrix as PREFIX_A.csv, ..., PREFIX_Dd.csv");
+  std::vector<int> sweep_cost_grids;
+  bench->add_option("--sweep-cost", sweep_cost_grids,
+                    "instead: time and peak memory of the 1000-frequency sweep, dense and matrix-free, on "
+                    "these grids (nx, e.g. 34,68,100,200)")
+      ->delimiter(',');
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
   cli::StudyOptions study_options;
   auto* study = app.add_subcommand("study", "run a parameter study of noise cases (docs/study.md)");
@@ -127,6 +132,7 @@ int main(int argc, char** argv) {
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
+    if (bench->parsed() && !sweep_cost_grids.empty()) return cli::run_sweep_cost(common, sweep_cost_grids);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
     if (statespace->parsed()) return cli::run_statespace(common, statespace_csv);
   } catch (const InputError& e) {

@@ -102,6 +102,28 @@ class FftImpl final : public HalfSpaceOperator::Impl {
       std::copy(fft_.spectrum(), fft_.spectrum() + ncplx, kernel_[b].begin());
     }
   }
+  /// Replace the tangential kernel spectra by the inverse of the 2 x 2 symbol in every bin, its
+  /// eigenvalues floored at floor * self (HalfSpaceOperator::inverse_circulant).
+  void invert_symbol(double floor, double self) {
+    const size_t ncplx = fft_.spectrum_size(), nreal = fft_.real_size();
+    // kernel_ holds sigma / nreal; the inverse multiplier is sigma^{-1} / nreal.
+    std::vector<Eigen::Matrix2d> sym(ncplx);
+    for (size_t k = 0; k < ncplx; ++k) {
+      Eigen::Matrix2d s;
+      s << kernel_[0][k].real(), 0.5 * (kernel_[1][k].real() + kernel_[2][k].real()), 0.0, kernel_[3][k].real();
+      s(1, 0) = s(0, 1);
+      sym[k] = s * double(nreal);
+    }
+    for (size_t k = 0; k < ncplx; ++k) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(sym[k]);
+      const Eigen::Vector2d inv = es.eigenvalues().cwiseMax(floor * self).cwiseInverse();
+      const Eigen::Matrix2d si = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() / nreal;
+      kernel_[0][k] = si(0, 0);
+      kernel_[1][k] = si(0, 1);
+      kernel_[2][k] = si(1, 0);
+      kernel_[3][k] = si(1, 1);
+    }
+  }
   void apply(const double* p, double* u) const override {
     const size_t ncplx = fft_.spectrum_size();
     double* real = fft_.real();
@@ -164,6 +186,15 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, Problem problem,
     impl_ = std::make_unique<DenseImpl>(grid, problem, kernel);
   else
     impl_ = std::make_unique<FftImpl>(grid, problem, kernel);
+}
+
+HalfSpaceOperator::HalfSpaceOperator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+HalfSpaceOperator HalfSpaceOperator::inverse_circulant(const InfluenceTable& table, double floor) {
+  auto impl = std::make_unique<FftImpl>(
+      table.grid(), Problem::Tangential, [&table](Component c, int di, int dj) { return table(c, di, dj); });
+  impl->invert_symbol(floor, std::min(table(Component::xx, 0, 0), table(Component::yy, 0, 0)));
+  return HalfSpaceOperator(std::move(impl));
 }
 
 HalfSpaceOperator::~HalfSpaceOperator() = default;

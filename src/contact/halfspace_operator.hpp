@@ -47,9 +47,20 @@ class HalfSpaceOperator {
   /// The backend Auto chooses for this many unknowns (components x elements).
   static Backend auto_backend(int unknowns);
 
+  /// The inverse of the FFT backend's circulant embedding of the tangential kernel of `table`
+  /// (shift 0): per bin of the zero-padded periodic grid the 2 x 2 symbol [xx xy; xy yy] (real
+  /// symmetric: the kernels are even under (di, dj) -> (-di, -dj)) is inverted, its eigenvalues
+  /// floored at `floor` times the self-compliance min(A_xx, A_yy)(0, 0): the truncated, zero-padded
+  /// kernel is not positive definite at every bin (measured on 68 x 50: 17 of 6800 bins slightly
+  /// negative), while the smallest true eigenvalues are of the order of the self-compliance.
+  /// Restricted to part of the grid it approximates the inverse of A restricted there (the
+  /// preconditioner of nss/linear_model.cpp).
+  static HalfSpaceOperator inverse_circulant(const InfluenceTable& table, double floor);
+
   class Impl;
 
  private:
+  explicit HalfSpaceOperator(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -71,6 +71,11 @@ const std::vector<KeySpec>& case_schema() {
       // solver settings
       {"solver.influence", T::String, "\"auto\"", "-",
        "products A*p: \"fft\", \"dense\" or \"auto\" (by size)", {"auto", "fft", "dense"}},
+      {"solver.linear_model", T::String, "\"auto\"", "-",
+       "linear NSS model (creep, noise, validate): K0 by a dense Cholesky factor (\"dense\"), or "
+       "applied by FFT and solved by preconditioned CG (\"matrix_free\": memory O(r x Krylov basis) "
+       "instead of 8 r^2, slower where dense fits); \"auto\": dense up to 11000 reduced unknowns",
+       {"auto", "dense", "matrix_free"}},
       {"solver.normal_tolerance", T::PositiveReal, "1e-12", "-",
        "normal solver: relative change of the pressure"},
       {"solver.tangential_tolerance", T::PositiveReal, "1e-12", "-",

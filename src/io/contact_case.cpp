@@ -115,6 +115,12 @@ ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
                 : infl == "dense" ? contact::Backend::Dense
                                   : contact::Backend::Auto;
   });
+  problems.check([&] {
+    const std::string lm = r.string("solver.linear_model");
+    c.linear_solver = lm == "dense"         ? nss::LinearSolver::dense
+                      : lm == "matrix_free" ? nss::LinearSolver::matrix_free
+                                            : nss::LinearSolver::automatic;
+  });
   problems.check([&] { c.normal.tolerance = r.real("solver.normal_tolerance"); });
   problems.check([&] { c.tangential.tolerance = r.real("solver.tangential_tolerance"); });
   problems.check([&] { c.tangential.max_iterations = static_cast<int>(r.integer("solver.max_iterations")); });

@@ -38,14 +38,6 @@ double rel_err(const Eigen::Vector2cd& v, const Eigen::Vector2cd& ref) {
   return (v - ref).norm() / ref.norm();
 }
 
-// The grid with nx elements in x: ny = nx b/a rounded (at least 4); coarse grids need a wider
-// margin around the ellipse (at least ~1.25 elements each side).
-contact::Grid study_grid(const GridStudyCase& c, int nx, int* ny) {
-  *ny = std::max(4, static_cast<int>(std::lround(nx * c.b / c.a)));
-  const double s_i = std::max(c.scale, 1.0 + 2.5 / std::min(nx, *ny));
-  return contact::Grid::around_ellipse(nx, *ny, c.a, c.b, s_i);
-}
-
 // f at the study frequencies the grid resolves, NaN above its Nyquist limit.
 void measure_creep(const LinearContactModel& m, const GridStudySettings& s, GridMeasurement& r) {
   std::vector<double> ok;
@@ -120,6 +112,13 @@ double creep_error(const GridMeasurement& r, const GridMeasurement& ref, double 
 }
 
 }  // namespace
+
+contact::Grid study_grid(const GridStudyCase& c, int nx, int* ny) {
+  *ny = std::max(4, static_cast<int>(std::lround(nx * c.b / c.a)));
+  const double s_i = std::max(c.scale, 1.0 + 2.5 / std::min(nx, *ny));
+  return contact::Grid::around_ellipse(nx, *ny, c.a, c.b, s_i);
+}
+
 
 GridStudyExcitation grid_study_excitation(const GridStudyCase& c, const GridStudySettings& s) {
   GridStudyExcitation e;

@@ -105,6 +105,10 @@ struct GridMeasurement {
 /// elements across 2a and 2b, as for a case's grid.nx / grid.ny).
 void check_study_grids(const GridStudyCase& c, const std::vector<int>& grids);
 
+/// The grid with nx elements in x: ny = nx b/a rounded (at least 4); coarse grids need a wider
+/// margin around the ellipse (at least ~1.25 elements each side).
+contact::Grid study_grid(const GridStudyCase& c, int nx, int* ny);
+
 /// Everything above on the grid with `nx` elements in x.
 GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
                              const GridStudyExcitation& e, int nx);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -81,6 +82,46 @@
 // 180 block steps, 4.1 s. Coarse grid (34 x 25): 0.08-0.13 s. The exact recursion needs 1132
 // (fine) sequential steps instead of 140 (9-12 s), the paper's form a 4192 x 4192 LU per
 // frequency (12 s).
+//
+// Matrix-free path (solver.linear_model = "matrix_free", or "auto" above kDenseReducedUnknowns =
+// 11000 reduced unknowns, where the dense factor passes ~1 GB). K0 x = D x + Pi' A (Pi x)/dt is one
+// FFT convolution (contact::ElementOperator with the shift-0 kernel, like K1 with shift 1), and
+// K0 solves are preconditioned CG (Reduced::pcg). Preconditioner: M^{-1} = W Pi' (dt C^{-1}) Pi W,
+// C^{-1} the inverse of the zero-padded circulant of the compliance, 2 x 2 per Fourier bin
+// (HalfSpaceOperator::inverse_circulant; its eigenvalues floored at 0.1 of the self-compliance:
+// the truncated kernel's circulant has a few slightly negative bins, 17 of 6800 on 68 x 50, which
+// unfloored took the iterations from 16 to 65), W = 1 on adhesion unknowns and
+// sqrt(kappa_e/(kappa_e + c_e)) on slip unknowns (kappa_e = t_e' A_ee t_e/dt): where c_e dominates
+// (deep slip, pn -> 0 at the edges) K0 is nearly diagonal and the full-space inverse would
+// overweight those rows. For the adhesion block R C^{-1} R' >= (R C R')^{-1} (Schur complement),
+// the restricted hypersingular-like inverse with log-type growth only. Measured PCG iterations per
+// solve at tolerance 1e-12 (tests/nss/matrix_free_test.cpp, time responses): full adhesion 14.3,
+// 15.1, 16.7, 17.5 on 24x18, 34x25, 68x50, 100x100; partial slip (paper state) 19.2, 21.7, 26.8,
+// 29.5; full sliding 39, 61, 81 on 34x25, 68x50, 100x100 (grows: there K0 ~ D + A/dt with c_e
+// ~30 kappa_e, and neither W nor C^{-1} alone approximates (c + sigma/dt)^{-1}; a symbol with a
+// representative c would be the next step). Without W: 85-95 in partial slip. Starting from the
+// rolled traction (Pi' S Pi x_prev, S one element in x) saves ~5 % in the recursion and
+// time_response and nothing in the Krylov steps (the orthonormalised block is not a traction
+// history), so the Krylov solves start from zero.
+// Tolerance: relative residual 1e-12. The Krylov process then runs with an inexact N (each
+// block X = N V + E, |E|_K0 <~ 1e-12 cond-weighted), i.e. exactly for a perturbed rolling step; the
+// Markov parameters move by O(1e-12) relative and the a-posteriori check (1e-10 between models
+// s steps apart) still measures the truncation, which dominates: measured f against the dense path
+// 2e-13 - 1e-11 over [0, Nyquist] (adhesion, partial slip, full sliding, spin), the same block
+// steps as the dense path. Orthogonalisation uses K0 X = apply_K0(X) of the computed X (so X' Z is
+// the exact K0-Gram matrix of the stored basis); Y = K0 V is kept while it takes < 256 MB,
+// otherwise recomputed (memory r d instead of 2 r d: 200 x 200 partial slip, r ~ 41500, d ~ 1600,
+// 0.53 GB instead of 1.06 GB).
+// Cost (measured under load ~3-6 on this 2-core machine, bench --sweep-cost): one PCG iteration =
+// two FFT convolutions (K0 and M^{-1}, 8 transforms of the padded grid) ~0.13 ms on 34x25, ~1.3-1.8
+// ms on 68x50 and 100x100. The sweep needs 4 (block) x 2.3 Lc solves of ~25-30 iterations:
+// 34x25 1.45 s (dense 0.19 s), 68x50 20.7 s (dense 4.3 s), 100x100 partial slip 162 s (dense ~45 s,
+// 0.86 GB). So the matrix-free path is the memory-scalable one, not the fast one: each dense block
+// step is one streamed triangular solve (~7 ms on 68x50), each matrix-free one ~110 FFT
+// convolutions. Reaching the times (68x50 < 0.5 s, 200x200 < 10 s) needs ~1-2 convolutions
+// per column and step instead of ~60, i.e. a different use of the operator (e.g. rational Krylov at
+// a few frequencies with a preconditioned solver for K0 - z K1, or a multigrid K0 solve reaching
+// 1e-12 in ~3 V-cycles), not a better constant.
 
 namespace rollnoise::nss {
 
@@ -88,32 +129,107 @@ using contact::Component;
 using contact::ElementState;
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+namespace {
+// Matrix-free path (top of the file): PCG tolerance, floor of the circulant symbol's eigenvalues
+// (relative to the largest), and the shift of the rolled start (elements in x).
+constexpr double kPcgTolerance = 1e-12;
+constexpr double kSymbolFloor = 0.1;
+constexpr int kRollShift = 1;
+
+// The Krylov sweep's Y = K0 V is kept beside the basis V (as on the dense path) while it takes at
+// most this many bytes (at the largest basis the sweep allocates, 1.5 times its first capacity);
+// above, the matrix-free path recomputes K0 X instead (three more FFT products per column and
+// step, against memory r d): 68 x 50 keeps it (~20 MB), 200 x 200 drops it (~0.7 GB).
+constexpr double kKrylovYBudget = 256e6;
+
+bool lean_krylov_basis(int r, int capacity) { return 8.0 * r * 1.5 * capacity > kKrylovYBudget; }
+}  // namespace
+
 // The paper's formulation, dense (for the reference solve and the Hessenberg sweep).
 struct LinearContactModel::Dense {
   Eigen::MatrixXd M0, M1;
 };
 
-// The reduced symmetric formulation: K0 (lower triangle) factored in place, and K1 by FFT.
+// The reduced symmetric formulation: K1 by FFT, and K0 either factored densely (its lower triangle,
+// Cholesky in place) or applied by FFT and solved by preconditioned CG (the matrix-free path).
 struct LinearContactModel::Reduced {
   explicit Reduced(contact::ElementOperator k1) : K1(std::move(k1)) {}
+  // ---- dense path ----
   Eigen::MatrixXd K0;  // holds the Cholesky factor after construction
   std::unique_ptr<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>> llt;
   /// K1 X = Pi' A0 Pi X / dt column by column: the amplitudes expanded to tractions on the grid
   /// (adhesion elements free, slip elements along t_e), one FFT convolution with the shifted
   /// kernel (the model's A0_op_), projected back.
   contact::ElementOperator K1;
-  /// K0^{-1} B with the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once
-  /// per pass for three right-hand sides, ~3x faster than LLT::solve for few columns).
-  Eigen::MatrixXd solve(Eigen::MatrixXd B) const {
-    linalg::cholesky_solve_in_place(K0, B);
-    return B;
+  // ---- matrix-free path ----
+  bool matrix_free = false;
+  std::unique_ptr<contact::ElementOperator> A;  ///< Pi' A Pi / dt (shift 0)
+  std::unique_ptr<contact::ElementOperator> G;  ///< Pi' (dt C^{-1}) Pi, C the circulant of A
+  Eigen::VectorXd d;                            ///< D: c_e on slip unknowns, 0 on adhesion ones
+  Eigen::VectorXd w;                            ///< preconditioner scaling (1 for adhesion)
+  double tolerance = 0.0;                       ///< PCG: relative residual |b - K0 x| / |b|
+  mutable long solves = 0, iterations = 0;
+
+  /// K0 X = D X + Pi' A Pi X / dt (matrix-free path).
+  Eigen::MatrixXd apply_K0(const Eigen::MatrixXd& X) const {
+    Eigen::MatrixXd Y = (*A) * X;
+    Y += d.asDiagonal() * X;
+    return Y;
+  }
+  /// K0^{-1} B: the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once per
+  /// pass for three right-hand sides, ~3x faster than LLT::solve for few columns), or PCG from
+  /// `start` (zero if null) per column.
+  Eigen::MatrixXd solve(Eigen::MatrixXd B, const Eigen::MatrixXd* start = nullptr) const {
+    if (!matrix_free) {
+      linalg::cholesky_solve_in_place(K0, B);
+      return B;
+    }
+    Eigen::MatrixXd X = start ? *start : Eigen::MatrixXd::Zero(B.rows(), B.cols());
+    for (Eigen::Index j = 0; j < B.cols(); ++j) pcg(B.col(j), X.col(j));
+    return X;
+  }
+
+ private:
+  // Preconditioned conjugate gradients (Saad, Iterative Methods for Sparse Linear Systems, 2nd ed.,
+  // Alg. 9.1) for K0 x = b, M^{-1} = W G W; stops at |b - K0 x|_2 <= tolerance |b|_2.
+  void pcg(const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x) const {
+    ++solves;
+    const double bnorm = b.norm();
+    if (bnorm == 0.0) {
+      x.setZero();
+      return;
+    }
+    Eigen::VectorXd r = b - apply_K0(x), q(b.size()), z(b.size());
+    auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+      G->apply(w.cwiseProduct(v).eval().data(), out.data());
+      out.array() *= w.array();
+    };
+    if (r.norm() <= tolerance * bnorm) return;
+    precondition(r, z);
+    Eigen::VectorXd p = z;
+    double rz = r.dot(z);
+    const int max_iterations = 20000;
+    for (int it = 1; it <= max_iterations; ++it) {
+      ++iterations;
+      A->apply(p.data(), q.data());
+      q += d.cwiseProduct(p);
+      const double alpha = rz / p.dot(q);
+      x += alpha * p;
+      r -= alpha * q;
+      if (r.norm() <= tolerance * bnorm) return;
+      precondition(r, z);
+      const double rz_next = r.dot(z);
+      p = z + (rz_next / rz) * p;
+      rz = rz_next;
+    }
+    throw NumericalError("linear contact model: PCG on K0 did not converge (matrix-free path)");
   }
 };
 
 LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
                                        const contact::TangentialSolution& mean,
                                        const LinearModelInput& in)
-    : dt_(patch.grid.dx / in.speed), speed_(in.speed), mu_(in.mu), table_(patch.influence) {
+    : dt_(patch.grid.dx / in.speed), speed_(in.speed), mu_(in.mu), solver_(in.solver), table_(patch.influence) {
   contact::check_rolling_input(in.mu, in.speed, contact::Creepage{});
   const contact::Grid& g = patch.grid;
   const contact::InfluenceTable& A = patch.influence;
@@ -283,6 +399,10 @@ Eigen::Matrix2d LinearContactModel::slip_traction_matrix(int a) const {
 }
 
 const LinearContactModel::Reduced& LinearContactModel::reduced() const {
+  return matrix_free() ? reduced_matrix_free() : reduced_factor();
+}
+
+const LinearContactModel::Reduced& LinearContactModel::reduced_factor() const {
   if (reduced_) return *reduced_;
   if (falling_)
     throw std::logic_error(
@@ -321,6 +441,77 @@ const LinearContactModel::Reduced& LinearContactModel::reduced() const {
     throw NumericalError("linear contact model: the reduced matrix K0 = D + Pi' A Pi/dt is not positive definite");
   reduced_ = std::move(red);
   return *reduced_;
+}
+
+const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() const {
+  if (reduced_mf_) return *reduced_mf_;
+  const contact::Grid& g = table_.grid();
+  auto red = std::make_unique<Reduced>(contact::ElementOperator(A0_op_, g, el_, slip_, t_, dt_));
+  red->matrix_free = true;
+  red->A = std::make_unique<contact::ElementOperator>(
+      std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 0), g, el_, slip_,
+      t_, dt_);
+  // Preconditioner (see "Matrix-free path" at the top of the file): M^{-1} = W Pi' (dt C^{-1}) Pi W.
+  red->G = std::make_unique<contact::ElementOperator>(
+      std::make_shared<const contact::HalfSpaceOperator>(
+          contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor)),
+      g, el_, slip_, t_, 1.0 / dt_);
+  red->d = step_matrix_slip_diagonal();
+  red->w = Eigen::VectorXd::Ones(r_);
+  const Eigen::Matrix2d self = (Eigen::Matrix2d() << table_(Component::xx, 0, 0), table_(Component::xy, 0, 0),
+                                table_(Component::xy, 0, 0), table_(Component::yy, 0, 0))
+                                   .finished() /
+                               dt_;
+  for (size_t a = 0; a < el_.size(); ++a)
+    if (slip_[a]) {
+      const double kappa = t_[a].dot(self * t_[a]);
+      red->w(offset_[a]) = std::sqrt(kappa / (kappa + c_[a]));
+    }
+  red->tolerance = kPcgTolerance;
+  reduced_mf_ = std::move(red);
+  return *reduced_mf_;
+}
+
+Eigen::MatrixXd LinearContactModel::rolled(const Eigen::MatrixXd& X) const {
+  // Element a takes the traction of the element kRollShift columns upstream (zero if that is not
+  // a contact element), projected on its own unknowns: Pi_a' Pi_b x_b.
+  const contact::Grid& g = table_.grid();
+  std::vector<int> position(g.size(), -1);
+  for (size_t a = 0; a < el_.size(); ++a) position[el_[a]] = static_cast<int>(a);
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(X.rows(), X.cols());
+  for (size_t a = 0; a < el_.size(); ++a) {
+    const int ix = el_[a] % g.nx - kRollShift;
+    if (ix < 0 || ix >= g.nx) continue;
+    const int b = position[el_[a] + (ix - el_[a] % g.nx)];
+    if (b < 0) continue;
+    for (Eigen::Index j = 0; j < X.cols(); ++j) {
+      const Eigen::Vector2d p = slip_[b] ? Eigen::Vector2d(t_[b] * X(offset_[b], j))
+                                         : Eigen::Vector2d(X.block<2, 1>(offset_[b], j));
+      if (slip_[a])
+        Y(offset_[a], j) = t_[a].dot(p);
+      else
+        Y.block<2, 1>(offset_[a], j) = p;
+    }
+  }
+  return Y;
+}
+
+long LinearContactModel::inner_solves() const { return reduced_mf_ ? reduced_mf_->solves : 0; }
+long LinearContactModel::inner_iterations() const { return reduced_mf_ ? reduced_mf_->iterations : 0; }
+
+double linear_model_bytes(LinearSolver solver, int r, int grid_elements, int Lc) {
+  const double p = 4.0, d = 1.5 * p * std::min(10 * Lc, 2 * Lc + 2);  // the largest Krylov basis
+  const double basis = 8.0 * r * d, projection = 3 * 8.0 * d * d;     // V; H and its copies
+  // FFT operators (A, A0, C^{-1}, the normal one): zero-padded grid of ~4 N values, a few real and
+  // complex arrays each (kernel spectra 4 per tangential operator).
+  const double fft = 4 * 12 * 16.0 * 4.0 * grid_elements;
+  if (!uses_matrix_free(solver, r)) return 8.0 * r * r + 2 * basis + projection + fft;
+  return (lean_krylov_basis(r, int(d / 1.5)) ? basis : 2 * basis) + projection + fft + 64.0 * r;
+}
+
+bool uses_matrix_free(LinearSolver solver, int reduced_unknowns) {
+  if (solver == LinearSolver::automatic) return reduced_unknowns > kDenseReducedUnknowns;
+  return solver == LinearSolver::matrix_free;
 }
 
 namespace {
@@ -493,7 +684,12 @@ std::optional<LinearContactModel::MarkovModel> LinearContactModel::exact_markov(
   const StartBlock start = start_block();
   std::vector<Eigen::MatrixXd> h;
   const bool ok = markov_sequence(
-      Lr_, start.X, [&](const Eigen::MatrixXd& X) { return Eigen::MatrixXd(red.solve(red.K1 * X)); },
+      Lr_, start.X,
+      [&](const Eigen::MatrixXd& X) {
+        if (!red.matrix_free) return Eigen::MatrixXd(red.solve(red.K1 * X));
+        const Eigen::MatrixXd guess = rolled(X);  // N X is nearly X rolled on by one element
+        return red.solve(red.K1 * X, &guess);
+      },
       steps_per_contact_length_, max_contact_lengths * steps_per_contact_length_, h);
   if (!ok) return std::nullopt;
   info.method = SweepInfo::Method::markov;
@@ -526,16 +722,19 @@ bool normalise_in_K0(Eigen::MatrixXd& X, Eigen::MatrixXd& Z, double scale, Eigen
 // K0 solves); this class only orthonormalises, stores and projects.
 class BlockArnoldi {
  public:
-  BlockArnoldi(int rows, int block, int capacity)
-      : r_(rows), p_(block), cap_(capacity), V_(rows, capacity), Y_(rows, capacity),
-        H_(Eigen::MatrixXd::Zero(capacity, capacity)) {}
+  using Product = std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>;
+  /// With `k0` (K0 X for a block X), Y = K0 V is not stored: the Gram-Schmidt coefficients are
+  /// V' (K0 X) and K0 X is recomputed after each pass (memory r d instead of 2 r d).
+  BlockArnoldi(int rows, int block, int capacity, Product k0 = nullptr)
+      : r_(rows), p_(block), cap_(capacity), k0_(std::move(k0)), V_(rows, capacity),
+        Y_(rows, k0_ ? 0 : capacity), H_(Eigen::MatrixXd::Zero(capacity, capacity)) {}
 
   /// The first block from X0 = K0^{-1} B (Z0 = B): X0 = V_0 R0. False on a breakdown.
   bool start(Eigen::MatrixXd X, Eigen::MatrixXd Z) {
     const Eigen::MatrixXd G0 = X.transpose() * Z;
     if (!normalise_in_K0(X, Z, G0.diagonal().maxCoeff(), R0_)) return false;
     V_.leftCols(p_) = X;
-    Y_.leftCols(p_) = Z;
+    if (!k0_) Y_.leftCols(p_) = Z;
     d_ = p_;
     return true;
   }
@@ -558,7 +757,7 @@ class BlockArnoldi {
     if (ok) {
       H_.block(d, d - p_, p_, p_) = R;
       V_.middleCols(d, p_) = X;
-      Y_.middleCols(d, p_) = Z;
+      if (!k0_) Y_.middleCols(d, p_) = Z;
       d_ += p_;
     }
     model_d_ = d;
@@ -600,9 +799,13 @@ class BlockArnoldi {
     const int d = d_;
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d, p_);
     for (int pass = 0; pass < 2; ++pass) {
-      const Eigen::MatrixXd Ci = linalg::transposed_product(Y_, d, X);  // Y' X
-      linalg::subtract_product(V_, r_, d, Ci, X);                        // X -= V Ci
-      linalg::subtract_product(Y_, r_, d, Ci, Z);                        // Z -= Y Ci
+      const Eigen::MatrixXd Ci = k0_ ? linalg::transposed_product(V_, d, Z)   // V' K0 X
+                                     : linalg::transposed_product(Y_, d, X);  // Y' X
+      linalg::subtract_product(V_, r_, d, Ci, X);                             // X -= V Ci
+      if (k0_)
+        Z = k0_(X);
+      else
+        linalg::subtract_product(Y_, r_, d, Ci, Z);  // Z -= Y Ci
       C += Ci;
       const Eigen::VectorXd norm1 = (X.transpose() * Z).diagonal();
       if (pass == 0 && (norm1.array() > 0.5 * norm0.array()).all()) break;
@@ -614,7 +817,7 @@ class BlockArnoldi {
     if (need <= cap_) return;
     const int c = std::max(need, p_ * ((cap_ / p_) * 3 / 2 + 1));
     V_.conservativeResize(Eigen::NoChange, c);
-    Y_.conservativeResize(Eigen::NoChange, c);
+    if (!k0_) Y_.conservativeResize(Eigen::NoChange, c);
     H_.conservativeResize(c, c);
     H_.rightCols(c - cap_).setZero();
     H_.bottomRows(c - cap_).setZero();
@@ -622,6 +825,7 @@ class BlockArnoldi {
   }
 
   int r_, p_, cap_;
+  Product k0_;
   int d_ = 0;        // basis vectors so far
   int model_d_ = 0;  // dimension of the square model after the last step
   Eigen::MatrixXd V_, Y_, H_, R0_;
@@ -658,8 +862,14 @@ std::optional<LinearContactModel::MarkovModel> LinearContactModel::krylov_markov
   const double tolerance = 1e-10;
 
   const StartBlock start = start_block();
-  BlockArnoldi arnoldi(r_, p, p * std::min(max_blocks + 2, 2 * Lc + 2));
-  if (!arnoldi.start(start.X, start.Z)) return std::nullopt;
+  const int capacity = p * std::min(max_blocks + 2, 2 * Lc + 2);
+  BlockArnoldi::Product k0;  // matrix-free: K0 products instead of Y = K0 V where Y does not fit
+  if (red.matrix_free && lean_krylov_basis(r_, capacity)) k0 = [&red](const Eigen::MatrixXd& X) { return red.apply_K0(X); };
+  BlockArnoldi arnoldi(r_, p, capacity, k0);
+  // Matrix-free: Z = K0 X for the computed X (the PCG solution, not the exact one).
+  if (!arnoldi.start(start.X, red.matrix_free ? red.apply_K0(start.X) : start.Z)) return std::nullopt;
+  const long solves0 = red.solves, iterations0 = red.iterations;
+  info.matrix_free = red.matrix_free;
 
   std::vector<Eigen::MatrixXd> h_prev, h_cur;  // Markov parameters of the last two checked models
   bool have_prev = false;
@@ -667,8 +877,17 @@ std::optional<LinearContactModel::MarkovModel> LinearContactModel::krylov_markov
   for (int k = 1; k <= max_blocks; ++k) {
     // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
     Eigen::MatrixXd Z = red.K1 * arnoldi.last_block();
-    Eigen::MatrixXd X = red.solve(Z);
+    Eigen::MatrixXd X;
+    if (red.matrix_free) {
+      const Eigen::MatrixXd guess = rolled(arnoldi.last_block());
+      X = red.solve(Z, &guess);
+      Z = red.apply_K0(X);
+    } else {
+      X = red.solve(Z);
+    }
     const bool ok = arnoldi.extend(std::move(X), std::move(Z));
+    info.inner_solves = red.solves - solves0;
+    info.inner_iterations = red.iterations - iterations0;
     if (k < next_check && ok && k < max_blocks) continue;
     // Check: after k steps the square model uses blocks 0..k-1 (d = p k); its H is complete.
     info.krylov_seconds += seconds_since(t0);
@@ -797,11 +1016,11 @@ void LinearContactModel::hessenberg_sweep(const std::vector<double>& frequencies
 
 Eigen::MatrixXd LinearContactModel::step_matrix_cholesky_factor() const {
   // K0 holds the factor in its lower triangle; its strict upper triangle was never written.
-  return reduced().K0.triangularView<Eigen::Lower>();
+  return reduced_factor().K0.triangularView<Eigen::Lower>();
 }
 
 double LinearContactModel::step_matrix_rcond() const {
-  return reduced().llt->rcond();
+  return reduced_factor().llt->rcond();
 }
 
 Eigen::VectorXd LinearContactModel::step_matrix_slip_diagonal() const {
@@ -830,7 +1049,12 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
   for (size_t k = 0; k < xi.size(); ++k) {
     Eigen::MatrixXd rhs = red.K1 * p + Wr_ * xi[k];
     if (block_ == 4) rhs += rN0_ * dN[k] + rN1_ * previous;
-    p = red.solve(rhs);
+    if (red.matrix_free) {
+      const Eigen::MatrixXd guess = rolled(p);
+      p = red.solve(rhs, &guess);
+    } else {
+      p = red.solve(rhs);
+    }
     F.push_back(Lr_.transpose() * p + dN_ * dN[k]);
     previous = dN[k];
   }

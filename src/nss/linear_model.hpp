@@ -83,19 +83,39 @@ using CreepMatrix = Eigen::Matrix3cd;
 /// Normal-load coefficients g = (g_x, g_y, g_z) (-, -, m): F~ = -f xi~ + g N~ (docs/nss_normal_load.md).
 using LoadVector = Eigen::Vector3cd;
 
+/// How K0 is solved (solver.linear_model; linear_model.cpp, "Matrix-free path"): a dense Cholesky
+/// factor, or K0 applied by FFT and solved by preconditioned CG; automatic: dense up to
+/// kDenseReducedUnknowns reduced unknowns.
+enum class LinearSolver { automatic, dense, matrix_free };
+
+/// The largest r for which `automatic` takes the dense path (measured, linear_model.cpp).
+constexpr int kDenseReducedUnknowns = 11000;
+
 struct LinearModelInput {
   // A constructor rather than an aggregate: {mu, speed, spin_offset} stays valid (see
   // contact::SteadyRollingInput).
   LinearModelInput(double mu_ = 0.3, double speed_ = 0.0, double spin_offset_ = 0.0,
-                   contact::FallingFriction falling_ = {})
-      : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_) {}
+                   contact::FallingFriction falling_ = {},
+                   LinearSolver solver_ = LinearSolver::automatic)
+      : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_), solver(solver_) {}
   double mu = 0.3;           ///< friction coefficient
   double speed = 0.0;        ///< rolling speed V (m/s)
   double spin_offset = 0.0;  ///< as in the steady solution (grid.spin_offset)
   /// Falling friction mu(|s|) = mu [(1 - A) e^{-B|s|} + A] as in the steady solution (constant
   /// by default; see "Falling friction" above).
   contact::FallingFriction falling;
+  LinearSolver solver = LinearSolver::automatic;  ///< solver.linear_model
 };
+
+/// Whether a model with r reduced unknowns takes the matrix-free path under `solver`.
+bool uses_matrix_free(LinearSolver solver, int reduced_unknowns);
+
+/// Estimated peak memory (bytes) of the linear model and its fast sweep on the path taken, for
+/// r reduced unknowns, `grid_elements` elements of the potential contact area and Lc steps per
+/// contact length: dense, the factor (8 r^2) and the Krylov basis with K0 times it; matrix-free,
+/// the basis alone (or with K0 times it where that fits: linear_model.cpp) and the FFT work
+/// arrays. An upper bound of the measured peak (bench: `rollnoise bench --sweep-cost`).
+double linear_model_bytes(LinearSolver solver, int reduced_unknowns, int grid_elements, int steps_per_contact_length);
 
 /// How creep_coefficients() obtained its Markov parameters (for benchmarks and tests).
 struct SweepInfo {
@@ -109,6 +129,9 @@ struct SweepInfo {
   double factor_seconds = 0.0;   ///< assembling K0 and its Cholesky factorisation
   double krylov_seconds = 0.0;   ///< block steps (or recursion steps), checks excluded
   double check_seconds = 0.0;    ///< Markov parameters of the trial models and their comparison
+  bool matrix_free = false;      ///< K0 solved by preconditioned CG (else by its Cholesky factor)
+  long inner_solves = 0;         ///< matrix-free: K0 solves (columns) of the sweep
+  long inner_iterations = 0;     ///< matrix-free: their PCG iterations in all
 };
 
 class LinearContactModel {
@@ -124,6 +147,10 @@ class LinearContactModel {
   int unknowns() const { return 2 * (n_adhesion_ + n_slip_); }
   /// Unknowns of the reduced symmetric formulation: 2 per adhesion element, 1 per slip element.
   int reduced_unknowns() const { return r_; }
+  /// Whether K0 is applied by FFT and solved by preconditioned CG (LinearModelInput::solver).
+  bool matrix_free() const { return uses_matrix_free(solver_, r_); }
+  /// Steps per contact length (the extent of the contact area in x, in elements).
+  int steps_per_contact_length() const { return steps_per_contact_length_; }
   int adhesion_elements() const { return n_adhesion_; }
   int slip_elements() const { return n_slip_; }
   double time_step() const { return dt_; }
@@ -184,7 +211,7 @@ class LinearContactModel {
 
   /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations at t_k (k = 0, 1, ...)
   /// by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
-  /// factorisation of K0, K1 by FFT).
+  /// factorisation of K0, or PCG started from the previous step rolled on by one element; K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
   /// The same with a normal-load variation N~_k (N) at t_k as well (same length as the creepages).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation,
@@ -193,7 +220,12 @@ class LinearContactModel {
   /// Throw InputError (key "frequency") unless 0 <= f <= Nyquist.
   void check_frequency(double frequency) const;
 
-  // ---- diagnostics (read-only; they build and factorise K0 if that has not happened yet) ----
+  /// PCG statistics of the matrix-free path so far (all solves: sweep, recursion, time response):
+  /// columns solved and iterations in all.
+  long inner_solves() const;
+  long inner_iterations() const;
+
+  // ---- diagnostics (read-only; they build and factorise K0 densely, whatever the path) ----
 
   /// The Cholesky factor L of the reduced step matrix, K0 = D + Pi' A Pi/dt = L L' (lower
   /// triangular, r x r, a copy), for exact condition numbers: cond_2(K0) = cond_2(L)^2 and, for a
@@ -215,7 +247,11 @@ class LinearContactModel {
   const Dense& dense() const;
   /// B_e of a slip element: -t t' (constant friction) - kappa s^ s^' (falling friction).
   Eigen::Matrix2d slip_traction_matrix(int a) const;
-  const Reduced& reduced() const;
+  const Reduced& reduced() const;          // on the path taken
+  const Reduced& reduced_factor() const;   // dense (Cholesky), built on demand
+  const Reduced& reduced_matrix_free() const;
+  /// Pi' S Pi X: the tractions rolled on by one element (the start of the PCG solves).
+  Eigen::MatrixXd rolled(const Eigen::MatrixXd& X) const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
   /// Markov parameters of f (h_j) and of g (gm_j, G3), as one Markov route produced them.
   struct MarkovModel {
@@ -247,6 +283,7 @@ class LinearContactModel {
                         std::vector<LoadVector>* g) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
+  LinearSolver solver_ = LinearSolver::automatic;
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;
@@ -263,7 +300,8 @@ class LinearContactModel {
   Eigen::MatrixXd Wr_;  ///< r x 3 reduced inputs  -Pi' W
   Eigen::MatrixXd Lr_;  ///< r x 3 reduced outputs  dx dy Pi' U
   mutable std::unique_ptr<Dense> dense_;
-  mutable std::unique_ptr<Reduced> reduced_;
+  mutable std::unique_ptr<Reduced> reduced_;     ///< dense
+  mutable std::unique_ptr<Reduced> reduced_mf_;  ///< matrix-free
   // Normal-load input (G1-G3), zero when there is no slip element.
   int block_ = 3;            ///< Krylov block: 3 creepage inputs (+ 1 normal load)
   Eigen::VectorXd wN0_, wN1_;  ///< n: A bN/dt, A0 bN/dt (paper form, per N)

@@ -21,6 +21,7 @@
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "nss/linear_model.hpp"
 #include "pipeline/limits.hpp"
 
 namespace rollnoise::pipeline {
@@ -37,6 +38,7 @@ struct ContactCase {
   double spin_offset = 0.0;
   contact::Creepage creepage;
   contact::Backend backend = contact::Backend::Auto;
+  nss::LinearSolver linear_solver = nss::LinearSolver::automatic;  ///< solver.linear_model
   /// profiles: the wheel-rail pair, the wheelset position the contact point is found at, and
   /// (after place_contact) the contact point.
   std::shared_ptr<const geometry::WheelRailPair> profiles;

@@ -41,11 +41,13 @@ void check_size(const Limits& limits, const std::string& key, double count, cons
 void check_memory(const Limits& limits, const std::string& key, const std::string& what,
                   double bytes);
 
-/// Memory of the contact problem on the case's grid (bytes): the dense matrices over the grid
-/// elements that the tangential solvers factorise (Newton Jacobian) and the linear model holds
-/// (K0 and its Cholesky factor), bounded by 16 bytes x (grid elements)^2. Measured peak memory
-/// of `rollnoise creep` on the paper case: 68x50 126 MB (8.6 x n^2 above the 25 MB base), 96x70
-/// 348 MB (7.1 x n^2).
+/// Memory of the contact problem on the case's grid (bytes), for the path the linear model takes
+/// (solver.linear_model). Dense: the matrices over the grid elements that the tangential solvers
+/// factorise (Newton Jacobian) and the linear model holds (K0 and its Cholesky factor), bounded by
+/// 16 bytes x (grid elements)^2; measured peak memory of `rollnoise creep` on the paper case: 68x50
+/// 126 MB (8.6 x n^2 above the 25 MB base), 96x70 348 MB (7.1 x n^2). Matrix-free (grids whose
+/// reduced unknowns may exceed nss::kDenseReducedUnknowns): nss::linear_model_bytes, O(r x Krylov
+/// basis) (200x200: ~1.5 GB estimated at r = 2n; bench --sweep-cost measures it).
 double contact_bytes(const ContactCase& c);
 
 /// Memory kept per time step by transient, response and validate (bytes): at most 20 doubles per
