@@ -12,6 +12,7 @@
 #include "contact/rolling_history.hpp"
 #include "contact/transient_rolling.hpp"
 #include "linalg/harmonic_fit.hpp"
+#include "nss/extrapolation.hpp"
 
 namespace rollnoise::nss {
 namespace {
@@ -77,7 +78,7 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   contact::TransientRolling rolling(patch.influence, patch.normal.pn, c.steady.mu, c.steady.speed,
                                     c.steady.spin_offset, c.backend, c.tangential);
   rolling.set_tractions(steady.px, steady.py);
-  const auto F = contact::rolling_forces(rolling, patch.grid, e.history, dt, r.steps);
+  const auto F = contact::rolling_forces(rolling, patch.grid, e.history, c.sampling, dt, r.steps);
   std::vector<double> time = {0.0}, fx = {r.force(0)}, fy = {r.force(1)};
   for (long k = 1; k <= r.steps; ++k)
     time.push_back(k * dt), fx.push_back(F[k - 1](0)), fy.push_back(F[k - 1](1));
@@ -90,8 +91,8 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   // ... and its recursion from rest over the same run, fitted the same way: what is left of the
   // start transient in the fit window
   std::vector<Eigen::Vector3d> xi;
-  for (double tk : time) {
-    const auto v = e.history.variation(tk);
+  for (size_t k = 0; k < time.size(); ++k) {
+    const auto v = e.history.variation(contact::sampling_time(c.sampling, static_cast<long>(k), dt));
     xi.emplace_back(v[0], v[1], v[2]);
   }
   const auto Fl = m.time_response(xi);
@@ -170,7 +171,7 @@ GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
   const auto F = contact::total_forces(g, steady.px, steady.py);
   r.force << F.Fx, F.Fy, F.Mz;
   t = Clock::now();
-  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset});
+  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, c.sampling});
   measure_creep(m, s, r);
   r.t_creep = seconds(t);
   t = Clock::now();
@@ -178,6 +179,7 @@ GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
   r.t_kalker = seconds(t);
   // transient response: unsteady rolling from the steady state at the mean creepage
   if (s.transient_frequency <= m.nyquist_frequency()) measure_transient(c, s, e, patch, steady, m, r);
+  measure_sampling_sweeps(c, s, patch, steady, r);
   return r;
 }
 
@@ -209,6 +211,70 @@ GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const
     if (std::isfinite(r.window_error)) err.window_error = std::max(err.window_error, r.window_error);
   }
   return err;
+}
+
+// ---- the sampling study ----
+
+void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s, const contact::ContactPatch& patch,
+                             const contact::TangentialSolution& steady, GridMeasurement& r) {
+  const contact::CreepageSampling samplings[2] = {contact::CreepageSampling::contact,
+                                                  contact::CreepageSampling::midstep};
+  for (int i = 0; i < 2; ++i) {
+    SamplingSweep& sw = r.sampling[i];
+    const auto t = Clock::now();
+    const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, samplings[i]});
+    // a rolling-noise axis: log-spaced over [100 Hz, 5 kHz], capped at the grid's Nyquist limit
+    const double f_max = std::min(5000.0, m.nyquist_frequency());
+    std::vector<double> sweep(s.sweep_count);
+    for (int k = 0; k < s.sweep_count; ++k)
+      sweep[k] = 100.0 * std::pow(f_max / 100.0, s.sweep_count > 1 ? k / (s.sweep_count - 1.0) : 1.0);
+    (void)m.creep_coefficients(sweep);
+    sw.seconds = seconds(t);
+    sw.f.clear();
+    for (double f : s.accuracy_frequencies)
+      sw.f.push_back(f <= m.nyquist_frequency() ? m.creep_coefficients({f})[0] : CreepMatrix::Constant(kNaN));
+  }
+}
+
+SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, const GridStudySettings& s) {
+  const int entry[3][2] = {{0, 0}, {1, 1}, {1, 2}};  // f11, f22, f23
+  SamplingAccuracy a;
+  for (auto& e : a.error) e.resize(s.accuracy_frequencies.size());
+  for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
+    // the three finest grids that resolve this frequency
+    std::vector<const GridMeasurement*> fine;
+    for (auto it = grids.rbegin(); it != grids.rend() && fine.size() < 3; ++it)
+      if (std::isfinite(std::abs((*it).sampling[1].f[i](0, 0)))) fine.insert(fine.begin(), &*it);
+    std::vector<double> h;
+    for (const auto* g : fine) h.push_back(g->dx);
+    CreepMatrix conv = CreepMatrix::Constant(kNaN);
+    Eigen::Matrix3d conv_err = Eigen::Matrix3d::Constant(kNaN);
+    Eigen::Vector3d order = Eigen::Vector3d::Constant(kNaN), spread = order;
+    for (int j = 0; j < 3 && fine.size() >= 2; ++j)
+      for (int k = 0; k < 3; ++k) {
+        std::vector<std::complex<double>> vm, vc;
+        for (const auto* g : fine) vm.push_back(g->sampling[1].f[i](j, k)), vc.push_back(g->sampling[0].f[i](j, k));
+        const RichardsonResult rm = richardson(h, vm, {2.0});
+        conv(j, k) = rm.value;
+        conv_err(j, k) = rm.error;
+        for (int q = 0; q < 3; ++q)
+          if (entry[q][0] == j && entry[q][1] == k) {
+            order(q) = rm.order;
+            spread(q) = std::abs(richardson(h, vc, {1.0}).value - rm.value) / std::abs(rm.value);
+          }
+      }
+    a.converged.push_back(conv);
+    a.converged_error.push_back(conv_err);
+    a.order.push_back(order);
+    a.spread.push_back(spread);
+    for (int sm = 0; sm < 2; ++sm)
+      for (int q = 0; q < 3; ++q)
+        for (const auto& g : grids) {
+          const std::complex<double> ref = conv(entry[q][0], entry[q][1]);
+          a.error[sm][i][q].push_back(std::abs(g.sampling[sm].f[i](entry[q][0], entry[q][1]) - ref) / std::abs(ref));
+        }
+  }
+  return a;
 }
 
 }  // namespace rollnoise::nss

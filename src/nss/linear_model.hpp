@@ -49,6 +49,14 @@
 //   g(z) = dx dy U' bN + L' x0 + z sum_j z^j L' N^j y                                       (G3)
 // so the block of 3 creepage vectors becomes a block of 4 (one more column per Cholesky pass of
 // the factor, which is streamed once for all of them).
+//
+// Creepage sampling (LinearModelInput::sampling, contact/creepage_history.hpp). Everything above is
+// the recursion with the creepage of step k taken at t_k (CONTACT's convention). With midstep the
+// creepage is taken at t_k - dt/2: for xi~(t) = xi^ e^{i w t} the recursion sees xi~_k = xi^
+// e^{-i w dt/2} e^{i w t_k}, so f_midstep(w) = f_contact(w) e^{-i w dt/2} exactly, on every f route
+// (the factor is applied in one place, linear_model.cpp). g is the same in both samplings (the load
+// is taken at t_k with the traction it bounds). time_response() takes the creepages at the sampling
+// instants (contact::sampling_time): the callers sample them.
 #pragma once
 
 #include <Eigen/Dense>
@@ -57,6 +65,7 @@
 #include <optional>
 #include <vector>
 
+#include "contact/creepage_history.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
@@ -72,6 +81,8 @@ struct LinearModelInput {
   double mu = 0.3;           ///< friction coefficient
   double speed = 0.0;        ///< rolling speed V (m/s)
   double spin_offset = 0.0;  ///< as in the steady solution (grid.spin_offset)
+  /// when the creepage of step k is taken (t_k - dt/2 by default; contact: t_k, as CONTACT)
+  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
 };
 
 /// How creep_coefficients() obtained its Markov parameters (for benchmarks and tests).
@@ -104,6 +115,8 @@ class LinearContactModel {
   int adhesion_elements() const { return n_adhesion_; }
   int slip_elements() const { return n_slip_; }
   double time_step() const { return dt_; }
+  /// When the creepage of step k is taken (f's phase, the instants time_response expects).
+  contact::CreepageSampling sampling() const { return sampling_; }
   /// Highest frequency the grid resolves: V / (2 dx) (w dt = pi) (Hz).
   double nyquist_frequency() const { return 0.5 / dt_; }
 
@@ -145,7 +158,8 @@ class LinearContactModel {
   std::vector<CreepMatrix> creep_coefficients_hessenberg(const std::vector<double>& frequencies) const;
 
   /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
-  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()).
+  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()). They are
+  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling.
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
   /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
   const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
@@ -156,11 +170,12 @@ class LinearContactModel {
   /// How the last creep_coefficients() built its Markov parameters.
   const SweepInfo& sweep_info() const { return info_; }
 
-  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations at t_k (k = 0, 1, ...)
-  /// by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
+  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken at
+  /// contact::sampling_time(sampling(), k, dt) (k = 0, 1, ...), by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
   /// factorisation of K0, K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
-  /// The same with a normal-load variation N~_k (N) at t_k as well (same length as the creepages).
+  /// The same with a normal-load variation N~_k (N) at t_k (in both samplings) as well (same length
+  /// as the creepages).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation,
                                              const std::vector<double>& normal_load_variation) const;
 
@@ -208,7 +223,10 @@ class LinearContactModel {
   /// Split the Markov parameters of the block (3 creepage columns, 1 scaled load column) into f's
   /// and g's.
   MarkovModel markov_model(const std::vector<Eigen::MatrixXd>& h, const StartBlock& start) const;
-  /// f = -sum_j h_j z^j at the frequencies (Horner).
+  /// f of the creepage at t_k (CONTACT's sampling) -> f of sampling_, in place (one factor per
+  /// frequency; the identity for contact).
+  void apply_sampling(std::vector<CreepMatrix>& f, const std::vector<double>& frequencies) const;
+  /// f = -sum_j h_j z^j at the frequencies (Horner), with the sampling's phase.
   std::vector<CreepMatrix> creep_from_markov(const std::vector<Eigen::Matrix3d>& h,
                                              const std::vector<double>& frequencies) const;
   /// f and/or g by the Hessenberg form (either pointer may be null).
@@ -216,6 +234,7 @@ class LinearContactModel {
                         std::vector<LoadVector>* g) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
+  contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep;
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;

@@ -5,7 +5,7 @@ namespace rollnoise::pipeline {
 std::unique_ptr<nss::LinearContactModel> linear_model(const ContactCase& c, const contact::ContactPatch& patch,
                                                       const contact::TangentialSolution& steady) {
   return std::make_unique<nss::LinearContactModel>(patch, steady,
-                                                   nss::LinearModelInput{c.mu, c.speed, c.spin_offset});
+                                                   nss::LinearModelInput{c.mu, c.speed, c.spin_offset, c.sampling});
 }
 
 MeanState solve_mean_state(ContactCase c, bool with_model) {
