@@ -1,5 +1,6 @@
 #include "nss/extrapolation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -42,10 +43,15 @@ RichardsonResult richardson(const std::vector<double>& h, const std::vector<std:
       if (std::isfinite(p)) r.order = p, r.observed = true;
     }
   }
-  const double hc = std::pow(h[n - 2], r.order), hf = std::pow(h[n - 1], r.order);
   const std::complex<double> vc = v[n - 2], vf = v[n - 1];
-  r.value = vf + (vf - vc) * (hf / (hc - hf));  // (R2)
-  r.error = (r.observed ? 1.25 : 3.0) * std::abs(r.value - vf);
+  auto extrapolate = [&](double p) {  // (R2)
+    const double hc = std::pow(h[n - 2], p), hf = std::pow(h[n - 1], p);
+    return vf + (vf - vc) * (hf / (hc - hf));
+  };
+  r.value = extrapolate(r.order);
+  // (R3): the larger of the corrections with the observed and the assumed order
+  const double correction = std::max(std::abs(r.value - vf), std::abs(extrapolate(s.assumed_order) - vf));
+  r.error = (r.observed ? 1.25 : 3.0) * correction;
   return r;
 }
 
