@@ -240,7 +240,7 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   print_header(reader.name(), study, settings, excitation);
   const std::vector<nss::GridMeasurement> res = measure_grids(study, settings, excitation, grids, o.quiet);
   const double c11_table = noise::kalker_coefficients(base.a / base.b, base.material.nu).C11;
-  const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table);
+  const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table, study.sampling);
   const std::vector<Quantity> table = quantities(err);
 
   print_grids(res, err, settings, base, c11_table);

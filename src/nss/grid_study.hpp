@@ -176,7 +176,10 @@ struct GridStudyErrors {
   std::vector<double> transient_vs_linear;  ///< |X - (-f(w) xi^)| / |-f(w) xi^|, same grid
   double window_error = 0.0;          ///< largest finite GridMeasurement::window_error
 };
+/// `sampling`: the case's (GridStudyCase::sampling); the phase-corrected errors remove the half-step
+/// lead of CONTACT's sampling and equal the plain ones with midstep.
 GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& grids,
-                                  const GridStudySettings& s, double speed, double c11_table);
+                                  const GridStudySettings& s, double speed, double c11_table,
+                                  contact::CreepageSampling sampling);
 
 }  // namespace rollnoise::nss

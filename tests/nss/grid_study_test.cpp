@@ -48,7 +48,7 @@ const Study& paper_study() {
     Study st;
     for (int nx : {10, 14, 20, 28, 40}) st.grids.push_back(nss::measure_grid(c, settings, e, nx));
     // C11's table value does not enter the errors asserted here
-    st.errors = nss::grid_study_errors(st.grids, settings, c.steady.speed, 1.0);
+    st.errors = nss::grid_study_errors(st.grids, settings, c.steady.speed, 1.0, c.sampling);
     return st;
   }();
   return s;
