@@ -36,6 +36,7 @@ nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::Cont
   c.steady = base.steady_input();
   c.backend = base.backend;
   c.tangential = base.tangential;
+  c.sampling = base.sampling;
   return c;
 }
 
@@ -172,6 +173,63 @@ void write_csv(const std::string& csv, const std::string& case_file, const std::
               csv.c_str(), csv.c_str(), png.c_str());
 }
 
+// ---- The creepage-sampling study (rolling.creepage_sampling, docs/accuracy.md): per grid the time
+// of a sweep of settings.sweep_count frequencies and the errors of f11, f22, f23 at the accuracy
+// frequencies against the grid-converged f, for both samplings (nss::sampling_accuracy). ----
+
+const char* kSamplingName[2] = {"contact", "midstep"};
+
+std::string frequency_label(double f) {
+  char text[32];
+  std::snprintf(text, sizeof text, f >= 1000.0 ? "%gkHz" : "%gHz", f >= 1000.0 ? f / 1000.0 : f);
+  return text;
+}
+
+// The error columns of the sampling study (pointers into `a`).
+std::vector<Quantity> sampling_columns(const nss::SamplingAccuracy& a, const nss::GridStudySettings& s) {
+  const char* entry[3] = {"f11", "f22", "f23"};
+  std::vector<Quantity> q;
+  for (int sm = 0; sm < 2; ++sm)
+    for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i)
+      for (int e = 0; e < 3; ++e) {
+        const std::string f = frequency_label(s.accuracy_frequencies[i]);
+        q.push_back({std::string(entry[e]) + " at " + f + ", " + kSamplingName[sm] +
+                         " sampling, against the grid-converged f",
+                     std::string("err_") + entry[e] + "_" + f + "_" + kSamplingName[sm] + "_rel",
+                     std::string(entry[e]) + " " + f, &a.error[sm][i][e]});
+      }
+  return q;
+}
+
+void print_sampling_accuracy(const std::vector<nss::GridMeasurement>& res, const nss::SamplingAccuracy& a,
+                             const std::vector<Quantity>& columns, const nss::GridStudySettings& s) {
+  std::printf("creepage sampling: errors of f against the grid-converged f (Richardson of the midstep values on "
+              "the three finest grids):\n");
+  for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
+    const auto& c = a.converged[i];
+    std::printf("  %s: f11 = %.5g %+.5gi N (+- %.1e), f22 = %.5g %+.5gi N (+- %.1e), f23 = %.5g %+.5gi N m; "
+                "orders %.2f %.2f %.2f; contact-sampling extrapolation differs by %.1e %.1e %.1e\n",
+                frequency_label(s.accuracy_frequencies[i]).c_str(), c(0, 0).real(), c(0, 0).imag(),
+                a.converged_error[i](0, 0) / std::abs(c(0, 0)), c(1, 1).real(), c(1, 1).imag(),
+                a.converged_error[i](1, 1) / std::abs(c(1, 1)), c(1, 2).real(), c(1, 2).imag(), a.order[i](0),
+                a.order[i](1), a.order[i](2), a.spread[i](0), a.spread[i](1), a.spread[i](2));
+  }
+  const size_t per = columns.size() / 2;
+  for (int sm = 0; sm < 2; ++sm) {
+    std::printf("%8s %5s %9s", kSamplingName[sm], "ny", "sweep [s]");
+    for (size_t q = 0; q < per; ++q) std::printf(" %10s", columns[sm * per + q].header.c_str());
+    std::printf("\n");
+    for (size_t g = 0; g < res.size(); ++g) {
+      std::printf("%8d %5d %9.3f", res[g].nx, res[g].ny, res[g].sampling[sm].seconds);
+      for (size_t q = 0; q < per; ++q) std::printf(" %10.2e", (*columns[sm * per + q].err)[g]);
+      std::printf("\n");
+    }
+  }
+  std::printf("  (sweep: linear model set-up + f at %d frequencies over [100 Hz, 5 kHz]; relative errors, NaN above "
+              "Nyquist)\n",
+              s.sweep_count);
+}
+
 }  // namespace
 
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv) {
@@ -186,25 +244,31 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   print_header(reader.name(), study, settings, excitation);
   const std::vector<nss::GridMeasurement> res = measure_grids(study, settings, excitation, grids, o.quiet);
   const double c11_table = noise::kalker_coefficients(base.a / base.b, base.material.nu).C11;
-  const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table);
+  const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table, study.sampling);
   const std::vector<Quantity> table = quantities(err);
 
   print_grids(res, err, settings, base, c11_table);
   print_errors(res, err, table, settings);
   print_orders(res, err, table);
-  std::vector<Quantity> columns = table;
+  const nss::SamplingAccuracy sampling = nss::sampling_accuracy(res, settings);
+  const std::vector<Quantity> sampling_table = sampling_columns(sampling, settings);
+  print_sampling_accuracy(res, sampling, sampling_table, settings);
+  std::vector<Quantity> csv_columns = table;
+  csv_columns.insert(csv_columns.end(), sampling_table.begin(), sampling_table.end());
+  std::vector<Quantity> columns = csv_columns;
   columns.push_back({"C11 against Kalker's table", "err_C11_kalker_rel", "", &err.c11_table});
   columns.push_back({"transient against the linear model on the same grid", "err_transient_vs_linear_rel", "",
                      &err.transient_vs_linear});
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_bench(w, reader, res, columns, c11_table);
+  io::write_bench_sampling(w, res, sampling, settings.accuracy_frequencies);
   w.commit();
   std::printf("wrote %s\n", out.c_str());
   if (csv.empty())
     std::printf("(--csv FILE writes the table; postprocess/plot_bench.py FILE draws it)\n");
   else
-    write_csv(csv, o.case_file, res, err, table, settings, c11_table);
+    write_csv(csv, o.case_file, res, err, csv_columns, settings, c11_table);
   return 0;
 }
 

@@ -32,7 +32,12 @@ int run_collect(const StudyOptions& o);
 
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps);
 int run_transient(const CommonOptions& o);
-int run_creep(const CommonOptions& o, const std::string& csv, bool direct);
+/// rollnoise creep --extrapolate [--extrapolate-grids 1,1.5,2] (pipeline::run_creep_extrapolated).
+struct ExtrapolationOptions {
+  bool on = false;                            ///< --extrapolate (implied by --extrapolate-grids)
+  std::vector<double> factors = {1.0, 1.5, 2.0};  ///< --extrapolate-grids
+};
+int run_creep(const CommonOptions& o, const std::string& csv, bool direct, const ExtrapolationOptions& x = {});
 int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);

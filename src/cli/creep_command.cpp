@@ -5,13 +5,26 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "pipeline/creep.hpp"
 #include "io/contact_case.hpp"
 #include "io/creep_output.hpp"
 #include "io/frequency_axis.hpp"
 
 namespace rollnoise::cli {
+namespace {
 
-int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
+void print_extrapolation(const pipeline::CreepExtrapolation& ex, const std::vector<double>& freq) {
+  std::printf("  extrapolated from %zu grids:", ex.dx.size());
+  for (size_t i = 0; i < ex.dx.size(); ++i) std::printf(" %d x %d (dx %.4g mm)", ex.nx[i], ex.ny[i], 1e3 * ex.dx[i]);
+  std::printf("; order observed for %ld entries, assumed (%g) for %ld\n", ex.observed, ex.assumed_order, ex.assumed);
+  const size_t mid = freq.size() / 2;
+  std::printf("  at %.1f Hz: f11 +- %.2g N (order %.2f), f22 +- %.2g N (order %.2f)\n", freq[mid], ex.f_error[mid](0, 0),
+              ex.f_order[mid](0, 0), ex.f_error[mid](1, 1), ex.f_order[mid](1, 1));
+}
+
+}  // namespace
+
+int run_creep(const CommonOptions& o, const std::string& csv, bool direct, const ExtrapolationOptions& x) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   io::InputProblems problems;  // every problem of the case at once
   std::vector<double> freq;
@@ -19,8 +32,11 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
   io::ContactCase cc = io::read_contact_case(reader, problems);
   problems.throw_if_any();
   const std::string freq_key = reader.has("frequency.list") ? "frequency.list" : "frequency.f_max";
-  const pipeline::CreepResult r =
-      io::within_case(reader, [&] { return pipeline::run_creep(std::move(cc), freq, direct, freq_key); });
+  const pipeline::CreepResult r = io::within_case(reader, [&] {
+    return x.on ? pipeline::run_creep_extrapolated(std::move(cc), freq, direct, freq_key, x.factors,
+                                                   "--extrapolate-grids")
+                : pipeline::run_creep(std::move(cc), freq, direct, freq_key);
+  });
   const nss::LinearContactModel& model = *r.state.model;
 
   const std::string out = output_path(o, reader.name());
@@ -35,6 +51,7 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct) {
               model.slip_elements(), model.unknowns());
   std::printf("  mean state %.0f ms; %zu frequencies (%s) in %.0f ms; Nyquist %.0f Hz\n", 1e3 * r.seconds_state,
               freq.size(), direct ? "direct" : "fast sweep", 1e3 * r.seconds_sweep, model.nyquist_frequency());
+  if (r.extrapolation) print_extrapolation(*r.extrapolation, freq);
   const size_t mid = freq.size() / 2;
   const auto& f = r.f[mid];
   const auto& g = r.g[mid];

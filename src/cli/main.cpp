@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
   add_common(creep);
   creep->add_option("--csv", creep_csv, "also write the table (f, then Re and Im of each f_jk) as CSV");
   creep->add_flag("--direct", creep_direct, "a complex LU per frequency (the reference) instead of the fast sweep");
+  cli::ExtrapolationOptions creep_extrapolation;
+  creep->add_flag("--extrapolate", creep_extrapolation.on, "grid-converged f, g by Richardson extrapolation, with errors");
+  auto* creep_grids = creep->add_option("--extrapolate-grids", creep_extrapolation.factors,
+                                        "grid factors of --extrapolate (default 1,1.5,2)")->delimiter(',');
   auto* response = app.add_subcommand("response", "linear-model force response to a creepage history");
   add_common(response);
   auto* validate = app.add_subcommand("validate", "linear model against the unsteady solver");
@@ -127,7 +131,8 @@ int main(int argc, char** argv) {
     cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "");
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
-    if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct);
+    creep_extrapolation.on = creep_extrapolation.on || creep_grids->count() > 0;
+    if (creep->parsed()) return cli::run_creep(common, creep_csv, creep_direct, creep_extrapolation);
     if (response->parsed()) return cli::run_response(common);
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);

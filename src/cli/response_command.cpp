@@ -102,7 +102,7 @@ int run_validate(const CommonOptions& o) {
   {
     Progress progress("unsteady solver", steps, o.quiet, "steps");
     const auto forces =
-        contact::rolling_forces(rolling, ms.patch->grid, h, dt, steps,
+        contact::rolling_forces(rolling, ms.patch->grid, h, ms.contact.sampling, dt, steps,
                                 varying_load ? lin.normal_force : std::vector<double>{},
                                 [&](long k) { progress.update(k); });
     unsteady.insert(unsteady.end(), forces.begin(), forces.end());

@@ -27,6 +27,25 @@
 
 namespace rollnoise::contact {
 
+/// When the creepage of rolling step k is taken (rolling.creepage_sampling, docs/contact_model.md).
+/// Paper Eq. 2 takes the slip of step k from the displacement difference (A p_k - A0 p_{k-1})/dt,
+/// a one-step difference centred at t_k - dt/2 (t_k = k dt), while
+///   contact  takes the creepage at t_k (CONTACT's convention, Kalker 1990 Sec. 5.3): the discrete
+///            response leads the continuous one by half a step, a phase error w dt/2, first order
+///            in dx (nss::half_step_phase_correction);
+///   midstep  takes it at t_k - dt/2, where the difference is centred: the lead vanishes and f
+///            converges at second order at rolling-noise frequencies (docs/accuracy.md).
+/// Only the creepage moves: the normal load N_k (and the pressure bound mu pn_k) stays at t_k, with
+/// the traction p_k it bounds (measured: g converges at t_k and acquires a first-order error at
+/// t_k - dt/2, docs/accuracy.md). The library default is midstep (closer to the continuum); every
+/// comparison with CONTACT names contact.
+enum class CreepageSampling { contact, midstep };
+
+/// The instant the creepage of step k is taken: k dt (contact) or (k - 1/2) dt (midstep) (s).
+inline double sampling_time(CreepageSampling s, long k, double dt) {
+  return s == CreepageSampling::midstep ? (static_cast<double>(k) - 0.5) * dt : static_cast<double>(k) * dt;
+}
+
 class CreepageHistory {
  public:
   enum class Kind { constant, harmonic, multiharmonic, samples };

@@ -4,21 +4,21 @@
 
 namespace rollnoise::contact {
 
-void roll(TransientRolling& rolling, const CreepageHistory& h, double dt, long steps,
+void roll(TransientRolling& rolling, const CreepageHistory& h, CreepageSampling sampling, double dt, long steps,
           const std::vector<double>& normal_force, const StepCallback& on_step) {
   for (long k = 1; k <= steps; ++k) {
-    const Creepage xi = h.at(k * dt);
+    const Creepage xi = h.at(sampling_time(sampling, k, dt));
     on_step(k, xi, normal_force.empty() ? rolling.step(xi) : rolling.step(xi, normal_force[k]));
   }
 }
 
 std::vector<Eigen::Vector3d> rolling_forces(TransientRolling& rolling, const Grid& g,
-                                            const CreepageHistory& h, double dt, long steps,
-                                            const std::vector<double>& normal_force,
+                                            const CreepageHistory& h, CreepageSampling sampling, double dt,
+                                            long steps, const std::vector<double>& normal_force,
                                             const std::function<void(long)>& on_step) {
   std::vector<Eigen::Vector3d> out;
   out.reserve(steps);
-  roll(rolling, h, dt, steps, normal_force, [&](long k, const Creepage&, const TangentialSolution& s) {
+  roll(rolling, h, sampling, dt, steps, normal_force, [&](long k, const Creepage&, const TangentialSolution& s) {
     const TangentialForces f = total_forces(g, s.px, s.py);
     out.emplace_back(f.Fx, f.Fy, f.Mz);
     if (on_step) on_step(k);

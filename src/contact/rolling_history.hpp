@@ -12,20 +12,20 @@
 
 namespace rollnoise::contact {
 
-/// Steps k = 1..steps of `rolling` from the state it holds, step k with the creepage h.at(k dt)
-/// (taken at the end of the step, CONTACT's convention) and, unless `normal_force` is empty, the
-/// normal load normal_force[k] (N; after TransientRolling::set_normal_problem). `on_step(k, xi, s)`
-/// receives each step's creepage and solution.
+/// Steps k = 1..steps of `rolling` from the state it holds, step k with the creepage
+/// h.at(sampling_time(sampling, k, dt)) (t_k = k dt for contact, CONTACT's convention; t_k - dt/2
+/// for midstep, creepage_history.hpp) and, unless `normal_force` is empty, the normal load
+/// normal_force[k] (N, at t_k in both samplings; after TransientRolling::set_normal_problem).
+/// `on_step(k, xi, s)` receives each step's creepage and solution.
 using StepCallback = std::function<void(long, const Creepage&, const TangentialSolution&)>;
-void roll(TransientRolling& rolling, const CreepageHistory& h, double dt, long steps,
+void roll(TransientRolling& rolling, const CreepageHistory& h, CreepageSampling sampling, double dt, long steps,
           const std::vector<double>& normal_force, const StepCallback& on_step);
 
 /// Total forces (Fx, Fy, Mz) (contact/forces.hpp) after steps k = 1..steps of `rolling` from the
-/// state it holds, step k with the creepage h.at(k dt) (taken at the end of the step, CONTACT's
-/// convention) and, unless `normal_force` is empty, the normal load normal_force[k] (N; after
-/// TransientRolling::set_normal_problem). `on_step(k)` is called after step k (progress output).
+/// state it holds, stepped as roll() does. `on_step(k)` is called after step k (progress output).
 std::vector<Eigen::Vector3d> rolling_forces(TransientRolling& rolling, const Grid& g,
-                                            const CreepageHistory& h, double dt, long steps,
+                                            const CreepageHistory& h, CreepageSampling sampling, double dt,
+                                            long steps,
                                             const std::vector<double>& normal_force = {},
                                             const std::function<void(long)>& on_step = {});
 

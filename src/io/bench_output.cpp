@@ -35,4 +35,30 @@ void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::Grid
   w.attribute("/bench", "reference", "errors relative to the finest grid (the last), C11 also against Kalker's table");
 }
 
+void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
+                          const nss::SamplingAccuracy& a, const std::vector<double>& frequencies) {
+  const std::size_t n = grids.size(), nf = frequencies.size();
+  const char* name[2] = {"contact", "midstep"};
+  for (int sm = 0; sm < 2; ++sm) {
+    std::vector<double> t;
+    for (const auto& g : grids) t.push_back(g.sampling[sm].seconds);
+    w.write(std::string("/bench/time_sweep_") + name[sm], t, {n},
+            "s (linear model set-up + sweep of 1000 frequencies, rolling.creepage_sampling = " + std::string(name[sm]) +
+                ")");
+  }
+  std::vector<std::complex<double>> f;
+  std::vector<double> err, order;
+  for (std::size_t i = 0; i < nf; ++i) {
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) f.push_back(a.converged[i](j, k)), err.push_back(a.converged_error[i](j, k));
+    for (int q = 0; q < 3; ++q) order.push_back(a.order[i](q));
+  }
+  w.write("/bench/sampling/frequency", frequencies, {nf}, "Hz");
+  w.write("/bench/sampling/converged_f", f, {nf, 3, 3},
+          "f_jk as /creep/f: f11..f22 in N, f13, f23, f31, f32 in N m, f33 in N m^2 (Richardson of the midstep "
+          "values on the three finest grids)");
+  w.write("/bench/sampling/converged_f_error", err, {nf, 3, 3}, "units of converged_f (Roache's grid convergence index)");
+  w.write("/bench/sampling/order", order, {nf, 3}, "- (order of f11, f22, f23 used by the extrapolation)");
+}
+
 }  // namespace rollnoise::io

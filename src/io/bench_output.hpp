@@ -22,4 +22,10 @@ struct BenchColumn {
 void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::GridMeasurement>& grids,
                  const std::vector<BenchColumn>& errors, double c11_table);
 
+/// The creepage-sampling study (nss::sampling_accuracy): /bench/time_sweep_contact,
+/// /bench/time_sweep_midstep (s per grid) and /bench/sampling/{frequency, converged_f,
+/// converged_f_error, order}; its errors are BenchColumns of write_bench.
+void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
+                          const nss::SamplingAccuracy& a, const std::vector<double>& frequencies);
+
 }  // namespace rollnoise::io

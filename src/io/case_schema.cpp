@@ -31,6 +31,12 @@ const std::vector<KeySpec>& case_schema() {
       {"friction.decay", T::Real, "", "s/m", "falling: B >= 0, the decay of mu with the slip speed", {}, 0,
        "required with friction.law = \"falling\""},
       {"rolling.speed", T::PositiveReal, "13.8888888888889", "m/s", "rolling speed V"},
+      {"rolling.creepage_sampling", T::String, "\"midstep\"", "-",
+       "when the creepage of a rolling step dt = dx/V is taken (transient solver, linear model): "
+       "\"midstep\" at t_k - dt/2, where the displacement difference of paper Eq. 2 is centred "
+       "(f converges at second order); \"contact\" at t_k, CONTACT's convention (a half-step "
+       "phase lead w dt/2, first order); the normal load is taken at t_k in both",
+       {"midstep", "contact"}},
       // contact geometry and load
       {"contact.geometry", T::String, "\"hertz\"", "-",
        "\"hertz\": quadratic undeformed distance from the semi-axes a, b; \"profiles\": "

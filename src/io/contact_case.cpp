@@ -93,6 +93,10 @@ ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.mu = r.real("friction.mu"); });
   problems.check([&] { c.falling = read_falling_friction(r); });
   problems.check([&] { c.speed = r.real("rolling.speed"); });
+  problems.check([&] {
+    c.sampling = r.string("rolling.creepage_sampling") == "contact" ? contact::CreepageSampling::contact
+                                                                    : contact::CreepageSampling::midstep;
+  });
   problems.check([&] { c.normal_force = r.real("contact.normal_force"); });
   problems.check([&] {
     const auto cr = r.real3("creepage.mean");

@@ -31,6 +31,45 @@ void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& 
   w.write("/creep/g", flat_g, {freq.size(), 3}, kLoadUnits);
   w.write("/creep/nyquist_frequency", ms.model->nyquist_frequency(), "Hz");
   w.attribute("/creep", "method", creep_method(c, direct));
+  w.attribute("/creep", "creepage_sampling",
+              ms.contact.sampling == contact::CreepageSampling::midstep ? "midstep" : "contact");
+  if (c.extrapolation) write_extrapolation(w, freq, *c.extrapolation);
+}
+
+void write_extrapolation(Hdf5Writer& w, const std::vector<double>& freq, const pipeline::CreepExtrapolation& ex) {
+  const std::size_t nf = freq.size(), ng = ex.dx.size();
+  std::vector<double> fe, fo, ge, go;
+  for (std::size_t n = 0; n < nf; ++n) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) fe.push_back(ex.f_error[n](j, k)), fo.push_back(ex.f_order[n](j, k));
+      ge.push_back(ex.g_error[n](j)), go.push_back(ex.g_order[n](j));
+    }
+  }
+  const std::string error_units = " (estimated error of the extrapolated value: Roache's grid convergence index)";
+  w.write("/creep/f_error", fe, {nf, 3, 3}, std::string(kCreepUnits) + error_units);
+  w.write("/creep/g_error", ge, {nf, 3}, std::string(kLoadUnits) + error_units);
+  std::vector<std::complex<double>> fg, gg;
+  for (std::size_t i = 0; i < ng; ++i)
+    for (std::size_t n = 0; n < nf; ++n) {
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) fg.push_back(ex.f[i][n](j, k));
+      for (int j = 0; j < 3; ++j) gg.push_back(ex.g[i][n](j));
+    }
+  const std::string e = "/creep/extrapolation/";
+  w.write(e + "factors", ex.factors, {ng}, "- (nx, ny of the case's grid scaled by these)");
+  w.write(e + "nx", ex.nx, {ng}, "-");
+  w.write(e + "ny", ex.ny, {ng}, "-");
+  w.write(e + "dx", ex.dx, {ng}, "m");
+  w.write(e + "f_grids", fg, {ng, nf, 3, 3}, std::string(kCreepUnits) + " (per grid, coarse to fine)");
+  w.write(e + "g_grids", gg, {ng, nf, 3}, std::string(kLoadUnits) + " (per grid, coarse to fine)");
+  w.write(e + "f_order", fo, {nf, 3, 3}, "- (order of convergence used per entry: observed, or assumed)");
+  w.write(e + "g_order", go, {nf, 3}, "- (order of convergence used per entry: observed, or assumed)");
+  w.write(e + "assumed_order", ex.assumed_order, "- (two grids, and where the observed order is unusable)");
+  w.attribute("/creep/extrapolation", "method",
+              "Richardson with the observed order on three grids (within [0.5, 4], monotone), else the assumed "
+              "order on the two finest; error = 1.25 (observed) or 3 (assumed) times |f* - f_finest|");
+  w.attribute("/creep/extrapolation", "observed_entries", static_cast<std::uint64_t>(ex.observed));
+  w.attribute("/creep/extrapolation", "assumed_entries", static_cast<std::uint64_t>(ex.assumed));
 }
 
 std::string creep_method(const pipeline::CreepResult& c, bool direct) {

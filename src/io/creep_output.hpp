@@ -13,6 +13,10 @@ namespace rollnoise::io {
 void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& freq, const pipeline::CreepResult& c,
                  bool direct);
 
+/// `creep --extrapolate`: /creep/f_error, /creep/g_error and /creep/extrapolation/* (write_creep
+/// calls it when the result holds an extrapolation).
+void write_extrapolation(Hdf5Writer& w, const std::vector<double>& freq, const pipeline::CreepExtrapolation& ex);
+
 /// The creep sweep's method as written to /creep@method.
 std::string creep_method(const pipeline::CreepResult& c, bool direct);
 

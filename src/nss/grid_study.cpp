@@ -12,6 +12,7 @@
 #include "contact/rolling_history.hpp"
 #include "contact/transient_rolling.hpp"
 #include "linalg/harmonic_fit.hpp"
+#include "nss/extrapolation.hpp"
 
 namespace rollnoise::nss {
 namespace {
@@ -70,7 +71,7 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
                                     c.steady.spin_offset, c.backend, c.tangential);
   rolling.set_falling_friction(c.steady.falling);
   rolling.set_tractions(steady.px, steady.py);
-  const auto F = contact::rolling_forces(rolling, patch.grid, e.history, dt, r.steps);
+  const auto F = contact::rolling_forces(rolling, patch.grid, e.history, c.sampling, dt, r.steps);
   std::vector<double> time = {0.0}, fx = {r.force(0)}, fy = {r.force(1)};
   for (long k = 1; k <= r.steps; ++k)
     time.push_back(k * dt), fx.push_back(F[k - 1](0)), fy.push_back(F[k - 1](1));
@@ -83,8 +84,8 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   // ... and its recursion from rest over the same run, fitted the same way: what is left of the
   // start transient in the fit window
   std::vector<Eigen::Vector3d> xi;
-  for (double tk : time) {
-    const auto v = e.history.variation(tk);
+  for (size_t k = 0; k < time.size(); ++k) {
+    const auto v = e.history.variation(contact::sampling_time(c.sampling, static_cast<long>(k), dt));
     xi.emplace_back(v[0], v[1], v[2]);
   }
   const auto Fl = m.time_response(xi);
@@ -95,13 +96,19 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   r.window_error = rel_err(Xl, r.linear);
 }
 
+// The half-step lead removed: the correction for CONTACT's sampling, nothing for midstep (whose
+// creepage is already taken at t_k - dt/2).
+std::complex<double> lead_correction(double freq, double dx, double speed, contact::CreepageSampling sampling) {
+  return sampling == contact::CreepageSampling::contact ? half_step_phase_correction(freq, dx, speed) : 1.0;
+}
+
 // Largest relative error of the entries (j, k) of f at frequency i against the reference grid (NaN
 // where neither resolves it), optionally phase-corrected.
 using Entries = std::vector<std::pair<int, int>>;
 double creep_error(const GridMeasurement& r, const GridMeasurement& ref, double freq, size_t i,
-                   const Entries& entries, bool corrected, double speed) {
-  const std::complex<double> c = corrected ? half_step_phase_correction(freq, r.dx, speed) : 1.0;
-  const std::complex<double> c_ref = corrected ? half_step_phase_correction(freq, ref.dx, speed) : 1.0;
+                   const Entries& entries, bool corrected, double speed, contact::CreepageSampling sampling) {
+  const std::complex<double> c = corrected ? lead_correction(freq, r.dx, speed, sampling) : 1.0;
+  const std::complex<double> c_ref = corrected ? lead_correction(freq, ref.dx, speed, sampling) : 1.0;
   double e = kNaN;
   for (auto [j, k] : entries) {
     const std::complex<double> q = c * r.f[i](j, k), q_ref = c_ref * ref.f[i](j, k);
@@ -170,7 +177,8 @@ GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
   const auto F = contact::total_forces(g, steady.px, steady.py);
   r.force << F.Fx, F.Fy, F.Mz;
   t = Clock::now();
-  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, c.steady.falling});
+  const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, c.steady.falling,
+                                             LinearSolver::automatic, c.sampling});
   measure_creep(m, s, r);
   r.t_creep = seconds(t);
   t = Clock::now();
@@ -178,11 +186,12 @@ GridMeasurement measure_grid(const GridStudyCase& c, const GridStudySettings& s,
   r.t_kalker = seconds(t);
   // transient response: unsteady rolling from the steady state at the mean creepage
   if (s.transient_frequency <= m.nyquist_frequency()) measure_transient(c, s, e, patch, steady, m, r);
+  measure_sampling_sweeps(c, s, patch, steady, r);
   return r;
 }
 
 GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const GridStudySettings& s,
-                                  double speed, double c11_table) {
+                                  double speed, double c11_table, contact::CreepageSampling sampling) {
   GridStudyErrors err;
   const GridMeasurement& ref = res.back();
   const Entries all = {{0, 0}, {1, 1}, {1, 2}}, direct = {{0, 0}, {1, 1}}, f23 = {{1, 2}};
@@ -191,9 +200,9 @@ GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const
   for (size_t i = 0; i < nf; ++i)
     for (const auto& r : res) {
       const double freq = s.frequencies[i];
-      err.f[i].push_back(creep_error(r, ref, freq, i, all, false, speed));
-      err.f_direct_corrected[i].push_back(creep_error(r, ref, freq, i, direct, true, speed));
-      err.f23[i].push_back(creep_error(r, ref, freq, i, f23, false, speed));
+      err.f[i].push_back(creep_error(r, ref, freq, i, all, false, speed, sampling));
+      err.f_direct_corrected[i].push_back(creep_error(r, ref, freq, i, direct, true, speed, sampling));
+      err.f23[i].push_back(creep_error(r, ref, freq, i, f23, false, speed, sampling));
     }
   const double ft = s.transient_frequency;
   for (const auto& r : res) {
@@ -201,14 +210,78 @@ GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const
     err.force.push_back((r.force.head<2>() - ref.force.head<2>()).norm() / ref.force.head<2>().norm());
     err.mz.push_back(std::abs(r.force(2) - ref.force(2)) / std::abs(ref.force(2)));
     err.transient.push_back(rel_err(r.transient, ref.transient));
-    err.transient_corrected.push_back(rel_err(half_step_phase_correction(ft, r.dx, speed) * r.transient,
-                                              half_step_phase_correction(ft, ref.dx, speed) * ref.transient));
+    err.transient_corrected.push_back(rel_err(lead_correction(ft, r.dx, speed, sampling) * r.transient,
+                                              lead_correction(ft, ref.dx, speed, sampling) * ref.transient));
     err.c11.push_back(std::abs(r.c11 / ref.c11 - 1));
     err.transient_vs_linear.push_back(rel_err(r.transient, r.linear));
     err.c11_table.push_back(std::abs(r.c11 / c11_table - 1));
     if (std::isfinite(r.window_error)) err.window_error = std::max(err.window_error, r.window_error);
   }
   return err;
+}
+
+// ---- the sampling study ----
+
+void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s, const contact::ContactPatch& patch,
+                             const contact::TangentialSolution& steady, GridMeasurement& r) {
+  const contact::CreepageSampling samplings[2] = {contact::CreepageSampling::contact,
+                                                  contact::CreepageSampling::midstep};
+  for (int i = 0; i < 2; ++i) {
+    SamplingSweep& sw = r.sampling[i];
+    const auto t = Clock::now();
+    const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, samplings[i]});
+    // a rolling-noise axis: log-spaced over [100 Hz, 5 kHz], capped at the grid's Nyquist limit
+    const double f_max = std::min(5000.0, m.nyquist_frequency());
+    std::vector<double> sweep(s.sweep_count);
+    for (int k = 0; k < s.sweep_count; ++k)
+      sweep[k] = 100.0 * std::pow(f_max / 100.0, s.sweep_count > 1 ? k / (s.sweep_count - 1.0) : 1.0);
+    (void)m.creep_coefficients(sweep);
+    sw.seconds = seconds(t);
+    sw.f.clear();
+    for (double f : s.accuracy_frequencies)
+      sw.f.push_back(f <= m.nyquist_frequency() ? m.creep_coefficients({f})[0] : CreepMatrix::Constant(kNaN));
+  }
+}
+
+SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, const GridStudySettings& s) {
+  const int entry[3][2] = {{0, 0}, {1, 1}, {1, 2}};  // f11, f22, f23
+  SamplingAccuracy a;
+  for (auto& e : a.error) e.resize(s.accuracy_frequencies.size());
+  for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
+    // the three finest grids that resolve this frequency
+    std::vector<const GridMeasurement*> fine;
+    for (auto it = grids.rbegin(); it != grids.rend() && fine.size() < 3; ++it)
+      if (std::isfinite(std::abs((*it).sampling[1].f[i](0, 0)))) fine.insert(fine.begin(), &*it);
+    std::vector<double> h;
+    for (const auto* g : fine) h.push_back(g->dx);
+    CreepMatrix conv = CreepMatrix::Constant(kNaN);
+    Eigen::Matrix3d conv_err = Eigen::Matrix3d::Constant(kNaN);
+    Eigen::Vector3d order = Eigen::Vector3d::Constant(kNaN), spread = order;
+    for (int j = 0; j < 3 && fine.size() >= 2; ++j)
+      for (int k = 0; k < 3; ++k) {
+        std::vector<std::complex<double>> vm, vc;
+        for (const auto* g : fine) vm.push_back(g->sampling[1].f[i](j, k)), vc.push_back(g->sampling[0].f[i](j, k));
+        const RichardsonResult rm = richardson(h, vm, {2.0});
+        conv(j, k) = rm.value;
+        conv_err(j, k) = rm.error;
+        for (int q = 0; q < 3; ++q)
+          if (entry[q][0] == j && entry[q][1] == k) {
+            order(q) = rm.order;
+            spread(q) = std::abs(richardson(h, vc, {1.0}).value - rm.value) / std::abs(rm.value);
+          }
+      }
+    a.converged.push_back(conv);
+    a.converged_error.push_back(conv_err);
+    a.order.push_back(order);
+    a.spread.push_back(spread);
+    for (int sm = 0; sm < 2; ++sm)
+      for (int q = 0; q < 3; ++q)
+        for (const auto& g : grids) {
+          const std::complex<double> ref = conv(entry[q][0], entry[q][1]);
+          a.error[sm][i][q].push_back(std::abs(g.sampling[sm].f[i](entry[q][0], entry[q][1]) - ref) / std::abs(ref));
+        }
+  }
+  return a;
 }
 
 }  // namespace rollnoise::nss

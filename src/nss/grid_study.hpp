@@ -60,6 +60,9 @@ struct GridStudyCase {
   contact::SteadyRollingInput steady;  ///< mu, speed, mean creepage, spin offset
   contact::Backend backend = contact::Backend::Auto;
   contact::TangentialSolverSettings tangential;
+  /// of the transient runs and the linear model of the measurements above (rolling.creepage_sampling);
+  /// the sampling study (measure_sampling_sweeps) uses both
+  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
 };
 
 struct GridStudySettings {
@@ -68,6 +71,9 @@ struct GridStudySettings {
   double relative_amplitude = 0.05;     ///< variation / mean creepage, paper Sec. 3.2
   double settle_lengths = 5.0;          ///< contact lengths 2a/V before the fit window
   int fit_periods = 3;                  ///< periods in the fit window
+  // the sampling study (measure_sampling_sweeps)
+  std::vector<double> accuracy_frequencies = {1000.0, 5000.0};  ///< f11, f22, f23 compared at these (Hz)
+  int sweep_count = 1000;  ///< frequencies of the timed sweep, log-spaced over [100 Hz, 5 kHz] (Nyquist-capped)
 };
 
 /// The harmonic creepage variation of the transient runs: relative_amplitude of each mean
@@ -81,6 +87,12 @@ struct GridStudyExcitation {
   double duration = 0.0;    ///< settle_lengths 2a/V + fit_periods / f (s)
 };
 GridStudyExcitation grid_study_excitation(const GridStudyCase& c, const GridStudySettings& s);
+
+/// One creepage sampling's sweep on one grid (the sampling study, measure_sampling_sweeps below).
+struct SamplingSweep {
+  double seconds = 0.0;        ///< linear model set-up + sweep of sweep_count frequencies (s)
+  std::vector<CreepMatrix> f;  ///< at the accuracy frequencies (NaN above Nyquist)
+};
 
 struct GridMeasurement {
   int nx = 0, ny = 0, contact = 0;  ///< grid and elements in contact
@@ -98,6 +110,8 @@ struct GridMeasurement {
   Eigen::Vector2cd linear = Eigen::Vector2cd::Constant(std::numeric_limits<double>::quiet_NaN());
   /// the linear recursion from rest fitted over the window, relative to -f(w) xi^
   double window_error = std::numeric_limits<double>::quiet_NaN();
+  /// the sampling study: [0] contact, [1] midstep (measure_sampling_sweeps, below)
+  std::array<SamplingSweep, 2> sampling;
 };
 
 /// InputError naming --nx unless `grids` holds at least two grids, strictly increasing (the last is
@@ -125,6 +139,34 @@ inline std::complex<double> half_step_phase_correction(double frequency, double 
   return std::polar(1.0, -M_PI * frequency * dx / speed);
 }
 
+// ---- Creepage sampling against the continuum (rolling.creepage_sampling; docs/accuracy.md) ----
+//
+// Beside the measurements above (made with the case's sampling), every grid builds the linear
+// model with each sampling, CONTACT's and midstep (contact/creepage_history.hpp), and times a sweep
+// of sweep_count frequencies (model set-up, Cholesky factor and Krylov model included: what `creep`
+// costs on that grid), and keeps f at the accuracy frequencies. sampling_accuracy() compares them
+// with the grid-converged f: Richardson extrapolation (nss/extrapolation.hpp) of the midstep values
+// on the three finest grids that resolve the frequency, with their observed order (midstep converges at second order; the
+// extrapolation of the contact values, first order, is reported beside it as a check).
+
+/// The sweeps of `r`'s grid for both samplings into r.sampling ([0] contact, [1] midstep).
+void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s, const contact::ContactPatch& patch,
+                             const contact::TangentialSolution& steady, GridMeasurement& r);
+
+struct SamplingAccuracy {
+  /// per accuracy frequency: the converged f (midstep, Richardson) and its estimated error (Roache's
+  /// index, absolute, per entry), the order used for f11, f22, f23
+  std::vector<CreepMatrix> converged;
+  std::vector<Eigen::Matrix3d> converged_error;
+  std::vector<Eigen::Vector3d> order;
+  /// |R_contact - R_midstep| / |R_midstep| of f11, f22, f23: the two samplings' extrapolations
+  std::vector<Eigen::Vector3d> spread;
+  /// error[sampling][frequency][entry f11, f22, f23][grid]: |f - f_converged| / |f_converged|
+  std::array<std::vector<std::array<std::vector<double>, 3>>, 2> error;
+};
+/// With only two grids resolving an accuracy frequency, the assumed order 2; with fewer, NaN.
+SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, const GridStudySettings& s);
+
 /// Errors of each grid (coarse to fine, the last the reference), all relative.
 struct GridStudyErrors {
   std::vector<double> dx;            ///< m
@@ -138,7 +180,10 @@ struct GridStudyErrors {
   std::vector<double> transient_vs_linear;  ///< |X - (-f(w) xi^)| / |-f(w) xi^|, same grid
   double window_error = 0.0;          ///< largest finite GridMeasurement::window_error
 };
+/// `sampling`: the case's (GridStudyCase::sampling); the phase-corrected errors remove the half-step
+/// lead of CONTACT's sampling and equal the plain ones with midstep.
 GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& grids,
-                                  const GridStudySettings& s, double speed, double c11_table);
+                                  const GridStudySettings& s, double speed, double c11_table,
+                                  contact::CreepageSampling sampling);
 
 }  // namespace rollnoise::nss

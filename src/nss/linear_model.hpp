@@ -63,6 +63,14 @@
 // with the diagonal entry 1/(mu' pn) < 0: symmetric indefinite), so with falling friction every
 // route uses the paper form: creep_coefficients / normal_load_coefficients / creep_coefficients_markov
 // the Hessenberg sweep, time_response an LU recursion of M0, and the K0 diagnostics throw.
+//
+// Creepage sampling (LinearModelInput::sampling, contact/creepage_history.hpp). Everything above is
+// the recursion with the creepage of step k taken at t_k (CONTACT's convention). With midstep the
+// creepage is taken at t_k - dt/2: for xi~(t) = xi^ e^{i w t} the recursion sees xi~_k = xi^
+// e^{-i w dt/2} e^{i w t_k}, so f_midstep(w) = f_contact(w) e^{-i w dt/2} exactly, on every f route
+// (the factor is applied in one place, linear_model.cpp). g is the same in both samplings (the load
+// is taken at t_k with the traction it bounds). time_response() takes the creepages at the sampling
+// instants (contact::sampling_time): the callers sample them.
 #pragma once
 
 #include <Eigen/Dense>
@@ -72,6 +80,7 @@
 #include <vector>
 
 #include "contact/friction_law.hpp"
+#include "contact/creepage_history.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
@@ -96,8 +105,13 @@ struct LinearModelInput {
   // contact::SteadyRollingInput).
   LinearModelInput(double mu_ = 0.3, double speed_ = 0.0, double spin_offset_ = 0.0,
                    contact::FallingFriction falling_ = {},
-                   LinearSolver solver_ = LinearSolver::automatic)
-      : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_), solver(solver_) {}
+                   LinearSolver solver_ = LinearSolver::automatic,
+                   contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep)
+      : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_), solver(solver_),
+        sampling(sampling_) {}
+  /// {mu, speed, spin_offset, sampling}: constant friction, the automatic solver.
+  LinearModelInput(double mu_, double speed_, double spin_offset_, contact::CreepageSampling sampling_)
+      : mu(mu_), speed(speed_), spin_offset(spin_offset_), sampling(sampling_) {}
   double mu = 0.3;           ///< friction coefficient
   double speed = 0.0;        ///< rolling speed V (m/s)
   double spin_offset = 0.0;  ///< as in the steady solution (grid.spin_offset)
@@ -105,6 +119,8 @@ struct LinearModelInput {
   /// by default; see "Falling friction" above).
   contact::FallingFriction falling;
   LinearSolver solver = LinearSolver::automatic;  ///< solver.linear_model
+  /// when the creepage of step k is taken (t_k - dt/2 by default; contact: t_k, as CONTACT)
+  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
 };
 
 /// Whether a model with r reduced unknowns takes the matrix-free path under `solver`.
@@ -154,6 +170,8 @@ class LinearContactModel {
   int adhesion_elements() const { return n_adhesion_; }
   int slip_elements() const { return n_slip_; }
   double time_step() const { return dt_; }
+  /// When the creepage of step k is taken (f's phase, the instants time_response expects).
+  contact::CreepageSampling sampling() const { return sampling_; }
   /// Highest frequency the grid resolves: V / (2 dx) (w dt = pi) (Hz).
   double nyquist_frequency() const { return 0.5 / dt_; }
 
@@ -195,7 +213,8 @@ class LinearContactModel {
   std::vector<CreepMatrix> creep_coefficients_hessenberg(const std::vector<double>& frequencies) const;
 
   /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
-  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()).
+  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()). They are
+  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling.
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
   /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
   const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
@@ -209,11 +228,13 @@ class LinearContactModel {
   /// How the last creep_coefficients() built its Markov parameters.
   const SweepInfo& sweep_info() const { return info_; }
 
-  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations at t_k (k = 0, 1, ...)
-  /// by the discrete-time recursion K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky
-  /// factorisation of K0, or PCG started from the previous step rolled on by one element; K1 by FFT).
+  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken at
+  /// contact::sampling_time(sampling(), k, dt) (k = 0, 1, ...), by the discrete-time recursion
+  /// K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky factorisation of K0, or PCG started
+  /// from the previous step rolled on by one element; K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
-  /// The same with a normal-load variation N~_k (N) at t_k as well (same length as the creepages).
+  /// The same with a normal-load variation N~_k (N) at t_k (in both samplings) as well (same length
+  /// as the creepages).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation,
                                              const std::vector<double>& normal_load_variation) const;
 
@@ -275,7 +296,10 @@ class LinearContactModel {
   /// Split the Markov parameters of the block (3 creepage columns, 1 scaled load column) into f's
   /// and g's.
   MarkovModel markov_model(const std::vector<Eigen::MatrixXd>& h, const StartBlock& start) const;
-  /// f = -sum_j h_j z^j at the frequencies (Horner).
+  /// f of the creepage at t_k (CONTACT's sampling) -> f of sampling_, in place (one factor per
+  /// frequency; the identity for contact).
+  void apply_sampling(std::vector<CreepMatrix>& f, const std::vector<double>& frequencies) const;
+  /// f = -sum_j h_j z^j at the frequencies (Horner), with the sampling's phase.
   std::vector<CreepMatrix> creep_from_markov(const std::vector<Eigen::Matrix3d>& h,
                                              const std::vector<double>& frequencies) const;
   /// f and/or g by the Hessenberg form (either pointer may be null).
@@ -284,6 +308,7 @@ class LinearContactModel {
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   LinearSolver solver_ = LinearSolver::automatic;
+  contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep;
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;

@@ -15,9 +15,10 @@ LinearResponse linear_response(const LinearContactModel& m, const Eigen::Vector3
   std::vector<double> dN;           // normal-load variation (N), input g of the model
   for (long k = 0; k <= steps; ++k) {
     r.time.push_back(k * dt);
-    const auto c = h.at(k * dt);
+    const double ts = contact::sampling_time(m.sampling(), k, dt);  // the creepage of step k
+    const auto c = h.at(ts);
     r.creepage.emplace_back(c.xi_x, c.xi_y, c.phi);
-    const auto v = h.variation(k * dt);
+    const auto v = h.variation(ts);
     xi.emplace_back(v[0], v[1], v[2]);
     dN.push_back(h.normal_variation(k * dt));
     r.normal_force.push_back(mean_normal_force + dN.back());
@@ -27,6 +28,7 @@ LinearResponse linear_response(const LinearContactModel& m, const Eigen::Vector3
     const auto f = m.creep_coefficients(h.frequencies());
     const auto g = h.has_normal_variation() ? m.normal_load_coefficients(h.frequencies())
                                             : std::vector<LoadVector>{};
+    // at t_k with f of the model's sampling (its phase e^{-i w dt/2} for midstep is the sampling)
     r.synthesis = contact::harmonic_synthesis(h, f, g, mean_force, dt, steps);
   }
   return r;

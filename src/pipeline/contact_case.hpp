@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/creepage_history.hpp"
 #include "contact/grid.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/material.hpp"
@@ -37,6 +38,8 @@ struct ContactCase {
   contact::Grid grid;       ///< Hertzian: from the case; profiles: chosen by place_contact
   double spin_offset = 0.0;
   contact::Creepage creepage;
+  /// rolling.creepage_sampling: when the creepage of a rolling step is taken (transient, linear model)
+  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
   contact::Backend backend = contact::Backend::Auto;
   nss::LinearSolver linear_solver = nss::LinearSolver::automatic;  ///< solver.linear_model
   /// profiles: the wheel-rail pair, the wheelset position the contact point is found at, and

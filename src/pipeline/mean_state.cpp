@@ -6,7 +6,7 @@ std::unique_ptr<nss::LinearContactModel> linear_model(const ContactCase& c, cons
                                                       const contact::TangentialSolution& steady) {
   return std::make_unique<nss::LinearContactModel>(patch, steady,
                                                    nss::LinearModelInput{c.mu, c.speed, c.spin_offset, c.falling,
-                                                                         c.linear_solver});
+                                                                         c.linear_solver, c.sampling});
 }
 
 MeanState solve_mean_state(ContactCase c, bool with_model) {

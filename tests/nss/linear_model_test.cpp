@@ -27,6 +27,10 @@ using namespace rollnoise::testing;
 
 namespace {
 
+// These tests compare with CONTACT, the paper and our unsteady solver stepped at t_k = k dt: CONTACT's
+// creepage sampling (tests/nss/creepage_sampling_test.cpp has the midstep ones).
+constexpr auto kContactSampling = CreepageSampling::contact;
+
 const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
 
 TangentialForces steady_forces(const Creepage& c, double spin_offset = 0.0) {
@@ -38,7 +42,7 @@ TangentialForces steady_forces(const Creepage& c, double spin_offset = 0.0) {
 nss::LinearContactModel model_at(const Creepage& c, double spin_offset = 0.0) {
   const ContactPatch& p = coarse_patch();
   const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, spin_offset});
-  return nss::LinearContactModel(p, s, {kMu, kSpeed, spin_offset});
+  return nss::LinearContactModel(p, s, {kMu, kSpeed, spin_offset, kContactSampling});
 }
 
 }  // namespace
@@ -93,7 +97,7 @@ TEST(LinearModel, HighFrequencyContactActsAsATangentialSpring) {
   const double f3k = 3000.0;
   const double arg_coarse = std::arg(m.creep_coefficients({f3k})[0](0, 0)) * 180 / M_PI;
   const double arg_fine =
-      std::arg(nss::LinearContactModel(pf, sf, {kMu, kSpeed, 0.0}).creep_coefficients({f3k})[0](0, 0)) * 180 / M_PI;
+      std::arg(nss::LinearContactModel(pf, sf, {kMu, kSpeed, 0.0, kContactSampling}).creep_coefficients({f3k})[0](0, 0)) * 180 / M_PI;
   std::printf("arg f11 at 3 kHz: coarse %.2f deg, fine %.2f deg\n", arg_coarse, arg_fine);
   EXPECT_LT(std::abs(arg_fine + 90), std::abs(arg_coarse + 90));
 }
@@ -162,7 +166,7 @@ TEST(LinearModel, Section31AmplitudeAndPhaseAgreeWithTheUnsteadySolverAndCONTACT
   const ContactPatch& p = coarse_patch();
   const Creepage mean{0.001, 0, 0};
   const auto steady = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, mean, 0.0});
-  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0});
+  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0, kContactSampling});
   const std::complex<double> F = -m.creep_coefficients({1000.0})[0](0, 0) * 5e-5;
   const double amp = std::abs(F), phase = std::arg(F) * 180 / M_PI;
 
@@ -197,7 +201,7 @@ TEST(LinearModel, Section32ForcesWithinTwoPercentOfTheVariationAmplitude) {
   const auto history = CreepageHistory::harmonic(mean, {5e-5, 5e-5, 0.0027}, 1000.0);
   const auto steady = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, mean, 0.0});
   const TangentialForces fbar = total_forces(p.grid, steady.px, steady.py);
-  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0});
+  const nss::LinearContactModel m(p, steady, {kMu, kSpeed, 0.0, kContactSampling});
   const auto f = m.creep_coefficients({1000.0})[0];
   const Eigen::Vector3cd xhat(5e-5, 5e-5, 0.0027);
   TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);

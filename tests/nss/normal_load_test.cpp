@@ -47,7 +47,7 @@ TEST(NormalLoad, ZeroFrequencyEqualsTheLoadDerivativeOfTheSteadySolverAtFixedCre
   for (const Creepage c : {Creepage{0.001, 0.001, -0.053}, Creepage{0.002, 0.0, 0.0}, Creepage{0.0, 0.0015, 0.3}}) {
     const ContactPatch& p = paper_patch("coarse");
     const auto mean = steady_at(p, c);
-    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
     const Eigen::Vector3cd g0 = model.normal_load_coefficients_direct(0.0);
     const double h = 1e-6 * kN;
     const ContactPatch pp = patch_at_load(kN + h), pm = patch_at_load(kN - h);
@@ -76,7 +76,7 @@ TEST(NormalLoad, FullSlidingWithoutSpinGivesTheForceToLoadRatio) {
   const ContactPatch& p = paper_patch("coarse");
   for (const Creepage c : {Creepage{0.01, 0.0, 0.0}, Creepage{0.0, 0.01, 0.0}, Creepage{0.006, 0.008, 0.0}}) {
     const auto mean = steady_at(p, c);
-    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
     ASSERT_EQ(model.adhesion_elements(), 0);
     const Eigen::Vector3d ratio = forces(p, mean.steady) / kN;
     const Eigen::Vector3cd g0 = model.normal_load_coefficients(std::vector<double>{0.0})[0];
@@ -95,7 +95,7 @@ TEST(NormalLoad, FullAdhesionHasNoNormalLoadCouplingAndItVanishesWithTheCreepage
   double previous = kMu;
   for (double xi : {1e-3, 3e-4, 1e-4, 1e-9}) {
     const auto mean = steady_at(p, {xi, 0.0, 0.0});
-    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
     const double g0 = model.normal_load_coefficients_direct(0.0).norm();
     std::printf("xi_x = %g: %d slip elements, |g(0)| = %.3g\n", xi, model.slip_elements(), g0);
     EXPECT_LT(g0, previous);
@@ -118,7 +118,7 @@ TEST(NormalLoad, FastSweepEqualsTheDirectSolveFromZeroToNyquist) {
   for (const Creepage c : {Creepage{0.001, 0.001, -0.053}, Creepage{0.0, 0.002, 0.5}, Creepage{0.006, 0.0, 0.0},
                            Creepage{2e-4, 0.0, 0.0}}) {
     const auto mean = steady_at(p, c);
-    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+    const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
     std::vector<double> freq;
     for (int k = 0; k <= 6; ++k) freq.push_back(model.nyquist_frequency() * k / 6.0);
     const auto g = model.normal_load_coefficients(freq);
@@ -131,7 +131,7 @@ TEST(NormalLoad, FastSweepEqualsTheDirectSolveFromZeroToNyquist) {
                 c.phi, model.slip_elements(), model.sweep_info().block_steps, worst);
     EXPECT_LT(worst, 1e-9);
     if (first) {  // no Markov sequence decays within 0 contact lengths: the Hessenberg form
-      const nss::LinearContactModel m2(p, mean.steady, {kMu, kSpeed, 0.0});
+      const nss::LinearContactModel m2(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
       const auto gh = m2.normal_load_coefficients(freq, 0);
       EXPECT_EQ(m2.sweep_info().method, nss::SweepInfo::Method::hessenberg);
       for (size_t k = 0; k < freq.size(); ++k) EXPECT_LT((gh[k] - g[k]).norm(), 1e-9 * g[k].norm()) << k;
@@ -143,7 +143,7 @@ TEST(NormalLoad, FastSweepEqualsTheDirectSolveFromZeroToNyquist) {
 TEST(NormalLoad, RecursionWithALoadHistoryAgreesWithHarmonicSynthesisOfG) {
   const ContactPatch& p = paper_patch("coarse");
   const auto mean = steady_at(p, {0.001, 0.001, -0.053});
-  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
   const double dt = model.time_step();
   const std::vector<double> freq = {300.0, 1700.0};
   const std::vector<double> amp = {400.0, 150.0}, phase = {0.3, -1.1};
@@ -186,7 +186,7 @@ TEST(NormalLoad, ProfileContactZeroFrequencyAgreesWithFiniteLoadStepsWithinTheFr
   const ContactPatch p = geometry::solve_wheel_rail_patch(pair, cg, kN, kSteel, opt);
   const Creepage c{0.001, -0.002, -0.3};
   const auto mean = steady_at(p, c);
-  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
   const Eigen::Vector3d g0 = model.normal_load_coefficients_direct(0.0).real();
   for (double e : {1e-6, 1e-2}) {
     const ContactPatch pp = solve_patch(p.grid, kSteel, p.undeformed_distance, kN * (1 + e));
@@ -215,7 +215,7 @@ struct LoadResponseError {
 LoadResponseError load_response_error(const Creepage& c, double e, double f) {
   const ContactPatch& p = paper_patch("coarse");
   const auto mean = steady_at(p, c);
-  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0});
+  const nss::LinearContactModel model(p, mean.steady, {kMu, kSpeed, 0.0, CreepageSampling::contact});
   const Eigen::Vector3cd g = model.normal_load_coefficients(std::vector<double>{f})[0] * (e * kN);
   TransientRolling rolling(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
   rolling.set_normal_problem(p.undeformed_distance, kN);

@@ -76,7 +76,9 @@ SweepResult check_sweep(const ContactPatch& p, const Creepage& c, double mu, dou
   SweepResult r;
   const auto t0 = std::chrono::steady_clock::now();
   const auto mean = solve_steady_rolling(p.influence, p.normal.pn, {mu, kSpeed, c, offset});
-  const nss::LinearContactModel m(p, mean, {mu, kSpeed, offset});
+  // CONTACT's sampling: passivity is a theorem of the discrete model with the creepage and the force
+  // both at t_k (midstep pairs them half a step apart: tests/nss/creepage_sampling_test.cpp)
+  const nss::LinearContactModel m(p, mean, {mu, kSpeed, offset, contact::CreepageSampling::contact});
   r.adhesion = m.adhesion_elements(), r.slip = m.slip_elements();
   const double fn = m.nyquist_frequency();
   const double cc = kC;  // sqrt(ab) of every patch of hertz_patch()
