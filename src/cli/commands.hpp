@@ -37,6 +37,7 @@ int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);
 int run_receptance(const CommonOptions& o);
+int run_squeal(const CommonOptions& o);
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv);
 
 }  // namespace rollnoise::cli

@@ -22,12 +22,19 @@ double checked_omega(double frequency) {
 // Support
 // ---------------------------------------------------------------------------------------------
 
-cdouble Support::dynamic_stiffness(double omega) const {
-  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
-  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
-  const cdouble below = kb - sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
-  return kp * below / (kp + below);                         // Eq. (1): pad in series
+namespace {
+template <class Omega>
+cdouble support_stiffness(const Support& p, Omega omega) {
+  const cdouble kp = p.pad_stiffness * cdouble(1.0, p.pad_loss_factor);
+  const cdouble kb = p.ballast_stiffness * cdouble(1.0, p.ballast_loss_factor);
+  const cdouble below = kb - p.sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
+  return kp * below / (kp + below);                           // Eq. (1): pad in series
 }
+}  // namespace
+
+cdouble Support::dynamic_stiffness(double omega) const { return support_stiffness(*this, omega); }
+
+cdouble Support::dynamic_stiffness(cdouble omega) const { return support_stiffness(*this, omega); }
 
 void Support::validate(const std::string& prefix) const {
   auto check = [&](double v, const char* name, bool allow_zero) {
@@ -109,8 +116,31 @@ DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const 
 }
 
 Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r, double x_e) const {
-  const double omega = checked_omega(frequency);
-  const InfiniteBeam free_rail(rail_, omega, 0.0);
+  return transfer_impl(checked_omega(frequency), frequency, x_r, x_e);
+}
+
+Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r, double x_e) const {
+  return transfer_impl(omega, std::real(omega) / (2.0 * M_PI), x_r, x_e);
+}
+
+// `frequency` (Hz) only for messages.
+namespace {
+// The beam at a real or complex angular frequency (foundation s; at complex omega also the
+// foundation at Re omega, for the continuation of the roots: track_beam.hpp).
+InfiniteBeam beam(const BeamSection& b, double omega, cdouble s, cdouble) { return InfiniteBeam(b, omega, s); }
+InfiniteBeam beam(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
+  return InfiniteBeam(b, omega, s, s_real);
+}
+cdouble rod(const BeamSection& b, double omega, cdouble s, cdouble) { return rod_receptance(b, omega, s, 0.0); }
+cdouble rod(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
+  return rod_receptance(b, omega, s, 0.0, s_real);
+}
+}  // namespace
+
+template <class Omega>
+Eigen::Matrix2cd DiscretelySupportedRail::transfer_impl(Omega omega, double frequency, double x_r,
+                                                        double x_e) const {
+  const InfiniteBeam free_rail = beam(rail_, omega, 0.0, 0.0);
   const cdouble K = support_.dynamic_stiffness(omega);
   const int m = 2 * n_ + 1;
   const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
@@ -161,26 +191,42 @@ RailModel::RailModel(const TrackParameters& track, TrackSupport support, double 
 }
 
 Receptance4 RailModel::receptance(double frequency) const {
-  const double omega = checked_omega(frequency);
+  return receptance_impl(checked_omega(frequency), frequency);
+}
+
+Receptance4 RailModel::receptance_laplace(cdouble s) const {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  return receptance_impl(cdouble(0.0, -1.0) * s, s.imag() / (2.0 * M_PI));  // omega = -i s
+}
+
+// The same arithmetic for a real and a complex angular frequency (`frequency` in Hz for the
+// real-frequency calls, which keep their bits).
+template <class Omega>
+Receptance4 RailModel::receptance_impl(Omega omega, double frequency) const {
   Eigen::Matrix2cd Hv, Hl;
   if (support_ == TrackSupport::kDiscrete) {
-    Hv = vertical_.point(frequency, x_);
-    Hl = lateral_.point(frequency, x_);
+    Hv = vertical_.transfer_impl(omega, frequency, x_, x_);
+    Hl = lateral_.transfer_impl(omega, frequency, x_, x_);
   } else {
-    Hv = continuous_transfer(track_.vertical, track_.vertical_support, track_.sleeper_spacing,
-                             frequency, 0.0);
-    Hl = continuous_transfer(track_.lateral, track_.lateral_support, track_.sleeper_spacing,
-                             frequency, 0.0);
+    const double L = track_.sleeper_spacing, wr = std::real(omega);
+    Hv = beam(track_.vertical, omega, track_.vertical_support.dynamic_stiffness(omega) / L,
+              track_.vertical_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
+    Hl = beam(track_.lateral, omega, track_.lateral_support.dynamic_stiffness(omega) / L,
+              track_.lateral_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / track_.sleeper_spacing;
-  const cdouble rod = rod_receptance(track_.vertical, omega, s_x, 0.0);
+  const cdouble u_rod = rod(track_.vertical, omega, s_x,
+                          track_.longitudinal_support.dynamic_stiffness(std::real(omega)) / track_.sleeper_spacing);
   const double h = track_.head_height;
 
   Receptance4 R = Receptance4::Zero();
   R(kZ, kZ) = Hv(0, 0);
   R(kZ, kX) = -h * Hv(0, 1);
   R(kX, kZ) = -h * Hv(1, 0);
-  R(kX, kX) = rod + h * h * Hv(1, 1);
+  R(kX, kX) = u_rod + h * h * Hv(1, 1);
   R(kY, kY) = Hl(0, 0);
   R(kY, kRotZ) = Hl(0, 1);
   R(kRotZ, kY) = Hl(1, 0);

@@ -38,17 +38,31 @@ void BeamSection::validate(const std::string& prefix) const {
                      prefix + ".loss_factor must be >= 0, got " + std::to_string(loss_factor));
 }
 
-InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
+InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) { init(b, omega, s, nullptr); }
+
+InfiniteBeam::InfiniteBeam(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
+  if (omega.imag() > 0.0) {
+    const InfiniteBeam reference(b, omega.real(), s_real);
+    init(b, omega, s, &reference);
+  } else {
+    init(b, omega, s, nullptr);
+  }
+}
+
+// Omega = double (real frequency) or cdouble (complex frequency): the same arithmetic, so the real
+// case gives the bits it always gave.
+template <class Omega>
+void InfiniteBeam::init(const BeamSection& b, Omega omega, cdouble s, const InfiniteBeam* reference) {
   const cdouble damping(1.0, b.loss_factor);
   const cdouble EI = b.youngs_modulus * b.second_moment * damping;
-  const double mw2 = b.mass_per_length * omega * omega;  // m' omega^2
+  const Omega mw2 = b.mass_per_length * omega * omega;  // m' omega^2
   const cdouble q = s - mw2;                             // s - m' omega^2
 
   // P(k) = a k^4 + bb k^2 + c and the numerators of the inverse dynamic-stiffness matrix.
   cdouble a, bb, c;
   if (b.timoshenko) {
     const cdouble kGA = b.shear_coefficient * b.shear_modulus * b.area * damping;
-    const double rIw2 = b.mass_per_length * b.second_moment / b.area * omega * omega;
+    const Omega rIw2 = b.mass_per_length * b.second_moment / b.area * omega * omega;
     a = EI * kGA;
     bb = q * EI - kGA * rIw2;
     c = q * (kGA - rIw2);
@@ -69,14 +83,20 @@ InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
   if (std::abs(qq) == 0.0)
     throw NumericalError(
         "InfiniteBeam: dispersion relation degenerate (k = 0 double root) at omega = " +
-        std::to_string(omega) + " rad/s; add damping");
+        std::to_string(std::abs(omega)) + " rad/s; add damping");
   const std::array<cdouble, 2> lambda = {qq / a, c / qq};
   const double sep = std::abs(lambda[0] - lambda[1]);
   if (!(sep > 1e-13 * (std::abs(lambda[0]) + std::abs(lambda[1]))))
     throw NumericalError("InfiniteBeam: double root of the dispersion relation at omega = " +
-                         std::to_string(omega) + " rad/s; add damping");
+                         std::to_string(std::abs(omega)) + " rad/s; add damping");
   for (int j = 0; j < 2; ++j) {
     k_[j] = decaying_root(lambda[j]);
+    if (reference) {  // the root of +-k_j nearest to the reference's roots (continuation, see header)
+      double best = 1e300;
+      for (const cdouble r : reference->k_)
+        for (const cdouble k : {k_[j], -k_[j]})
+          if (std::abs(k - r) < best) best = std::abs(k - r), k_[j] = k;
+    }
     inv_dp_[j] = 1.0 / (2.0 * a * k_[j] * (lambda[j] - lambda[1 - j]));
   }
 }
@@ -102,13 +122,29 @@ Eigen::Matrix2cd InfiniteBeam::transfer(double x) const {
   return G;
 }
 
-cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) {
+namespace {
+template <class Omega>
+cdouble rod_receptance_at(const BeamSection& b, Omega omega, cdouble s, double x, const cdouble* reference) {
   const cdouble EA = b.youngs_modulus * b.area * cdouble(1.0, b.loss_factor);
-  const cdouble k0 = decaying_root((b.mass_per_length * omega * omega - s) / EA);
+  cdouble k0 = decaying_root((b.mass_per_length * omega * omega - s) / EA);
+  if (reference && std::abs(-k0 - *reference) < std::abs(k0 - *reference)) k0 = -k0;  // continuation
   if (std::abs(k0) == 0.0)
     throw NumericalError("rod_receptance: k0 = 0 (static free rod); add a foundation or damping");
   const cdouble I(0.0, 1.0);
   return -I * std::exp(-I * k0 * std::abs(x)) / (2.0 * EA * k0);
+}
+}  // namespace
+
+cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) {
+  return rod_receptance_at(b, omega, s, x, nullptr);
+}
+
+cdouble rod_receptance(const BeamSection& b, cdouble omega, cdouble s, double x, cdouble s_real) {
+  if (!(omega.imag() > 0.0)) return rod_receptance_at(b, omega, s, x, nullptr);
+  const cdouble EA = b.youngs_modulus * b.area * cdouble(1.0, b.loss_factor);
+  const double w = omega.real();
+  const cdouble reference = decaying_root((b.mass_per_length * w * w - s_real) / EA);
+  return rod_receptance_at(b, omega, s, x, &reference);
 }
 
 }  // namespace rollnoise::dynamics
