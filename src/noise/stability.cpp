@@ -112,14 +112,11 @@ Receptance4 modal_term(const LoopMode& m, cdouble s) {
 
 }  // namespace
 
-Receptance4 LaplaceLoop::without_mode(cdouble s, std::size_t k) const {
+Receptance4 LaplaceLoop::matrix(cdouble s) const {
   Receptance4 a = rest(s);
-  for (std::size_t j = 0; j < modes.size(); ++j)
-    if (j != k) a += modal_term(modes[j], s);
+  for (const LoopMode& m : modes) a += modal_term(m, s);
   return a;
 }
-
-Receptance4 LaplaceLoop::matrix(cdouble s) const { return without_mode(s, modes.size()); }
 
 std::vector<LoopMode> contact_frame_modes(const dynamics::WheelModel& wheel, const ContactPosition& p) {
   std::vector<LoopMode> out;
@@ -196,65 +193,86 @@ std::vector<std::size_t> cluster_of(const LaplaceLoop& loop, std::size_t k) {
   return c;
 }
 
-// (S4): det(diag(m_j D_j(s)) + lambda Psi^T B_K(s)^{-1} Psi) / (m_0 omega_0^2)^c for the cluster K.
+// (S3) in the modal form over ALL modes of the loop, rows scaled by 1/(m_j omega_j^2):
+//   H(s; lambda) = det R(s) det( diag(D_j(s)/omega_j^2) + lambda diag(1/(m_j omega_j^2)) Psi^T R(s)^{-1} Psi ),
+// R = rest (rigid wheelset, rail, contact). det R cancels the poles of R^{-1} (a root passing close
+// to one would repel Newton). The branches of the cluster K (modes with one uncoupled root) are
+// tracked on it.
 class ClusterFunction {
  public:
   ClusterFunction(const LaplaceLoop& loop, std::vector<std::size_t> cluster) : loop_(loop), k_(std::move(cluster)) {
-    const LoopMode& m = loop_.modes[k_[0]];
-    const double w = dynamics::angular(m.frequency);
-    scale_ = m.modal_mass * w * w;
+    const std::size_t n = loop_.modes.size();
+    scale_.resize(n);
+    Psi_.resize(4, n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const LoopMode& m = loop_.modes[j];
+      const double w = dynamics::angular(m.frequency);
+      scale_(j) = m.modal_mass * w * w;
+      Psi_.col(j) = m.shape;
+    }
   }
   std::size_t size() const { return k_.size(); }
-  // Psi^T B_K^{-1} Psi / scale (c x c), with the equilibration of solve_contact_forces, and
-  // det B_K (times the constant `scale_` powers, which do not matter).
-  Eigen::MatrixXcd coupling(cdouble s, cdouble* det_B = nullptr) const {
-    Receptance4 B = loop_.rest(s);
-    for (std::size_t j = 0; j < loop_.modes.size(); ++j)
-      if (std::find(k_.begin(), k_.end(), j) == k_.end()) B += modal_term(loop_.modes[j], s);
+  // diag(1/(m_j omega_j^2)) Psi^T R^{-1} Psi (N x N), R equilibrated as in solve_contact_forces;
+  // and det R.
+  Eigen::MatrixXcd coupling_full(cdouble s, cdouble* det_R = nullptr) const {
+    const Receptance4 R = loop_.rest(s);
     Eigen::Vector4d d;
     for (int i = 0; i < 4; ++i) {
-      const double m = std::abs(B(i, i));
+      const double m = std::abs(R(i, i));
       d(i) = m > 0.0 && std::isfinite(m) ? 1.0 / std::sqrt(m) : 1.0;
     }
-    const Receptance4 Bs = d.cast<cdouble>().asDiagonal() * B * d.cast<cdouble>().asDiagonal();
-    const Eigen::FullPivLU<Receptance4> lu(Bs);
-    if (!lu.isInvertible() || !Bs.allFinite()) throw NumericalError("squeal: the loop without the mode is singular");
-    if (det_B) *det_B = lu.determinant() / (d.prod() * d.prod()) * std::pow(scale_, 4);
-    Eigen::MatrixXd P(4, size());
-    for (std::size_t i = 0; i < size(); ++i) P.col(i) = d.cwiseProduct(loop_.modes[k_[i]].shape);
-    const Eigen::MatrixXcd Pc = P.cast<cdouble>();
-    return Pc.transpose() * lu.solve(Pc) / scale_;
+    const Receptance4 Rs = d.cast<cdouble>().asDiagonal() * R * d.cast<cdouble>().asDiagonal();
+    const Eigen::FullPivLU<Receptance4> lu(Rs);
+    if (!lu.isInvertible() || !Rs.allFinite())
+      throw NumericalError("squeal: the loop without the wheel modes is singular");
+    if (det_R) *det_R = lu.determinant() / (d.prod() * d.prod());
+    const Eigen::MatrixXcd P = (d.asDiagonal() * Psi_).cast<cdouble>();
+    Eigen::MatrixXcd Q = P.transpose() * lu.solve(P);
+    for (Eigen::Index j = 0; j < Q.rows(); ++j) Q.row(j) /= scale_(j);
+    return Q;
   }
-  Eigen::MatrixXcd own(cdouble s) const {  // diag(m_j D_j(s)) / scale
-    Eigen::MatrixXcd D = Eigen::MatrixXcd::Zero(size(), size());
-    for (std::size_t i = 0; i < size(); ++i) D(i, i) = modal_denominator(loop_.modes[k_[i]], s) / scale_;
+  Eigen::MatrixXcd own_full(cdouble s) const {  // diag(m_j D_j(s) / (m_j omega_j^2))
+    const std::size_t n = loop_.modes.size();
+    Eigen::MatrixXcd D = Eigen::MatrixXcd::Zero(n, n);
+    for (std::size_t j = 0; j < n; ++j) D(j, j) = modal_denominator(loop_.modes[j], s) / scale_(j);
     return D;
   }
-  // (S5): det B_K(s) G_K(s; lambda) = det(B_K + lambda Psi diag(m D)^{-1} Psi^T) det(diag(m D)):
-  // the zeros of G_K without its poles at the zeros of det B_K (which would repel Newton where a
-  // root passes close to one).
+  // the cluster's blocks (for the splitting)
+  Eigen::MatrixXcd coupling(cdouble s) const { return block(coupling_full(s)); }
+  Eigen::MatrixXcd own(cdouble s) const { return block(own_full(s)); }
   cdouble operator()(cdouble s, double lambda) const {
-    cdouble det_B;
-    const Eigen::MatrixXcd Q = coupling(s, &det_B);
-    return det_B * (own(s) + lambda * Q).determinant();
+    cdouble det_R;
+    const Eigen::MatrixXcd Q = coupling_full(s, &det_R);
+    return det_R * Eigen::MatrixXcd(own_full(s) + lambda * Q).partialPivLu().determinant();
   }
-  // ds/dlambda along the root path: -H_lambda / H_s (H is a polynomial of degree c in lambda, so
-  // its central difference in lambda is exact for c <= 2; H_s by a central difference in s).
+  // ds/dlambda along the root path: -H_lambda / H_s (central differences; H is analytic in both).
   cdouble tangent(cdouble s, double lambda) const {
-    const double h = 1e-6 * std::abs(s), d = 1e-3;
-    cdouble det_B;
-    const Eigen::MatrixXcd O = own(s), Q = coupling(s, &det_B);
-    const cdouble H_l =
-        det_B * ((O + (lambda + d) * Q).determinant() - (O + (lambda - d) * Q).determinant()) / (2.0 * d);
+    const double h = 1e-6 * std::abs(s), d = 1e-5;
+    cdouble det_R;
+    const Eigen::MatrixXcd O = own_full(s), Q = coupling_full(s, &det_R);
+    const cdouble H_l = det_R *
+                        (Eigen::MatrixXcd(O + (lambda + d) * Q).partialPivLu().determinant() -
+                         Eigen::MatrixXcd(O + (lambda - d) * Q).partialPivLu().determinant()) /
+                        (2.0 * d);
     const cdouble H_s = ((*this)(s + h, lambda) - (*this)(s - h, lambda)) / (2.0 * h);
     return -H_l / H_s;
   }
-  const std::vector<std::size_t>& modes() const { return k_; }
+  // |det(diag(D_j/omega_j^2) + Q)| at lambda = 1: the residual of (S1) in the modal form.
+  double residual(cdouble s) const {
+    return std::abs(Eigen::MatrixXcd(own_full(s) + coupling_full(s)).partialPivLu().determinant());
+  }
 
  private:
+  Eigen::MatrixXcd block(const Eigen::MatrixXcd& full) const {
+    Eigen::MatrixXcd b(size(), size());
+    for (std::size_t i = 0; i < size(); ++i)
+      for (std::size_t j = 0; j < size(); ++j) b(i, j) = full(k_[i], k_[j]);
+    return b;
+  }
   const LaplaceLoop& loop_;
   std::vector<std::size_t> k_;
-  double scale_ = 1.0;
+  Eigen::VectorXd scale_;
+  Eigen::MatrixXd Psi_;
 };
 
 // Start of the branches of a cluster at lambda = lambda1: first-order splitting of the c-fold
@@ -343,7 +361,7 @@ std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions
     // Euler-Newton continuation: predictor along the tangent ds/dlambda = -H_lambda / H_s,
     // corrector Newton at the new lambda; accepted when the corrector stays within the trust
     // radius and within half the predictor's step (else the step is halved).
-    double lambda = lambda1, step = 1.0;
+    double lambda = lambda1, step = o.max_step;
     int steps = 0;
     std::vector<cdouble> slope(c);
     bool have_slope = false;
@@ -378,7 +396,7 @@ std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions
         lambda = target, s = next;
         have_slope = false;
         ++steps;
-        step = std::min(2.0 * step, 1.0);
+        step = std::min(2.0 * step, o.max_step);
         continue;
       }
       step *= 0.5;
@@ -398,9 +416,7 @@ std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions
       r.damping_ratio = -r.s.real() / std::abs(r.s);
       r.unstable = r.s.real() > 0.0;
       try {
-        cdouble det_B;
-        const Eigen::MatrixXcd Q = H.coupling(r.s, &det_B);
-        r.residual = std::abs((H.own(r.s) + Q).determinant());
+        r.residual = H.residual(r.s);
         r.singular_ratio = singular_ratio(loop.matrix(r.s));
       } catch (const NumericalError&) {
         r.residual = r.singular_ratio = std::nan("");
@@ -490,6 +506,24 @@ std::vector<cdouble> coupled_eigenvalues(const Eigen::Matrix4d& C_rig, const std
   M.block(o_f + 1, o_f + 1, 3, 3).setIdentity();
   M.block(o_f + 1, o_f, 3, 1) -= contact.D.col(3);
 
+  // Balance the pencil (D1 M D2, D1 E D2: the same eigenvalues) by powers of two, alternating
+  // rows and columns to unit largest entry of |M| + |E| (the fitted models come in any units).
+  for (int sweep = 0; sweep < 8; ++sweep) {
+    for (int i = 0; i < n; ++i) {
+      const double m = std::max(M.row(i).cwiseAbs().maxCoeff(), E.row(i).cwiseAbs().maxCoeff());
+      if (m > 0.0) {
+        const double f = std::exp2(-std::round(std::log2(m)));
+        M.row(i) *= f, E.row(i) *= f;
+      }
+    }
+    for (int j = 0; j < n; ++j) {
+      const double m = std::max(M.col(j).cwiseAbs().maxCoeff(), E.col(j).cwiseAbs().maxCoeff());
+      if (m > 0.0) {
+        const double f = std::exp2(-std::round(std::log2(m)));
+        M.col(j) *= f, E.col(j) *= f;
+      }
+    }
+  }
   Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> ges(M, E, false);
   if (ges.info() != Eigen::Success) throw NumericalError("squeal route 1: QZ did not converge");
   std::vector<cdouble> out;

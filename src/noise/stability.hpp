@@ -18,31 +18,32 @@
 //  * contact: contact_receptance_laplace with f(s), g(s) from the Markov parameters of the linear
 //    NSS model (MarkovContact below).
 //
-// Route 2 (mode_roots). For wheel mode k the determinant lemma splits (S1):
-//   A(s) = B_k(s) + psi_k psi_k^T / (m_k D_k(s)),
-//   det A = det B_k (1 + psi_k^T B_k^{-1} psi_k / (m_k D_k))
-// so, where det B_k != 0, the zeros of det A are those of the scalar
-//   G_k(s) = m_k D_k(s) + psi_k^T B_k(s)^{-1} psi_k                                         (S2)
-// (a dynamic stiffness, N/m: the mode's own plus what the rest of the loop adds at the contact).
-// G_k has no pole at mode k's own uncoupled root, unlike det A, which is what makes Newton
-// reliable next to lightly damped modes. Which root continues mode k: the homotopy
-//   G_k(s; lambda) = m_k D_k(s) + lambda psi_k^T B_k(s)^{-1} psi_k,   lambda: 0 -> 1,        (S3)
-// starts at the uncoupled root s0 = -zeta omega_k + i omega_k sqrt(1 - zeta^2) (lambda = 0) and
-// is followed by Newton steps with a secant predictor and step halving: a step is accepted when
-// Newton converges within 8 iterations and lands within a trust radius of the predictor (half
-// the distance to the nearest other uncoupled mode, at most 5 % of |s0|). At lambda = 1 the root
-// is a zero of (S1).
+// Route 2 (mode_roots). With R(s) = rest (everything but the flexible wheel modes), Psi the
+// 4 x N mode shapes and Sylvester's determinant identity,
+//   det A(s) = det R(s) det(diag(m_j D_j(s))^{-1}) det( diag(m_j D_j(s)) + Psi^T R(s)^{-1} Psi ),
+// so the zeros of (S1) are those of the modal form (a dynamic stiffness per mode)
+//   H(s) = det R(s) det( diag(m_j D_j(s)) + Psi^T R(s)^{-1} Psi )                            (S2)
+// (rows scaled by 1/(m_j omega_j^2); det R removes the poles of R^{-1}). It has no poles at the
+// uncoupled modes, unlike det A, which is what makes Newton reliable next to lightly damped
+// modes. Which root continues mode k: the homotopy
+//   H(s; lambda) = det R(s) det( diag(m_j D_j(s)) + lambda Psi^T R(s)^{-1} Psi ),  lambda: 0 -> 1,  (S3)
+// has at lambda = 0 exactly the uncoupled roots s0_k = -zeta omega_k + i omega_k sqrt(1 - zeta^2);
+// all modes are coupled by the same lambda, so the root paths of different modes are paths of one
+// analytic family and do not merge (one root per mode). Each path is followed by Euler-Newton
+// continuation: tangent predictor ds/dlambda = -H_lambda/H_s, Newton corrector, accepted when the
+// corrector stays within a trust radius (half the distance to the nearest other uncoupled root,
+// within [0.1, 5] % of |s0|) and within half the predictor's step, else the step is halved. At
+// lambda = 1 the root is a zero of (S1). Newton: the derivative by a central difference in the
+// complex plane (h = 1e-6 |s|; H is analytic), then secant updates.
 // Modes with the same uncoupled root (the sin/cos partners of a mode table) form a cluster K of c
-// modes; the rank-c form of the lemma gives
-//   G_K(s; lambda) = det( diag(m_j D_j(s)) + lambda Psi_K^T B_K(s)^{-1} Psi_K )           (S4)
-// (S2-S3 for c = 1). Its c roots leave the c-fold root s0 along the eigenvalues of
-// -lambda diag(m_j D_j'(s0))^{-1} Psi_K^T B_K(s0)^{-1} Psi_K (first order); the branches start
-// there at lambda = 1e-3, each assigned to the mode with the largest component of its
-// eigenvector, and are continued together (the trust radius also keeps each branch within half
-// the distance to the others), so that partners do not converge onto one root. Newton's derivative: central difference in the complex plane, h = 1e-6 |s|
-// (G_k is analytic). Reported: s, Im s/2 pi, the damping ratio -Re s/|s|, unstable = Re s > 0,
-// |G_k|/(m_k omega_k^2) at the root and sigma_min/sigma_max of the equilibrated A(s) (both ~0 at
-// a true zero).
+// modes: H has a c-fold root there at lambda = 0, whose c branches leave along the eigenvalues of
+// -lambda diag(m_j D_j'(s0))^{-1} (Psi^T R(s0)^{-1} Psi)_KK (first order); they start there at
+// lambda = 1e-3, each assigned to the mode with the largest component of its eigenvector, and are
+// continued together (the trust radius also keeps each branch within half the distance to the
+// others' predictions).
+// Reported: s, Im s/2 pi, the damping ratio -Re s/|s|, unstable = Re s > 0, the residual
+// |det(diag(D_j/omega_j^2) + diag(1/(m_j omega_j^2)) Psi^T R^{-1} Psi)| at the root and
+// sigma_min/sigma_max of the equilibrated A(s) (both ~0 at a true zero).
 //
 // Route 1 (coupled_eigenvalues): the rational (state-space) models of the rail and of the contact
 // coupled with the wheel's modal state space; the eigenvalues of the whole (a descriptor system,
@@ -99,12 +100,10 @@ struct LoopMode {
 /// (S1) split for route 2: A(s) = rest(s) + sum_k psi_k psi_k^T / (m_k D_k(s)).
 struct LaplaceLoop {
   std::vector<LoopMode> modes;
-  /// Everything but the wheel's flexible modes: rigid wheelset, rail and contact (contact frame).
+  /// Everything but the wheel's flexible modes, R(s): rigid wheelset, rail and contact (contact frame).
   std::function<Receptance4(cdouble s)> rest;
   /// A(s) of (S1).
   Receptance4 matrix(cdouble s) const;
-  /// A(s) without mode k: B_k(s) of (S2).
-  Receptance4 without_mode(cdouble s, std::size_t k) const;
 };
 
 /// All the wheel's modes in the contact frame at `position` (shapes moved by the lever arm and
@@ -125,6 +124,7 @@ struct StabilityOptions {
   double tolerance = 1e-11;     ///< Newton: |delta s| <= tolerance |s|
   int max_iterations = 8;       ///< Newton iterations per continuation step
   double min_step = 1.0 / 4096; ///< smallest homotopy step in lambda before giving up
+  double max_step = 1.0;        ///< largest homotopy step (tests: a fine path as the reference)
 };
 
 /// One root of (S1), continued from a wheel mode (route 2).
@@ -137,7 +137,7 @@ struct ModeRoot {
   double frequency = 0.0;          ///< Im s / 2 pi (Hz)
   double damping_ratio = 0.0;      ///< -Re s / |s|
   bool unstable = false;           ///< Re s > 0
-  double residual = 0.0;           ///< |G_k(s)| / (m_k omega_k^2) at lambda = 1
+  double residual = 0.0;           ///< of (S2) in the modal form at lambda = 1 (see above)
   double singular_ratio = 0.0;     ///< sigma_min / sigma_max of the equilibrated A(s)
   int iterations = 0;              ///< Newton iterations, all continuation steps
   int steps = 0;                   ///< accepted continuation steps
