@@ -68,8 +68,8 @@ namespace rollnoise::noise {
 /// (the model's own sums with z = e^{-i omega dt} continued; Horner). |z| = exp(-sigma dt): for a
 /// growing s (sigma > 0) the series converges faster than on the unit circle, for a decaying one
 /// it converges while |z| rho < 1, rho the decay ratio per step of h_j (|h_j| ~ rho^j), i.e. for
-/// sigma > min_sigma() = ln(rho)/dt. Evaluations beyond that, or where the truncated tail
-/// |h_J| |z|^J exceeds 1e-8 of the largest term, throw NumericalError (the guard).
+/// sigma > ln(rho)/dt; min_sigma() = 0.9 ln(rho)/dt. Evaluations beyond that, or where the truncated tail
+/// |h_J| |z|^J exceeds 1e-6 of the largest term, throw NumericalError (the guard).
 class MarkovContact {
  public:
   /// `load` may be empty (no normal-load input: g = 0).

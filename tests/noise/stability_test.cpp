@@ -235,7 +235,7 @@ TEST(Stability, MarkovContactSumsTheSeriesAtComplexSAndGuardsItsConvergence) {
     gm.push_back(G * std::pow(rho, j));
   }
   const noise::MarkovContact c(h, gm, dt);
-  EXPECT_NEAR(c.min_sigma(), 0.5 * std::log(rho) / dt, 1e-6 * std::abs(c.min_sigma()));
+  EXPECT_NEAR(c.min_sigma(), 0.9 * std::log(rho) / dt, 1e-6 * std::abs(c.min_sigma()));
   for (const cdouble s : {cdouble(0, 2 * M_PI * 1000), cdouble(50, 2 * M_PI * 3000), cdouble(-300, 2 * M_PI * 500)}) {
     const cdouble z = std::exp(-s * dt);
     const Eigen::Matrix3cd f = -H.cast<cdouble>() / (1.0 - rho * z);
