@@ -22,19 +22,12 @@ double checked_omega(double frequency) {
 // Support
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-template <class Omega>
-cdouble support_stiffness(const Support& p, Omega omega) {
-  const cdouble kp = p.pad_stiffness * cdouble(1.0, p.pad_loss_factor);
-  const cdouble kb = p.ballast_stiffness * cdouble(1.0, p.ballast_loss_factor);
-  const cdouble below = kb - p.sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
-  return kp * below / (kp + below);                           // Eq. (1): pad in series
+cdouble Support::dynamic_stiffness(double omega) const {
+  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
+  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
+  const cdouble below = kb - sleeper_mass * omega * omega;  // sleeper on ballast, seen from above
+  return kp * below / (kp + below);                         // Eq. (1): pad in series
 }
-}  // namespace
-
-cdouble Support::dynamic_stiffness(double omega) const { return support_stiffness(*this, omega); }
-
-cdouble Support::dynamic_stiffness(cdouble omega) const { return support_stiffness(*this, omega); }
 
 void Support::validate(const std::string& prefix) const {
   auto check = [&](double v, const char* name, bool allow_zero) {
@@ -116,31 +109,8 @@ DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const 
 }
 
 Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r, double x_e) const {
-  return transfer_impl(checked_omega(frequency), frequency, x_r, x_e);
-}
-
-Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r, double x_e) const {
-  return transfer_impl(omega, std::real(omega) / (2.0 * M_PI), x_r, x_e);
-}
-
-// `frequency` (Hz) only for messages.
-namespace {
-// The beam at a real or complex angular frequency (foundation s; at complex omega also the
-// foundation at Re omega, for the continuation of the roots: track_beam.hpp).
-InfiniteBeam beam(const BeamSection& b, double omega, cdouble s, cdouble) { return InfiniteBeam(b, omega, s); }
-InfiniteBeam beam(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
-  return InfiniteBeam(b, omega, s, s_real);
-}
-cdouble rod(const BeamSection& b, double omega, cdouble s, cdouble) { return rod_receptance(b, omega, s, 0.0); }
-cdouble rod(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
-  return rod_receptance(b, omega, s, 0.0, s_real);
-}
-}  // namespace
-
-template <class Omega>
-Eigen::Matrix2cd DiscretelySupportedRail::transfer_impl(Omega omega, double frequency, double x_r,
-                                                        double x_e) const {
-  const InfiniteBeam free_rail = beam(rail_, omega, 0.0, 0.0);
+  const double omega = checked_omega(frequency);
+  const InfiniteBeam free_rail(rail_, omega, 0.0);
   const cdouble K = support_.dynamic_stiffness(omega);
   const int m = 2 * n_ + 1;
   const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
@@ -191,47 +161,104 @@ RailModel::RailModel(const TrackParameters& track, TrackSupport support, double 
 }
 
 Receptance4 RailModel::receptance(double frequency) const {
-  return receptance_impl(checked_omega(frequency), frequency);
-}
-
-Receptance4 RailModel::receptance_laplace(cdouble s) const {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  return receptance_impl(cdouble(0.0, -1.0) * s, s.imag() / (2.0 * M_PI));  // omega = -i s
-}
-
-// The same arithmetic for a real and a complex angular frequency (`frequency` in Hz for the
-// real-frequency calls, which keep their bits).
-template <class Omega>
-Receptance4 RailModel::receptance_impl(Omega omega, double frequency) const {
+  const double omega = checked_omega(frequency);
   Eigen::Matrix2cd Hv, Hl;
   if (support_ == TrackSupport::kDiscrete) {
-    Hv = vertical_.transfer_impl(omega, frequency, x_, x_);
-    Hl = lateral_.transfer_impl(omega, frequency, x_, x_);
+    Hv = vertical_.point(frequency, x_);
+    Hl = lateral_.point(frequency, x_);
   } else {
-    const double L = track_.sleeper_spacing, wr = std::real(omega);
-    Hv = beam(track_.vertical, omega, track_.vertical_support.dynamic_stiffness(omega) / L,
-              track_.vertical_support.dynamic_stiffness(wr) / L)
-             .transfer(0.0);
-    Hl = beam(track_.lateral, omega, track_.lateral_support.dynamic_stiffness(omega) / L,
-              track_.lateral_support.dynamic_stiffness(wr) / L)
-             .transfer(0.0);
+    Hv = continuous_transfer(track_.vertical, track_.vertical_support, track_.sleeper_spacing,
+                             frequency, 0.0);
+    Hl = continuous_transfer(track_.lateral, track_.lateral_support, track_.sleeper_spacing,
+                             frequency, 0.0);
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / track_.sleeper_spacing;
-  const cdouble u_rod = rod(track_.vertical, omega, s_x,
-                          track_.longitudinal_support.dynamic_stiffness(std::real(omega)) / track_.sleeper_spacing);
+  const cdouble rod = rod_receptance(track_.vertical, omega, s_x, 0.0);
   const double h = track_.head_height;
 
   Receptance4 R = Receptance4::Zero();
   R(kZ, kZ) = Hv(0, 0);
   R(kZ, kX) = -h * Hv(0, 1);
   R(kX, kZ) = -h * Hv(1, 0);
-  R(kX, kX) = u_rod + h * h * Hv(1, 1);
+  R(kX, kX) = rod + h * h * Hv(1, 1);
   R(kY, kY) = Hl(0, 0);
   R(kY, kRotZ) = Hl(0, 1);
   R(kRotZ, kY) = Hl(1, 0);
   R(kRotZ, kRotZ) = Hl(1, 1);
   return R;
+}
+
+
+// ---------------------------------------------------------------------------------------------
+// Complex frequency (docs/squeal.md Sec. 2): Eqs. (1), (2) and the contact-point receptance for a
+// complex omega = -i s, written out separately from the real-frequency functions above (which keep
+// their code and bits). The foundation at Re omega is passed on for the continuation of the
+// wavenumber roots (track_beam.hpp).
+// ---------------------------------------------------------------------------------------------
+
+cdouble Support::dynamic_stiffness(cdouble omega) const {
+  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
+  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
+  const cdouble below = kb - sleeper_mass * omega * omega;
+  return kp * below / (kp + below);
+}
+
+Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r, double x_e) const {
+  const InfiniteBeam free_rail(rail_, omega, 0.0, 0.0);
+  const cdouble K = support_.dynamic_stiffness(omega);
+  const int m = 2 * n_ + 1;
+  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);
+  std::vector<cdouble> g(m);
+  for (int d = 0; d < m; ++d) g[d] = free_rail.transfer(d * spacing_)(0, 0);
+  Eigen::MatrixXcd S(m, m), Be(m, 2), Br(m, 2);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) S(i, j) = g[std::abs(i - j)];
+    S(i, i) += 1.0 / K;
+    const double xn = (n0 - n_ + i) * spacing_;
+    Be.row(i) = free_rail.transfer(xn - x_e).row(0);
+    Br.row(i) = free_rail.transfer(xn - x_r).row(0);
+  }
+  Eigen::Matrix2cd H = free_rail.transfer(x_r - x_e) - Br.transpose() * S.partialPivLu().solve(Be);
+  if (!H.allFinite()) throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
+  return H;
+}
+
+namespace {
+// The 4x4 of RailModel::receptance from the vertical and lateral beams and the rod.
+Receptance4 contact_point_receptance(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
+  Receptance4 R = Receptance4::Zero();
+  R(kZ, kZ) = Hv(0, 0);
+  R(kZ, kX) = -h * Hv(0, 1);
+  R(kX, kZ) = -h * Hv(1, 0);
+  R(kX, kX) = rod + h * h * Hv(1, 1);
+  R(kY, kY) = Hl(0, 0);
+  R(kY, kRotZ) = Hl(0, 1);
+  R(kRotZ, kY) = Hl(1, 0);
+  R(kRotZ, kRotZ) = Hl(1, 1);
+  return R;
+}
+}  // namespace
+
+Receptance4 RailModel::receptance_laplace(cdouble s) const {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  const cdouble omega = cdouble(0.0, -1.0) * s;  // i omega = s
+  const double wr = omega.real(), L = track_.sleeper_spacing;
+  Eigen::Matrix2cd Hv, Hl;
+  if (support_ == TrackSupport::kDiscrete) {
+    Hv = vertical_.transfer_at(omega, x_, x_);
+    Hl = lateral_.transfer_at(omega, x_, x_);
+  } else {
+    Hv = InfiniteBeam(track_.vertical, omega, track_.vertical_support.dynamic_stiffness(omega) / L,
+                      track_.vertical_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
+    Hl = InfiniteBeam(track_.lateral, omega, track_.lateral_support.dynamic_stiffness(omega) / L,
+                      track_.lateral_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
+  }
+  const cdouble rod = rod_receptance(track_.vertical, omega, track_.longitudinal_support.dynamic_stiffness(omega) / L,
+                                     0.0, track_.longitudinal_support.dynamic_stiffness(wr) / L);
+  return contact_point_receptance(Hv, Hl, rod, track_.head_height);
 }
 
 }  // namespace rollnoise::dynamics

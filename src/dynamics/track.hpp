@@ -99,9 +99,6 @@ class DiscretelySupportedRail {
   Support support_;
   double spacing_;
   int n_;
-  friend class RailModel;
-  template <class Omega>
-  Eigen::Matrix2cd transfer_impl(Omega omega, double frequency, double x_response, double x_load) const;
 };
 
 enum class TrackSupport { kContinuous, kDiscrete };
@@ -130,8 +127,6 @@ class RailModel {
   const TrackParameters& track() const { return track_; }
 
  private:
-  template <class Omega>
-  Receptance4 receptance_impl(Omega omega, double frequency) const;
   TrackParameters track_;
   TrackSupport support_;
   double x_;

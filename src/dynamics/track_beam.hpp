@@ -89,8 +89,7 @@ class InfiniteBeam {
   std::array<cdouble, 2> k_;       // roots in the lower half plane
   std::array<cdouble, 2> inv_dp_;  // 1 / P'(k_j)
   cdouble d2_, d0_, e2_, e0_, g_;  // numerators: W/F = d2 k^2 + d0, Psi/M = e2 k^2 + e0, odd: g k
-  template <class Omega>
-  void init(const BeamSection& section, Omega omega, cdouble foundation, const InfiniteBeam* reference);
+  void init_complex(const BeamSection& section, cdouble omega, cdouble foundation, const InfiniteBeam* reference);
 };
 
 /// Longitudinal receptance u/F of an infinite rod (axial stiffness EA(1 + i eta), mass m') on a

@@ -173,7 +173,7 @@ TEST(Stability, Route1OnARationalSystemEqualsItsExactEigenvalues) {
   contact.B.leftCols(3) = -V * K;
   contact.C = Eigen::MatrixXd::Identity(3, 3);
   contact.D = Eigen::MatrixXd::Zero(3, 4);
-  contact.D.col(3) = g;
+  for (int i = 0; i < 3; ++i) contact.D(i, 3) = g(i);  // (elementwise: GCC 12 -Warray-bounds on a 3-vector packet)
 
   noise::LoopMode m;
   m.frequency = 900, m.damping_ratio = 2e-3, m.modal_mass = 100, m.shape << 1, 0, 0, 0;
