@@ -164,12 +164,18 @@ Receptance4 rail_receptance_laplace(const dynamics::RailModel& rail, cdouble s, 
 
 namespace {
 
-double singular_ratio(const Receptance4& A) {
+// The diagonal equilibration of solve_contact_forces: D_i = |A_ii|^{-1/2}.
+Eigen::Vector4d equilibration(const Receptance4& A) {
   Eigen::Vector4d d;
   for (int i = 0; i < 4; ++i) {
     const double m = std::abs(A(i, i));
     d(i) = m > 0.0 && std::isfinite(m) ? 1.0 / std::sqrt(m) : 1.0;
   }
+  return d;
+}
+
+double singular_ratio(const Receptance4& A) {
+  const Eigen::Vector4d d = equilibration(A);
   const Receptance4 As = d.cast<cdouble>().asDiagonal() * A * d.cast<cdouble>().asDiagonal();
   const Eigen::JacobiSVD<Receptance4> svd(As);
   const auto& sv = svd.singularValues();
@@ -217,11 +223,7 @@ class ClusterFunction {
   // and det R.
   Eigen::MatrixXcd coupling_full(cdouble s, cdouble* det_R = nullptr) const {
     const Receptance4 R = loop_.rest(s);
-    Eigen::Vector4d d;
-    for (int i = 0; i < 4; ++i) {
-      const double m = std::abs(R(i, i));
-      d(i) = m > 0.0 && std::isfinite(m) ? 1.0 / std::sqrt(m) : 1.0;
-    }
+    const Eigen::Vector4d d = equilibration(R);
     const Receptance4 Rs = d.cast<cdouble>().asDiagonal() * R * d.cast<cdouble>().asDiagonal();
     const Eigen::FullPivLU<Receptance4> lu(Rs);
     if (!lu.isInvertible() || !Rs.allFinite())
