@@ -29,6 +29,8 @@ struct SquealResult {
   double seconds_contact = 0.0;         ///< curve state, patch, steady rolling, linear model, Markov parameters
   double seconds_roots = 0.0;           ///< route 2
   long evaluations = 0;                 ///< evaluations of the loop matrix at complex s
+  /// of M0^{-1} M1, when checked (the model without Markov parameters: falling friction); else -1
+  double contact_spectral_radius = -1.0;
   int unstable_count() const;
 };
 
@@ -36,6 +38,10 @@ struct SquealResult {
 /// Kalker's constant f, g = 0). InputError (noise.band_max) when no mode lies in the band or the band
 /// exceeds the grid's Nyquist limit.
 SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options = {});
+
+/// The linearised contact's own stability: InputError (friction.decay) naming the growth rate when
+/// the spectral radius of M0^{-1} M1 is >= 1 (recorded in r.contact_spectral_radius).
+void check_contact_stability(const nss::LinearContactModel& model, SquealResult& r);
 
 /// The loop at complex s of a solved contact stage (for tests and other drivers): the contact's
 /// Markov parameters must exist (the stage's model swept once).
