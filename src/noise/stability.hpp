@@ -15,8 +15,8 @@
 //    rotation of loop.hpp applied to the shape);
 //  * rail: dynamics::RailModel::receptance_laplace (the closed forms at complex frequency; the
 //    hysteretic loss factors k(1 + i eta) are continued as constants);
-//  * contact: contact_receptance_laplace with f(s), g(s) from the Markov parameters of the linear
-//    NSS model (MarkovContact below).
+//  * contact: contact_receptance_laplace with f(s), g(s) of the linear NSS model at complex s
+//    (MarkovContact below: its Markov series, or an exact evaluator with the guard of the series).
 //
 // Route 2 (mode_roots). With R(s) = rest (everything but the flexible wheel modes), Psi the
 // 4 x N mode shapes and Sylvester's determinant identity,

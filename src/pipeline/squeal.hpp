@@ -6,7 +6,10 @@
 //          contact frame), exact in s;
 //   rail:  the case's track model at complex frequency;
 //   contact: Hertz spring k_N, alpha_c,t = (V/s) f(s)^{-1}, and alpha_c,tn = -alpha_c,tt g(s) when
-//          noise.normal_coupling = "on", f and g from the model's Markov parameters.
+//          noise.normal_coupling = "on", f(s) and g(s) from the model
+//          (nss::LinearContactModel::creep_coefficients_laplace: the Markov series or the Hessenberg
+//          form at complex z, with the case's creepage sampling); with falling friction the
+//          contact's own stability (spectral radius of M0^{-1} M1 < 1) is checked first.
 // Route 2 (Newton with homotopy continuation on (S3)) for every wheel mode with
 // noise.band_min <= f_n <= noise.band_max. The contact law enters only through f and g, so any
 // friction law whose linearisation the NSS model carries is handled the same way.
