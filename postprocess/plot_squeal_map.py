@@ -5,7 +5,7 @@ unstable) and the largest growth rate Re s with the labels of the unstable modes
 
   /usr/bin/python3 postprocess/plot_squeal_map.py [--case cases/squeal_150m.toml]
       [--radii 100,150,200,300,500,1000] [--param friction.decay --values 0.5,1,2,3,4]
-      [--binary build/rollnoise] [--work squeal_map] [-j 2] [-o squeal_map.png] [--fast]
+      [--binary build/rollnoise] [--work squeal_map] [-j 2] [-o squeal_map.png] [--set KEY=VALUE] [--fast]
 
 Each run writes WORK/r<R>_<i>.h5; a run the program refuses because the linearised contact alone
 is unstable (InputError naming friction.decay, docs/squeal.md) is a cell of its own class; any other
@@ -16,7 +16,6 @@ import concurrent.futures
 import csv
 import os
 import subprocess
-import sys
 
 import numpy as np
 
@@ -34,9 +33,11 @@ def floats(text):
         rh.fail(f"not a comma-separated list of numbers: {text!r}")
 
 
-def run_one(binary, case, work, radius, param, value, index):
+def run_one(binary, case, work, radius, param, value, index, extra):
     out = os.path.join(work, f"r{radius:g}_{index}.h5")
     cmd = [binary, "squeal", case, "-o", out, "-q", "--set", f"curve.radius={radius!r}", "--set", f"{param}={value!r}"]
+    for s in extra:
+        cmd += ["--set", s]
     r = subprocess.run(cmd, capture_output=True, text=True)
     cell = {"radius": radius, "value": value, "file": out, "message": "", "growth": np.nan, "modes": [],
             "frequency": np.nan}
@@ -69,6 +70,8 @@ def main():
     p.add_argument("--work", default="squeal_map", help="folder of the runs' outputs")
     p.add_argument("-j", "--jobs", type=int, default=2, help="parallel runs")
     p.add_argument("-o", "--output", default="squeal_map.png")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="passed on to every run (repeatable), e.g. grid.nx=12")
     p.add_argument("--fast", action="store_true", help="2 x 2 runs (the first two of each list)")
     a = p.parse_args()
     radii, values = floats(a.radii), floats(a.values)
@@ -83,7 +86,7 @@ def main():
     os.makedirs(a.work, exist_ok=True)
     jobs = [(r, v, i) for r in radii for i, v in enumerate(values)]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
-        cells = list(ex.map(lambda t: run_one(a.binary, a.case, a.work, t[0], a.param, t[1], t[2]), jobs))
+        cells = list(ex.map(lambda t: run_one(a.binary, a.case, a.work, t[0], a.param, t[1], t[2], a.set), jobs))
     with open(os.path.join(a.work, "summary.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["radius_m", a.param, "class", "max_growth_rate_1_per_s", "frequency_Hz", "unstable_modes", "message"])
@@ -132,5 +135,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     rh.run(main)

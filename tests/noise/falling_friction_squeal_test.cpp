@@ -4,8 +4,8 @@
 // criterion (nss/falling_friction.hpp, S2)
 //   2 zeta w_n m + N mu'(v) psi^2 = 0   (rigid full-slip contact, f_par = N V mu'(v))
 // within 1 %. The contact is the full linear NSS model (its elastic correction included, not
-// removed): at w -> 0 in full slip it tends to the rigid limit to second order in the scatter of the
-// local slip speeds (tests/nss/falling_friction_test.cpp: 0.46 % here), so the mode is put at a
+// removed): at w -> 0 in full slip it tends to the rigid limit to second order in the scatter of
+// the local slip speeds (tests/nss/falling_friction_test.cpp: 0.46 % here), so the mode is put at a
 // low frequency against the contact's V/a. The same threshold from the model's own Re f_par at the
 // crossing frequency (2 zeta w_n m + Re f_par(w) psi^2 / V = 0, exact for this loop) is checked to
 // 1e-6: that one tests the numerics alone.
@@ -16,10 +16,10 @@
 
 #include "../contact/paper_case.hpp"
 #include "contact/steady_rolling.hpp"
-#include "nss/falling_friction.hpp"
-#include "nss/linear_model.hpp"
 #include "noise/contact_receptance.hpp"
 #include "noise/stability.hpp"
+#include "nss/falling_friction.hpp"
+#include "nss/linear_model.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::testing;
@@ -29,8 +29,8 @@ TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
   const auto& patch = paper_patch("coarse");
   const contact::Creepage mean{0.0, 0.05, 0.0};  // full slip along y, no spin
   const contact::FallingFriction law{0.5, 2.0};  // A, B (s/m)
-  const auto steady =
-      contact::solve_steady_rolling(patch.influence, patch.normal.pn, {kMu, kSpeed, mean, 0.0, law});
+  const auto steady = contact::solve_steady_rolling(patch.influence, patch.normal.pn,
+                                                    {kMu, kSpeed, mean, 0.0, law});
   const nss::LinearContactModel model(patch, steady, {kMu, kSpeed, 0.0, law});  // midstep sampling
   ASSERT_EQ(model.adhesion_elements(), 0);
   ASSERT_TRUE(model.falling_friction());
@@ -40,11 +40,13 @@ TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
 
   // One mode along the slip direction (y): modal mass m, shape psi at the contact, 40 Hz.
   const double fn = 40.0, wn = 2.0 * M_PI * fn, m = 1.0, psi = 0.02;
-  const Eigen::Matrix2d rigid = nss::full_slip_creep_coefficients(kN, kSpeed, mean.xi_x, mean.xi_y, {kMu, law});
+  const Eigen::Matrix2d rigid =
+      nss::full_slip_creep_coefficients(kN, kSpeed, mean.xi_x, mean.xi_y, {kMu, law});
   const double zeta_classical = nss::critical_damping_ratio(rigid(1, 1), kSpeed, psi, m, wn);
   ASSERT_GT(zeta_classical, 0.0);
 
-  // The loop: rigid rail (zero receptance), no rigid wheelset, the contact (Hertz spring, (V/s) f^-1).
+  // The loop: rigid rail (zero receptance), no rigid wheelset, the contact (Hertz spring, (V/s)
+  // f^-1).
   noise::LaplaceLoop loop;
   loop.modes.resize(1);
   loop.modes[0].frequency = fn;
@@ -75,9 +77,11 @@ TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
   const double w = r.s.imag();
   const cdouble f22 = model.creep_coefficients_laplace(cdouble(0.0, w))(1, 1);
   const double zeta_model = nss::critical_damping_ratio(f22.real(), kSpeed, psi, m, wn);
-  std::printf("threshold zeta: route 2 %.8e, classical (rigid) %.8e (%.3f %%), model Re f_par(%.3f Hz) %.8e\n",
-              zeta_threshold, zeta_classical, 100.0 * (zeta_threshold / zeta_classical - 1.0), w / (2 * M_PI),
-              zeta_model);
+  std::printf(
+      "threshold zeta: route 2 %.8e, classical (rigid) %.8e (%.3f %%), model Re f_par(%.3f Hz) "
+      "%.8e\n",
+      zeta_threshold, zeta_classical, 100.0 * (zeta_threshold / zeta_classical - 1.0),
+      w / (2 * M_PI), zeta_model);
   EXPECT_NEAR(zeta_threshold, zeta_classical, 0.01 * zeta_classical);
   EXPECT_NEAR(zeta_threshold, zeta_model, 1e-6 * zeta_model);
 }

@@ -43,7 +43,8 @@ TEST(SquealFallingFriction, UnstableContactIsRefusedNamingTheDecay) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "friction.decay");
-    EXPECT_NE(std::string(e.what()).find("contact alone is unstable"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("contact alone is unstable"), std::string::npos)
+        << e.what();
   }
 }
 
