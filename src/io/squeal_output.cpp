@@ -39,6 +39,8 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.write("/squeal/iterations", iterations, {n}, "- (Newton iterations over all continuation steps)");
   w.write("/squeal/converged", converged, {n}, "- (1: the continuation reached lambda = 1)");
   w.write("/squeal/min_growth_rate", r.min_sigma, "1/s (the contact's Markov series converge for Re s above this)");
+  w.write("/squeal/contact_spectral_radius", r.contact_spectral_radius,
+          "- (of M0^-1 M1, the contact alone: < 1 stable; -1: not computed, the Markov parameters decayed)");
   w.attribute("/squeal", "route",
               "2: Newton with homotopy continuation from each wheel mode on det(alpha_w + alpha_r + alpha_c) = 0 "
               "(docs/squeal.md)");

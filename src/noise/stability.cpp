@@ -81,18 +81,37 @@ void MarkovContact::check(cdouble s, double big, double last) const {
   }
 }
 
+MarkovContact::MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eigen::Vector3d> load, double dt,
+                             LaplaceEvaluator exact)
+    : h_(std::move(creep)), gm_(std::move(load)), dt_(dt), exact_(std::move(exact)) {
+  if (!exact_.creep) throw NumericalError("squeal: the contact's exact evaluator is missing");
+  if (!(dt_ > 0.0)) throw InputError("rolling.speed", "squeal: the contact model's time step must be positive");
+  if (h_.empty()) {
+    min_sigma_ = -1e300;  // exact everywhere: no series to guard
+    return;
+  }
+  const double rho = std::max(decay_ratio(h_), gm_.empty() ? 0.0 : decay_ratio(gm_));
+  min_sigma_ = rho > 0.0 ? 0.9 * std::log(rho) / dt_ : -1e300;  // as above
+}
+
 Eigen::Matrix3cd MarkovContact::creep(cdouble s) const {
   const cdouble z = std::exp(-s * dt_);
-  const auto [big, last] = weighted_terms(h_, std::abs(z));
-  check(s, big, last);
+  if (!h_.empty()) {
+    const auto [big, last] = weighted_terms(h_, std::abs(z));
+    check(s, big, last);
+  }
+  if (exact_.creep) return exact_.creep(s);
   return -horner<Eigen::Matrix3cd>(h_, z);  // f = -sum h_j z^j
 }
 
 Eigen::Vector3cd MarkovContact::load(cdouble s) const {
-  if (gm_.empty()) return Eigen::Vector3cd::Zero();
   const cdouble z = std::exp(-s * dt_);
-  const auto [big, last] = weighted_terms(gm_, std::abs(z));
-  check(s, big, last);
+  if (!gm_.empty()) {
+    const auto [big, last] = weighted_terms(gm_, std::abs(z));
+    check(s, big, last);
+  }
+  if (exact_.load) return exact_.load(s);
+  if (gm_.empty()) return Eigen::Vector3cd::Zero();
   return horner<Eigen::Vector3cd>(gm_, z);  // g = sum gm_j z^j (G3)
 }
 

@@ -1,5 +1,6 @@
 #include "nss/linear_model.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -594,7 +595,19 @@ void LinearContactModel::apply_sampling(std::vector<CreepMatrix>& f, const std::
   // (w dt/2 = pi f dx/V: nss::half_step_phase_correction). The outputs F_k stay at t_k. Checked:
   // the midstep f converges at second order at 1-5 kHz, f_contact at first (tests/nss).
   if (sampling_ == contact::CreepageSampling::contact) return;
-  for (size_t i = 0; i < f.size(); ++i) f[i] *= std::polar(1.0, -M_PI * frequencies[i] * dt_);
+  for (size_t i = 0; i < f.size(); ++i)
+    f[i] *= creepage_sampling_factor({0.0, 2.0 * M_PI * frequencies[i] * dt_}, sampling_);
+}
+
+std::complex<double> creepage_sampling_factor(std::complex<double> s_dt, contact::CreepageSampling sampling) {
+  // f_sampling(s) = f_contact(s) x factor(s dt) (apply_sampling; linear_model.hpp "Creepage
+  // sampling"), continued analytically from s = i w. A step-averaged sampling would add the case
+  // (1 - e^{-s dt})/(s dt) (its limit 1 at s dt -> 0).
+  switch (sampling) {
+    case contact::CreepageSampling::contact: return 1.0;
+    case contact::CreepageSampling::midstep: return std::exp(-0.5 * s_dt);
+  }
+  return 1.0;
 }
 
 LoadVector LinearContactModel::normal_load_coefficients_direct(double frequency) const {
@@ -1020,15 +1033,83 @@ void LinearContactModel::hessenberg_sweep(const std::vector<double>& frequencies
                                           std::vector<LoadVector>* g) const {
   // (M0 - z M1)^{-1} = (I - z N)^{-1} M0^{-1}: f = -L' X(:, 0:3), g = dN + L' (X(:, 3) - z X(:, 4))
   // with (I - z H) X = Q' M0^{-1} [W, wN0, wN1] (G2).
+  for (double fr : frequencies) {
+    CreepMatrix fk;
+    LoadVector gk;
+    hessenberg_at(std::polar(1.0, -2.0 * M_PI * fr * dt_), f ? &fk : nullptr, g ? &gk : nullptr);
+    if (f) f->push_back(fk);
+    if (g) g->push_back(gk);
+  }
+}
+
+void LinearContactModel::hessenberg_at(std::complex<double> z, CreepMatrix* f, LoadVector* g) const {
+  // Any complex z (the shifted Hessenberg solve does not need |z| = 1).
   reduce();
   const int first = f ? 0 : 3, count = (f ? 3 : 0) + (g ? 2 : 0);
-  for (double fr : frequencies) {
-    const std::complex<double> z = std::polar(1.0, -2.0 * M_PI * fr * dt_);
-    const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.middleCols(first, count));
-    const Eigen::MatrixXcd LX = Lhat_.transpose().cast<std::complex<double>>() * X;
-    if (f) f->push_back(-LX.leftCols(3));
-    if (g) g->push_back(dN_.cast<std::complex<double>>() + LX.col(count - 2) - z * LX.col(count - 1));
+  const Eigen::MatrixXcd X = solve_shifted_hessenberg(H_, z, Rhat_.middleCols(first, count));
+  const Eigen::MatrixXcd LX = Lhat_.transpose().cast<std::complex<double>>() * X;
+  if (f) *f = -LX.leftCols(3);
+  if (g) *g = dN_.cast<std::complex<double>>() + LX.col(count - 2) - z * LX.col(count - 1);
+}
+
+namespace {
+
+double max_abs(const Eigen::Matrix3d& m) { return m.cwiseAbs().maxCoeff(); }
+double max_abs(const Eigen::Vector3d& m) { return m.cwiseAbs().maxCoeff(); }
+
+// sum_j h_j z^j by Horner at one complex z, if the series has converged to round-off there: the
+// last weighted term |h_J| |z|^J at most 1e-12 of the largest (the h_j are kept until they decay
+// to ~1e-15 of their largest, so for |z| > 1 this bounds the amplified truncation).
+template <class Out, class Term>
+std::optional<Out> horner_if_converged(const std::vector<Term>& h, std::complex<double> z) {
+  if (h.empty()) return std::nullopt;
+  double w = 1.0, big = 0.0, last = 0.0;
+  for (const auto& x : h) {
+    last = max_abs(x) * w;
+    big = std::max(big, last);
+    w *= std::abs(z);
   }
+  if (!(last <= 1e-12 * big)) return std::nullopt;
+  Out acc = Out::Zero();
+  for (auto it = h.rbegin(); it != h.rend(); ++it) acc = acc * z + it->template cast<std::complex<double>>();
+  return acc;
+}
+
+}  // namespace
+
+CreepMatrix LinearContactModel::creep_coefficients_laplace(std::complex<double> s) const {
+  const std::complex<double> z = std::exp(-s * dt_);
+  std::optional<CreepMatrix> f;
+  if (!falling_ && build_markov(60)) f = horner_if_converged<CreepMatrix>(markov_, z);
+  if (f) {
+    *f = -*f;  // f = -sum_j h_j z^j
+  } else {
+    f = CreepMatrix();
+    hessenberg_at(z, &*f, nullptr);
+  }
+  return *f * creepage_sampling_factor(s * dt_, sampling_);
+}
+
+LoadVector LinearContactModel::normal_load_coefficients_laplace(std::complex<double> s) const {
+  if (!has_normal_load_input()) return LoadVector::Zero();
+  const std::complex<double> z = std::exp(-s * dt_);
+  std::optional<LoadVector> g;
+  if (!falling_ && build_markov(60)) g = horner_if_converged<LoadVector>(load_markov_, z);  // (G3)
+  if (!g) {
+    g = LoadVector();
+    hessenberg_at(z, nullptr, &*g);
+  }
+  return *g;
+}
+
+double LinearContactModel::spectral_radius() const {
+  // The eigenvalues of M0^{-1} M1 = Q H Q' are those of H (real Schur of the Hessenberg form).
+  if (spectral_radius_ < 0.0) {
+    reduce();
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(H_), false);
+    spectral_radius_ = es.eigenvalues().cwiseAbs().maxCoeff();
+  }
+  return spectral_radius_;
 }
 
 Eigen::MatrixXd LinearContactModel::step_matrix_cholesky_factor() const {

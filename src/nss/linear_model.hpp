@@ -150,6 +150,14 @@ struct SweepInfo {
   long inner_iterations = 0;     ///< matrix-free: their PCG iterations in all
 };
 
+/// The creepage sampling's factor on f, f_sampling = f_contact * factor, as an analytic function of
+/// s dt (s the complex frequency; s = i w on the real axis), so that f(s) at complex s carries the
+/// sampling exactly: contact 1, midstep e^{-s dt/2} (the creepage of step k taken at t_k - dt/2;
+/// on the real axis e^{-i w dt/2}, see "Creepage sampling" above). Used by apply_sampling and by
+/// creep_coefficients_laplace: a sampling that averages the creepage over the step is one more case,
+/// (1 - e^{-s dt})/(s dt) (= e^{-i w dt/2} sinc(w dt/2) on the real axis; entire, 1 at s = 0).
+std::complex<double> creepage_sampling_factor(std::complex<double> s_dt, contact::CreepageSampling sampling);
+
 class LinearContactModel {
  public:
   /// `mean` is the steady solution at the mean creepage on `patch` (same mu, speed, spin offset).
@@ -190,6 +198,23 @@ class LinearContactModel {
   /// Throws InputError above the Nyquist limit.
   std::vector<CreepMatrix> creep_coefficients(const std::vector<double>& frequencies,
                                               int max_contact_lengths = 60) const;
+
+  /// f at the complex frequency s (1/s; s = i w on the real axis), with the model's sampling:
+  /// f(s) = -sum_j h_j z^j, z = e^{-s dt}, times creepage_sampling_factor(s dt) (the sums of
+  /// creep_coefficients continued analytically). Exact: from the Markov parameters when they exist
+  /// (constant friction) and their series converges at z to round-off (the last weighted term
+  /// |h_J| |z|^J below 1e-12 of the largest), else from the Hessenberg form at the complex z
+  /// (falling friction, or s far in the left half plane; builds it on first use, O(n^3)). Poles: the
+  /// z with 1/z an eigenvalue of M0^{-1} M1 (spectral_radius()).
+  CreepMatrix creep_coefficients_laplace(std::complex<double> s) const;
+  /// g at the complex frequency s, the same way (G3 continued; no sampling factor: the load is
+  /// taken at t_k in every sampling).
+  LoadVector normal_load_coefficients_laplace(std::complex<double> s) const;
+  /// The spectral radius of M0^{-1} M1 (the discrete-time contact's largest pole |z_p|; paper
+  /// form, from the Hessenberg form: O(n^3) on the first call, then kept). Below 1 the contact's
+  /// recursion M0 Q_k = M1 Q_{k-1} + ... decays (a stable contact); above 1 it grows at the rate
+  /// ln(radius)/dt (1/s) by itself, which falling friction can cause (docs/falling_friction.md Sec. 3).
+  double spectral_radius() const;
 
   /// g(omega) at one frequency by a fresh complex LU of the paper's form (the reference).
   LoadVector normal_load_coefficients_direct(double frequency) const;
@@ -305,6 +330,8 @@ class LinearContactModel {
   /// f and/or g by the Hessenberg form (either pointer may be null).
   void hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
                         std::vector<LoadVector>* g) const;
+  /// The same at one complex z = e^{-s dt} (f without the sampling factor).
+  void hessenberg_at(std::complex<double> z, CreepMatrix* f, LoadVector* g) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   LinearSolver solver_ = LinearSolver::automatic;
@@ -340,6 +367,7 @@ class LinearContactModel {
   mutable bool hessenberg_ = false;
   mutable Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;
   mutable Eigen::MatrixXd Rhat_, Lhat_;  ///< Q' M0^{-1} [W, wN0, wN1], Q' L
+  mutable double spectral_radius_ = -1.0;  ///< of M0^{-1} M1 (negative: not yet computed)
 };
 
 }  // namespace rollnoise::nss

@@ -1,7 +1,9 @@
 #include "pipeline/squeal.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "core/errors.hpp"
 #include "noise/kalker_linear.hpp"
@@ -13,6 +15,21 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 }  // namespace
+
+void check_contact_stability(const nss::LinearContactModel& model, SquealResult& r) {
+  // The poles of f are the z_p with 1/z_p an eigenvalue of M0^{-1} M1; a radius rho >= 1 means the
+  // contact's recursion grows by itself, at ln(rho)/dt in continuous time (docs/falling_friction.md
+  // Sec. 3). The loop's roots are then meaningless (f(i w) is not the response of a stable contact).
+  r.contact_spectral_radius = model.spectral_radius();
+  if (r.contact_spectral_radius < 1.0) return;
+  std::ostringstream m;
+  m << "squeal: the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " << r.contact_spectral_radius
+    << " >= 1: it grows at " << std::log(r.contact_spectral_radius) / model.time_step()
+    << " 1/s without wheel or rail). This is a limit of quasi-static falling friction "
+       "(docs/falling_friction.md Sec. 3), not wheel squeal: lower friction.decay (or raise "
+       "friction.kinetic_ratio), or use a smaller creepage";
+  throw InputError("friction.decay", m.str());
+}
 
 int SquealResult::unstable_count() const {
   int n = 0;
@@ -55,11 +72,20 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
   if (nc.use_nss) {
     check_nyquist(r.contact, in_band, "noise.band_max");
     const nss::LinearContactModel& model = *r.stage.model;
-    model.creep_coefficients({0.0});  // builds the Markov parameters (the sweep's model)
+    // Falling friction: no Markov parameters (the paper form only); the contact's own stability is
+    // checked first. Constant friction: the sweep's Markov parameters (their decay proves it stable).
+    if (!model.falling_friction()) model.creep_coefficients({0.0});
+    if (model.markov_parameters().empty()) check_contact_stability(model, r);
     r.coupled = nc.normal_coupling && model.has_normal_load_input();
+    // f(s), g(s) exactly, with the case's creepage sampling (nss::creepage_sampling_factor); the
+    // Markov parameters, where they exist, keep their guard.
+    noise::LaplaceEvaluator exact;
+    exact.creep = [&model](dynamics::cdouble s) { return model.creep_coefficients_laplace(s); };
+    if (r.coupled)
+      exact.load = [&model](dynamics::cdouble s) { return model.normal_load_coefficients_laplace(s); };
     markov = std::make_unique<noise::MarkovContact>(model.markov_parameters(),
                                                     r.coupled ? model.load_markov_parameters() : std::vector<Eigen::Vector3d>{},
-                                                    model.time_step());
+                                                    model.time_step(), std::move(exact));
   } else {  // Kalker's constant f: one Markov parameter h_0 = -f (any time step), g = 0
     const ContactCase& cc = r.contact;
     markov = std::make_unique<noise::MarkovContact>(

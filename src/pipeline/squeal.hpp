@@ -6,7 +6,10 @@
 //          contact frame), exact in s;
 //   rail:  the case's track model at complex frequency;
 //   contact: Hertz spring k_N, alpha_c,t = (V/s) f(s)^{-1}, and alpha_c,tn = -alpha_c,tt g(s) when
-//          noise.normal_coupling = "on", f and g from the model's Markov parameters.
+//          noise.normal_coupling = "on", f(s) and g(s) from the model
+//          (nss::LinearContactModel::creep_coefficients_laplace: the Markov series or the Hessenberg
+//          form at complex z, with the case's creepage sampling); with falling friction the
+//          contact's own stability (spectral radius of M0^{-1} M1 < 1) is checked first.
 // Route 2 (Newton with homotopy continuation on (S3)) for every wheel mode with
 // noise.band_min <= f_n <= noise.band_max. The contact law enters only through f and g, so any
 // friction law whose linearisation the NSS model carries is handled the same way.
@@ -29,6 +32,8 @@ struct SquealResult {
   double seconds_contact = 0.0;         ///< curve state, patch, steady rolling, linear model, Markov parameters
   double seconds_roots = 0.0;           ///< route 2
   long evaluations = 0;                 ///< evaluations of the loop matrix at complex s
+  /// of M0^{-1} M1, when checked (the model without Markov parameters: falling friction); else -1
+  double contact_spectral_radius = -1.0;
   int unstable_count() const;
 };
 
@@ -36,6 +41,10 @@ struct SquealResult {
 /// Kalker's constant f, g = 0). InputError (noise.band_max) when no mode lies in the band or the band
 /// exceeds the grid's Nyquist limit.
 SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options = {});
+
+/// The linearised contact's own stability: InputError (friction.decay) naming the growth rate when
+/// the spectral radius of M0^{-1} M1 is >= 1 (recorded in r.contact_spectral_radius).
+void check_contact_stability(const nss::LinearContactModel& model, SquealResult& r);
 
 /// The loop at complex s of a solved contact stage (for tests and other drivers): the contact's
 /// Markov parameters must exist (the stage's model swept once).

@@ -101,6 +101,10 @@ def main():
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
         ("plot_study.py", [j("study/study.h5"), "--x", "curve.radius", "--curves", "roughness.wheel", "-o",
                            j("study.png")], ["study.png"]),
+        # runs `rollnoise squeal` itself: 2 x 2 runs on a coarse grid (~1 s)
+        ("plot_squeal_map.py", ["--binary", binary, "--fast", "--work", j("squeal_map"), "-o", j("squeal_map.png"),
+                                "--set", "grid.nx=12", "--set", "grid.ny=10", "--set", "grid.scale=1.3",
+                                "--set", "noise.band_max=2000"], ["squeal_map.png", "squeal_map/summary.csv"]),
     ]
     for script, args, outputs in runs:
         status, err = plot(script, *args)

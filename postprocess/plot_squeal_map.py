@@ -1,0 +1,138 @@
+#!/usr/bin/python3
+"""Curve-squeal map: runs `rollnoise squeal` over curve radius x one friction parameter (--set on a
+case), collects /squeal/* of every run and plots the occurrence (stable / squeal / contact alone
+unstable) and the largest growth rate Re s with the labels of the unstable modes (docs/squeal.md).
+
+  /usr/bin/python3 postprocess/plot_squeal_map.py [--case cases/squeal_150m.toml]
+      [--radii 100,150,200,300,500,1000] [--param friction.decay --values 0.5,1,2,3,4]
+      [--binary build/rollnoise] [--work squeal_map] [-j 2] [-o squeal_map.png] [--set KEY=VALUE] [--fast]
+
+Each run writes WORK/r<R>_<i>.h5; a run the program refuses because the linearised contact alone
+is unstable (InputError naming friction.decay, docs/squeal.md) is a cell of its own class; any other
+failed run is marked "failed" with its message in WORK/summary.csv. --fast: 2 x 2 runs (smoke test).
+"""
+import argparse
+import concurrent.futures
+import csv
+import os
+import subprocess
+
+import numpy as np
+
+import rollnoise_h5 as rh
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STABLE, SQUEAL, CONTACT_UNSTABLE, FAILED = 0, 1, 2, 3
+CLASS_NAMES = ["stable", "squeal", "contact alone unstable", "failed"]
+
+
+def floats(text):
+    try:
+        return [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        rh.fail(f"not a comma-separated list of numbers: {text!r}")
+
+
+def run_one(binary, case, work, radius, param, value, index, extra):
+    out = os.path.join(work, f"r{radius:g}_{index}.h5")
+    cmd = [binary, "squeal", case, "-o", out, "-q", "--set", f"curve.radius={radius!r}", "--set", f"{param}={value!r}"]
+    for s in extra:
+        cmd += ["--set", s]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    cell = {"radius": radius, "value": value, "file": out, "message": "", "growth": np.nan, "modes": [],
+            "frequency": np.nan}
+    if r.returncode != 0:
+        msg = (r.stderr.strip() or r.stdout.strip()).splitlines()
+        cell["message"] = msg[-1] if msg else f"exit {r.returncode}"
+        unstable_contact = "linearised contact alone is unstable" in (r.stderr + r.stdout)
+        cell["class"] = CONTACT_UNSTABLE if unstable_contact else FAILED
+        return cell
+    import h5py
+    with h5py.File(out, "r") as f:
+        s = np.asarray(f["/squeal/eigenvalue"][()])
+        unstable = np.asarray(f["/squeal/unstable"][()]).astype(bool)
+        labels = [rh.text(v) for v in f["/squeal/mode"][()]]
+        freq = np.asarray(f["/squeal/frequency"][()])
+    k = int(np.argmax(s.real))
+    cell["growth"], cell["frequency"] = float(s.real[k]), float(freq[k])
+    cell["modes"] = [f"{labels[i]} ({freq[i]:.0f} Hz)" for i in np.flatnonzero(unstable)]
+    cell["class"] = SQUEAL if unstable.any() else STABLE
+    return cell
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--case", default=os.path.join(ROOT, "cases", "squeal_150m.toml"))
+    p.add_argument("--binary", default=os.path.join(ROOT, "build", "rollnoise"))
+    p.add_argument("--radii", default="100,150,200,300,500,1000", help="curve radii (m)")
+    p.add_argument("--param", default="friction.decay", help="friction key to vary (e.g. friction.mu)")
+    p.add_argument("--values", default="0.5,1,2,3,4", help="its values")
+    p.add_argument("--work", default="squeal_map", help="folder of the runs' outputs")
+    p.add_argument("-j", "--jobs", type=int, default=2, help="parallel runs")
+    p.add_argument("-o", "--output", default="squeal_map.png")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                   help="passed on to every run (repeatable), e.g. grid.nx=12")
+    p.add_argument("--fast", action="store_true", help="2 x 2 runs (the first two of each list)")
+    a = p.parse_args()
+    radii, values = floats(a.radii), floats(a.values)
+    if a.fast:
+        radii, values = radii[:2], values[:2]
+    if not radii or not values:
+        rh.fail("--radii and --values need at least one value each")
+    if not os.path.isfile(a.case):
+        rh.fail(f"{a.case}: no such case file")
+    if not os.access(a.binary, os.X_OK):
+        rh.fail(f"{a.binary}: not an executable (give --binary)")
+    os.makedirs(a.work, exist_ok=True)
+    jobs = [(r, v, i) for r in radii for i, v in enumerate(values)]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        cells = list(ex.map(lambda t: run_one(a.binary, a.case, a.work, t[0], a.param, t[1], t[2], a.set), jobs))
+    with open(os.path.join(a.work, "summary.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["radius_m", a.param, "class", "max_growth_rate_1_per_s", "frequency_Hz", "unstable_modes", "message"])
+        for c in cells:
+            w.writerow([c["radius"], c["value"], CLASS_NAMES[c["class"]], c["growth"], c["frequency"],
+                        "; ".join(c["modes"]), c["message"]])
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import ListedColormap
+
+    nr, nv = len(radii), len(values)
+    cls = np.array([c["class"] for c in cells]).reshape(nr, nv)
+    growth = np.array([c["growth"] for c in cells]).reshape(nr, nv)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 5.5))
+    cmap = ListedColormap(["#9ecae1", "#de2d26", "#fdae6b", "#bdbdbd"])
+    ax1.imshow(cls.T, origin="lower", cmap=cmap, vmin=-0.5, vmax=3.5, aspect="auto")
+    for i in range(nr):
+        for j in range(nv):
+            c = cells[i * nv + j]
+            txt = CLASS_NAMES[c["class"]] if c["class"] != SQUEAL else "\n".join(c["modes"][:3])
+            ax1.text(i, j, txt, ha="center", va="center", fontsize=6)
+    ax1.set_title("squeal occurrence (labels: unstable wheel modes)")
+    im = ax2.imshow(growth.T, origin="lower", cmap="coolwarm", aspect="auto",
+                    vmin=-np.nanmax(np.abs(growth)) if np.isfinite(growth).any() else -1,
+                    vmax=np.nanmax(np.abs(growth)) if np.isfinite(growth).any() else 1)
+    fig.colorbar(im, ax=ax2, label="largest Re s (1/s; > 0: growing)")
+    for i in range(nr):
+        for j in range(nv):
+            if np.isfinite(growth[i, j]):
+                ax2.text(i, j, f"{growth[i, j]:.3g}\n{cells[i * nv + j]['frequency']:.0f} Hz", ha="center",
+                         va="center", fontsize=6)
+    ax2.set_title("largest growth rate of the coupled roots")
+    for ax in (ax1, ax2):
+        ax.set_xticks(range(nr), [f"{r:g}" for r in radii])
+        ax.set_yticks(range(nv), [f"{v:g}" for v in values])
+        ax.set_xlabel("curve radius (m)")
+        ax.set_ylabel(a.param)
+    fig.suptitle(f"rollnoise squeal {os.path.basename(a.case)}: radius x {a.param}")
+    fig.tight_layout()
+    fig.savefig(a.output, dpi=130)
+    print(f"{len(cells)} runs: {sum(c['class'] == SQUEAL for c in cells)} squeal, "
+          f"{sum(c['class'] == CONTACT_UNSTABLE for c in cells)} contact unstable, "
+          f"{sum(c['class'] == FAILED for c in cells)} failed; {a.output}, {os.path.join(a.work, 'summary.csv')}")
+
+
+if __name__ == "__main__":
+    rh.run(main)
