@@ -34,7 +34,7 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.write("/squeal/mode", label, "- (label of the wheel mode the root continues, from the modes file)");
   w.write("/squeal/natural_frequency", fn, {n}, "Hz (the uncoupled wheel mode)");
   w.write("/squeal/uncoupled_eigenvalue", s0, {n}, "1/s (the uncoupled wheel mode, start of the continuation)");
-  w.write("/squeal/residual", residual, {n}, "- (|det(diag(D_j/omega_j^2) + Psi^T R^{-1} Psi/(m_j omega_j^2))| at s, Eq. S2 of docs/squeal.md)");
+  w.write("/squeal/residual", residual, {n}, "- (|det M| / prod_i |row i of M|, M = diag(D_j/omega_j^2) + Psi^T R^{-1} Psi/(m_j omega_j^2) at s, Eq. S2 of docs/squeal.md; 0..1)");
   w.write("/squeal/singular_ratio", singular, {n}, "- (sigma_min / sigma_max of the equilibrated loop matrix at s)");
   w.write("/squeal/iterations", iterations, {n}, "- (Newton iterations over all continuation steps)");
   w.write("/squeal/converged", converged, {n}, "- (1: the continuation reached lambda = 1)");
