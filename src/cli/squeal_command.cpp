@@ -44,10 +44,11 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
                 r.roots.size(), nc.band_min, nc.band_max, r.coupled ? "on" : "off", r.seconds_contact);
     if (route2) std::printf(", route 2 %.2f s (%ld loop evaluations)", r.seconds_roots, r.evaluations);
     if (route1)
-      std::printf(", route 1 %.2f s fits (rail %g-%g Hz: %zu poles, error %.1e at %.0f Hz; contact %zu poles, error "
-                  "%.1e at %.0f Hz) + %.2f s eigenvalues",
-                  r1.seconds_fit, r1.fit_min, r1.fit_max, r1.rail.poles.size(), r1.rail.error, r1.rail.worst_frequency,
-                  r1.contact.poles.size(), r1.contact.error, r1.contact.worst_frequency, r1.seconds_eigen);
+      std::printf(", route 1 %.2f s fits (rail %.3g s, %g-%g Hz: %zu poles, error %.1e at %.0f Hz, %.1e at the modes; "
+                  "contact %zu poles, error %.1e) + %.2f s eigenvalues",
+                  r1.seconds_fit, r1.seconds_rail, r1.fit_min, r1.fit_max, r1.rail.poles.size(), r1.rail.error,
+                  r1.rail.worst_frequency, r1.rail_error_at_modes, r1.contact.poles.size(), r1.contact.error,
+                  r1.seconds_eigen);
     std::printf("\n  %-24s %9s %10s %12s %12s %9s", "mode", "f_n (Hz)", "f (Hz)", "Re s (1/s)", "zeta",
                 route2 ? "residual" : "");
     if (route1 && route2) std::printf(" %10s %12s %8s %8s", "f1 (Hz)", "zeta1", "dev rail", "dev cont");

@@ -66,6 +66,7 @@ void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const 
   w.write(g + "damping_ratio", zeta, {n}, "- (-Re s / |s|; negative: growing)");
   w.write(g + "unstable", unstable, {n}, "- (1: Re s > 0)");
   w.write(g + "fit_error_rail", r1.rail.error, "- (max relative error of the rail's rational fit over its band, linalg::fit_rational's norm)");
+  w.write(g + "fit_error_rail_at_modes", r1.rail_error_at_modes, "- (the rail fit's error, same norm, at the natural frequencies of the band's wheel modes)");
   w.write(g + "fit_error_contact", r1.contact.error, "- (max relative error of the contact's [-f | g] fit, as /statespace/fit_error)");
   w.write(g + "fit_band", std::vector<double>{r1.fit_min, r1.fit_max}, {2}, "Hz (the rail's fit band; the contact's from 0 Hz)");
   w.write(g + "poles_rail", static_cast<double>(r1.rail.poles.size()), "- (poles of the rail's fit)");

@@ -124,7 +124,7 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   for (const auto& m : nc.wheel->modes())
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) lo = std::min(lo, m.frequency), hi = std::max(hi, m.frequency);
   out.fit_min = o.fit_min > 0 ? o.fit_min : 0.5 * lo;
-  out.fit_max = o.fit_max > 0 ? o.fit_max : 1.25 * hi;
+  out.fit_max = o.fit_max > 0 ? o.fit_max : 2.0 * hi;
   const noise::ContactPosition& p = r.curve.position;
 
   // rail: alpha_r at real frequencies in the contact frame (as the noise loop's stage 2)
@@ -134,6 +134,15 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   for (double f : fr) Hr.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, f, p.rail_offset_y), p.contact_angle));
   out.seconds_rail = seconds_since(tr);
   out.rail = fit(fr, Hr, o);
+  {
+    std::vector<Eigen::MatrixXcd> exact, fitted;
+    for (const auto& m : nc.wheel->modes())
+      if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) {
+        exact.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, m.frequency, p.rail_offset_y), p.contact_angle));
+        fitted.push_back(out.rail.model.frequency_response(m.frequency));
+      }
+    out.rail_error_at_modes = linalg::relative_response_error(exact, fitted, out.rail.scaling);
+  }
 
   // contact: [-f | g] with the model's creepage sampling (g = 0 when the loop is not coupled)
   if (r.stage.model) {
