@@ -128,7 +128,15 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   const noise::ContactPosition& p = r.curve.position;
 
   // rail: alpha_r at real frequencies in the contact frame (as the noise loop's stage 2)
-  const std::vector<double> fr = linspace(out.fit_min, out.fit_max, o.rail_samples);
+  // uniform samples, and more around every mode of the band (+-4 %, where the roots lie), so that
+  // the least squares of the fit weigh the modes' neighbourhoods most
+  std::vector<double> fr = linspace(out.fit_min, out.fit_max, o.rail_samples);
+  if (o.samples_per_mode > 0)
+    for (const auto& m : nc.wheel->modes())
+      if (m.frequency >= nc.band_min && m.frequency <= nc.band_max)
+        for (double f : linspace(0.96 * m.frequency, 1.04 * m.frequency, o.samples_per_mode)) fr.push_back(f);
+  std::sort(fr.begin(), fr.end());
+  fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
   const auto tr = Clock::now();
   std::vector<Eigen::MatrixXcd> Hr;
   for (double f : fr) Hr.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, f, p.rail_offset_y), p.contact_angle));
