@@ -55,8 +55,12 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
     std::printf("\n");
     for (std::size_t k = 0; k < r.roots.size(); ++k) {
       const auto& x = r.roots[k];
-      std::printf("  %-24s %9.1f %10.3f %12.5g %12.4e %9.1e", x.label.c_str(), x.natural_frequency, x.frequency,
-                  x.s.real(), x.damping_ratio, x.residual);
+      std::printf("  %-24s %9.1f %10.3f %12.5g %12.4e", x.label.c_str(), x.natural_frequency, x.frequency, x.s.real(),
+                  x.damping_ratio);
+      if (route2)
+        std::printf(" %9.1e", x.residual);
+      else
+        std::printf(" %9s", "");
       if (route1 && route2)
         std::printf(" %10.3f %12.4e %8.1e %8.1e", roots1[k].frequency, roots1[k].damping_ratio, dev.rail[k], dev.contact[k]);
       std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "", x.converged ? "" : " (continuation failed)");

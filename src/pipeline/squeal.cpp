@@ -220,21 +220,34 @@ std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc, const CurveSet
 }
 
 std::vector<noise::ModeRoot> match_route1(const Route1Result& r1, const std::vector<noise::ModeRoot>& reference) {
+  // one eigenvalue per reference root, the closest pairs first (a greedy assignment): two
+  // references never take the same eigenvalue (sin/cos partners have one uncoupled root s0)
+  struct Pair {
+    double d;
+    std::size_t ref, eig;
+  };
+  std::vector<Pair> pairs;
+  for (std::size_t k = 0; k < reference.size(); ++k)
+    for (std::size_t e = 0; e < r1.eigenvalues.size(); ++e)
+      if (r1.eigenvalues[e].imag() >= 0.0) pairs.push_back({std::abs(r1.eigenvalues[e] - reference[k].s), k, e});
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.d < b.d; });
+  std::vector<long> taken_by(r1.eigenvalues.size(), -1), of(reference.size(), -1);
+  for (const Pair& p : pairs)
+    if (of[p.ref] < 0 && taken_by[p.eig] < 0) of[p.ref] = static_cast<long>(p.eig), taken_by[p.eig] = static_cast<long>(p.ref);
   std::vector<noise::ModeRoot> m;
-  for (const auto& ref : reference) {
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    const noise::ModeRoot& ref = reference[k];
     noise::ModeRoot x;
     x.mode = ref.mode;
     x.label = ref.label;
     x.natural_frequency = ref.natural_frequency;
     x.s0 = ref.s0;
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& e : r1.eigenvalues)
-      if (std::abs(e - ref.s) < best) best = std::abs(e - ref.s), x.s = e;
+    x.converged = of[k] >= 0;
+    x.s = x.converged ? r1.eigenvalues[static_cast<std::size_t>(of[k])] : dynamics::cdouble(std::nan(""), std::nan(""));
     x.frequency = x.s.imag() / (2.0 * M_PI);
     x.damping_ratio = -x.s.real() / std::abs(x.s);
     x.unstable = x.s.real() > 0.0;
     x.residual = x.singular_ratio = std::nan("");
-    x.converged = std::isfinite(best);
     m.push_back(x);
   }
   return m;
@@ -251,8 +264,7 @@ RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std:
     g.damping_absolute = std::max(g.damping_absolute, dz);
     const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the acceptance of issue 12: <= 1
     if (beyond > g.damping_beyond) g.damping_beyond = beyond, g.worst_damping_mode = k;
-    for (std::size_t j = 0; j < k; ++j)
-      if (a[j].s == a[k].s) g.distinct = false;
+    if (!a[k].converged) g.distinct = false;
   }
   return g;
 }

@@ -99,9 +99,11 @@ Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, 
 /// match_route1 without route 2.
 std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc, const CurveSetup& curve);
 
-/// Route 1's eigenvalues, one per reference root (the nearest to its s: route 2's roots, or
-/// uncoupled_roots), as ModeRoots (s, frequency, damping ratio, unstable, the mode's label and
-/// natural frequency; residual and singular ratio NaN).
+/// Route 1's eigenvalues (upper half-plane), one per reference root (route 2's roots, or
+/// uncoupled_roots), assigned greedily, closest pairs first, so that no eigenvalue is taken twice;
+/// as ModeRoots (s, frequency, damping ratio, unstable, the mode's label and natural frequency;
+/// residual and singular ratio NaN; converged = false when none was left). With uncoupled_roots as
+/// the reference, the labels of a sin/cos pair (one s0) follow the distance to s0 only.
 std::vector<noise::ModeRoot> match_route1(const Route1Result& r1, const std::vector<noise::ModeRoot>& reference);
 
 /// The agreement of two root lists of equal length (route 1 against route 2), worst over the modes.
@@ -111,7 +113,7 @@ struct RouteAgreement {
   double damping_absolute = 0.0;        ///< max |zeta1 - zeta2|
   double damping_beyond = 0.0;          ///< max over modes of min(rel / 0.05, abs / 1e-5): <= 1 passes
   std::size_t worst_frequency_mode = 0, worst_damping_mode = 0;
-  bool distinct = true;                 ///< every route-2 root matched a different route-1 eigenvalue
+  bool distinct = true;                 ///< every route-2 root got a route-1 eigenvalue (match_route1)
 };
 RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& route1, const std::vector<noise::ModeRoot>& route2);
 
