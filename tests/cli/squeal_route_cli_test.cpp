@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "cli_support.hpp"
 #include "io/hdf5_reader.hpp"
@@ -17,13 +15,6 @@ namespace {
 std::string curve() { return source_file("cases/curve_300m_hertz.toml"); }
 const char* kCoarse =
     " --set grid.nx=12 --set grid.ny=10 --set grid.scale=1.3 --set 'track.support=\"continuous\"' --set noise.band_max=2000";
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -63,12 +54,12 @@ TEST(SquealRouteCli, RouteOneAloneFillsTheSquealDatasets) {
 }
 
 TEST(SquealRouteCli, AnUnknownRouteIsAnErrorWithoutAFile) {
-  const std::string before = slurp(curve());
+  const std::string before = file_contents(curve());
   const auto out = temp_dir() / "squeal_route_fault.h5";
   std::filesystem::remove(out);
   const auto r = run("squeal " + curve() + kCoarse + " --route 3 -o " + out.string());
   EXPECT_NE(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("--route"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
-  EXPECT_EQ(slurp(curve()), before);
+  EXPECT_EQ(file_contents(curve()), before);
 }
