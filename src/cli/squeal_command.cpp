@@ -1,6 +1,8 @@
 // rollnoise squeal: the linear stability of the wheel-rail-contact loop at the curve's mean state
-// (docs/squeal.md). Read the case as `noise` does, run pipeline::run_squeal, write /squeal/*
-// (io/squeal_output.hpp); a one-line summary on stderr (none with -q), the table on stdout.
+// (docs/squeal.md). Read the case as `noise` does, run pipeline::run_squeal (route 2) and/or
+// pipeline::squeal_route1 (route 1), write /squeal/* (io/squeal_output.hpp); a one-line summary on
+// stderr (none with -q), the table on stdout. With both routes /squeal/* are route 2's and route 1's
+// go to /squeal/route1/*, with /squeal/route_agreement.
 #include <cstdio>
 
 #include "cli/commands.hpp"
@@ -10,28 +12,63 @@
 
 namespace rollnoise::cli {
 
-int run_squeal(const CommonOptions& o) {
+int run_squeal(const CommonOptions& o, const std::string& route) {
+  const bool route1 = route != "2", route2 = route != "1";
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   io::NoiseInputs in = io::read_noise_inputs(reader);
   const pipeline::NoiseCase& nc = in.noise;
-  const pipeline::SquealResult r =
-      io::within_case(reader, [&] { return pipeline::run_squeal(std::move(in.contact), nc); });
+  pipeline::SquealResult r = io::within_case(reader, [&] { return pipeline::run_squeal(std::move(in.contact), nc, {}, route2); });
+  pipeline::Route1Result r1;
+  std::vector<noise::ModeRoot> roots1;
+  pipeline::RouteAgreement agreement;
+  if (route1) {
+    r1 = io::within_case(reader, [&] { return pipeline::squeal_route1(r, nc); });
+    roots1 = pipeline::match_route1(r1, route2 ? r.roots : pipeline::uncoupled_roots(nc, r.curve));
+    if (route2) agreement = pipeline::route_agreement(roots1, r.roots);
+  }
+  pipeline::Route1Deviation dev;
+  if (route1 && route2) {
+    std::vector<dynamics::cdouble> s;
+    for (const auto& x : r.roots) s.push_back(x.s);
+    dev = pipeline::route1_deviation(r1, r, nc, s);
+  }
+  if (!route2) r.roots = roots1, r.route = 1;
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_squeal(w, reader, nc, r);
+  if (route1) io::write_squeal_route1(w, r1, roots1, route2 ? &agreement : nullptr);
   w.commit();
 
   if (!o.quiet) {
-    std::printf("%s: %zu wheel modes in %g-%g Hz, normal coupling %s; contact %.2f s, roots %.2f s (%ld loop "
-                "evaluations)\n",
-                reader.name().c_str(), r.roots.size(), nc.band_min, nc.band_max, r.coupled ? "on" : "off",
-                r.seconds_contact, r.seconds_roots, r.evaluations);
-    std::printf("  %-24s %9s %10s %12s %12s %9s %s\n", "mode", "f_n (Hz)", "f (Hz)", "Re s (1/s)", "zeta", "residual",
-                "");
-    for (const auto& x : r.roots)
-      std::printf("  %-24s %9.1f %10.3f %12.5g %12.4e %9.1e %s%s\n", x.label.c_str(), x.natural_frequency, x.frequency,
-                  x.s.real(), x.damping_ratio, x.residual, x.unstable ? "UNSTABLE" : "",
-                  x.converged ? "" : " (continuation failed)");
+    std::printf("%s: %zu wheel modes in %g-%g Hz, normal coupling %s; contact %.2f s", reader.name().c_str(),
+                r.roots.size(), nc.band_min, nc.band_max, r.coupled ? "on" : "off", r.seconds_contact);
+    if (route2) std::printf(", route 2 %.2f s (%ld loop evaluations)", r.seconds_roots, r.evaluations);
+    if (route1)
+      std::printf(", route 1 %.2f s fits (rail %.3g s, %g-%g Hz: %zu poles, error %.1e at %.0f Hz, %.1e at the modes; "
+                  "contact %zu poles, error %.1e) + %.2f s eigenvalues",
+                  r1.seconds_fit, r1.seconds_rail, r1.fit_min, r1.fit_max, r1.rail.poles.size(), r1.rail.error,
+                  r1.rail.worst_frequency, r1.rail_error_at_modes, r1.contact.poles.size(), r1.contact.error,
+                  r1.seconds_eigen);
+    std::printf("\n  %-24s %9s %10s %12s %12s %9s", "mode", "f_n (Hz)", "f (Hz)", "Re s (1/s)", "zeta",
+                route2 ? "residual" : "");
+    if (route1 && route2) std::printf(" %10s %12s %8s %8s", "f1 (Hz)", "zeta1", "dev rail", "dev cont");
+    std::printf("\n");
+    for (std::size_t k = 0; k < r.roots.size(); ++k) {
+      const auto& x = r.roots[k];
+      std::printf("  %-24s %9.1f %10.3f %12.5g %12.4e", x.label.c_str(), x.natural_frequency, x.frequency, x.s.real(),
+                  x.damping_ratio);
+      if (route2)
+        std::printf(" %9.1e", x.residual);
+      else
+        std::printf(" %9s", "");
+      if (route1 && route2)
+        std::printf(" %10.3f %12.4e %8.1e %8.1e", roots1[k].frequency, roots1[k].damping_ratio, dev.rail[k], dev.contact[k]);
+      std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "", x.converged ? "" : " (continuation failed)");
+    }
+    if (route1 && route2)
+      std::printf("route agreement: frequency %.2e, damping ratio %.2e relative / %.2e absolute%s\n", agreement.frequency,
+                  agreement.damping_relative, agreement.damping_absolute,
+                  agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
     std::printf("wrote %s\n", out.c_str());
     std::fprintf(stderr, "squeal: %d unstable of %zu modes%s\n", r.unstable_count(), r.roots.size(),
                  r.unstable_count() ? " (see /squeal/unstable)" : "");

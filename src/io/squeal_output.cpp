@@ -34,7 +34,7 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.write("/squeal/mode", label, "- (label of the wheel mode the root continues, from the modes file)");
   w.write("/squeal/natural_frequency", fn, {n}, "Hz (the uncoupled wheel mode)");
   w.write("/squeal/uncoupled_eigenvalue", s0, {n}, "1/s (the uncoupled wheel mode, start of the continuation)");
-  w.write("/squeal/residual", residual, {n}, "- (|det(diag(D_j/omega_j^2) + Psi^T R^{-1} Psi/(m_j omega_j^2))| at s, Eq. S2 of docs/squeal.md)");
+  w.write("/squeal/residual", residual, {n}, "- (|det M| / prod_i |row i of M|, M = diag(D_j/omega_j^2) + Psi^T R^{-1} Psi/(m_j omega_j^2) at s, Eq. S2 of docs/squeal.md; 0..1)");
   w.write("/squeal/singular_ratio", singular, {n}, "- (sigma_min / sigma_max of the equilibrated loop matrix at s)");
   w.write("/squeal/iterations", iterations, {n}, "- (Newton iterations over all continuation steps)");
   w.write("/squeal/converged", converged, {n}, "- (1: the continuation reached lambda = 1)");
@@ -42,10 +42,43 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.write("/squeal/contact_spectral_radius", r.contact_spectral_radius,
           "- (of M0^-1 M1, the contact alone: < 1 stable; -1: not computed, the Markov parameters decayed)");
   w.attribute("/squeal", "route",
-              "2: Newton with homotopy continuation from each wheel mode on det(alpha_w + alpha_r + alpha_c) = 0 "
-              "(docs/squeal.md)");
+              r.route == 1 ? "1: eigenvalues of the rational (vector-fitted) rail and contact coupled with the wheel's "
+                             "modal state space, nearest to each uncoupled wheel mode (docs/squeal.md)"
+                           : "2: Newton with homotopy continuation from each wheel mode on det(alpha_w + alpha_r + "
+                             "alpha_c) = 0 (docs/squeal.md)");
   w.attribute("/squeal", "contact_model", nc.use_nss ? "linear NSS model" : "Kalker's steady linear theory");
   w.attribute("/squeal", "normal_coupling", r.coupled ? "on" : "off");
+}
+
+void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const std::vector<noise::ModeRoot>& roots,
+                         const pipeline::RouteAgreement* agreement) {
+  const std::size_t n = roots.size();
+  std::vector<std::complex<double>> s;
+  std::vector<double> freq, zeta;
+  std::vector<int> unstable;
+  for (const auto& x : roots) {
+    s.push_back(x.s);
+    freq.push_back(x.frequency);
+    zeta.push_back(x.damping_ratio);
+    unstable.push_back(x.unstable ? 1 : 0);
+  }
+  const std::string g = "/squeal/route1/";
+  w.write(g + "eigenvalue", s, {n}, "1/s (route 1: the coupled rational model's eigenvalue nearest to each root of /squeal)");
+  w.write(g + "frequency", freq, {n}, "Hz (Im s / 2 pi)");
+  w.write(g + "damping_ratio", zeta, {n}, "- (-Re s / |s|; negative: growing)");
+  w.write(g + "unstable", unstable, {n}, "- (1: Re s > 0)");
+  w.write(g + "fit_error_rail", r1.rail.error, "- (max relative error of the rail's rational fit over its band, linalg::fit_rational's norm)");
+  w.write(g + "fit_error_rail_at_modes", r1.rail_error_at_modes, "- (the rail fit's error, same norm, at the natural frequencies of the band's wheel modes)");
+  w.write(g + "fit_error_contact", r1.contact.error, "- (max relative error of the contact's [-f | g] fit, as /statespace/fit_error)");
+  w.write(g + "fit_band", std::vector<double>{r1.fit_min, r1.fit_max}, {2}, "Hz (the rail's fit band; the contact's from 0 Hz)");
+  w.write(g + "poles_rail", static_cast<double>(r1.rail.poles.size()), "- (poles of the rail's fit)");
+  w.write(g + "poles_contact", static_cast<double>(r1.contact.poles.size()), "- (poles of the contact's fit)");
+  w.write(g + "all_eigenvalues", r1.eigenvalues, {r1.eigenvalues.size()}, "1/s (every finite eigenvalue of the coupled rational model)");
+  if (agreement) {
+    const std::vector<double> a{agreement->frequency, agreement->damping_relative, agreement->damping_absolute};
+    w.write("/squeal/route_agreement", a, {3},
+            "- (max over the modes of |f1 - f2|/f2, |zeta1 - zeta2|/|zeta2|, |zeta1 - zeta2|; route 1 against route 2)");
+  }
 }
 
 }  // namespace rollnoise::io

@@ -11,4 +11,10 @@ namespace rollnoise::io {
 
 void write_squeal(Hdf5Writer& w, const CaseReader& r, const pipeline::NoiseCase& nc, const pipeline::SquealResult& res);
 
+/// /squeal/route1/{eigenvalue, frequency, damping_ratio, unstable} (one per root in `roots`),
+/// {fit_error_rail, fit_error_contact, fit_band, poles_rail, poles_contact, all_eigenvalues}, and
+/// /squeal/route_agreement when `agreement` is given (`--route both`).
+void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const std::vector<noise::ModeRoot>& roots,
+                         const pipeline::RouteAgreement* agreement);
+
 }  // namespace rollnoise::io

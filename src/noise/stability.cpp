@@ -279,9 +279,16 @@ class ClusterFunction {
     const cdouble H_s = ((*this)(s + h, lambda) - (*this)(s - h, lambda)) / (2.0 * h);
     return -H_l / H_s;
   }
-  // |det(diag(D_j/omega_j^2) + Q)| at lambda = 1: the residual of (S1) in the modal form.
+  // |det M| / prod_i |M_i,:|_2, M = diag(D_j/omega_j^2) + Q at lambda = 1: the residual of (S1) in the
+  // modal form, normalised by Hadamard's bound (|det M| <= prod of the row norms), so 0 <= residual
+  // <= 1 whatever the frequency. Unnormalised, the rows of the modes far below the root
+  // (|D_j/omega_j^2| ~ (omega/omega_j)^2) multiplied it up: 5e-2 at 4.66 kHz on curve_300m at a
+  // root with sigma_min/sigma_max ~ 1e-17.
   double residual(cdouble s) const {
-    return std::abs(Eigen::MatrixXcd(own_full(s) + coupling_full(s)).partialPivLu().determinant());
+    const Eigen::MatrixXcd M = own_full(s) + coupling_full(s);
+    double bound = 1.0;
+    for (Eigen::Index i = 0; i < M.rows(); ++i) bound *= M.row(i).norm();
+    return std::abs(M.partialPivLu().determinant()) / bound;
   }
 
  private:

@@ -1,12 +1,15 @@
 #include "pipeline/squeal.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
 #include "core/errors.hpp"
 #include "noise/kalker_linear.hpp"
+#include "pipeline/statespace.hpp"
 
 namespace rollnoise::pipeline {
 namespace {
@@ -45,16 +48,18 @@ noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const 
   const noise::ContactPosition position = curve.position;
   const double kN = stage.normal_stiffness, V = c.speed;
   const dynamics::RailModel* rail = nc.rail.get();
+  // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
   loop.rest = [=, &contact](dynamics::cdouble s) {
     const Eigen::Vector3cd g = coupled ? contact.load(s) : Eigen::Vector3cd::Zero();
+    const Eigen::Matrix3cd f = contact.creep(s);
     return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
                               noise::rail_receptance_laplace(*rail, s, position) +
-                              noise::contact_receptance_laplace(s, kN, V, contact.creep(s), g));
+                              noise::contact_receptance_laplace(s, kN, V, f, g));
   };
   return loop;
 }
 
-SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options) {
+SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options, bool route2) {
   const auto t0 = Clock::now();
   SquealResult r;
   // the band's modes, and the Nyquist limit, before anything is solved
@@ -106,9 +111,179 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
   noise::StabilityOptions o = options;
   o.band_min = nc.band_min;
   o.band_max = nc.band_max;
-  r.roots = noise::mode_roots(loop, o);
+  if (route2) r.roots = noise::mode_roots(loop, o);
   r.seconds_roots = seconds_since(t1);
   return r;
+}
+
+}  // namespace rollnoise::pipeline
+
+namespace rollnoise::pipeline {
+namespace {
+
+noise::StateSpace to_noise(const linalg::StateSpace& m) { return {m.A, m.B, m.C, m.D}; }
+
+linalg::RationalFit fit(const std::vector<double>& freq, const std::vector<Eigen::MatrixXcd>& H, const Route1Options& o) {
+  linalg::RationalFitOptions fo;
+  fo.target = o.tolerance;
+  fo.max_poles = o.max_poles;
+  fo.pole_step = o.pole_step;
+  return linalg::fit_rational(freq, H, fo);
+}
+
+std::vector<double> linspace(double a, double b, int n) {
+  std::vector<double> x(n);
+  for (int k = 0; k < n; ++k) x[k] = a + (b - a) * k / (n - 1);
+  return x;
+}
+
+}  // namespace
+
+Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Route1Options& o) {
+  const auto t0 = Clock::now();
+  Route1Result out;
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const auto& m : nc.wheel->modes())
+    if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) lo = std::min(lo, m.frequency), hi = std::max(hi, m.frequency);
+  out.fit_min = o.fit_min > 0 ? o.fit_min : 0.5 * lo;
+  out.fit_max = o.fit_max > 0 ? o.fit_max : 2.0 * hi;
+  const noise::ContactPosition& p = r.curve.position;
+
+  // rail: alpha_r at real frequencies in the contact frame (as the noise loop's stage 2)
+  // uniform samples, and more around every mode of the band (+-4 %, where the roots lie), so that
+  // the least squares of the fit weigh the modes' neighbourhoods most
+  std::vector<double> fr = linspace(out.fit_min, out.fit_max, o.rail_samples);
+  if (o.samples_per_mode > 0)
+    for (const auto& m : nc.wheel->modes())
+      if (m.frequency >= nc.band_min && m.frequency <= nc.band_max)
+        for (double f : linspace(0.96 * m.frequency, 1.04 * m.frequency, o.samples_per_mode)) fr.push_back(f);
+  std::sort(fr.begin(), fr.end());
+  fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
+  const auto tr = Clock::now();
+  std::vector<Eigen::MatrixXcd> Hr;
+  for (double f : fr) Hr.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, f, p.rail_offset_y), p.contact_angle));
+  out.seconds_rail = seconds_since(tr);
+  out.rail = fit(fr, Hr, o);
+  {
+    std::vector<Eigen::MatrixXcd> exact, fitted;
+    for (const auto& m : nc.wheel->modes())
+      if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) {
+        exact.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, m.frequency, p.rail_offset_y), p.contact_angle));
+        fitted.push_back(out.rail.model.frequency_response(m.frequency));
+      }
+    out.rail_error_at_modes = linalg::relative_response_error(exact, fitted, out.rail.scaling);
+  }
+
+  // contact: [-f | g] with the model's creepage sampling (g = 0 when the loop is not coupled)
+  if (r.stage.model) {
+    const nss::LinearContactModel& model = *r.stage.model;
+    const double top = std::min(out.fit_max, model.nyquist_frequency());
+    const std::vector<double> fc = linspace(0.0, top, o.contact_samples);
+    std::vector<nss::LoadVector> g = r.coupled ? model.normal_load_coefficients(fc)
+                                               : std::vector<nss::LoadVector>(fc.size(), nss::LoadVector::Zero());
+    out.contact = fit(fc, contact_transfer(model.creep_coefficients(fc), g), o);
+  } else {  // Kalker: the constant -f, no states
+    linalg::StateSpace& m = out.contact.model;
+    m.A.resize(0, 0), m.B.resize(0, 4), m.C.resize(3, 0);
+    m.D = Eigen::MatrixXd::Zero(3, 4);
+    const ContactCase& cc = r.contact;
+    m.D.leftCols(3) = -noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu);
+  }
+  out.seconds_fit = seconds_since(t0);
+
+  const auto t1 = Clock::now();
+  out.eigenvalues = noise::coupled_eigenvalues(noise::rigid_flexibility(nc.wheel->wheelset(), p),
+                                               noise::contact_frame_modes(*nc.wheel, p), to_noise(out.rail.model),
+                                               to_noise(out.contact.model), r.stage.normal_stiffness, r.contact.speed);
+  out.seconds_eigen = seconds_since(t1);
+  return out;
+}
+
+Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, const NoiseCase& nc,
+                                 const std::vector<dynamics::cdouble>& s) {
+  Route1Deviation d;
+  const nss::LinearContactModel* m = r.stage.model.get();
+  for (const dynamics::cdouble x : s) {
+    const Eigen::MatrixXcd ar = noise::rail_receptance_laplace(*nc.rail, x, r.curve.position);
+    d.rail.push_back(linalg::relative_response_error({ar}, {r1.rail.model.response(x)}, r1.rail.scaling));
+    if (!m) {
+      d.contact.push_back(0.0);
+      continue;
+    }
+    // the exact contact at s, with the case's creepage sampling (as route 2 takes it)
+    Eigen::MatrixXcd h(3, 4);
+    h << -m->creep_coefficients_laplace(x),
+        r.coupled ? m->normal_load_coefficients_laplace(x) : Eigen::Vector3cd::Zero();
+    d.contact.push_back(linalg::relative_response_error({h}, {r1.contact.model.response(x)}, r1.contact.scaling));
+  }
+  return d;
+}
+
+std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc, const CurveSetup& curve) {
+  std::vector<noise::ModeRoot> u;
+  const std::vector<noise::LoopMode> modes = noise::contact_frame_modes(*nc.wheel, curve.position);
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    const noise::LoopMode& m = modes[k];
+    if (m.frequency < nc.band_min || m.frequency > nc.band_max) continue;
+    noise::ModeRoot x;
+    x.mode = k;
+    x.label = m.label;
+    x.natural_frequency = m.frequency;
+    const double w = 2.0 * M_PI * m.frequency, z = m.damping_ratio;
+    x.s0 = x.s = dynamics::cdouble(-z * w, w * std::sqrt(1.0 - z * z));
+    u.push_back(x);
+  }
+  return u;
+}
+
+std::vector<noise::ModeRoot> match_route1(const Route1Result& r1, const std::vector<noise::ModeRoot>& reference) {
+  // one eigenvalue per reference root, the closest pairs first (a greedy assignment): two
+  // references never take the same eigenvalue (sin/cos partners have one uncoupled root s0)
+  struct Pair {
+    double d;
+    std::size_t ref, eig;
+  };
+  std::vector<Pair> pairs;
+  for (std::size_t k = 0; k < reference.size(); ++k)
+    for (std::size_t e = 0; e < r1.eigenvalues.size(); ++e)
+      if (r1.eigenvalues[e].imag() >= 0.0) pairs.push_back({std::abs(r1.eigenvalues[e] - reference[k].s), k, e});
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.d < b.d; });
+  std::vector<long> taken_by(r1.eigenvalues.size(), -1), of(reference.size(), -1);
+  for (const Pair& p : pairs)
+    if (of[p.ref] < 0 && taken_by[p.eig] < 0) of[p.ref] = static_cast<long>(p.eig), taken_by[p.eig] = static_cast<long>(p.ref);
+  std::vector<noise::ModeRoot> m;
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    const noise::ModeRoot& ref = reference[k];
+    noise::ModeRoot x;
+    x.mode = ref.mode;
+    x.label = ref.label;
+    x.natural_frequency = ref.natural_frequency;
+    x.s0 = ref.s0;
+    x.converged = of[k] >= 0;
+    x.s = x.converged ? r1.eigenvalues[static_cast<std::size_t>(of[k])] : dynamics::cdouble(std::nan(""), std::nan(""));
+    x.frequency = x.s.imag() / (2.0 * M_PI);
+    x.damping_ratio = -x.s.real() / std::abs(x.s);
+    x.unstable = x.s.real() > 0.0;
+    x.residual = x.singular_ratio = std::nan("");
+    m.push_back(x);
+  }
+  return m;
+}
+
+RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std::vector<noise::ModeRoot>& b) {
+  RouteAgreement g;
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    const double df = std::abs(a[k].frequency - b[k].frequency) / std::abs(b[k].frequency);
+    const double dz = std::abs(a[k].damping_ratio - b[k].damping_ratio);
+    const double rz = dz / std::abs(b[k].damping_ratio);
+    if (df > g.frequency) g.frequency = df, g.worst_frequency_mode = k;
+    g.damping_relative = std::max(g.damping_relative, rz);
+    g.damping_absolute = std::max(g.damping_absolute, dz);
+    const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the acceptance of issue 12: <= 1
+    if (beyond > g.damping_beyond) g.damping_beyond = beyond, g.worst_damping_mode = k;
+    if (!a[k].converged) g.distinct = false;
+  }
+  return g;
 }
 
 }  // namespace rollnoise::pipeline
