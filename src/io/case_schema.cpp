@@ -34,9 +34,11 @@ const std::vector<KeySpec>& case_schema() {
       {"rolling.creepage_sampling", T::String, "\"midstep\"", "-",
        "when the creepage of a rolling step dt = dx/V is taken (transient solver, linear model): "
        "\"midstep\" at t_k - dt/2, where the displacement difference of paper Eq. 2 is centred "
-       "(f converges at second order); \"contact\" at t_k, CONTACT's convention (a half-step "
-       "phase lead w dt/2, first order); the normal load is taken at t_k in both",
-       {"midstep", "contact"}},
+       "(f converges at second order); \"average\" its mean over [t_k - dt, t_k], as the "
+       "displacement difference averages the displacement rate (second order, a smaller error); "
+       "\"contact\" at t_k, CONTACT's convention (a half-step phase lead w dt/2, first order); the "
+       "normal load is taken at t_k in all three",
+       {"midstep", "average", "contact"}},
       // contact geometry and load
       {"contact.geometry", T::String, "\"hertz\"", "-",
        "\"hertz\": quadratic undeformed distance from the semi-axes a, b; \"profiles\": "

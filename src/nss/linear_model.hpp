@@ -68,9 +68,11 @@
 // the recursion with the creepage of step k taken at t_k (CONTACT's convention). With midstep the
 // creepage is taken at t_k - dt/2: for xi~(t) = xi^ e^{i w t} the recursion sees xi~_k = xi^
 // e^{-i w dt/2} e^{i w t_k}, so f_midstep(w) = f_contact(w) e^{-i w dt/2} exactly, on every f route
-// (the factor is applied in one place, linear_model.cpp). g is the same in both samplings (the load
-// is taken at t_k with the traction it bounds). time_response() takes the creepages at the sampling
-// instants (contact::sampling_time): the callers sample them.
+// (the factor is applied in one place, linear_model.cpp). With average the creepage of step k is its
+// mean over [t_{k-1}, t_k], xi~_k = xi^ e^{-i w dt/2} sinc(w dt/2) e^{i w t_k}, so f_average(w) =
+// f_contact(w) e^{-i w dt/2} sinc(w dt/2). g is the same in every sampling (the load is taken at t_k
+// with the traction it bounds). time_response() takes the creepages of the steps as the sampling
+// defines them (contact::CreepageHistory::step_variation): the callers sample them.
 #pragma once
 
 #include <Eigen/Dense>
@@ -228,8 +230,8 @@ class LinearContactModel {
   /// How the last creep_coefficients() built its Markov parameters.
   const SweepInfo& sweep_info() const { return info_; }
 
-  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken at
-  /// contact::sampling_time(sampling(), k, dt) (k = 0, 1, ...), by the discrete-time recursion
+  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken as
+  /// sampling() defines them (CreepageHistory::step_variation(sampling(), k, dt), k = 0, 1, ...), by the discrete-time recursion
   /// K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky factorisation of K0, or PCG started
   /// from the previous step rolled on by one element; K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
