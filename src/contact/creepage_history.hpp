@@ -47,7 +47,8 @@ namespace rollnoise::contact {
 /// Only the creepage moves: the normal load N_k (and the pressure bound mu pn_k) stays at t_k, with
 /// the traction p_k it bounds (measured: g converges at t_k and acquires a first-order error at
 /// t_k - dt/2, docs/accuracy.md), in every sampling, so g does not depend on the sampling. The
-/// library default is midstep; every comparison with CONTACT names contact.
+/// library default (and the case key's) is average, the closest to the continuum at a given cost
+/// (rollnoise bench, docs/accuracy.md Sec. 2.3); every comparison with CONTACT names contact.
 enum class CreepageSampling { contact, midstep, average };
 
 /// For xi(t) = xi^ e^{i w t} (w = 2 pi frequency), the creepage of step k in `s` is xi^ e^{i w t_k}

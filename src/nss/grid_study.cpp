@@ -96,8 +96,8 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   r.window_error = rel_err(Xl, r.linear);
 }
 
-// The half-step lead removed: the correction for CONTACT's sampling, nothing for midstep (whose
-// creepage is already taken at t_k - dt/2).
+// The half-step lead removed: the correction for CONTACT's sampling, nothing for midstep and
+// average (whose creepage is already centred at t_k - dt/2).
 std::complex<double> lead_correction(double freq, double dx, double speed, contact::CreepageSampling sampling) {
   return sampling == contact::CreepageSampling::contact ? half_step_phase_correction(freq, dx, speed) : 1.0;
 }

@@ -108,7 +108,7 @@ struct LinearModelInput {
   LinearModelInput(double mu_ = 0.3, double speed_ = 0.0, double spin_offset_ = 0.0,
                    contact::FallingFriction falling_ = {},
                    LinearSolver solver_ = LinearSolver::automatic,
-                   contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep)
+                   contact::CreepageSampling sampling_ = contact::CreepageSampling::average)
       : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_), solver(solver_),
         sampling(sampling_) {}
   /// {mu, speed, spin_offset, sampling}: constant friction, the automatic solver.
@@ -121,8 +121,9 @@ struct LinearModelInput {
   /// by default; see "Falling friction" above).
   contact::FallingFriction falling;
   LinearSolver solver = LinearSolver::automatic;  ///< solver.linear_model
-  /// when the creepage of step k is taken (t_k - dt/2 by default; contact: t_k, as CONTACT)
-  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
+  /// how the creepage of step k is taken (by default its mean over [t_{k-1}, t_k]; midstep: at
+  /// t_k - dt/2; contact: at t_k, as CONTACT)
+  contact::CreepageSampling sampling = contact::CreepageSampling::average;
 };
 
 /// Whether a model with r reduced unknowns takes the matrix-free path under `solver`.
@@ -216,7 +217,8 @@ class LinearContactModel {
 
   /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
   /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()). They are
-  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling.
+  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling,
+  /// -e^{-i w dt/2} sinc(w dt/2) sum_j h_j z^j with average (contact::step_sampling_factor).
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
   /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
   const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
@@ -310,7 +312,7 @@ class LinearContactModel {
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   LinearSolver solver_ = LinearSolver::automatic;
-  contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep;
+  contact::CreepageSampling sampling_ = contact::CreepageSampling::average;
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;

@@ -27,7 +27,7 @@ LinearResponse linear_response(const LinearContactModel& m, const Eigen::Vector3
     const auto f = m.creep_coefficients(h.frequencies());
     const auto g = h.has_normal_variation() ? m.normal_load_coefficients(h.frequencies())
                                             : std::vector<LoadVector>{};
-    // at t_k with f of the model's sampling (its phase e^{-i w dt/2} for midstep is the sampling)
+    // at t_k with f of the model's sampling (its factor contact::step_sampling_factor is the sampling)
     r.synthesis = contact::harmonic_synthesis(h, f, g, mean_force, dt, steps);
   }
   return r;
