@@ -44,6 +44,7 @@ int run_noise(const CommonOptions& o);
 int run_receptance(const CommonOptions& o);
 /// rollnoise statespace (statespace_command.cpp); `csv_prefix` may be empty.
 int run_statespace(const CommonOptions& o, const std::string& csv_prefix);
+int run_squeal(const CommonOptions& o);
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv);
 /// bench --sweep-cost: time and peak memory of the 1000-frequency sweep per grid, dense and
 /// matrix-free (bench_sweep_cost.cpp).

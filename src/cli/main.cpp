@@ -8,6 +8,7 @@
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise statespace CASE.toml [-o OUT.h5] [--set key=value]... [--csv PREFIX]
+//   rollnoise squeal    CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
 //   rollnoise collect   STUDY.toml
@@ -78,6 +79,8 @@ int main(int argc, char** argv) {
   add_common(noise_cmd);
   auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
   add_common(receptance);
+  auto* squeal = app.add_subcommand("squeal", "stability of the wheel-rail-contact loop: coupled wheel-mode eigenvalues");
+  add_common(squeal);
   std::vector<int> bench_grids = {10, 14, 20, 28, 40, 56};
   std::string bench_csv;
   auto* bench = app.add_subcommand("bench", "run time against error under grid refinement");
@@ -138,6 +141,7 @@ int main(int argc, char** argv) {
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
     if (bench->parsed() && !sweep_cost_grids.empty()) return cli::run_sweep_cost(common, sweep_cost_grids);
+    if (squeal->parsed()) return cli::run_squeal(common);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
     if (statespace->parsed()) return cli::run_statespace(common, statespace_csv);
   } catch (const InputError& e) {

@@ -188,4 +188,77 @@ Receptance4 RailModel::receptance(double frequency) const {
   return R;
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// Complex frequency (docs/squeal.md Sec. 2): Eqs. (1), (2) and the contact-point receptance for a
+// complex omega = -i s, written out separately from the real-frequency functions above (which keep
+// their code and bits). The foundation at Re omega is passed on for the continuation of the
+// wavenumber roots (track_beam.hpp).
+// ---------------------------------------------------------------------------------------------
+
+cdouble Support::dynamic_stiffness(cdouble omega) const {
+  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
+  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
+  const cdouble below = kb - sleeper_mass * omega * omega;
+  return kp * below / (kp + below);
+}
+
+Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r, double x_e) const {
+  const InfiniteBeam free_rail(rail_, omega, 0.0, 0.0);
+  const cdouble K = support_.dynamic_stiffness(omega);
+  const int m = 2 * n_ + 1;
+  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);
+  std::vector<cdouble> g(m);
+  for (int d = 0; d < m; ++d) g[d] = free_rail.transfer(d * spacing_)(0, 0);
+  Eigen::MatrixXcd S(m, m), Be(m, 2), Br(m, 2);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) S(i, j) = g[std::abs(i - j)];
+    S(i, i) += 1.0 / K;
+    const double xn = (n0 - n_ + i) * spacing_;
+    Be.row(i) = free_rail.transfer(xn - x_e).row(0);
+    Br.row(i) = free_rail.transfer(xn - x_r).row(0);
+  }
+  Eigen::Matrix2cd H = free_rail.transfer(x_r - x_e) - Br.transpose() * S.partialPivLu().solve(Be);
+  if (!H.allFinite()) throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
+  return H;
+}
+
+namespace {
+// The 4x4 of RailModel::receptance from the vertical and lateral beams and the rod.
+Receptance4 contact_point_receptance(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
+  Receptance4 R = Receptance4::Zero();
+  R(kZ, kZ) = Hv(0, 0);
+  R(kZ, kX) = -h * Hv(0, 1);
+  R(kX, kZ) = -h * Hv(1, 0);
+  R(kX, kX) = rod + h * h * Hv(1, 1);
+  R(kY, kY) = Hl(0, 0);
+  R(kY, kRotZ) = Hl(0, 1);
+  R(kRotZ, kY) = Hl(1, 0);
+  R(kRotZ, kRotZ) = Hl(1, 1);
+  return R;
+}
+}  // namespace
+
+Receptance4 RailModel::receptance_laplace(cdouble s) const {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  const cdouble omega = cdouble(0.0, -1.0) * s;  // i omega = s
+  const double wr = omega.real(), L = track_.sleeper_spacing;
+  Eigen::Matrix2cd Hv, Hl;
+  if (support_ == TrackSupport::kDiscrete) {
+    Hv = vertical_.transfer_at(omega, x_, x_);
+    Hl = lateral_.transfer_at(omega, x_, x_);
+  } else {
+    Hv = InfiniteBeam(track_.vertical, omega, track_.vertical_support.dynamic_stiffness(omega) / L,
+                      track_.vertical_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
+    Hl = InfiniteBeam(track_.lateral, omega, track_.lateral_support.dynamic_stiffness(omega) / L,
+                      track_.lateral_support.dynamic_stiffness(wr) / L)
+             .transfer(0.0);
+  }
+  const cdouble rod = rod_receptance(track_.vertical, omega, track_.longitudinal_support.dynamic_stiffness(omega) / L,
+                                     0.0, track_.longitudinal_support.dynamic_stiffness(wr) / L);
+  return contact_point_receptance(Hv, Hl, rod, track_.head_height);
+}
+
 }  // namespace rollnoise::dynamics

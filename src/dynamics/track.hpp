@@ -47,6 +47,8 @@ struct Support {
 
   /// K(omega) of Eq. (1) (N/m).
   cdouble dynamic_stiffness(double omega) const;
+  /// Eq. (1) at a complex angular frequency omega = -i s (loss factors continued as constants).
+  cdouble dynamic_stiffness(cdouble omega) const;
   void validate(const std::string& prefix) const;
 };
 
@@ -86,6 +88,10 @@ class DiscretelySupportedRail {
   /// Point receptance matrix at x.
   Eigen::Matrix2cd point(double frequency, double x) const { return transfer(frequency, x, x); }
 
+  /// Eq. (2) at a complex angular frequency omega = -i s (s the Laplace variable, 1/s; see
+  /// InfiniteBeam for the continuation).
+  Eigen::Matrix2cd transfer_at(cdouble omega, double x_response, double x_load) const;
+
   int supports_each_side() const { return n_; }
 
  private:
@@ -113,6 +119,10 @@ class RailModel {
   RailModel(const TrackParameters& track, TrackSupport support, double contact_position);
 
   Receptance4 receptance(double frequency) const;
+  /// The receptance at the Laplace variable s = sigma + i omega (1/s), i omega -> s: the closed
+  /// forms continued to the complex frequency omega = -i s (docs/squeal.md Sec. 2);
+  /// receptance_laplace(i omega) = receptance(omega / 2 pi) up to round-off.
+  Receptance4 receptance_laplace(cdouble s) const;
 
   const TrackParameters& track() const { return track_; }
 

@@ -111,4 +111,89 @@ cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) 
   return -I * std::exp(-I * k0 * std::abs(x)) / (2.0 * EA * k0);
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// Complex frequency (docs/squeal.md Sec. 2). The same closed forms for a complex omega, written out
+// separately rather than templated over the real path: the real-frequency functions above keep
+// their code and so their bits (the compiler contracts multiply-adds per instantiation).
+// ---------------------------------------------------------------------------------------------
+
+InfiniteBeam::InfiniteBeam(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
+  if (omega.imag() > 0.0) {
+    const InfiniteBeam reference(b, omega.real(), s_real);
+    init_complex(b, omega, s, &reference);
+  } else {
+    init_complex(b, omega, s, nullptr);
+  }
+}
+
+void InfiniteBeam::init_complex(const BeamSection& b, cdouble omega, cdouble s, const InfiniteBeam* reference) {
+  const cdouble damping(1.0, b.loss_factor);
+  const cdouble EI = b.youngs_modulus * b.second_moment * damping;
+  const cdouble mw2 = b.mass_per_length * omega * omega;  // m' omega^2
+  const cdouble q = s - mw2;                             // s - m' omega^2
+
+  // P(k) = a k^4 + bb k^2 + c and the numerators of the inverse dynamic-stiffness matrix.
+  cdouble a, bb, c;
+  if (b.timoshenko) {
+    const cdouble kGA = b.shear_coefficient * b.shear_modulus * b.area * damping;
+    const cdouble rIw2 = b.mass_per_length * b.second_moment / b.area * omega * omega;
+    a = EI * kGA;
+    bb = q * EI - kGA * rIw2;
+    c = q * (kGA - rIw2);
+    d2_ = EI, d0_ = kGA - rIw2;  // W/F
+    e2_ = kGA, e0_ = q;          // Psi/M
+    g_ = kGA;                    // W/M = i g k, Psi/F = -i g k
+  } else {
+    a = EI, bb = 0.0, c = q;
+    d2_ = 0.0, d0_ = 1.0;
+    e2_ = 1.0, e0_ = 0.0;
+    g_ = 1.0;
+  }
+
+  // lambda = k^2 from a lambda^2 + bb lambda + c = 0, the cancellation-free form of the quadratic
+  // formula: q = -(bb + sign sqrt(bb^2 - 4ac))/2, lambda_1 = q/a, lambda_2 = c/q.
+  const cdouble disc = std::sqrt(bb * bb - 4.0 * a * c);
+  const cdouble qq = -0.5 * (std::real(std::conj(bb) * disc) >= 0.0 ? bb + disc : bb - disc);
+  if (std::abs(qq) == 0.0)
+    throw NumericalError(
+        "InfiniteBeam: dispersion relation degenerate (k = 0 double root) at omega = " +
+        std::to_string(std::abs(omega)) + " rad/s; add damping");
+  const std::array<cdouble, 2> lambda = {qq / a, c / qq};
+  const double sep = std::abs(lambda[0] - lambda[1]);
+  if (!(sep > 1e-13 * (std::abs(lambda[0]) + std::abs(lambda[1]))))
+    throw NumericalError("InfiniteBeam: double root of the dispersion relation at omega = " +
+                         std::to_string(std::abs(omega)) + " rad/s; add damping");
+  for (int j = 0; j < 2; ++j) {
+    k_[j] = decaying_root(lambda[j]);
+    if (reference) {  // the root of +-k_j nearest to the reference's roots (continuation, see header)
+      double best = 1e300;
+      for (const cdouble r : reference->k_)
+        for (const cdouble k : {k_[j], -k_[j]})
+          if (std::abs(k - r) < best) best = std::abs(k - r), k_[j] = k;
+    }
+    inv_dp_[j] = 1.0 / (2.0 * a * k_[j] * (lambda[j] - lambda[1 - j]));
+  }
+}
+
+namespace {
+cdouble rod_receptance_complex(const BeamSection& b, cdouble omega, cdouble s, double x, const cdouble* reference) {
+  const cdouble EA = b.youngs_modulus * b.area * cdouble(1.0, b.loss_factor);
+  cdouble k0 = decaying_root((b.mass_per_length * omega * omega - s) / EA);
+  if (reference && std::abs(-k0 - *reference) < std::abs(k0 - *reference)) k0 = -k0;  // continuation
+  if (std::abs(k0) == 0.0)
+    throw NumericalError("rod_receptance: k0 = 0 (static free rod); add a foundation or damping");
+  const cdouble I(0.0, 1.0);
+  return -I * std::exp(-I * k0 * std::abs(x)) / (2.0 * EA * k0);
+}
+}  // namespace
+
+cdouble rod_receptance(const BeamSection& b, cdouble omega, cdouble s, double x, cdouble s_real) {
+  if (!(omega.imag() > 0.0)) return rod_receptance_complex(b, omega, s, x, nullptr);
+  const cdouble EA = b.youngs_modulus * b.area * cdouble(1.0, b.loss_factor);
+  const double w = omega.real();
+  const cdouble reference = decaying_root((b.mass_per_length * w * w - s_real) / EA);
+  return rod_receptance_complex(b, omega, s, x, &reference);
+}
+
 }  // namespace rollnoise::dynamics

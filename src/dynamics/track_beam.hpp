@@ -65,6 +65,14 @@ class InfiniteBeam {
  public:
   /// `foundation` is the complex dynamic stiffness per unit length s (N/m^2); 0 for a free beam.
   InfiniteBeam(const BeamSection& section, double omega, cdouble foundation);
+  /// The same at a complex angular frequency omega = -i s (s the Laplace variable, 1/s): the
+  /// closed form continued analytically (docs/squeal.md Sec. 2). The loss factors stay constants
+  /// E(1 + i eta). For Im omega <= 0 (Re s >= 0) the roots are chosen by the same rule (Im k < 0),
+  /// the analytic continuation there; for Im omega > 0 (decaying s) each root is the one of +-k
+  /// nearest to the physical root at the real frequency Re omega (with `foundation_at_real`, the
+  /// foundation stiffness there), i.e. continued along the vertical path from the real axis,
+  /// across the real k axis if need be (where the rule Im k < 0 would jump to another sheet).
+  InfiniteBeam(const BeamSection& section, cdouble omega, cdouble foundation, cdouble foundation_at_real);
 
   /// (w(x), psi(x)) per (F, M) applied at 0: [[w/F, w/M], [psi/F, psi/M]] (m/N, m/(N m), rad/N,
   /// rad/(N m)). Reciprocity: transfer(x)^T = transfer(-x).
@@ -81,6 +89,7 @@ class InfiniteBeam {
   std::array<cdouble, 2> k_;       // roots in the lower half plane
   std::array<cdouble, 2> inv_dp_;  // 1 / P'(k_j)
   cdouble d2_, d0_, e2_, e0_, g_;  // numerators: W/F = d2 k^2 + d0, Psi/M = e2 k^2 + e0, odd: g k
+  void init_complex(const BeamSection& section, cdouble omega, cdouble foundation, const InfiniteBeam* reference);
 };
 
 /// Longitudinal receptance u/F of an infinite rod (axial stiffness EA(1 + i eta), mass m') on a
@@ -88,5 +97,8 @@ class InfiniteBeam {
 ///   u(x) = -i e^{-i k0 |x|} / (2 EA k0),  k0^2 = (m' omega^2 - s) / EA,  Im k0 < 0
 /// (Graff 1975, Ch. 2, for the free rod; the foundation only shifts k0^2).
 cdouble rod_receptance(const BeamSection& section, double omega, cdouble foundation, double x);
+/// The same at a complex angular frequency omega = -i s (root continued as in InfiniteBeam).
+cdouble rod_receptance(const BeamSection& section, cdouble omega, cdouble foundation, double x,
+                       cdouble foundation_at_real);
 
 }  // namespace rollnoise::dynamics

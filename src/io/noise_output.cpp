@@ -44,34 +44,34 @@ void write_variant(Hdf5Writer& w, const std::string& group, const noise::LoopRes
   write_bands(w, group + "/bands", b, false);
 }
 
-// /noise/contact/*: the contact state the loop ran on.
-void write_contact_state(Hdf5Writer& w, const pipeline::NoiseCase& nc, const pipeline::NoiseResult& r) {
-  const pipeline::ContactCase& cc = r.contact;
-  const noise::ContactPosition& p = r.curve.position;
-  w.write("/noise/contact/normal_stiffness", r.stage.normal_stiffness, "N/m");
-  w.write("/noise/contact/angle", p.contact_angle, "rad");
-  w.write("/noise/contact/position_wheel", p.wheel_shift_y,
+}  // namespace
+
+void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline::NoiseCase& nc,
+                         const pipeline::ContactCase& cc, const pipeline::CurveSetup& curve, double normal_stiffness) {
+  const noise::ContactPosition& p = curve.position;
+  const std::string g = group + "/";
+  w.write(g + "normal_stiffness", normal_stiffness, "N/m");
+  w.write(g + "angle", p.contact_angle, "rad");
+  w.write(g + "position_wheel", p.wheel_shift_y,
           "m (wheel profile coordinate from the nominal running circle, field side > 0)");
-  w.write("/noise/contact/position_rail", p.rail_offset_y, "m (rail profile coordinate from the rail's centre line, field side > 0)");
-  w.write("/noise/contact/normal_force", cc.normal_force, "N");
-  w.write("/noise/contact/creepage", std::vector<double>{cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi}, {3},
+  w.write(g + "position_rail", p.rail_offset_y, "m (rail profile coordinate from the rail's centre line, field side > 0)");
+  w.write(g + "normal_force", cc.normal_force, "N");
+  w.write(g + "creepage", std::vector<double>{cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi}, {3},
           "-, -, rad/m");
-  const noise::CurveContactState* st = r.curve.state ? &*r.curve.state : nullptr;
-  w.write("/noise/contact/rolling_radius", r.curve.rolling_radius(nc), "m");
-  w.write("/noise/contact/two_point", std::vector<int>{st && st->two_point ? 1 : 0}, {}, "-");
-  w.write("/noise/contact/flange_normal_force", st ? st->flange_normal_force : 0.0, "N");
-  w.write("/noise/contact/flange_vertical_load", st ? st->flange_vertical_load : 0.0, "N");
-  w.write("/noise/contact/flange_angle", st ? st->flange_angle : 0.0, "rad");
+  const noise::CurveContactState* st = curve.state ? &*curve.state : nullptr;
+  w.write(g + "rolling_radius", curve.rolling_radius(nc), "m");
+  w.write(g + "two_point", std::vector<int>{st && st->two_point ? 1 : 0}, {}, "-");
+  w.write(g + "flange_normal_force", st ? st->flange_normal_force : 0.0, "N");
+  w.write(g + "flange_vertical_load", st ? st->flange_vertical_load : 0.0, "N");
+  w.write(g + "flange_angle", st ? st->flange_angle : 0.0, "rad");
   if (st) {
-    w.write("/noise/contact/wheel_load", st->wheel_load, "N");
-    w.write("/noise/contact/load_transfer", st->load_transfer, "N");
-    w.write("/noise/contact/tread_load", st->tread_load, "N (vertical)");
-    w.write("/noise/contact/wheelset_lateral", st->lateral, "m");
-    w.write("/noise/contact/wheelset_yaw", st->yaw, "rad");
+    w.write(g + "wheel_load", st->wheel_load, "N");
+    w.write(g + "load_transfer", st->load_transfer, "N");
+    w.write(g + "tread_load", st->tread_load, "N (vertical)");
+    w.write(g + "wheelset_lateral", st->lateral, "m");
+    w.write(g + "wheelset_yaw", st->yaw, "rad");
   }
 }
-
-}  // namespace
 
 CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve) {
   if (!curve.creepage_from_curve()) return r;
@@ -101,7 +101,7 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   w.write("/noise/creep/f", flatten(r.creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
   w.write("/noise/creep/g", flatten(r.load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
-  write_contact_state(w, nc, r);
+  write_contact_state(w, "/noise/contact", nc, r.contact, r.curve, r.stage.normal_stiffness);
   if (r.curve.estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
     w.write("/noise/curving/attack_angle", r.curve.curving.leading.attack_angle, "rad");

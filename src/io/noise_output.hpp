@@ -12,6 +12,12 @@ namespace rollnoise::io {
 /// The case as run: when the curve stage set the creepages, creepage.mean records them.
 CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve);
 
+/// GROUP/*: the contact state a loop ran on (normal_stiffness, angle, position_wheel, position_rail,
+/// normal_force, creepage, rolling_radius, two_point, flange_*, and with profiles wheel_load,
+/// load_transfer, tread_load, wheelset_lateral, wheelset_yaw); /noise/contact of `noise`.
+void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline::NoiseCase& nc,
+                         const pipeline::ContactCase& c, const pipeline::CurveSetup& curve, double normal_stiffness);
+
 void write_noise(Hdf5Writer& w, const CaseReader& r, const pipeline::NoiseCase& nc, const pipeline::NoiseResult& res);
 
 void write_receptance(Hdf5Writer& w, const CaseReader& r, const pipeline::ReceptanceResult& res);

@@ -51,6 +51,35 @@ Receptance4 contact_receptance(double frequency, double normal_stiffness, double
   return a;
 }
 
+// (C1-C3) at complex s (docs/squeal.md): the same as contact_receptance at s = i omega, written out
+// separately so that the real-frequency function keeps its code and bits.
+Receptance4 contact_receptance_laplace(cdouble s, double normal_stiffness, double speed,
+                                       const Eigen::Matrix3cd& creep, const LoadCoefficients& load) {
+  if (!(std::abs(s) > 0.0) || !std::isfinite(std::abs(s)))
+    throw InputError("frequency", "contact receptance needs a finite, non-zero s");
+  check_common(1.0, normal_stiffness, speed);
+  const Eigen::FullPivLU<Eigen::Matrix3cd> lu(creep);
+  // Reciprocal condition estimate from the pivots (relative to the largest entry).
+  const double biggest = creep.cwiseAbs().maxCoeff();
+  if (!(biggest > 0.0) || !creep.allFinite() || !lu.isInvertible() ||
+      std::abs(lu.matrixLU()(2, 2)) < 1e-14 * biggest) {
+    std::ostringstream m;
+    m << "contact receptance: creep matrix f is singular or not finite at " << s.imag() / (2 * M_PI) << " Hz";
+    if (s.real() != 0.0) m << " (s = " << s << " 1/s)";
+    m << " (f =\n" << creep << ")";
+    throw NumericalError(m.str());
+  }
+  Receptance4 a = Receptance4::Zero();
+  a(0, 0) = 1.0 / normal_stiffness;  // linearised Hertz spring
+  // (C2): alpha_c,t = (V / (i omega)) f^{-1}, i omega -> s
+  a.bottomRightCorner<3, 3>() = (speed / s) * lu.inverse();
+  if (!load.allFinite())
+    throw NumericalError("contact receptance: normal-load coefficients g not finite");
+  // (C3): alpha_c,tn = -alpha_c,tt g (exactly zero for g = 0)
+  if (!load.isZero(0.0)) a.bottomLeftCorner<3, 1>() = -(a.bottomRightCorner<3, 3>() * load);
+  return a;
+}
+
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
                                              double normal_stiffness, double speed,
                                              const CreepFunction& creep) {

@@ -71,6 +71,12 @@ Receptance4 contact_receptance(double frequency, double normal_stiffness, double
 Receptance4 contact_receptance(double frequency, double normal_stiffness, double speed,
                                const Eigen::Matrix3cd& creep, const LoadCoefficients& load);
 
+/// alpha_c (C1-C3) at the Laplace variable s = sigma + i omega (1/s, s != 0): i omega -> s in (C2),
+/// alpha_c,t = (V/s) f^{-1}, with f and g evaluated at s by the caller (docs/squeal.md Sec. 2).
+/// contact_receptance(frequency, ...) is this at s = i omega (to round-off).
+Receptance4 contact_receptance_laplace(cdouble s, double normal_stiffness, double speed,
+                                       const Eigen::Matrix3cd& creep, const LoadCoefficients& load);
+
 /// alpha_c at many frequencies from a creep function (evaluated once per frequency).
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
                                              double normal_stiffness, double speed,

@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace rollnoise::cli_test {
@@ -39,5 +41,13 @@ inline std::string source_file(const std::string& relative) {
 }
 
 inline std::string paper_case() { return source_file("cases/hertz_paper.toml"); }
+
+/// The whole text of a file (empty if it cannot be read): to check that an input stays unchanged.
+inline std::string file_contents(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 }  // namespace rollnoise::cli_test

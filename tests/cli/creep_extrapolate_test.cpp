@@ -16,13 +16,6 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-std::string contents(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The paper's case on coarse grids (a margin for them), two frequencies.
 const std::string kCoarse =
     " --set grid.nx=14 --set grid.ny=10 --set grid.scale=1.25 --set 'frequency.list=[1000.0, 5000.0]'";
@@ -31,14 +24,14 @@ const std::string kCoarse =
 
 TEST(CreepExtrapolate, BadGridFactorsAreRefusedNamingTheOptionBeforeAnythingRuns) {
   const auto out = temp_dir() / "extrapolate_bad.h5";
-  const std::string before = contents(paper_case());
+  const std::string before = file_contents(paper_case());
   for (const char* grids : {"1", "2,1", "1,1", "0,1", "1,1.5,2,3", "1,abc", "0.2,1"}) {
     const auto r = run("creep " + paper_case() + kCoarse + " --extrapolate-grids " + grids + " -o " + out.string());
     EXPECT_EQ(r.status, 2) << grids << ": " << r.output;
     EXPECT_NE(r.output.find("--extrapolate-grids"), std::string::npos) << grids << ": " << r.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << grids;
   }
-  EXPECT_EQ(contents(paper_case()), before);
+  EXPECT_EQ(file_contents(paper_case()), before);
 }
 
 TEST(CreepExtrapolate, AFrequencyAboveTheNyquistLimitNamesTheFrequencyKey) {

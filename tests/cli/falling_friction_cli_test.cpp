@@ -11,20 +11,9 @@
 
 using namespace rollnoise::cli_test;
 
-namespace {
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
-
 TEST(FallingFrictionCli, BadLawParametersExitTwoNamingTheKey) {
   const std::string base = "--set grid.nx=16 --set grid.ny=12 --set 'creepage.mean=[0.001,0.001,0]' -q";
-  const std::string before = contents(paper_case());
+  const std::string before = file_contents(paper_case());
   const struct {
     const char* sets;
     const char* key;
@@ -46,7 +35,7 @@ TEST(FallingFrictionCli, BadLawParametersExitTwoNamingTheKey) {
     EXPECT_NE(r.output.find(f.key), std::string::npos) << f.sets << ": " << r.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << f.sets;
   }
-  EXPECT_EQ(contents(paper_case()), before);
+  EXPECT_EQ(file_contents(paper_case()), before);
 }
 
 TEST(FallingFrictionCli, SteadyAndCreepRunWithAFallingLaw) {

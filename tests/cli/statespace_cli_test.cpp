@@ -14,13 +14,6 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The paper's Hertzian case copied to the scratch folder (to check that it stays unchanged).
 std::string case_copy() {
   const auto c = temp_dir() / "statespace_case.toml";
@@ -60,7 +53,7 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
     EXPECT_TRUE(h.numbers(d)) << d;
   // one CSV per matrix, rows as lines
   for (const char* m : {"A", "B", "C", "D", "Ad", "Bd", "Cd", "Dd"}) {
-    const std::string text = slurp(prefix + "_" + m + ".csv");
+    const std::string text = file_contents(prefix + "_" + m + ".csv");
     const auto lines = std::count(text.begin(), text.end(), '\n');
     const std::string name = m;
     if (name == "A" || name == "B") {
@@ -69,7 +62,7 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
       EXPECT_EQ(lines, 3) << m;
     }
   }
-  EXPECT_EQ(slurp(c), slurp(paper_case()));
+  EXPECT_EQ(file_contents(c), file_contents(paper_case()));
 }
 
 TEST(StatespaceCommand, BadBandsAndTolerancesAreRefusedNamingTheKeyAndLeaveNoFile) {
@@ -89,6 +82,6 @@ TEST(StatespaceCommand, BadBandsAndTolerancesAreRefusedNamingTheKeyAndLeaveNoFil
     EXPECT_NE(r.output.find(key), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << set;
     EXPECT_FALSE(std::filesystem::exists(prefix + "_A.csv")) << set;
-    EXPECT_EQ(slurp(c), slurp(paper_case()));
+    EXPECT_EQ(file_contents(c), file_contents(paper_case()));
   }
 }

@@ -34,7 +34,9 @@ Eigen::Vector3d forces(const Creepage& c, const FallingFriction& f) {
 }
 
 nss::LinearContactModel model(const Creepage& c, const FallingFriction& f) {
-  return nss::LinearContactModel(coarse(), steady(c, f), {kMu, kSpeed, 0.0, f});
+  // CONTACT's sampling: the tests below step the solvers at t_k themselves.
+  return nss::LinearContactModel(coarse(), steady(c, f),
+                                 {kMu, kSpeed, 0.0, f, nss::LinearSolver::automatic, contact::CreepageSampling::contact});
 }
 
 double relative(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) { return (a - b).norm() / b.norm(); }
@@ -137,8 +139,10 @@ TEST(FallingFrictionModel, UnsteadySolverResponseToSmallHarmonicCreepageEqualsTh
   const Creepage mean{0.001, 0.001, -0.053};
   const FallingFriction law{0.5, 4.0};
   const auto s = steady(mean, law);
-  const nss::LinearContactModel m(p, s, {kMu, kSpeed, 0.0, law});
-  const nss::LinearContactModel mc(p, steady(mean, {}), {kMu, kSpeed, 0.0});
+  // the unsteady loop below takes the creepage at t_k: CONTACT's sampling
+  const auto contact_sampling = contact::CreepageSampling::contact;
+  const nss::LinearContactModel m(p, s, {kMu, kSpeed, 0.0, law, nss::LinearSolver::automatic, contact_sampling});
+  const nss::LinearContactModel mc(p, steady(mean, {}), {kMu, kSpeed, 0.0, contact_sampling});
   const auto F0 = total_forces(p.grid, s.px, s.py);
   for (double freq : {500.0, 1000.0}) {
     const double amp = 5e-5;

@@ -1,0 +1,174 @@
+// Linear stability of the closed wheel-rail-contact loop (curve squeal; docs/squeal.md).
+//
+// The loop (L1) of loop.hpp without excitation, (alpha_w + alpha_r + alpha_c) F = 0, has a
+// non-trivial F at the zeros of
+//
+//   det A(s) = 0,   A(s) = alpha_w(s) + alpha_r(s) + alpha_c(s),   s = sigma + i omega     (S1)
+//
+// (all 4x4 in the contact frame; harmonic e^{i omega t} -> e^{s t}, i omega -> s). A zero with
+// Re s > 0 is a self-excited (growing) vibration. The parts at complex s:
+//  * wheel: the modal sum with i omega -> s, exactly (analytic continuation of W1):
+//      alpha_w(s) = C_rig / s^2 + sum_k psi_k psi_k^T / (m_k D_k(s)),
+//      D_k(s) = omega_k^2 + 2 zeta_k omega_k s + s^2,
+//    C_rig the rigid wheelset's flexibility at the contact point (docs/models.md W2: -C/omega^2
+//    -> C/s^2), psi_k the mode shape at the contact point in the contact frame (lever arm and
+//    rotation of loop.hpp applied to the shape);
+//  * rail: dynamics::RailModel::receptance_laplace (the closed forms at complex frequency; the
+//    hysteretic loss factors k(1 + i eta) are continued as constants);
+//  * contact: contact_receptance_laplace with f(s), g(s) from the Markov parameters of the linear
+//    NSS model (MarkovContact below).
+//
+// Route 2 (mode_roots). With R(s) = rest (everything but the flexible wheel modes), Psi the
+// 4 x N mode shapes and Sylvester's determinant identity,
+//   det A(s) = det R(s) det(diag(m_j D_j(s))^{-1}) det( diag(m_j D_j(s)) + Psi^T R(s)^{-1} Psi ),
+// so the zeros of (S1) are those of the modal form (a dynamic stiffness per mode)
+//   H(s) = det R(s) det( diag(m_j D_j(s)) + Psi^T R(s)^{-1} Psi )                            (S2)
+// (rows scaled by 1/(m_j omega_j^2); det R removes the poles of R^{-1}). It has no poles at the
+// uncoupled modes, unlike det A, which is what makes Newton reliable next to lightly damped
+// modes. Which root continues mode k: the homotopy
+//   H(s; lambda) = det R(s) det( diag(m_j D_j(s)) + lambda Psi^T R(s)^{-1} Psi ),  lambda: 0 -> 1,  (S3)
+// has at lambda = 0 exactly the uncoupled roots s0_k = -zeta omega_k + i omega_k sqrt(1 - zeta^2);
+// all modes are coupled by the same lambda, so the root paths of different modes are paths of one
+// analytic family and do not merge (one root per mode). Each path is followed by Euler-Newton
+// continuation: tangent predictor ds/dlambda = -H_lambda/H_s, Newton corrector, accepted when the
+// corrector stays within a trust radius (half the distance to the nearest other uncoupled root,
+// within [0.1, 5] % of |s0|) and within half the predictor's step, else the step is halved. At
+// lambda = 1 the root is a zero of (S1). Newton: the derivative by a central difference in the
+// complex plane (h = 1e-6 |s|; H is analytic), then secant updates.
+// Modes with the same uncoupled root (the sin/cos partners of a mode table) form a cluster K of c
+// modes: H has a c-fold root there at lambda = 0, whose c branches leave along the eigenvalues of
+// -lambda diag(m_j D_j'(s0))^{-1} (Psi^T R(s0)^{-1} Psi)_KK (first order); they start there at
+// lambda = 1e-3, each assigned to the mode with the largest component of its eigenvector, and are
+// continued together (the trust radius also keeps each branch within half the distance to the
+// others' predictions).
+// Reported: s, Im s/2 pi, the damping ratio -Re s/|s|, unstable = Re s > 0, the residual
+// |det(diag(D_j/omega_j^2) + diag(1/(m_j omega_j^2)) Psi^T R^{-1} Psi)| at the root and
+// sigma_min/sigma_max of the equilibrated A(s) (both ~0 at a true zero).
+//
+// Route 1 (coupled_eigenvalues): the rational (state-space) models of the rail and of the contact
+// coupled with the wheel's modal state space; the eigenvalues of the whole (a descriptor system,
+// real QZ). See the function.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dynamics/track.hpp"
+#include "dynamics/wheel.hpp"
+#include "noise/contact_receptance.hpp"
+#include "noise/loop.hpp"
+
+namespace rollnoise::noise {
+
+/// The linear contact at complex s from the Markov parameters of the discrete-time NSS model
+/// (nss::LinearContactModel::markov_parameters(), load_markov_parameters()):
+///   f(s) = -sum_j h_j z^j,   g(s) = sum_j gm_j z^j,   z = exp(-s dt)
+/// (the model's own sums with z = e^{-i omega dt} continued; Horner). |z| = exp(-sigma dt): for a
+/// growing s (sigma > 0) the series converges faster than on the unit circle, for a decaying one
+/// it converges while |z| rho < 1, rho the decay ratio per step of h_j (|h_j| ~ rho^j), i.e. for
+/// sigma > ln(rho)/dt; min_sigma() = 0.9 ln(rho)/dt. Evaluations beyond that, or where the truncated tail
+/// |h_J| |z|^J exceeds 1e-6 of the largest term, throw NumericalError (the guard).
+class MarkovContact {
+ public:
+  /// `load` may be empty (no normal-load input: g = 0).
+  MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eigen::Vector3d> load, double time_step);
+  Eigen::Matrix3cd creep(cdouble s) const;
+  Eigen::Vector3cd load(cdouble s) const;
+  /// The lowest growth rate (most negative sigma, 1/s) at which the series still converge.
+  double min_sigma() const { return min_sigma_; }
+  double time_step() const { return dt_; }
+
+ private:
+  void check(cdouble z, double tail_head, double tail_last) const;
+  std::vector<Eigen::Matrix3d> h_;
+  std::vector<Eigen::Vector3d> gm_;
+  double dt_ = 0.0, min_sigma_ = 0.0;
+};
+
+/// One wheel mode in the contact frame.
+struct LoopMode {
+  double frequency = 0.0;      ///< undamped natural frequency (Hz)
+  double damping_ratio = 0.0;  ///< zeta (-)
+  double modal_mass = 0.0;     ///< m_k (kg)
+  Eigen::Vector4d shape = Eigen::Vector4d::Zero();  ///< psi_k: (n, x, y, rot n) at the contact point
+  std::string label;
+  std::size_t index = 0;  ///< position in the wheel's mode table
+};
+
+/// (S1) split for route 2: A(s) = rest(s) + sum_k psi_k psi_k^T / (m_k D_k(s)).
+struct LaplaceLoop {
+  std::vector<LoopMode> modes;
+  /// Everything but the wheel's flexible modes, R(s): rigid wheelset, rail and contact (contact frame).
+  std::function<Receptance4(cdouble s)> rest;
+  /// A(s) of (S1).
+  Receptance4 matrix(cdouble s) const;
+};
+
+/// All the wheel's modes in the contact frame at `position` (shapes moved by the lever arm and
+/// rotated as in wheel_receptance6 / to_contact_frame).
+std::vector<LoopMode> contact_frame_modes(const dynamics::WheelModel& wheel, const ContactPosition& position);
+
+/// The rigid wheelset's flexibility C_rig at the contact point in the contact frame:
+/// alpha_rigid(s) = C_rig / s^2 (the wheelset_centre_receptance moved and rotated, at s = 1).
+Eigen::Matrix4d rigid_flexibility(const dynamics::RigidWheelset& wheelset, const ContactPosition& position);
+
+/// The rail at complex s in the contact frame (rail_receptance6 with receptance_laplace).
+Receptance4 rail_receptance_laplace(const dynamics::RailModel& rail, cdouble s, const ContactPosition& position);
+
+struct StabilityOptions {
+  /// Route 2 searches the roots of the modes with band_min <= frequency <= band_max (Hz); all
+  /// modes stay in alpha_w.
+  double band_min = 0.0, band_max = 1e300;
+  double tolerance = 1e-11;     ///< Newton: |delta s| <= tolerance |s|
+  int max_iterations = 8;       ///< Newton iterations per continuation step
+  double min_step = 1.0 / 4096; ///< smallest homotopy step in lambda before giving up
+  double max_step = 1.0;        ///< largest homotopy step (tests: a fine path as the reference)
+};
+
+/// One root of (S1), continued from a wheel mode (route 2).
+struct ModeRoot {
+  std::size_t mode = 0;  ///< index into LaplaceLoop::modes
+  std::string label;
+  double natural_frequency = 0.0;  ///< of the uncoupled mode (Hz)
+  cdouble s0;                      ///< uncoupled root
+  cdouble s;                       ///< coupled root (1/s)
+  double frequency = 0.0;          ///< Im s / 2 pi (Hz)
+  double damping_ratio = 0.0;      ///< -Re s / |s|
+  bool unstable = false;           ///< Re s > 0
+  double residual = 0.0;           ///< of (S2) in the modal form at lambda = 1 (see above)
+  double singular_ratio = 0.0;     ///< sigma_min / sigma_max of the equilibrated A(s)
+  int iterations = 0;              ///< Newton iterations, all continuation steps
+  int steps = 0;                   ///< accepted continuation steps
+  bool converged = false;
+};
+
+/// Route 2 for every mode of the loop in the band. A mode whose continuation fails is returned with
+/// converged = false (and its last root).
+std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions& options = {});
+ModeRoot mode_root(const LaplaceLoop& loop, std::size_t k, const StabilityOptions& options = {});
+
+/// A real continuous-time state-space model x' = A x + B u, y = C x + D u.
+struct StateSpace {
+  Eigen::MatrixXd A, B, C, D;
+  int states() const { return static_cast<int>(A.rows()); }
+};
+
+/// Route 1: the eigenvalues of the coupled rational model (docs/squeal.md Sec. 4).
+///  * wheel: the rigid wheelset (u'' = C_rig F) and its modes (q_k'' + 2 zeta_k omega_k q_k' +
+///    omega_k^2 q_k = psi_k^T F / m_k, u = sum psi_k q_k), contact frame, exact;
+///  * rail: 4 inputs (the force on the rail, -F, contact frame n, x, y, rot n), 4 outputs (its
+///    displacement), C_r (sI - A_r)^{-1} B_r + D_r = alpha_r(s);
+///  * contact: inputs (xi_x, xi_y, phi, N), outputs (F_x, F_y, M_z),
+///    C_c (sI - A_c)^{-1} B_c + D_c = [-f(s) | g(s)] (the `rollnoise statespace` convention), with
+///    xi = e_t'/V, N = F_n, and the normal Hertz spring e_n = -F_n / k_H (C1).
+/// Unknowns (x_w, x_r, x_c, F): E X' = M X with the algebraic rows of the contact; the finite
+/// generalised eigenvalues (real QZ) are returned, infinite ones (|beta| <= 1e-12 |alpha|)
+/// dropped. The force unknowns are scaled by k_H and the modal velocities by omega_k so that the
+/// pencil is balanced.
+std::vector<cdouble> coupled_eigenvalues(const Eigen::Matrix4d& rigid_flexibility, const std::vector<LoopMode>& modes,
+                                         const StateSpace& rail, const StateSpace& contact, double normal_stiffness,
+                                         double speed);
+
+}  // namespace rollnoise::noise

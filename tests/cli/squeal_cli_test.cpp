@@ -1,0 +1,63 @@
+// rollnoise squeal (docs/squeal.md): the datasets users script against, and input faults (exit 2,
+// the message names the key, no file left behind, the case file unchanged).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli_support.hpp"
+#include "io/hdf5_reader.hpp"
+
+using namespace rollnoise::cli_test;
+
+namespace {
+
+std::string hertz_curve() { return source_file("cases/curve_300m_hertz.toml"); }
+const char* kCoarse = " --set grid.nx=12 --set grid.ny=10 --set grid.scale=1.3 --set 'track.support=\"continuous\"'";
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(SquealCli, WritesTheSquealDatasetsAndASummaryLine) {
+  const auto out = temp_dir() / "squeal_ok.h5";
+  const auto r = run("squeal " + hertz_curve() + kCoarse + " --set noise.band_max=2500 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("squeal: 0 unstable of"), std::string::npos) << r.output;
+  const rollnoise::io::Hdf5Reader h(out.string());
+  ASSERT_TRUE(h.ok());
+  std::vector<std::size_t> dims;
+  const auto f = h.numbers("/squeal/frequency", &dims);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_GT(f->size(), 10u);  // the 920 mm wheel's modes up to 2.5 kHz
+  for (const char* d : {"/squeal/damping_ratio", "/squeal/unstable", "/squeal/residual", "/squeal/natural_frequency"}) {
+    const auto v = h.numbers(d);
+    ASSERT_TRUE(v.has_value()) << d;
+    EXPECT_EQ(v->size(), f->size()) << d;
+  }
+  EXPECT_TRUE(h.numbers("/squeal/contact/normal_stiffness").has_value());
+  EXPECT_TRUE(h.attribute("/squeal", "route").has_value());
+  const auto q = run("squeal " + hertz_curve() + kCoarse + " --set noise.band_max=2500 -q -o " + out.string());
+  ASSERT_EQ(q.status, 0) << q.output;
+  EXPECT_EQ(q.output.find("squeal:"), std::string::npos) << q.output;
+}
+
+TEST(SquealCli, NoModeInTheBandOrAboveNyquistIsAnInputErrorWithoutAFile) {
+  const std::string before = slurp(hertz_curve());
+  for (const std::string& set : {std::string(" --set noise.band_min=100 --set noise.band_max=200"),
+                                 std::string(" --set rolling.speed=3")}) {  // modes above Nyquist
+    const auto out = temp_dir() / "squeal_fault.h5";
+    std::filesystem::remove(out);
+    const auto r = run("squeal " + hertz_curve() + kCoarse + set + " -o " + out.string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("noise.band_max"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+  EXPECT_EQ(slurp(hertz_curve()), before);
+}
