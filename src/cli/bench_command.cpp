@@ -175,9 +175,10 @@ void write_csv(const std::string& csv, const std::string& case_file, const std::
 
 // ---- The creepage-sampling study (rolling.creepage_sampling, docs/accuracy.md): per grid the time
 // of a sweep of settings.sweep_count frequencies and the errors of f11, f22, f23 at the accuracy
-// frequencies against the grid-converged f, for both samplings (nss::sampling_accuracy). ----
+// frequencies against the grid-converged f, for every sampling (nss::sampling_accuracy). ----
 
-const char* kSamplingName[2] = {"contact", "midstep"};
+constexpr int kSamplings = static_cast<int>(nss::kStudySamplings.size());
+const char* sampling_label(int sm) { return contact::sampling_name(nss::kStudySamplings[sm]); }
 
 std::string frequency_label(double f) {
   char text[32];
@@ -189,13 +190,13 @@ std::string frequency_label(double f) {
 std::vector<Quantity> sampling_columns(const nss::SamplingAccuracy& a, const nss::GridStudySettings& s) {
   const char* entry[3] = {"f11", "f22", "f23"};
   std::vector<Quantity> q;
-  for (int sm = 0; sm < 2; ++sm)
+  for (int sm = 0; sm < kSamplings; ++sm)
     for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i)
       for (int e = 0; e < 3; ++e) {
         const std::string f = frequency_label(s.accuracy_frequencies[i]);
-        q.push_back({std::string(entry[e]) + " at " + f + ", " + kSamplingName[sm] +
+        q.push_back({std::string(entry[e]) + " at " + f + ", " + sampling_label(sm) +
                          " sampling, against the grid-converged f",
-                     std::string("err_") + entry[e] + "_" + f + "_" + kSamplingName[sm] + "_rel",
+                     std::string("err_") + entry[e] + "_" + f + "_" + sampling_label(sm) + "_rel",
                      std::string(entry[e]) + " " + f, &a.error[sm][i][e]});
       }
   return q;
@@ -203,20 +204,24 @@ std::vector<Quantity> sampling_columns(const nss::SamplingAccuracy& a, const nss
 
 void print_sampling_accuracy(const std::vector<nss::GridMeasurement>& res, const nss::SamplingAccuracy& a,
                              const std::vector<Quantity>& columns, const nss::GridStudySettings& s) {
-  std::printf("creepage sampling: errors of f against the grid-converged f (Richardson of the midstep values on "
-              "the three finest grids):\n");
+  std::printf("creepage sampling: errors of f against the grid-converged f (Richardson on the three finest grids of "
+              "the second-order sampling with the smaller estimated error):\n");
   for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
     const auto& c = a.converged[i];
     std::printf("  %s: f11 = %.5g %+.5gi N (+- %.1e), f22 = %.5g %+.5gi N (+- %.1e), f23 = %.5g %+.5gi N m; "
-                "orders %.2f %.2f %.2f; contact-sampling extrapolation differs by %.1e %.1e %.1e\n",
+                "from %s, orders %.2f %.2f %.2f\n",
                 frequency_label(s.accuracy_frequencies[i]).c_str(), c(0, 0).real(), c(0, 0).imag(),
                 a.converged_error[i](0, 0) / std::abs(c(0, 0)), c(1, 1).real(), c(1, 1).imag(),
-                a.converged_error[i](1, 1) / std::abs(c(1, 1)), c(1, 2).real(), c(1, 2).imag(), a.order[i](0),
-                a.order[i](1), a.order[i](2), a.spread[i](0), a.spread[i](1), a.spread[i](2));
+                a.converged_error[i](1, 1) / std::abs(c(1, 1)), c(1, 2).real(), c(1, 2).imag(),
+                sampling_label(a.reference[i]), a.order[i](0), a.order[i](1), a.order[i](2));
+    for (int sm = 0; sm < kSamplings; ++sm)
+      if (sm != a.reference[i])
+        std::printf("      %s-sampling extrapolation differs by %.1e %.1e %.1e\n", sampling_label(sm),
+                    a.spread[sm][i](0), a.spread[sm][i](1), a.spread[sm][i](2));
   }
-  const size_t per = columns.size() / 2;
-  for (int sm = 0; sm < 2; ++sm) {
-    std::printf("%8s %5s %9s", kSamplingName[sm], "ny", "sweep [s]");
+  const size_t per = columns.size() / kSamplings;
+  for (int sm = 0; sm < kSamplings; ++sm) {
+    std::printf("%8s %5s %9s", sampling_label(sm), "ny", "sweep [s]");
     for (size_t q = 0; q < per; ++q) std::printf(" %10s", columns[sm * per + q].header.c_str());
     std::printf("\n");
     for (size_t g = 0; g < res.size(); ++g) {

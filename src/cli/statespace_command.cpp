@@ -56,7 +56,10 @@ int run_statespace(const CommonOptions& o, const std::string& csv_prefix) {
       "error %.3g%s; "
       "%.0f ms\n",
       r.dt, r.discrete.model.order(), r.markov_count, r.discrete.markov_error, r.discrete_error,
-      r.input_delay_steps > 0 ? " (creepage input at t_k - dt/2)" : "", 1e3 * r.seconds_discrete);
+      r.input_sampling == contact::CreepageSampling::midstep   ? " (creepage input at t_k - dt/2)"
+      : r.input_sampling == contact::CreepageSampling::average ? " (creepage input: its mean over [t_k - dt, t_k])"
+                                                               : "",
+      1e3 * r.seconds_discrete);
   if (!r.fit.reached_target)
     std::fprintf(stderr,
                  "warning: the fit error %.3g is above statespace.tolerance = %.3g (raise "

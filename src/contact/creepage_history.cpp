@@ -9,6 +9,29 @@
 
 namespace rollnoise::contact {
 
+// sin(x)/x, 1 at x = 0 (|x| < 1e-4: the series 1 - x^2/6, exact to 1e-17).
+static double sinc(double x) { return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
+
+std::complex<double> step_sampling_factor(CreepageSampling s, double frequency, double dt) {
+  // average: (1/dt) int_{t_k - dt}^{t_k} e^{i w t} dt = e^{i w t_k} (1 - e^{-i w dt})/(i w dt)
+  //        = e^{i w t_k} e^{-i w dt/2} sin(w dt/2)/(w dt/2)
+  if (s == CreepageSampling::contact) return 1.0;
+  const double x = M_PI * frequency * dt;  // w dt/2
+  return std::polar(s == CreepageSampling::average ? sinc(x) : 1.0, -x);
+}
+
+const char* sampling_name(CreepageSampling s) {
+  switch (s) {
+    case CreepageSampling::contact:
+      return "contact";
+    case CreepageSampling::midstep:
+      return "midstep";
+    case CreepageSampling::average:
+      return "average";
+  }
+  return "contact";
+}
+
 CreepageHistory CreepageHistory::constant(const Creepage& mean) {
   CreepageHistory h;
   h.mean_ = mean;
@@ -154,6 +177,67 @@ Creepage CreepageHistory::at(double t) const {
   }
   const auto v = variation(t);
   return {mean_.xi_x + v[0], mean_.xi_y + v[1], mean_.phi + v[2]};
+}
+
+std::array<double, 3> CreepageHistory::step_average_variation(double t0, double t1) const {
+  std::array<double, 3> v{};
+  switch (kind_) {
+    case Kind::constant:
+      break;
+    case Kind::harmonic:
+    case Kind::multiharmonic: {
+      // (1/(t1-t0)) int cos(w t + a) dt = [sin(w t1 + a) - sin(w t0 + a)] / (w (t1 - t0))
+      //   = cos(w tc + a) sin(w h)/(w h),  tc = (t0 + t1)/2, h = (t1 - t0)/2
+      const double tc = 0.5 * (t0 + t1), h = 0.5 * (t1 - t0);
+      for (size_t n = 0; n < freq_.size(); ++n) {
+        const double w = 2.0 * M_PI * freq_[n], s = sinc(w * h);
+        for (int j = 0; j < 3; ++j)
+          if (amp_[j] != 0.0) v[j] += amp_[j] * s * std::cos(w * tc + phase_[j][n]);
+      }
+      break;
+    }
+    case Kind::samples: {
+      const Creepage c = step_average(t0, t1);
+      v = {c.xi_x - mean_.xi_x, c.xi_y - mean_.xi_y, c.phi - mean_.phi};
+      break;
+    }
+  }
+  return v;
+}
+
+Creepage CreepageHistory::step_average(double t0, double t1) const {
+  if (kind_ != Kind::samples) {
+    const auto v = step_average_variation(t0, t1);
+    return {mean_.xi_x + v[0], mean_.xi_y + v[1], mean_.phi + v[2]};
+  }
+  // The interpolant is linear between consecutive breakpoints (t0, the sample times inside
+  // (t0, t1), t1; constant outside [t_front, t_back], whose ends are sample times): the trapezoid
+  // rule on each piece integrates it exactly.
+  std::array<double, 3> sum{};
+  double a = t0;
+  Creepage ca = at(t0);
+  auto piece = [&](double b, const Creepage& cb) {
+    const double w = 0.5 * (b - a);
+    sum[0] += w * (ca.xi_x + cb.xi_x), sum[1] += w * (ca.xi_y + cb.xi_y), sum[2] += w * (ca.phi + cb.phi);
+    a = b, ca = cb;
+  };
+  for (size_t i = std::upper_bound(t_.begin(), t_.end(), t0) - t_.begin(); i < t_.size() && t_[i] < t1; ++i)
+    piece(t_[i], values_[i]);
+  piece(t1, at(t1));
+  const double span = t1 - t0;
+  return {sum[0] / span, sum[1] / span, sum[2] / span};
+}
+
+Creepage CreepageHistory::step_creepage(CreepageSampling sampling, long k, double dt) const {
+  if (sampling == CreepageSampling::average)
+    return step_average(static_cast<double>(k - 1) * dt, static_cast<double>(k) * dt);
+  return at(sampling_time(sampling, k, dt));
+}
+
+std::array<double, 3> CreepageHistory::step_variation(CreepageSampling sampling, long k, double dt) const {
+  if (sampling == CreepageSampling::average)
+    return step_average_variation(static_cast<double>(k - 1) * dt, static_cast<double>(k) * dt);
+  return variation(sampling_time(sampling, k, dt));
 }
 
 }  // namespace rollnoise::contact

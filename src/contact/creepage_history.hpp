@@ -20,6 +20,7 @@
 #pragma once
 
 #include <array>
+#include <complex>
 #include <cstdint>
 #include <vector>
 
@@ -34,16 +35,34 @@ namespace rollnoise::contact {
 ///            response leads the continuous one by half a step, a phase error w dt/2, first order
 ///            in dx (nss::half_step_phase_correction);
 ///   midstep  takes it at t_k - dt/2, where the difference is centred: the lead vanishes and f
-///            converges at second order at rolling-noise frequencies (docs/accuracy.md).
+///            converges at second order at rolling-noise frequencies (docs/accuracy.md);
+///   average  takes its mean over the step, xi_k = (1/dt) int_{t_{k-1}}^{t_k} xi(t) dt
+///            (CreepageHistory::step_average). The displacement difference (u_k - u_{k-1})/dt is
+///            exactly the step mean of the rate du/dt; the rigid slip V xi is the other rate in
+///            the slip (paper Eq. 2), and averaging it over the same step treats both terms alike.
+///            For xi = xi^ e^{i w t}: xi_k = xi^ e^{i w (t_k - dt/2)} sinc(w dt/2), so
+///            f_average = f_midstep sinc(w dt/2) (nss::LinearContactModel::apply_sampling): the
+///            factor 1/sinc(w dt/2) that the one-step difference leaves in the midstep f cancels
+///            to leading order. Still second order, with a smaller constant (docs/accuracy.md).
 /// Only the creepage moves: the normal load N_k (and the pressure bound mu pn_k) stays at t_k, with
 /// the traction p_k it bounds (measured: g converges at t_k and acquires a first-order error at
-/// t_k - dt/2, docs/accuracy.md). The library default is midstep (closer to the continuum); every
-/// comparison with CONTACT names contact.
-enum class CreepageSampling { contact, midstep };
+/// t_k - dt/2, docs/accuracy.md), in every sampling, so g does not depend on the sampling. The
+/// library default (and the case key's) is average, the closest to the continuum at a given cost
+/// (rollnoise bench, docs/accuracy.md Sec. 2.3); every comparison with CONTACT names contact.
+enum class CreepageSampling { contact, midstep, average };
 
-/// The instant the creepage of step k is taken: k dt (contact) or (k - 1/2) dt (midstep) (s).
+/// For xi(t) = xi^ e^{i w t} (w = 2 pi frequency), the creepage of step k in `s` is xi^ e^{i w t_k}
+/// times this factor: 1 (contact), e^{-i w dt/2} (midstep), e^{-i w dt/2} sinc(w dt/2) (average;
+/// sinc x = sin x / x, 1 at x = 0). The linear model's f carries it (nss::LinearContactModel).
+std::complex<double> step_sampling_factor(CreepageSampling s, double frequency, double dt);
+
+/// The case-key spelling of a sampling ("contact", "midstep", "average").
+const char* sampling_name(CreepageSampling s);
+
+/// The instant the creepage of step k is taken: k dt (contact) or (k - 1/2) dt (midstep; for
+/// average the centre of the step it averages over) (s).
 inline double sampling_time(CreepageSampling s, long k, double dt) {
-  return s == CreepageSampling::midstep ? (static_cast<double>(k) - 0.5) * dt : static_cast<double>(k) * dt;
+  return s == CreepageSampling::contact ? static_cast<double>(k) * dt : (static_cast<double>(k) - 0.5) * dt;
 }
 
 class CreepageHistory {
@@ -70,6 +89,17 @@ class CreepageHistory {
   Creepage at(double t) const;
   /// The variation at time t (creepage minus mean).
   std::array<double, 3> variation(double t) const;
+  /// The mean creepage over [t0, t1] (t1 > t0), exact: harmonic and multiharmonic analytically (the
+  /// mean of cos(w t + a) over the interval is cos(w (t0 + t1)/2 + a) sinc(w (t1 - t0)/2)); samples
+  /// by integrating the linear interpolant (held constant outside) piece by piece.
+  Creepage step_average(double t0, double t1) const;
+  /// step_average minus the mean.
+  std::array<double, 3> step_average_variation(double t0, double t1) const;
+  /// The creepage of rolling step k (t_k = k dt) in `sampling`: at(k dt), at((k - 1/2) dt), or
+  /// step_average((k - 1) dt, k dt).
+  Creepage step_creepage(CreepageSampling sampling, long k, double dt) const;
+  /// step_creepage minus the mean (the linear model's input).
+  std::array<double, 3> step_variation(CreepageSampling sampling, long k, double dt) const;
 
   // The harmonic content (harmonic: one frequency; multiharmonic: count), for output and for the
   // harmonic synthesis of the linear model (paper Eqs. 33-34).

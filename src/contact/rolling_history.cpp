@@ -7,7 +7,7 @@ namespace rollnoise::contact {
 void roll(TransientRolling& rolling, const CreepageHistory& h, CreepageSampling sampling, double dt, long steps,
           const std::vector<double>& normal_force, const StepCallback& on_step) {
   for (long k = 1; k <= steps; ++k) {
-    const Creepage xi = h.at(sampling_time(sampling, k, dt));
+    const Creepage xi = h.step_creepage(sampling, k, dt);
     on_step(k, xi, normal_force.empty() ? rolling.step(xi) : rolling.step(xi, normal_force[k]));
   }
 }

@@ -13,8 +13,8 @@
 namespace rollnoise::contact {
 
 /// Steps k = 1..steps of `rolling` from the state it holds, step k with the creepage
-/// h.at(sampling_time(sampling, k, dt)) (t_k = k dt for contact, CONTACT's convention; t_k - dt/2
-/// for midstep, creepage_history.hpp) and, unless `normal_force` is empty, the normal load
+/// h.step_creepage(sampling, k, dt) (at t_k = k dt for contact, CONTACT's convention; at t_k - dt/2
+/// for midstep; the mean over [t_{k-1}, t_k] for average; creepage_history.hpp) and, unless `normal_force` is empty, the normal load
 /// normal_force[k] (N, at t_k in both samplings; after TransientRolling::set_normal_problem).
 /// `on_step(k, xi, s)` receives each step's creepage and solution.
 using StepCallback = std::function<void(long, const Creepage&, const TangentialSolution&)>;

@@ -12,7 +12,8 @@
 // the paper's grid (56 ms per step, against 2-3 ms now), so it was removed. step(c) takes the
 // creepage of step k as given; when it is taken is the caller's choice (contact::roll,
 // CreepageSampling): at t_k = k dt, the end of the step (CONTACT's convention, docs/conventions.md
-// Sec. 3), or at t_k - dt/2, where the displacement difference is centred (midstep, the default).
+// Sec. 3), at t_k - dt/2, where the displacement difference is centred (midstep), or its mean over
+// [t_{k-1}, t_k] (average, the default).
 //
 // Varying normal load N(t) (step(c, N_k), after set_normal_problem). At each step whose load
 // differs from the last one, the normal problem of the patch is solved for N_k (normal_solver.hpp,

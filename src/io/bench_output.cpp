@@ -38,13 +38,12 @@ void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::Grid
 void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
                           const nss::SamplingAccuracy& a, const std::vector<double>& frequencies) {
   const std::size_t n = grids.size(), nf = frequencies.size();
-  const char* name[2] = {"contact", "midstep"};
-  for (int sm = 0; sm < 2; ++sm) {
+  for (size_t sm = 0; sm < nss::kStudySamplings.size(); ++sm) {
+    const std::string name = contact::sampling_name(nss::kStudySamplings[sm]);
     std::vector<double> t;
     for (const auto& g : grids) t.push_back(g.sampling[sm].seconds);
-    w.write(std::string("/bench/time_sweep_") + name[sm], t, {n},
-            "s (linear model set-up + sweep of 1000 frequencies, rolling.creepage_sampling = " + std::string(name[sm]) +
-                ")");
+    w.write("/bench/time_sweep_" + name, t, {n},
+            "s (linear model set-up + sweep of 1000 frequencies, rolling.creepage_sampling = " + name + ")");
   }
   std::vector<std::complex<double>> f;
   std::vector<double> err, order;
@@ -55,8 +54,13 @@ void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>
   }
   w.write("/bench/sampling/frequency", frequencies, {nf}, "Hz");
   w.write("/bench/sampling/converged_f", f, {nf, 3, 3},
-          "f_jk as /creep/f: f11..f22 in N, f13, f23, f31, f32 in N m, f33 in N m^2 (Richardson of the midstep "
-          "values on the three finest grids)");
+          "f_jk as /creep/f: f11..f22 in N, f13, f23, f31, f32 in N m, f33 in N m^2 (Richardson on the three "
+          "finest grids of the sampling named by reference_sampling)");
+  std::vector<std::string> ref;
+  for (int r : a.reference) ref.push_back(contact::sampling_name(nss::kStudySamplings[r]));
+  std::string refs;
+  for (size_t i = 0; i < ref.size(); ++i) refs += (i ? "," : "") + ref[i];
+  w.attribute("/bench/sampling/converged_f", "reference_sampling", refs);
   w.write("/bench/sampling/converged_f_error", err, {nf, 3, 3}, "units of converged_f (Roache's grid convergence index)");
   w.write("/bench/sampling/order", order, {nf, 3}, "- (order of f11, f22, f23 used by the extrapolation)");
 }

@@ -23,8 +23,9 @@ void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::Grid
                  const std::vector<BenchColumn>& errors, double c11_table);
 
 /// The creepage-sampling study (nss::sampling_accuracy): /bench/time_sweep_contact,
-/// /bench/time_sweep_midstep (s per grid) and /bench/sampling/{frequency, converged_f,
-/// converged_f_error, order}; its errors are BenchColumns of write_bench.
+/// /bench/time_sweep_midstep, /bench/time_sweep_average (s per grid) and /bench/sampling/{frequency,
+/// converged_f (attribute reference_sampling), converged_f_error, order}; its errors are
+/// BenchColumns of write_bench.
 void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
                           const nss::SamplingAccuracy& a, const std::vector<double>& frequencies);
 

@@ -31,12 +31,14 @@ const std::vector<KeySpec>& case_schema() {
       {"friction.decay", T::Real, "", "s/m", "falling: B >= 0, the decay of mu with the slip speed", {}, 0,
        "required with friction.law = \"falling\""},
       {"rolling.speed", T::PositiveReal, "13.8888888888889", "m/s", "rolling speed V"},
-      {"rolling.creepage_sampling", T::String, "\"midstep\"", "-",
-       "when the creepage of a rolling step dt = dx/V is taken (transient solver, linear model): "
-       "\"midstep\" at t_k - dt/2, where the displacement difference of paper Eq. 2 is centred "
-       "(f converges at second order); \"contact\" at t_k, CONTACT's convention (a half-step "
-       "phase lead w dt/2, first order); the normal load is taken at t_k in both",
-       {"midstep", "contact"}},
+      {"rolling.creepage_sampling", T::String, "\"average\"", "-",
+       "how the creepage of a rolling step dt = dx/V is taken (transient solver, linear model): "
+       "\"average\" its mean over [t_k - dt, t_k], as the displacement difference of paper Eq. 2 "
+       "averages the displacement rate (the closest to the continuum: f11, f22 at 5 kHz within 1 % "
+       "on 40 x 29); \"midstep\" at t_k - dt/2, where the difference is centred (second order); "
+       "\"contact\" at t_k, CONTACT's convention (a half-step phase lead w dt/2, first order); the "
+       "normal load is taken at t_k in all three",
+       {"midstep", "average", "contact"}},
       // contact geometry and load
       {"contact.geometry", T::String, "\"hertz\"", "-",
        "\"hertz\": quadratic undeformed distance from the semi-axes a, b; \"profiles\": "

@@ -94,8 +94,10 @@ ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.falling = read_falling_friction(r); });
   problems.check([&] { c.speed = r.real("rolling.speed"); });
   problems.check([&] {
-    c.sampling = r.string("rolling.creepage_sampling") == "contact" ? contact::CreepageSampling::contact
-                                                                    : contact::CreepageSampling::midstep;
+    const std::string s = r.string("rolling.creepage_sampling");
+    c.sampling = s == "contact"   ? contact::CreepageSampling::contact
+                 : s == "average" ? contact::CreepageSampling::average
+                                  : contact::CreepageSampling::midstep;
   });
   problems.check([&] { c.normal_force = r.real("contact.normal_force"); });
   problems.check([&] {

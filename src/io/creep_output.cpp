@@ -31,8 +31,7 @@ void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& 
   w.write("/creep/g", flat_g, {freq.size(), 3}, kLoadUnits);
   w.write("/creep/nyquist_frequency", ms.model->nyquist_frequency(), "Hz");
   w.attribute("/creep", "method", creep_method(c, direct));
-  w.attribute("/creep", "creepage_sampling",
-              ms.contact.sampling == contact::CreepageSampling::midstep ? "midstep" : "contact");
+  w.attribute("/creep", "creepage_sampling", contact::sampling_name(ms.contact.sampling));
   if (c.extrapolation) write_extrapolation(w, freq, *c.extrapolation);
 }
 

@@ -17,7 +17,7 @@ const char* kConvention =
     "(variations about the mean state); C (sI - A)^-1 B + D at s = 2 pi i f equals [-f(f) | g(f)]";
 const char* kDiscreteConvention =
     "x_{k+1} = Ad x_k + Bd u_k, y_k = Cd x_k + Dd u_k at t_k = k dt; u_k = (xi~x, xi~y, phi~ at "
-    "t_k - input_delay dt, "
+    "t_k - input_delay dt (input_sampling = average: the mean over [t_k - dt, t_k]), "
     "N~ at t_k), y_k = (F~x, F~y, M~z) at t_k; D + C (zI - A)^-1 B at z = exp(i 2 pi f dt) equals "
     "[-f(f) | g(f)]";
 const char* kDUnits =
@@ -100,7 +100,9 @@ void write_statespace(Hdf5Writer& w, const CaseReader& r, const pipeline::StateS
   w.attribute("/statespace/discrete", "dt", std::to_string(s.dt) + " s");
   w.write("/statespace/discrete/dt", s.dt, "s");
   w.write("/statespace/discrete/input_delay", s.input_delay_steps,
-          "steps (the creepage input is xi~(t_k - input_delay dt))");
+          "steps (the creepage input is xi~(t_k - input_delay dt), or with input_sampling = average its mean over "
+          "[t_k - dt, t_k], centred there)");
+  w.attribute("/statespace/discrete/input_delay", "input_sampling", contact::sampling_name(s.input_sampling));
   w.write("/statespace/discrete/hankel_singular_values",
           std::vector<double>(d.singular_values.data(),
                               d.singular_values.data() + d.singular_values.size()),

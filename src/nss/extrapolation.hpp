@@ -4,7 +4,7 @@
 //
 // Model. On a grid of element length h a result behaves as v(h) = v* + C h^p + o(h^p) (the grid is
 // refined in x and y together, and the time step dt = dx/V with it). p is 2 for the creep
-// coefficients with midstep creepage sampling and 1 with CONTACT's (the half-step phase lead,
+// coefficients with midstep or average creepage sampling and 1 with CONTACT's (the half-step phase lead,
 // contact/creepage_history.hpp).
 //   Three grids h1 > h2 > h3 (any ratios): the OBSERVED order p solves
 //       |v1 - v2| / |v2 - v3| = (h1^p - h2^p) / (h2^p - h3^p)                                 (R1)

@@ -85,7 +85,7 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   // start transient in the fit window
   std::vector<Eigen::Vector3d> xi;
   for (size_t k = 0; k < time.size(); ++k) {
-    const auto v = e.history.variation(contact::sampling_time(c.sampling, static_cast<long>(k), dt));
+    const auto v = e.history.step_variation(c.sampling, static_cast<long>(k), dt);
     xi.emplace_back(v[0], v[1], v[2]);
   }
   const auto Fl = m.time_response(xi);
@@ -96,8 +96,8 @@ void measure_transient(const GridStudyCase& c, const GridStudySettings& s, const
   r.window_error = rel_err(Xl, r.linear);
 }
 
-// The half-step lead removed: the correction for CONTACT's sampling, nothing for midstep (whose
-// creepage is already taken at t_k - dt/2).
+// The half-step lead removed: the correction for CONTACT's sampling, nothing for midstep and
+// average (whose creepage is already centred at t_k - dt/2).
 std::complex<double> lead_correction(double freq, double dx, double speed, contact::CreepageSampling sampling) {
   return sampling == contact::CreepageSampling::contact ? half_step_phase_correction(freq, dx, speed) : 1.0;
 }
@@ -224,12 +224,11 @@ GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& res, const
 
 void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s, const contact::ContactPatch& patch,
                              const contact::TangentialSolution& steady, GridMeasurement& r) {
-  const contact::CreepageSampling samplings[2] = {contact::CreepageSampling::contact,
-                                                  contact::CreepageSampling::midstep};
-  for (int i = 0; i < 2; ++i) {
+  for (size_t i = 0; i < kStudySamplings.size(); ++i) {
     SamplingSweep& sw = r.sampling[i];
     const auto t = Clock::now();
-    const LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, samplings[i]});
+    const LinearContactModel m(patch, steady,
+                               {c.steady.mu, c.steady.speed, c.steady.spin_offset, kStudySamplings[i]});
     // a rolling-noise axis: log-spaced over [100 Hz, 5 kHz], capped at the grid's Nyquist limit
     const double f_max = std::min(5000.0, m.nyquist_frequency());
     std::vector<double> sweep(s.sweep_count);
@@ -245,41 +244,60 @@ void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s,
 
 SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, const GridStudySettings& s) {
   const int entry[3][2] = {{0, 0}, {1, 1}, {1, 2}};  // f11, f22, f23
+  constexpr size_t ns = kStudySamplings.size();
   SamplingAccuracy a;
   for (auto& e : a.error) e.resize(s.accuracy_frequencies.size());
   for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
     // the three finest grids that resolve this frequency
     std::vector<const GridMeasurement*> fine;
     for (auto it = grids.rbegin(); it != grids.rend() && fine.size() < 3; ++it)
-      if (std::isfinite(std::abs((*it).sampling[1].f[i](0, 0)))) fine.insert(fine.begin(), &*it);
+      if (std::isfinite(std::abs((*it).sampling[0].f[i](0, 0)))) fine.insert(fine.begin(), &*it);
     std::vector<double> h;
     for (const auto* g : fine) h.push_back(g->dx);
-    CreepMatrix conv = CreepMatrix::Constant(kNaN);
-    Eigen::Matrix3d conv_err = Eigen::Matrix3d::Constant(kNaN);
-    Eigen::Vector3d order = Eigen::Vector3d::Constant(kNaN), spread = order;
-    for (int j = 0; j < 3 && fine.size() >= 2; ++j)
-      for (int k = 0; k < 3; ++k) {
-        std::vector<std::complex<double>> vm, vc;
-        for (const auto* g : fine) vm.push_back(g->sampling[1].f[i](j, k)), vc.push_back(g->sampling[0].f[i](j, k));
-        const RichardsonResult rm = richardson(h, vm, {2.0});
-        conv(j, k) = rm.value;
-        conv_err(j, k) = rm.error;
-        for (int q = 0; q < 3; ++q)
-          if (entry[q][0] == j && entry[q][1] == k) {
-            order(q) = rm.order;
-            spread(q) = std::abs(richardson(h, vc, {1.0}).value - rm.value) / std::abs(rm.value);
-          }
+    // every sampling's extrapolation (contact: fall-back order 1; midstep, average: 2)
+    std::array<CreepMatrix, ns> conv;
+    std::array<Eigen::Matrix3d, ns> conv_err;
+    std::array<Eigen::Vector3d, ns> order;
+    for (size_t sm = 0; sm < ns; ++sm) {
+      conv[sm] = CreepMatrix::Constant(kNaN), conv_err[sm] = Eigen::Matrix3d::Constant(kNaN);
+      order[sm] = Eigen::Vector3d::Constant(kNaN);
+      const double assumed = kStudySamplings[sm] == contact::CreepageSampling::contact ? 1.0 : 2.0;
+      for (int j = 0; j < 3 && fine.size() >= 2; ++j)
+        for (int k = 0; k < 3; ++k) {
+          std::vector<std::complex<double>> v;
+          for (const auto* g : fine) v.push_back(g->sampling[sm].f[i](j, k));
+          const RichardsonResult r = richardson(h, v, {assumed});
+          conv[sm](j, k) = r.value, conv_err[sm](j, k) = r.error;
+          for (int q = 0; q < 3; ++q)
+            if (entry[q][0] == j && entry[q][1] == k) order[sm](q) = r.order;
+        }
+    }
+    // the reference: the second-order sampling with the smaller estimated error
+    auto estimated = [&](size_t sm) {
+      double e = 0.0;
+      for (const auto& q : entry) e = std::max(e, conv_err[sm](q[0], q[1]) / std::abs(conv[sm](q[0], q[1])));
+      return e;
+    };
+    size_t ref = 1;
+    for (size_t sm = 1; sm < ns; ++sm)
+      if (estimated(sm) < estimated(ref)) ref = sm;
+    a.converged.push_back(conv[ref]);
+    a.converged_error.push_back(conv_err[ref]);
+    a.order.push_back(order[ref]);
+    a.reference.push_back(static_cast<int>(ref));
+    for (size_t sm = 0; sm < ns; ++sm) {
+      Eigen::Vector3d spread;
+      for (int q = 0; q < 3; ++q) {
+        const std::complex<double> r = conv[ref](entry[q][0], entry[q][1]);
+        spread(q) = std::abs(conv[sm](entry[q][0], entry[q][1]) - r) / std::abs(r);
       }
-    a.converged.push_back(conv);
-    a.converged_error.push_back(conv_err);
-    a.order.push_back(order);
-    a.spread.push_back(spread);
-    for (int sm = 0; sm < 2; ++sm)
+      a.spread[sm].push_back(spread);
       for (int q = 0; q < 3; ++q)
         for (const auto& g : grids) {
-          const std::complex<double> ref = conv(entry[q][0], entry[q][1]);
-          a.error[sm][i][q].push_back(std::abs(g.sampling[sm].f[i](entry[q][0], entry[q][1]) - ref) / std::abs(ref));
+          const std::complex<double> r = conv[ref](entry[q][0], entry[q][1]);
+          a.error[sm][i][q].push_back(std::abs(g.sampling[sm].f[i](entry[q][0], entry[q][1]) - r) / std::abs(r));
         }
+    }
   }
   return a;
 }

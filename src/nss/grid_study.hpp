@@ -61,8 +61,8 @@ struct GridStudyCase {
   contact::Backend backend = contact::Backend::Auto;
   contact::TangentialSolverSettings tangential;
   /// of the transient runs and the linear model of the measurements above (rolling.creepage_sampling);
-  /// the sampling study (measure_sampling_sweeps) uses both
-  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
+  /// the sampling study (measure_sampling_sweeps) uses all three
+  contact::CreepageSampling sampling = contact::CreepageSampling::average;
 };
 
 struct GridStudySettings {
@@ -88,6 +88,10 @@ struct GridStudyExcitation {
 };
 GridStudyExcitation grid_study_excitation(const GridStudyCase& c, const GridStudySettings& s);
 
+/// The samplings of the sampling study, in the order of GridMeasurement::sampling.
+inline constexpr std::array<contact::CreepageSampling, 3> kStudySamplings = {
+    contact::CreepageSampling::contact, contact::CreepageSampling::midstep, contact::CreepageSampling::average};
+
 /// One creepage sampling's sweep on one grid (the sampling study, measure_sampling_sweeps below).
 struct SamplingSweep {
   double seconds = 0.0;        ///< linear model set-up + sweep of sweep_count frequencies (s)
@@ -110,8 +114,9 @@ struct GridMeasurement {
   Eigen::Vector2cd linear = Eigen::Vector2cd::Constant(std::numeric_limits<double>::quiet_NaN());
   /// the linear recursion from rest fitted over the window, relative to -f(w) xi^
   double window_error = std::numeric_limits<double>::quiet_NaN();
-  /// the sampling study: [0] contact, [1] midstep (measure_sampling_sweeps, below)
-  std::array<SamplingSweep, 2> sampling;
+  /// the sampling study, indexed as kStudySamplings: [0] contact, [1] midstep, [2] average
+  /// (measure_sampling_sweeps, below)
+  std::array<SamplingSweep, 3> sampling;
 };
 
 /// InputError naming --nx unless `grids` holds at least two grids, strictly increasing (the last is
@@ -142,27 +147,33 @@ inline std::complex<double> half_step_phase_correction(double frequency, double 
 // ---- Creepage sampling against the continuum (rolling.creepage_sampling; docs/accuracy.md) ----
 //
 // Beside the measurements above (made with the case's sampling), every grid builds the linear
-// model with each sampling, CONTACT's and midstep (contact/creepage_history.hpp), and times a sweep
-// of sweep_count frequencies (model set-up, Cholesky factor and Krylov model included: what `creep`
+// model with each sampling of kStudySamplings (contact/creepage_history.hpp), and times a sweep of
+// sweep_count frequencies (model set-up, Cholesky factor and Krylov model included: what `creep`
 // costs on that grid), and keeps f at the accuracy frequencies. sampling_accuracy() compares them
-// with the grid-converged f: Richardson extrapolation (nss/extrapolation.hpp) of the midstep values
-// on the three finest grids that resolve the frequency, with their observed order (midstep converges at second order; the
-// extrapolation of the contact values, first order, is reported beside it as a check).
+// with the grid-converged f: Richardson extrapolation (nss/extrapolation.hpp) of one sampling's
+// values on the three finest grids that resolve the frequency, with their observed order. Every
+// sampling is extrapolated (contact with the fall-back order 1, midstep and average 2); the
+// converged f is that of the second-order sampling whose extrapolation has the smaller estimated
+// error (Roache's index, largest over f11, f22, f23, relative), the others' distance from it is
+// reported as a check.
 
-/// The sweeps of `r`'s grid for both samplings into r.sampling ([0] contact, [1] midstep).
+/// The sweeps of `r`'s grid for every sampling into r.sampling (kStudySamplings order).
 void measure_sampling_sweeps(const GridStudyCase& c, const GridStudySettings& s, const contact::ContactPatch& patch,
                              const contact::TangentialSolution& steady, GridMeasurement& r);
 
 struct SamplingAccuracy {
-  /// per accuracy frequency: the converged f (midstep, Richardson) and its estimated error (Roache's
-  /// index, absolute, per entry), the order used for f11, f22, f23
+  /// per accuracy frequency: the converged f (Richardson) and its estimated error (Roache's index,
+  /// absolute, per entry), the order used for f11, f22, f23, and the sampling it was extrapolated
+  /// from (an index into kStudySamplings)
   std::vector<CreepMatrix> converged;
   std::vector<Eigen::Matrix3d> converged_error;
   std::vector<Eigen::Vector3d> order;
-  /// |R_contact - R_midstep| / |R_midstep| of f11, f22, f23: the two samplings' extrapolations
-  std::vector<Eigen::Vector3d> spread;
+  std::vector<int> reference;
+  /// spread[sampling][frequency]: |R_sampling - R_reference| / |R_reference| of f11, f22, f23, the
+  /// samplings' extrapolations against the converged f (0 for the reference itself)
+  std::array<std::vector<Eigen::Vector3d>, 3> spread;
   /// error[sampling][frequency][entry f11, f22, f23][grid]: |f - f_converged| / |f_converged|
-  std::array<std::vector<std::array<std::vector<double>, 3>>, 2> error;
+  std::array<std::vector<std::array<std::vector<double>, 3>>, 3> error;
 };
 /// With only two grids resolving an accuracy frequency, the assumed order 2; with fewer, NaN.
 SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, const GridStudySettings& s);
@@ -181,7 +192,7 @@ struct GridStudyErrors {
   double window_error = 0.0;          ///< largest finite GridMeasurement::window_error
 };
 /// `sampling`: the case's (GridStudyCase::sampling); the phase-corrected errors remove the half-step
-/// lead of CONTACT's sampling and equal the plain ones with midstep.
+/// lead of CONTACT's sampling and equal the plain ones with midstep and average.
 GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& grids,
                                   const GridStudySettings& s, double speed, double c11_table,
                                   contact::CreepageSampling sampling);

@@ -68,9 +68,11 @@
 // the recursion with the creepage of step k taken at t_k (CONTACT's convention). With midstep the
 // creepage is taken at t_k - dt/2: for xi~(t) = xi^ e^{i w t} the recursion sees xi~_k = xi^
 // e^{-i w dt/2} e^{i w t_k}, so f_midstep(w) = f_contact(w) e^{-i w dt/2} exactly, on every f route
-// (the factor is applied in one place, linear_model.cpp). g is the same in both samplings (the load
-// is taken at t_k with the traction it bounds). time_response() takes the creepages at the sampling
-// instants (contact::sampling_time): the callers sample them.
+// (the factor is applied in one place, linear_model.cpp). With average the creepage of step k is its
+// mean over [t_{k-1}, t_k], xi~_k = xi^ e^{-i w dt/2} sinc(w dt/2) e^{i w t_k}, so f_average(w) =
+// f_contact(w) e^{-i w dt/2} sinc(w dt/2). g is the same in every sampling (the load is taken at t_k
+// with the traction it bounds). time_response() takes the creepages of the steps as the sampling
+// defines them (contact::CreepageHistory::step_variation): the callers sample them.
 #pragma once
 
 #include <Eigen/Dense>
@@ -106,7 +108,7 @@ struct LinearModelInput {
   LinearModelInput(double mu_ = 0.3, double speed_ = 0.0, double spin_offset_ = 0.0,
                    contact::FallingFriction falling_ = {},
                    LinearSolver solver_ = LinearSolver::automatic,
-                   contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep)
+                   contact::CreepageSampling sampling_ = contact::CreepageSampling::average)
       : mu(mu_), speed(speed_), spin_offset(spin_offset_), falling(falling_), solver(solver_),
         sampling(sampling_) {}
   /// {mu, speed, spin_offset, sampling}: constant friction, the automatic solver.
@@ -119,8 +121,9 @@ struct LinearModelInput {
   /// by default; see "Falling friction" above).
   contact::FallingFriction falling;
   LinearSolver solver = LinearSolver::automatic;  ///< solver.linear_model
-  /// when the creepage of step k is taken (t_k - dt/2 by default; contact: t_k, as CONTACT)
-  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
+  /// how the creepage of step k is taken (by default its mean over [t_{k-1}, t_k]; midstep: at
+  /// t_k - dt/2; contact: at t_k, as CONTACT)
+  contact::CreepageSampling sampling = contact::CreepageSampling::average;
 };
 
 /// Whether a model with r reduced unknowns takes the matrix-free path under `solver`.
@@ -153,9 +156,10 @@ struct SweepInfo {
 /// The creepage sampling's factor on f, f_sampling = f_contact * factor, as an analytic function of
 /// s dt (s the complex frequency; s = i w on the real axis), so that f(s) at complex s carries the
 /// sampling exactly: contact 1, midstep e^{-s dt/2} (the creepage of step k taken at t_k - dt/2;
-/// on the real axis e^{-i w dt/2}, see "Creepage sampling" above). Used by apply_sampling and by
-/// creep_coefficients_laplace: a sampling that averages the creepage over the step is one more case,
-/// (1 - e^{-s dt})/(s dt) (= e^{-i w dt/2} sinc(w dt/2) on the real axis; entire, 1 at s = 0).
+/// on the real axis e^{-i w dt/2}, see "Creepage sampling" above), average (the step mean of the
+/// creepage) (1 - e^{-s dt})/(s dt) (= e^{-i w dt/2} sinc(w dt/2) on the real axis; entire, 1 at
+/// s = 0). Used by creep_coefficients_laplace; on the real axis apply_sampling takes the same factor
+/// in its polar form (contact::step_sampling_factor).
 std::complex<double> creepage_sampling_factor(std::complex<double> s_dt, contact::CreepageSampling sampling);
 
 class LinearContactModel {
@@ -239,7 +243,8 @@ class LinearContactModel {
 
   /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
   /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()). They are
-  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling.
+  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling,
+  /// -e^{-i w dt/2} sinc(w dt/2) sum_j h_j z^j with average (contact::step_sampling_factor).
   const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
   /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
   const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
@@ -253,8 +258,8 @@ class LinearContactModel {
   /// How the last creep_coefficients() built its Markov parameters.
   const SweepInfo& sweep_info() const { return info_; }
 
-  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken at
-  /// contact::sampling_time(sampling(), k, dt) (k = 0, 1, ...), by the discrete-time recursion
+  /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken as
+  /// sampling() defines them (CreepageHistory::step_variation(sampling(), k, dt), k = 0, 1, ...), by the discrete-time recursion
   /// K0 pi_k = K1 pi_{k-1} - Pi' W~_k, pi_{-1} = 0 (one Cholesky factorisation of K0, or PCG started
   /// from the previous step rolled on by one element; K1 by FFT).
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation) const;
@@ -335,7 +340,7 @@ class LinearContactModel {
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   LinearSolver solver_ = LinearSolver::automatic;
-  contact::CreepageSampling sampling_ = contact::CreepageSampling::midstep;
+  contact::CreepageSampling sampling_ = contact::CreepageSampling::average;
   int steps_per_contact_length_ = 1;
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;

@@ -15,10 +15,9 @@ LinearResponse linear_response(const LinearContactModel& m, const Eigen::Vector3
   std::vector<double> dN;           // normal-load variation (N), input g of the model
   for (long k = 0; k <= steps; ++k) {
     r.time.push_back(k * dt);
-    const double ts = contact::sampling_time(m.sampling(), k, dt);  // the creepage of step k
-    const auto c = h.at(ts);
+    const auto c = h.step_creepage(m.sampling(), k, dt);  // the creepage of step k
     r.creepage.emplace_back(c.xi_x, c.xi_y, c.phi);
-    const auto v = h.variation(ts);
+    const auto v = h.step_variation(m.sampling(), k, dt);
     xi.emplace_back(v[0], v[1], v[2]);
     dN.push_back(h.normal_variation(k * dt));
     r.normal_force.push_back(mean_normal_force + dN.back());
@@ -28,7 +27,7 @@ LinearResponse linear_response(const LinearContactModel& m, const Eigen::Vector3
     const auto f = m.creep_coefficients(h.frequencies());
     const auto g = h.has_normal_variation() ? m.normal_load_coefficients(h.frequencies())
                                             : std::vector<LoadVector>{};
-    // at t_k with f of the model's sampling (its phase e^{-i w dt/2} for midstep is the sampling)
+    // at t_k with f of the model's sampling (its factor contact::step_sampling_factor is the sampling)
     r.synthesis = contact::harmonic_synthesis(h, f, g, mean_force, dt, steps);
   }
   return r;

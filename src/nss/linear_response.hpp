@@ -17,8 +17,8 @@ namespace rollnoise::nss {
 
 struct LinearResponse {
   std::vector<double> time;                  ///< t_k = k dt, k = 0..steps (s)
-  /// the creepage of step k incl. the mean, taken at contact::sampling_time(m.sampling(), k, dt):
-  /// xi(t_k) (contact) or xi(t_k - dt/2) (midstep) (-, -, rad/m)
+  /// the creepage of step k incl. the mean, CreepageHistory::step_creepage(m.sampling(), k, dt):
+  /// xi(t_k) (contact), xi(t_k - dt/2) (midstep) or its mean over [t_{k-1}, t_k] (average) (-, -, rad/m)
   std::vector<Eigen::Vector3d> creepage;
   std::vector<double> normal_force;          ///< N_mean + dN(t_k) (N)
   std::vector<Eigen::Vector3d> recursion;    ///< F_bar + F~_k by the recursion (N, N, N m)

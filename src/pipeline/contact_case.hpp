@@ -39,7 +39,7 @@ struct ContactCase {
   double spin_offset = 0.0;
   contact::Creepage creepage;
   /// rolling.creepage_sampling: when the creepage of a rolling step is taken (transient, linear model)
-  contact::CreepageSampling sampling = contact::CreepageSampling::midstep;
+  contact::CreepageSampling sampling = contact::CreepageSampling::average;
   contact::Backend backend = contact::Backend::Auto;
   nss::LinearSolver linear_solver = nss::LinearSolver::automatic;  ///< solver.linear_model
   /// profiles: the wheel-rail pair, the wheelset position the contact point is found at, and

@@ -84,7 +84,7 @@ CreepResult run_creep_extrapolated(ContactCase c, const std::vector<double>& fre
 
   CreepExtrapolation ex;
   ex.factors = factors;
-  ex.assumed_order = c.sampling == contact::CreepageSampling::midstep ? 2.0 : 1.0;
+  ex.assumed_order = c.sampling == contact::CreepageSampling::contact ? 1.0 : 2.0;  // midstep, average: second order
   std::vector<double> with_zero = freq;
   with_zero.push_back(0.0);  // g(0) is extrapolated with the rest
   CreepResult first;

@@ -23,7 +23,7 @@ struct CreepExtrapolation {
   /// convergence index, nss/extrapolation.hpp) and the order used for each entry
   std::vector<Eigen::Matrix3d> f_error, f_order;
   std::vector<Eigen::Vector3d> g_error, g_order;
-  double assumed_order = 0.0;  ///< 2 (midstep) or 1 (contact): two grids and the fall-back
+  double assumed_order = 0.0;  ///< 2 (average, midstep) or 1 (contact): two grids and the fall-back
   long observed = 0, assumed = 0;  ///< entries (f and g, all frequencies) with an observed / assumed order
 };
 
@@ -46,7 +46,7 @@ CreepResult run_creep(ContactCase c, const std::vector<double>& freq, bool direc
 /// potential contact area (profiles: the grid placed around the contact point, which the normal
 /// problem may enlarge at the same dx),
 /// then per frequency and entry Richardson extrapolation (nss::richardson) with the observed order
-/// (three grids, within [0.5, 4]) or the sampling's order (2 midstep, 1 contact). The mean state
+/// (three grids, within [0.5, 4]) or the sampling's order (2 average and midstep, 1 contact). The mean state
 /// is the first grid's. InputError naming `factors_key` for bad factors or a grid too coarse for
 /// the patch or too large (limits.memory), naming `frequency_key` for a frequency above any grid's
 /// Nyquist limit; all before anything is solved.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/errors.hpp"
 
@@ -62,17 +63,21 @@ StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq,
   const std::vector<Eigen::MatrixXd> markov = contact_markov_parameters(model);
   r.markov_count = static_cast<int>(markov.size());
   r.discrete = linalg::eigensystem_realisation(markov, o.hankel_tolerance);
-  // its response against the sweep's f and g: as given, and with the creepage half a step early
-  std::vector<Eigen::MatrixXcd> Hd, Hh;
-  for (double fr : r.frequency) {
-    Hd.push_back(r.discrete.model.discrete_frequency_response(fr, r.dt));
-    Hh.push_back(Hd.back());
-    Hh.back().leftCols(3) *= std::polar(1.0, -M_PI * fr * r.dt);  // exp(-i w dt/2)
+  // its response against the sweep's f and g with the creepage input of each sampling: xi~(t_k)
+  // (factor 1), xi~(t_k - dt/2) (exp(-i w dt/2)) or the mean over [t_{k-1}, t_k] (exp(-i w dt/2)
+  // sinc(w dt/2)); nss::LinearContactModel::apply_sampling. The closest names the input.
+  r.discrete_error = std::numeric_limits<double>::infinity();
+  for (const contact::CreepageSampling s : {contact::CreepageSampling::contact, contact::CreepageSampling::midstep,
+                                            contact::CreepageSampling::average}) {
+    std::vector<Eigen::MatrixXcd> Hs;
+    for (double fr : r.frequency) {
+      Hs.push_back(r.discrete.model.discrete_frequency_response(fr, r.dt));
+      Hs.back().leftCols(3) *= contact::step_sampling_factor(s, fr, r.dt);
+    }
+    const double e = linalg::relative_response_error(H, Hs, r.fit.scaling);
+    if (e < r.discrete_error) r.discrete_error = e, r.input_sampling = s;
   }
-  const double e0 = linalg::relative_response_error(H, Hd, r.fit.scaling);
-  const double e1 = linalg::relative_response_error(H, Hh, r.fit.scaling);
-  r.discrete_error = std::min(e0, e1);
-  r.input_delay_steps = e1 < e0 ? 0.5 : 0.0;
+  r.input_delay_steps = r.input_sampling == contact::CreepageSampling::contact ? 0.0 : 0.5;
   r.seconds_fit = seconds(t0, t1);
   r.seconds_discrete = seconds(t1, Clock::now());
   return r;

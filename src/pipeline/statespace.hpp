@@ -16,9 +16,13 @@
 //     (-f = sum_j h_j z^j, g = sum_j gm_j z^j, z = e^{-i w dt}, so F_k = sum_j H_j u_{k-j};
 //     nss/linear_model.hpp): the reduced model the sweep
 //     builds, exact up to that truncation. Its response at z = e^{i w dt} is compared with f and g
-//     of the sweep on the fitted frequencies; when the sweep samples the creepage half a step early
-//     (f carries exp(-i w dt/2)), the discrete model's creepage input is xi~(t_k - dt/2) and
-//     input_delay_steps = 0.5 says so (the normal-load input is N~(t_k) either way).
+//     of the sweep on the fitted frequencies. The Markov parameters are those of the recursion with
+//     the creepage of step k as its input, whatever the sampling; f carries the sampling's factor
+//     (1, exp(-i w dt/2), exp(-i w dt/2) sinc(w dt/2): contact::step_sampling_factor). The comparison
+//     names the discrete model's creepage input u_k: xi~(t_k) (contact), xi~(t_k - dt/2) (midstep)
+//     or the mean of xi~ over [t_{k-1}, t_k] (average); input_sampling says which, and
+//     input_delay_steps the centre of the input, 0 or 0.5 steps before t_k (the normal-load input
+//     is N~(t_k) in every sampling).
 #pragma once
 
 #include <string>
@@ -46,7 +50,10 @@ struct StateSpaceResult {
   double dt = 0.0;                 ///< s
   int markov_count = 0;            ///< Markov parameters realised
   double discrete_error = 0.0;     ///< the discrete model's response against f, g (the fit's norm)
-  double input_delay_steps = 0.0;  ///< 0 or 0.5: the creepage input is xi~(t_k - delay dt)
+  /// the discrete model's creepage input u_k: xi~(t_k) (contact), xi~(t_k - dt/2) (midstep), the
+  /// mean of xi~ over [t_{k-1}, t_k] (average)
+  contact::CreepageSampling input_sampling = contact::CreepageSampling::contact;
+  double input_delay_steps = 0.0;  ///< 0 (contact) or 0.5 (midstep, average): the centre of u_k is t_k - delay dt
   double seconds_fit = 0.0, seconds_discrete = 0.0;
 };
 

@@ -113,7 +113,7 @@ TransientResult run_transient(const ContactCase& c, const TransientInput& in, co
     for (std::size_t i = 0; i < snap_step.size(); ++i)
       if (snap_step[i] == k) r.snapshots.push_back({i, k * r.dt, xi, s});
   };
-  record(0, in.history.at(contact::sampling_time(c.sampling, 0, r.dt)), start);
+  record(0, in.history.step_creepage(c.sampling, 0, r.dt), start);
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<double> fixed_load;  // empty: the normal problem stays that of the patch
   contact::roll(rolling, in.history, c.sampling, r.dt, r.steps, r.varying_load ? load : fixed_load,

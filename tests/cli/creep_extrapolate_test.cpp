@@ -63,8 +63,8 @@ TEST(CreepExtrapolate, WritesTheExtrapolatedCoefficientsWithTheirErrorsAndTheGri
                         "/creep/extrapolation/dx", "/creep/extrapolation/f_order", "/creep/extrapolation/f_grids"})
     EXPECT_TRUE(h5.attribute(d, "units").has_value()) << d;
   EXPECT_EQ(*h5.numbers("/creep/extrapolation/nx"), (std::vector<double>{14, 21}));
-  // two grids: the sampling's order, 2 for midstep (the default)
+  // two grids: the sampling's order, 2 for average (the default)
   EXPECT_EQ(*h5.numbers("/creep/extrapolation/assumed_order"), (std::vector<double>{2.0}));
-  EXPECT_EQ(*h5.attribute("/creep", "creepage_sampling"), "midstep");
+  EXPECT_EQ(*h5.attribute("/creep", "creepage_sampling"), "average");
   std::filesystem::remove(out);
 }

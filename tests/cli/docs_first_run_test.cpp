@@ -97,11 +97,12 @@ TEST(TransientCommand, ExcitationPhaseIsReadAndWrittenInRadians) {
   ASSERT_EQ(mean.size(), 3u);
   ASSERT_GT(t.size(), 3u);
   ASSERT_EQ(xi.size(), 3 * t.size());
-  // the creepage of step k as the step took it: at t_k - dt/2 (rolling.creepage_sampling = "midstep",
-  // the default)
-  const double half_step = 0.5 * (t[1] - t[0]);
+  // the creepage of step k as the step took it: its mean over [t_k - dt, t_k]
+  // (rolling.creepage_sampling = "average", the default), amp cos(w (t_k - dt/2) + phase) sinc(w dt/2)
+  const double half_step = 0.5 * (t[1] - t[0]), x = 2.0 * M_PI * f * half_step;
   for (std::size_t k = 0; k < t.size(); ++k)
-    EXPECT_NEAR(xi[3 * k + 1], mean[1] + amp * std::cos(2.0 * M_PI * f * (t[k] - half_step) + phase), 1e-15)
+    EXPECT_NEAR(xi[3 * k + 1],
+                mean[1] + amp * std::sin(x) / x * std::cos(2.0 * M_PI * f * (t[k] - half_step) + phase), 1e-15)
         << "t = " << t[k];
   fs::remove(out);
 }

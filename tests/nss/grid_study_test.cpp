@@ -136,3 +136,38 @@ TEST(GridStudy, MidstepCreepCoefficientsAt1kHzConvergeAtSecondOrder) {
   EXPECT_LT(oc.p, 1.3);
   for (size_t g = 0; g + 1 < mid.size(); ++g) EXPECT_LT(mid[g], con[g]) << st.grids[g].nx;
 }
+
+TEST(GridStudy, AverageSamplingLeavesOnlyTheSpatialErrorAt1And5kHz) {
+  // rolling.creepage_sampling = "average": the step mean of the creepage, f_average = f_midstep
+  // sinc(w dt/2) ([2] of GridMeasurement::sampling). At 5 kHz the midstep error is almost all the
+  // factor 1/sinc(w dt/2) - 1 ~ (w dt)^2/24 of the one-step difference (7 % on 28 x 21) and
+  // converges at second order (asserted above); the step mean cancels it, and what is left is the
+  // spatial error of the piecewise-constant elements, which is not a power law on grids this coarse
+  // (the elements in contact change irregularly with dx: 1 kHz gives no order at all, 5 kHz 0.6 with
+  // the 40 x 29 reference). So asserted: on every grid, at 1 and 5 kHz, the average error of f11/f22
+  // is at most that of the quasi-static coefficients (100 Hz, phase-corrected: midstep there, where
+  // the time error (w dt)^2 is below 1e-3) -- no time error is left above the spatial one -- and
+  // at 5 kHz below a third of the midstep error; its observed order at 5 kHz is no longer the
+  // time error's second order (below 1.5).
+  const Study& st = paper_study();
+  const auto& spatial = st.errors.f_direct_corrected[0];  // 100 Hz
+  for (size_t i : {size_t{0}, size_t{1}}) {                 // 1 kHz, 5 kHz
+    const auto avg = sampling_errors(st.grids, 2, i, false), mid = sampling_errors(st.grids, 1, i, false);
+    const auto oa = linalg::observed_order(st.errors.dx, avg), om = linalg::observed_order(st.errors.dx, mid);
+    for (size_t g = 0; g + 1 < avg.size(); ++g) {
+      std::printf("nx %d: f11/f22 at %s against %dx%d: midstep %.2e, average %.2e (100 Hz: %.2e)\n", st.grids[g].nx,
+                  i == 0 ? "1 kHz" : "5 kHz", st.grids.back().nx, st.grids.back().ny, mid[g], avg[g], spatial[g]);
+      if (!std::isfinite(avg[g])) continue;  // 5 kHz above the coarsest grid's Nyquist limit
+      EXPECT_LE(avg[g], spatial[g]) << st.grids[g].nx << (i == 0 ? " 1 kHz" : " 5 kHz");
+      if (i == 1) {
+        EXPECT_LT(avg[g], mid[g] / 3) << st.grids[g].nx;
+      }
+    }
+    std::printf("observed order: midstep %.2f (scatter %.2f, %d points), average %.2f (scatter %.2f, %d points)\n",
+                om.p, om.scatter, om.points, oa.p, oa.scatter, oa.points);
+    if (i == 1) {
+      EXPECT_EQ(oa.points, 3);
+      EXPECT_LT(oa.p, 1.5);
+    }
+  }
+}

@@ -80,6 +80,7 @@ TEST(StateSpaceExport, TheDiscreteModelReproducesTheSweepExactly) {
   const nss::LinearContactModel& model = *r.creep.state.model;
   EXPECT_LT(r.discrete.markov_error, 1e-8);
   EXPECT_LT(r.discrete_error, 1e-8);
+  EXPECT_EQ(r.input_sampling, model.sampling());  // the case's (the default, average)
   // at frequencies that were not in the realisation's check: against the sweep, entry by entry
   const std::vector<double> fr = {3.3, 123.0, 0.31 * model.nyquist_frequency(),
                                   0.97 * model.nyquist_frequency()};
@@ -87,7 +88,7 @@ TEST(StateSpaceExport, TheDiscreteModelReproducesTheSweepExactly) {
       pipeline::contact_transfer(model.creep_coefficients(fr), model.normal_load_coefficients(fr));
   for (size_t k = 0; k < fr.size(); ++k) {
     Eigen::MatrixXcd Hd = r.discrete.model.discrete_frequency_response(fr[k], r.dt);
-    Hd.leftCols(3) *= std::polar(1.0, -2.0 * M_PI * fr[k] * r.dt * r.input_delay_steps);
+    Hd.leftCols(3) *= contact::step_sampling_factor(r.input_sampling, fr[k], r.dt);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 4; ++j)
         EXPECT_LT(std::abs(Hd(i, j) - H[k](i, j)),
@@ -109,6 +110,22 @@ TEST(StateSpaceExport, TheStepResponseEqualsTheLinearModelsTimeResponse) {
   auto onset = [&](double t) {
     return t <= 0 ? 0.0 : t >= T ? 1.0 : 0.5 * (1.0 - std::cos(M_PI * t / T));
   };
+  // its integral from 0, for the step mean (1/dt) int_{t_k - dt}^{t_k} onset (average sampling)
+  auto integral = [&](double t) {
+    return t <= 0 ? 0.0 : t >= T ? t - 0.5 * T : 0.5 * (t - T / M_PI * std::sin(M_PI * t / T));
+  };
+  // the discrete model's creepage input of step k in the sweep's sampling
+  auto creepage_input = [&](double t) {
+    switch (r.input_sampling) {
+      case contact::CreepageSampling::contact:
+        return onset(t);
+      case contact::CreepageSampling::midstep:
+        return onset(t - 0.5 * dt);
+      case contact::CreepageSampling::average:
+        return (integral(t) - integral(t - dt)) / dt;
+    }
+    return onset(t);
+  };
   const Eigen::VectorXd so = r.fit.scaling.output;
   double worst = 0.0;
   for (int j = 0; j < 4; ++j) {
@@ -125,7 +142,7 @@ TEST(StateSpaceExport, TheStepResponseEqualsTheLinearModelsTimeResponse) {
     for (int k = 0; k < steps; ++k) {
       const double t = k * dt;
       if (j < 3)
-        xi[k](j) = size * onset(t - r.input_delay_steps * dt);  // the sweep's creepage sampling
+        xi[k](j) = size * creepage_input(t);  // the sweep's creepage sampling
       else
         dN[k] = size * onset(t);
     }
@@ -142,3 +159,26 @@ TEST(StateSpaceExport, TheStepResponseEqualsTheLinearModelsTimeResponse) {
 }
 
 }  // namespace
+
+TEST(StateSpaceExport, TheDiscreteModelNamesTheCreepageInputOfEachSampling) {
+  // the Markov parameters are those of the creepage of step k, whatever the sampling; comparing the
+  // discrete model with f names how the sweep took that creepage (contact::step_sampling_factor)
+  for (const contact::CreepageSampling s :
+       {contact::CreepageSampling::contact, contact::CreepageSampling::midstep, contact::CreepageSampling::average}) {
+    const io::CaseReader reader = io::CaseReader::from_file(
+        std::string(ROLLNOISE_SOURCE_DIR) + "/cases/hertz_paper.toml",
+        {"grid.nx=14", "grid.ny=11", "contact.normal_force=80e3", "creepage.mean=[0.0012, -0.0008, -0.1]",
+         "rolling.creepage_sampling=\"" + std::string(contact::sampling_name(s)) + "\""});
+    io::InputProblems problems;
+    pipeline::ContactCase c = io::read_contact_case(reader, problems);
+    problems.throw_if_any();
+    EXPECT_EQ(c.sampling, s);
+    const double fn = pipeline::nyquist_frequency(c);
+    std::vector<double> band;
+    for (int i = 0; i < 30; ++i) band.push_back(10.0 * std::pow(0.9 * fn / 10.0, i / 29.0));
+    const auto r = pipeline::run_statespace(c, band, pipeline::StateSpaceOptions{}, "frequency.f_max");
+    EXPECT_EQ(r.input_sampling, s) << contact::sampling_name(s);
+    EXPECT_EQ(r.input_delay_steps, s == contact::CreepageSampling::contact ? 0.0 : 0.5);
+    EXPECT_LT(r.discrete_error, 1e-8) << contact::sampling_name(s);
+  }
+}
