@@ -15,7 +15,7 @@
 # with status 86 had a report in build-asan/rollnoise; rerun its command to see the report if the
 # test does not print the output.
 #
-# Excluded by default: the four runs whose sanitized time goes into O(n^3) dense factorisations
+# Excluded by default: the runs whose sanitized time goes into O(n^3) dense factorisations
 # done many times over as a reference (Eigen code, 20-50x slower under the sanitizers: a 1200 x 1200
 # LU takes 0.08 s natively, 4 s here), while the same rollnoise functions run in the tests that
 # stay. Measured on this 2-core machine (one job), the whole sanitized suite takes 27 min, these
@@ -29,10 +29,15 @@
 #                               LinearModel.* and NssStress.* tests.
 #   ConditioningStress.*        exact condition numbers: dense eigenvalue problems and SVDs in the
 #                               test itself (80 s); its mean states are solved in SteadyStress.*.
+#   Falling friction: its linear model is the dense paper form (a Hessenberg reduction per model,
+#   the spectral radius by a dense eigensolver): LaplaceCoefficients.SpectralRadius* (131 s),
+#   FallingFrictionModel.SweepRoutes* (69 s) and .ConstantFrictionLimits* (53 s),
+#   FallingFrictionSqueal.* (63 s, a bisection of squeal runs); the same functions run sanitized in
+#   the other FallingFriction*, LaplaceCoefficients.* and SquealFallingFriction.* tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
