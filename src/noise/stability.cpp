@@ -65,7 +65,15 @@ MarkovContact::MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eig
   if (h_.empty())
     throw NumericalError("squeal: the contact model has no Markov parameters (its sweep fell back to the "
                          "Hessenberg form): f cannot be continued to complex frequency");
+  set_guard();
+}
+
+void MarkovContact::set_guard() {
   if (!(dt_ > 0.0)) throw InputError("rolling.speed", "squeal: the contact model's time step must be positive");
+  if (h_.empty()) {
+    min_sigma_ = -1e300;  // exact everywhere (an evaluator without a series): nothing to guard
+    return;
+  }
   const double rho = std::max(decay_ratio(h_), gm_.empty() ? 0.0 : decay_ratio(gm_));
   // |z| rho < 1 <=> sigma > ln(rho)/dt; 0.9 of it as the margin of the guard (the truncation
   // check in check() guards the accuracy near it).
@@ -85,13 +93,7 @@ MarkovContact::MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eig
                              LaplaceEvaluator exact)
     : h_(std::move(creep)), gm_(std::move(load)), dt_(dt), exact_(std::move(exact)) {
   if (!exact_.creep) throw NumericalError("squeal: the contact's exact evaluator is missing");
-  if (!(dt_ > 0.0)) throw InputError("rolling.speed", "squeal: the contact model's time step must be positive");
-  if (h_.empty()) {
-    min_sigma_ = -1e300;  // exact everywhere: no series to guard
-    return;
-  }
-  const double rho = std::max(decay_ratio(h_), gm_.empty() ? 0.0 : decay_ratio(gm_));
-  min_sigma_ = rho > 0.0 ? 0.9 * std::log(rho) / dt_ : -1e300;  // as above
+  set_guard();
 }
 
 Eigen::Matrix3cd MarkovContact::creep(cdouble s) const {

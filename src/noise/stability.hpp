@@ -97,6 +97,8 @@ class MarkovContact {
   double time_step() const { return dt_; }
 
  private:
+  /// min_sigma_ from the decay of the series (none without one); the time step checked.
+  void set_guard();
   void check(cdouble z, double tail_head, double tail_last) const;
   std::vector<Eigen::Matrix3d> h_;
   std::vector<Eigen::Vector3d> gm_;
