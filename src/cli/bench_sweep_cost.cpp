@@ -27,7 +27,7 @@ nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::Cont
 namespace {
 
 struct SweepCost {
-  int ny = 0, contact = 0, r = 0, block_steps = 0;
+  int ny = 0, contact = 0, r = 0, block_steps = 0, threads = 0;
   double t_steady = 0, t_sweep = 0, peak_mb = 0, its_per_solve = 0;
   bool ok = false;
 };
@@ -40,7 +40,7 @@ double vm_hwm_mb() {
   return NAN;
 }
 
-SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver) {
+SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
   using Clock = std::chrono::steady_clock;
   auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   SweepCost out;
@@ -53,8 +53,11 @@ SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver)
   out.t_steady = secs(t);
   out.contact = patch.normal.contact_elements();
   t = Clock::now();
-  const nss::LinearContactModel m(patch, steady, {c.steady.mu, c.steady.speed, c.steady.spin_offset, c.steady.falling, solver});
+  nss::LinearModelInput in{c.steady.mu, c.steady.speed, c.steady.spin_offset, c.steady.falling, solver};
+  in.threads = threads;
+  const nss::LinearContactModel m(patch, steady, in);
   out.r = m.reduced_unknowns();
+  out.threads = m.threads();
   if (!m.matrix_free() && 8.0 * out.r * out.r > 4e9) return out;  // dense factor alone above 4 GB
   std::vector<double> f;
   for (int i = 0; i < 1000; ++i) f.push_back(std::min(10.0 * std::pow(1000.0, i / 999.0), m.nyquist_frequency()));
@@ -69,7 +72,7 @@ SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver)
 }
 
 // measure() in a child process; the result comes back through a pipe.
-SweepCost measure_in_child(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver) {
+SweepCost measure_in_child(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
   int fd[2];
   SweepCost res;
   if (pipe(fd) != 0) return res;
@@ -79,7 +82,7 @@ SweepCost measure_in_child(const nss::GridStudyCase& c, int nx, nss::LinearSolve
     close(fd[0]);
     SweepCost s;
     try {
-      s = measure(c, nx, solver);
+      s = measure(c, nx, solver, threads);
     } catch (...) {
       s.ok = false;
     }
@@ -105,19 +108,19 @@ int run_sweep_cost(const CommonOptions& o, const std::vector<int>& grids) {
       "%s: cost of the 1000-frequency sweep (f and g, 10 Hz - 10 kHz, model set-up included) at the mean "
       "creepage (%g, %g, %g rad/m); each run a child process, peak = its VmHWM\n",
       reader.name().c_str(), mc.xi_x, mc.xi_y, mc.phi);
-  std::printf("%5s %5s %7s %7s %12s %9s %9s %10s %6s %9s\n", "nx", "ny", "contact", "r", "path", "steady[s]",
-              "sweep[s]", "peak[MB]", "steps", "PCG its");
+  std::printf("%5s %5s %7s %7s %12s %9s %9s %10s %6s %9s %7s\n", "nx", "ny", "contact", "r", "path", "steady[s]",
+              "sweep[s]", "peak[MB]", "steps", "PCG its", "threads");
   for (int nx : grids)
     for (nss::LinearSolver s : {nss::LinearSolver::dense, nss::LinearSolver::matrix_free}) {
-      const SweepCost r = measure_in_child(study, nx, s);
+      const SweepCost r = measure_in_child(study, nx, s, base.threads);
       const char* path = s == nss::LinearSolver::dense ? "dense" : "matrix-free";
       if (!r.ok) {
         std::printf("%5d %5d %7d %7d %12s   (skipped: dense factor above 4 GB, or failed)\n", nx, r.ny, r.contact,
                     r.r, path);
         continue;
       }
-      std::printf("%5d %5d %7d %7d %12s %9.2f %9.3f %10.0f %6d %9.1f\n", nx, r.ny, r.contact, r.r, path, r.t_steady,
-                  r.t_sweep, r.peak_mb, r.block_steps, r.its_per_solve);
+      std::printf("%5d %5d %7d %7d %12s %9.2f %9.3f %10.0f %6d %9.1f %7d\n", nx, r.ny, r.contact, r.r, path,
+                  r.t_steady, r.t_sweep, r.peak_mb, r.block_steps, r.its_per_solve, r.threads);
     }
   return 0;
 }

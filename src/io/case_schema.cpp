@@ -84,6 +84,11 @@ const std::vector<KeySpec>& case_schema() {
        "applied by FFT and solved by preconditioned CG (\"matrix_free\": memory O(r x Krylov basis) "
        "instead of 8 r^2, slower where dense fits); \"auto\": dense up to 11000 reduced unknowns",
        {"auto", "dense", "matrix_free"}},
+      {"solver.threads", T::Integer, "0", "-",
+       "threads of the linear NSS model (creep, noise, squeal, validate): the columns of a block "
+       "(FFT products, PCG solves) are shared out among them; 0 = one per hardware thread, at most 4. "
+       "The results do not depend on it",
+       {}, 0, {}, 4},
       {"solver.normal_tolerance", T::PositiveReal, "1e-12", "-",
        "normal solver: relative change of the pressure"},
       {"solver.tangential_tolerance", T::PositiveReal, "1e-12", "-",

@@ -127,6 +127,7 @@ ContactCase read_contact_case(const CaseReader& r, InputProblems& problems) {
                       : lm == "matrix_free" ? nss::LinearSolver::matrix_free
                                             : nss::LinearSolver::automatic;
   });
+  problems.check([&] { c.threads = static_cast<int>(r.integer("solver.threads")); });
   problems.check([&] { c.normal.tolerance = r.real("solver.normal_tolerance"); });
   problems.check([&] { c.tangential.tolerance = r.real("solver.tangential_tolerance"); });
   problems.check([&] { c.tangential.max_iterations = static_cast<int>(r.integer("solver.max_iterations")); });

@@ -2,12 +2,16 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <stdexcept>
+#include <thread>
 
 #include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
@@ -169,40 +173,89 @@ struct LinearContactModel::Reduced {
   Eigen::VectorXd d;                            ///< D: c_e on slip unknowns, 0 on adhesion ones
   Eigen::VectorXd w;                            ///< preconditioner scaling (1 for adhesion)
   double tolerance = 0.0;                       ///< PCG: relative residual |b - K0 x| / |b|
-  mutable long solves = 0, iterations = 0;
+  mutable std::atomic<long> solves{0}, iterations{0};
 
-  /// K0 X = D X + Pi' A Pi X / dt (matrix-free path).
+  // ---- threads ("Threads" at the top of the file) ----
+  /// The FFT operators one thread uses: an FFT operator's work arrays serve one caller at a time,
+  /// so every further thread has its own copies (lane 0 is K1, A and G above).
+  struct Lane {
+    const contact::ElementOperator* K1 = nullptr;
+    const contact::ElementOperator* A = nullptr;  ///< matrix-free path only
+    const contact::ElementOperator* G = nullptr;  ///< matrix-free path only
+  };
+  std::vector<Lane> lanes;
+  std::vector<std::unique_ptr<contact::ElementOperator>> copies;  ///< owns lanes 1..
+
+  /// f(lane, j) for the columns j < n, shared out round-robin among min(lanes, n) threads (the
+  /// caller is lane 0). Each column is computed by one thread with the same operations as in a
+  /// serial run, so the results do not depend on the number of threads. The first exception of
+  /// any thread is rethrown after all have finished.
+  template <class F>
+  void for_columns(Eigen::Index n, F&& f) const {
+    const int T = static_cast<int>(std::min<Eigen::Index>(static_cast<Eigen::Index>(lanes.size()), n));
+    if (T <= 1) {
+      for (Eigen::Index j = 0; j < n; ++j) f(lanes.front(), j);
+      return;
+    }
+    std::vector<std::exception_ptr> error(T);
+    auto run = [&](int t) {
+      try {
+        for (Eigen::Index j = t; j < n; j += T) f(lanes[t], j);
+      } catch (...) {
+        error[t] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < T; ++t) pool.emplace_back(run, t);
+    run(0);
+    for (auto& th : pool) th.join();
+    for (const auto& e : error)
+      if (e) std::rethrow_exception(e);
+  }
+
+  /// K1 X (both paths), the columns in parallel.
+  Eigen::MatrixXd apply_K1(const Eigen::MatrixXd& X) const {
+    Eigen::MatrixXd Y(X.rows(), X.cols());
+    for_columns(X.cols(), [&](const Lane& l, Eigen::Index j) { l.K1->apply(X.col(j).data(), Y.col(j).data()); });
+    return Y;
+  }
+  /// K0 X = D X + Pi' A Pi X / dt (matrix-free path), the columns in parallel.
   Eigen::MatrixXd apply_K0(const Eigen::MatrixXd& X) const {
-    Eigen::MatrixXd Y = (*A) * X;
-    Y += d.asDiagonal() * X;
+    Eigen::MatrixXd Y(X.rows(), X.cols());
+    for_columns(X.cols(), [&](const Lane& l, Eigen::Index j) {
+      l.A->apply(X.col(j).data(), Y.col(j).data());
+      Y.col(j) += d.cwiseProduct(X.col(j));
+    });
     return Y;
   }
   /// K0^{-1} B: the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once per
   /// pass for three right-hand sides, ~3x faster than LLT::solve for few columns), or PCG from
-  /// `start` (zero if null) per column.
+  /// `start` (zero if null) per column, the columns in parallel.
   Eigen::MatrixXd solve(Eigen::MatrixXd B, const Eigen::MatrixXd* start = nullptr) const {
     if (!matrix_free) {
       linalg::cholesky_solve_in_place(K0, B);
       return B;
     }
     Eigen::MatrixXd X = start ? *start : Eigen::MatrixXd::Zero(B.rows(), B.cols());
-    for (Eigen::Index j = 0; j < B.cols(); ++j) pcg(B.col(j), X.col(j));
+    for_columns(B.cols(), [&](const Lane& l, Eigen::Index j) { pcg(l, B.col(j), X.col(j)); });
     return X;
   }
 
  private:
   // Preconditioned conjugate gradients (Saad, Iterative Methods for Sparse Linear Systems, 2nd ed.,
   // Alg. 9.1) for K0 x = b, M^{-1} = W G W; stops at |b - K0 x|_2 <= tolerance |b|_2.
-  void pcg(const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x) const {
+  void pcg(const Lane& lane, const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x) const {
     ++solves;
     const double bnorm = b.norm();
     if (bnorm == 0.0) {
       x.setZero();
       return;
     }
-    Eigen::VectorXd r = b - apply_K0(x), q(b.size()), z(b.size());
+    Eigen::VectorXd r(b.size()), q(b.size()), z(b.size());
+    lane.A->apply(x.data(), r.data());
+    r = b - (r + d.cwiseProduct(x));
     auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
-      G->apply(w.cwiseProduct(v).eval().data(), out.data());
+      lane.G->apply(w.cwiseProduct(v).eval().data(), out.data());
       out.array() *= w.array();
     };
     if (r.norm() <= tolerance * bnorm) return;
@@ -212,7 +265,7 @@ struct LinearContactModel::Reduced {
     const int max_iterations = 20000;
     for (int it = 1; it <= max_iterations; ++it) {
       ++iterations;
-      A->apply(p.data(), q.data());
+      lane.A->apply(p.data(), q.data());
       q += d.cwiseProduct(p);
       const double alpha = rz / p.dot(q);
       x += alpha * p;
@@ -233,6 +286,11 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
     : dt_(patch.grid.dx / in.speed), speed_(in.speed), mu_(in.mu), solver_(in.solver), sampling_(in.sampling),
       table_(patch.influence) {
   contact::check_rolling_input(in.mu, in.speed, contact::Creepage{});
+  if (in.threads < 0 || in.threads > kMaxThreads)
+    throw InputError("solver.threads", "must be 0 (one per hardware thread) to " + std::to_string(kMaxThreads) +
+                                           ", not " + std::to_string(in.threads));
+  threads_ = in.threads > 0 ? in.threads
+                            : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxThreads);
   const contact::Grid& g = patch.grid;
   const contact::InfluenceTable& A = patch.influence;
   el_ = contact::sweep_order(g, patch.normal.pn);
@@ -438,6 +496,7 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_factor() const {
     }
     if (slip_[b]) red->K0(ob, ob) += c_[b];
   }
+  add_lanes(*red);
   red->llt = std::make_unique<Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>>>(red->K0);
   if (red->llt->info() != Eigen::Success)
     throw NumericalError("linear contact model: the reduced matrix K0 = D + Pi' A Pi/dt is not positive definite");
@@ -470,8 +529,35 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() con
       red->w(offset_[a]) = std::sqrt(kappa / (kappa + c_[a]));
     }
   red->tolerance = kPcgTolerance;
+  add_lanes(*red);
   reduced_mf_ = std::move(red);
   return *reduced_mf_;
+}
+
+void LinearContactModel::add_lanes(Reduced& red) const {
+  // Lane 0 is the operators red holds; every further lane builds its own FFT operators (the kernel
+  // spectra again: a few FFTs of the padded grid, ~1 MB on 100 x 100).
+  const contact::Grid& g = table_.grid();
+  red.lanes.assign(1, Reduced::Lane{&red.K1, red.A.get(), red.G.get()});
+  for (int t = 1; t < threads_; ++t) {
+    Reduced::Lane lane;
+    red.copies.push_back(std::make_unique<contact::ElementOperator>(
+        std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 1), g, el_, slip_, t_,
+        dt_));
+    lane.K1 = red.copies.back().get();
+    if (red.matrix_free) {
+      red.copies.push_back(std::make_unique<contact::ElementOperator>(
+          std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 0), g, el_, slip_,
+          t_, dt_));
+      lane.A = red.copies.back().get();
+      red.copies.push_back(std::make_unique<contact::ElementOperator>(
+          std::make_shared<const contact::HalfSpaceOperator>(
+              contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor)),
+          g, el_, slip_, t_, 1.0 / dt_));
+      lane.G = red.copies.back().get();
+    }
+    red.lanes.push_back(lane);
+  }
 }
 
 Eigen::MatrixXd LinearContactModel::rolled(const Eigen::MatrixXd& X) const {
@@ -498,8 +584,8 @@ Eigen::MatrixXd LinearContactModel::rolled(const Eigen::MatrixXd& X) const {
   return Y;
 }
 
-long LinearContactModel::inner_solves() const { return reduced_mf_ ? reduced_mf_->solves : 0; }
-long LinearContactModel::inner_iterations() const { return reduced_mf_ ? reduced_mf_->iterations : 0; }
+long LinearContactModel::inner_solves() const { return reduced_mf_ ? reduced_mf_->solves.load() : 0L; }
+long LinearContactModel::inner_iterations() const { return reduced_mf_ ? reduced_mf_->iterations.load() : 0L; }
 
 double linear_model_bytes(LinearSolver solver, int r, int grid_elements, int Lc) {
   const double p = 4.0, d = 1.5 * p * std::min(10 * Lc, 2 * Lc + 2);  // the largest Krylov basis
@@ -695,7 +781,7 @@ LinearContactModel::StartBlock LinearContactModel::start_block() const {
   if (block_ == 3) return b;
   const Eigen::VectorXd x0 = b.X.col(3);
   b.g0 += Lr_.transpose() * x0;
-  b.Z.col(3) = red.K1 * x0 + rN1_;
+  b.Z.col(3) = red.apply_K1(x0) + rN1_;
   b.X.col(3) = red.solve(b.Z.col(3));
   // Scale y to the creepage columns (same K0-norm as the largest), so that the block's Gram
   // matrix, the decay test and the a-posteriori check weigh both inputs alike.
@@ -729,9 +815,9 @@ std::optional<LinearContactModel::MarkovModel> LinearContactModel::exact_markov(
   const bool ok = markov_sequence(
       Lr_, start.X,
       [&](const Eigen::MatrixXd& X) {
-        if (!red.matrix_free) return Eigen::MatrixXd(red.solve(red.K1 * X));
+        if (!red.matrix_free) return Eigen::MatrixXd(red.solve(red.apply_K1(X)));
         const Eigen::MatrixXd guess = rolled(X);  // N X is nearly X rolled on by one element
-        return red.solve(red.K1 * X, &guess);
+        return red.solve(red.apply_K1(X), &guess);
       },
       steps_per_contact_length_, max_contact_lengths * steps_per_contact_length_, h);
   if (!ok) return std::nullopt;
@@ -919,7 +1005,7 @@ std::optional<LinearContactModel::MarkovModel> LinearContactModel::krylov_markov
   int next_check = Lc;
   for (int k = 1; k <= max_blocks; ++k) {
     // Block step k: X = N V_{k-1} = K0^{-1} K1 V_{k-1}, with Z = K0 X = K1 V_{k-1}.
-    Eigen::MatrixXd Z = red.K1 * arnoldi.last_block();
+    Eigen::MatrixXd Z = red.apply_K1(arnoldi.last_block());
     Eigen::MatrixXd X;
     if (red.matrix_free) {
       const Eigen::MatrixXd guess = rolled(arnoldi.last_block());
@@ -1160,7 +1246,7 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
   Eigen::MatrixXd p = Eigen::MatrixXd::Zero(r_, 1);
   double previous = 0.0;
   for (size_t k = 0; k < xi.size(); ++k) {
-    Eigen::MatrixXd rhs = red.K1 * p + Wr_ * xi[k];
+    Eigen::MatrixXd rhs = red.apply_K1(p) + Wr_ * xi[k];
     if (block_ == 4) rhs += rN0_ * dN[k] + rN1_ * previous;
     if (red.matrix_free) {
       const Eigen::MatrixXd guess = rolled(p);

@@ -101,6 +101,8 @@ enum class LinearSolver { automatic, dense, matrix_free };
 
 /// The largest r for which `automatic` takes the dense path (measured, linear_model.cpp).
 constexpr int kDenseReducedUnknowns = 11000;
+/// The most threads the linear model uses (LinearModelInput::threads): one per column of a block.
+constexpr int kMaxThreads = 4;
 
 struct LinearModelInput {
   // A constructor rather than an aggregate: {mu, speed, spin_offset} stays valid (see
@@ -124,6 +126,10 @@ struct LinearModelInput {
   /// how the creepage of step k is taken (by default its mean over [t_{k-1}, t_k]; midstep: at
   /// t_k - dt/2; contact: at t_k, as CONTACT)
   contact::CreepageSampling sampling = contact::CreepageSampling::average;
+  /// Threads of the fast sweep, the recursion and time_response (solver.threads): the columns of
+  /// a block (K1 and K0 products, PCG solves) are shared out among them; 0: one per hardware
+  /// thread, at most 4 (the block size). The results do not depend on it (linear_model.cpp).
+  int threads = 0;
 };
 
 /// Whether a model with r reduced unknowns takes the matrix-free path under `solver`.
@@ -179,6 +185,8 @@ class LinearContactModel {
   bool matrix_free() const { return uses_matrix_free(solver_, r_); }
   /// Steps per contact length (the extent of the contact area in x, in elements).
   int steps_per_contact_length() const { return steps_per_contact_length_; }
+  /// Threads the model uses (LinearModelInput::threads resolved: 1 to kMaxThreads).
+  int threads() const { return threads_; }
   int adhesion_elements() const { return n_adhesion_; }
   int slip_elements() const { return n_slip_; }
   double time_step() const { return dt_; }
@@ -301,6 +309,8 @@ class LinearContactModel {
   const Reduced& reduced() const;          // on the path taken
   const Reduced& reduced_factor() const;   // dense (Cholesky), built on demand
   const Reduced& reduced_matrix_free() const;
+  /// The per-thread copies of red's FFT operators (threads_ - 1 of them).
+  void add_lanes(Reduced& red) const;
   /// Pi' S Pi X: the tractions rolled on by one element (the start of the PCG solves).
   Eigen::MatrixXd rolled(const Eigen::MatrixXd& X) const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
@@ -342,6 +352,7 @@ class LinearContactModel {
   LinearSolver solver_ = LinearSolver::automatic;
   contact::CreepageSampling sampling_ = contact::CreepageSampling::average;
   int steps_per_contact_length_ = 1;
+  int threads_ = 1;  ///< LinearModelInput::threads resolved (>= 1)
   int n_adhesion_ = 0, n_slip_ = 0, r_ = 0;
   contact::InfluenceTable table_;
   std::shared_ptr<const contact::HalfSpaceOperator> A0_op_;  ///< A0 (shift 1) by FFT

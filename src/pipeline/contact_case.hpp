@@ -42,6 +42,7 @@ struct ContactCase {
   contact::CreepageSampling sampling = contact::CreepageSampling::average;
   contact::Backend backend = contact::Backend::Auto;
   nss::LinearSolver linear_solver = nss::LinearSolver::automatic;  ///< solver.linear_model
+  int threads = 0;  ///< solver.threads: of the linear model (0: one per hardware thread, at most 4)
   /// profiles: the wheel-rail pair, the wheelset position the contact point is found at, and
   /// (after place_contact) the contact point.
   std::shared_ptr<const geometry::WheelRailPair> profiles;

@@ -4,9 +4,9 @@ namespace rollnoise::pipeline {
 
 std::unique_ptr<nss::LinearContactModel> linear_model(const ContactCase& c, const contact::ContactPatch& patch,
                                                       const contact::TangentialSolution& steady) {
-  return std::make_unique<nss::LinearContactModel>(patch, steady,
-                                                   nss::LinearModelInput{c.mu, c.speed, c.spin_offset, c.falling,
-                                                                         c.linear_solver, c.sampling});
+  nss::LinearModelInput in{c.mu, c.speed, c.spin_offset, c.falling, c.linear_solver, c.sampling};
+  in.threads = c.threads;
+  return std::make_unique<nss::LinearContactModel>(patch, steady, in);
 }
 
 MeanState solve_mean_state(ContactCase c, bool with_model) {

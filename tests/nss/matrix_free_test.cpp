@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
+#include "core/errors.hpp"
 #include "nss/linear_model.hpp"
 
 using namespace rollnoise;
@@ -125,4 +127,63 @@ TEST(MatrixFree, PcgIterationCountsAreNearlyGridIndependent) {
     EXPECT_LE(its.back(), c.xi_x == 0 ? 25.0 : 35.0);
     EXPECT_LE(its.back(), 1.6 * its.front());
   }
+}
+
+// Threads share out the columns of a block (nss/linear_model.cpp, "Threads"); each column is
+// computed with the same operations as in a serial run, so f, g and the time response are the
+// same to the last bit with 1 and with 4 threads, on both paths (4 > the cores of a CI machine:
+// the threads then interleave, which must not matter either).
+TEST(MatrixFree, ResultsDoNotDependOnTheNumberOfThreads) {
+  const ContactPatch p = patch(24, 18);
+  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kV, Creepage{1e-3, 1e-3, -0.053}, 0.0});
+  std::vector<double> freqs;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1e-4, 1e-4);
+  std::vector<Eigen::Vector3d> xi;
+  std::vector<double> dN;
+  for (int k = 0; k < 20; ++k) {
+    xi.emplace_back(u(rng), u(rng), 50 * u(rng));
+    dN.push_back(1e7 * u(rng));
+  }
+  for (nss::LinearSolver solver : {nss::LinearSolver::dense, nss::LinearSolver::matrix_free}) {
+    std::vector<std::vector<nss::CreepMatrix>> f;
+    std::vector<std::vector<nss::LoadVector>> g;
+    std::vector<std::vector<Eigen::Vector3d>> F;
+    for (int threads : {1, 4}) {
+      nss::LinearModelInput in{kMu, kV, 0.0, {}, solver};
+      in.threads = threads;
+      const nss::LinearContactModel m(p, s, in);
+      ASSERT_EQ(m.threads(), threads);
+      if (freqs.empty())
+        for (int i = 0; i <= 40; ++i) freqs.push_back(m.nyquist_frequency() * i / 40);
+      f.push_back(m.creep_coefficients(freqs));
+      g.push_back(m.normal_load_coefficients(freqs));
+      F.push_back(m.time_response(xi, dN));
+    }
+    const char* path = solver == nss::LinearSolver::dense ? "dense" : "matrix-free";
+    for (size_t i = 0; i < freqs.size(); ++i) {
+      EXPECT_TRUE(f[0][i] == f[1][i]) << path << " f at " << freqs[i] << " Hz";
+      EXPECT_TRUE(g[0][i] == g[1][i]) << path << " g at " << freqs[i] << " Hz";
+    }
+    for (size_t k = 0; k < xi.size(); ++k) EXPECT_TRUE(F[0][k] == F[1][k]) << path << " step " << k;
+  }
+}
+
+TEST(MatrixFree, ThreadCountOutsideZeroToFourIsRefusedNamingTheKey) {
+  const ContactPatch p = patch(16, 12);
+  const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kV, Creepage{1e-3, 0, 0}, 0.0});
+  for (int threads : {-1, 5}) {
+    nss::LinearModelInput in{kMu, kV, 0.0};
+    in.threads = threads;
+    try {
+      nss::LinearContactModel m(p, s, in);
+      ADD_FAILURE() << threads << " threads accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "solver.threads") << e.what();
+    }
+  }
+  nss::LinearModelInput in{kMu, kV, 0.0};
+  const nss::LinearContactModel automatic(p, s, in);
+  EXPECT_GE(automatic.threads(), 1);
+  EXPECT_LE(automatic.threads(), nss::kMaxThreads);
 }

@@ -184,8 +184,8 @@ TEST(NssStress, CreepCoefficientsOfEllipsesFromAspectRatio01To10ArePassiveAndSym
 TEST(NssStress, CreepCoefficientsStayFiniteAndPassiveOnGridsFrom4x4To100x100) {
   // The paper's ellipse; partial slip (Sec. 3.2 mean state) and full sliding; the direct solve up
   // to 34 x 25 (a 4192-unknown complex LU on 68 x 50 costs ~10 s). Spin offset 0. On 68 x 50 and
-  // 100 x 100 full sliding only (r = 6140 reduced unknowns on 100 x 100: ~5 s; partial slip there
-  // has r = 10371 and costs ~45 s, see SteadyStress.DISABLED_LargeGrid100x100NssModel).
+  // 100 x 100 full sliding only (r = 6140 reduced unknowns on 100 x 100: ~5 s on the dense path;
+  // partial slip there, r = 10371, is SteadyStress.LargeGrid100x100NssModel, matrix-free).
   print_header();
   for (auto [nx, ny] : std::vector<std::pair<int, int>>{
            {4, 4}, {5, 5}, {6, 6}, {8, 8}, {16, 12}, {34, 25}, {68, 50}, {100, 100}}) {
