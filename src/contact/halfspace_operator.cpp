@@ -103,8 +103,8 @@ class FftImpl final : public HalfSpaceOperator::Impl {
     }
   }
   /// Replace the tangential kernel spectra by the inverse of the 2 x 2 symbol in every bin, its
-  /// eigenvalues floored at floor * self (HalfSpaceOperator::inverse_circulant).
-  void invert_symbol(double floor, double self) {
+  /// eigenvalues floored at floor * self, plus `diagonal` (HalfSpaceOperator::inverse_circulant).
+  void invert_symbol(double floor, double self, double diagonal) {
     const size_t ncplx = fft_.spectrum_size(), nreal = fft_.real_size();
     // kernel_ holds sigma / nreal; the inverse multiplier is sigma^{-1} / nreal.
     std::vector<Eigen::Matrix2d> sym(ncplx);
@@ -116,7 +116,8 @@ class FftImpl final : public HalfSpaceOperator::Impl {
     }
     for (size_t k = 0; k < ncplx; ++k) {
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(sym[k]);
-      const Eigen::Vector2d inv = es.eigenvalues().cwiseMax(floor * self).cwiseInverse();
+      const Eigen::Vector2d inv =
+          (es.eigenvalues().cwiseMax(floor * self) + Eigen::Vector2d::Constant(diagonal)).cwiseInverse();
       const Eigen::Matrix2d si = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose() / nreal;
       kernel_[0][k] = si(0, 0);
       kernel_[1][k] = si(0, 1);
@@ -190,10 +191,10 @@ HalfSpaceOperator::HalfSpaceOperator(const Grid& grid, Problem problem,
 
 HalfSpaceOperator::HalfSpaceOperator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
-HalfSpaceOperator HalfSpaceOperator::inverse_circulant(const InfluenceTable& table, double floor) {
+HalfSpaceOperator HalfSpaceOperator::inverse_circulant(const InfluenceTable& table, double floor, double diagonal) {
   auto impl = std::make_unique<FftImpl>(
       table.grid(), Problem::Tangential, [&table](Component c, int di, int dj) { return table(c, di, dj); });
-  impl->invert_symbol(floor, std::min(table(Component::xx, 0, 0), table(Component::yy, 0, 0)));
+  impl->invert_symbol(floor, std::min(table(Component::xx, 0, 0), table(Component::yy, 0, 0)), diagonal);
   return HalfSpaceOperator(std::move(impl));
 }
 

@@ -173,6 +173,7 @@ struct LinearContactModel::Reduced {
   Eigen::VectorXd d;                            ///< D: c_e on slip unknowns, 0 on adhesion ones
   Eigen::VectorXd w;                            ///< preconditioner scaling (1 for adhesion)
   double tolerance = 0.0;                       ///< PCG: relative residual |b - K0 x| / |b|
+  double cbar = 0.0;                            ///< diagonal added to the preconditioner's symbol (as c_e)
   mutable std::atomic<long> solves{0}, iterations{0};
 
   // ---- threads ("Threads" at the top of the file) ----
@@ -512,10 +513,12 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() con
   red->A = std::make_unique<contact::ElementOperator>(
       std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 0), g, el_, slip_,
       t_, dt_);
-  // Preconditioner (see "Matrix-free path" at the top of the file): M^{-1} = W Pi' (dt C^{-1}) Pi W.
+  // Preconditioner (see "Matrix-free path" at the top of the file): M^{-1} = W Pi' (C/dt + cbar I)^{-1}
+  // Pi W, cbar = 0 with adhesion elements, else the median c_e.
+  red->cbar = preconditioner_shift();
   red->G = std::make_unique<contact::ElementOperator>(
       std::make_shared<const contact::HalfSpaceOperator>(
-          contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor)),
+          contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor, red->cbar * dt_)),
       g, el_, slip_, t_, 1.0 / dt_);
   red->d = step_matrix_slip_diagonal();
   red->w = Eigen::VectorXd::Ones(r_);
@@ -526,12 +529,23 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() con
   for (size_t a = 0; a < el_.size(); ++a)
     if (slip_[a]) {
       const double kappa = t_[a].dot(self * t_[a]);
-      red->w(offset_[a]) = std::sqrt(kappa / (kappa + c_[a]));
+      red->w(offset_[a]) = std::sqrt((kappa + red->cbar) / (kappa + c_[a]));
     }
   red->tolerance = kPcgTolerance;
   add_lanes(*red);
   reduced_mf_ = std::move(red);
   return *reduced_mf_;
+}
+
+double LinearContactModel::preconditioner_shift() const {
+  // Full sliding: the median c_e (the slip unknowns' diagonal, "Matrix-free path" at the top of
+  // the file); with adhesion elements 0 (their rows have no diagonal term).
+  if (n_adhesion_ > 0 || n_slip_ == 0) return 0.0;
+  std::vector<double> c;
+  for (size_t a = 0; a < el_.size(); ++a)
+    if (slip_[a]) c.push_back(c_[a]);
+  std::nth_element(c.begin(), c.begin() + c.size() / 2, c.end());
+  return c[c.size() / 2];
 }
 
 void LinearContactModel::add_lanes(Reduced& red) const {
@@ -552,7 +566,7 @@ void LinearContactModel::add_lanes(Reduced& red) const {
       lane.A = red.copies.back().get();
       red.copies.push_back(std::make_unique<contact::ElementOperator>(
           std::make_shared<const contact::HalfSpaceOperator>(
-              contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor)),
+              contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor, red.cbar * dt_)),
           g, el_, slip_, t_, 1.0 / dt_));
       lane.G = red.copies.back().get();
     }

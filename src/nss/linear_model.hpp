@@ -311,6 +311,8 @@ class LinearContactModel {
   const Reduced& reduced_matrix_free() const;
   /// The per-thread copies of red's FFT operators (threads_ - 1 of them).
   void add_lanes(Reduced& red) const;
+  /// The diagonal shift cbar of the matrix-free preconditioner's symbol (linear_model.cpp).
+  double preconditioner_shift() const;
   /// Pi' S Pi X: the tractions rolled on by one element (the start of the PCG solves).
   Eigen::MatrixXd rolled(const Eigen::MatrixXd& X) const;
   void reduce() const;  // lazily builds the Hessenberg form for the sweeps
