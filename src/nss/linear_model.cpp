@@ -538,14 +538,14 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() con
 }
 
 double LinearContactModel::preconditioner_shift() const {
-  // Full sliding: the median c_e (the slip unknowns' diagonal, "Matrix-free path" at the top of
-  // the file); with adhesion elements 0 (their rows have no diagonal term).
-  if (n_adhesion_ > 0 || n_slip_ == 0) return 0.0;
+  // The median c_e of the slip elements weighted by the slip unknowns' share of r ("Matrix-free
+  // path" at the top of the file): 0 in full adhesion, the median in full sliding.
+  if (n_slip_ == 0) return 0.0;
   std::vector<double> c;
   for (size_t a = 0; a < el_.size(); ++a)
     if (slip_[a]) c.push_back(c_[a]);
   std::nth_element(c.begin(), c.begin() + c.size() / 2, c.end());
-  return c[c.size() / 2];
+  return double(n_slip_) / double(r_) * c[c.size() / 2];
 }
 
 void LinearContactModel::add_lanes(Reduced& red) const {

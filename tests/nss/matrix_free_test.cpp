@@ -113,20 +113,20 @@ TEST(MatrixFree, TimeResponseEqualsTheDensePath) {
 }
 
 TEST(MatrixFree, PcgIterationCountsAreNearlyGridIndependent) {
-  // The preconditioner (the inverse of the compliance's circulant symbol on the contact elements,
-  // slip unknowns scaled by sqrt((kappa + cbar)/(kappa + c)); in full sliding the symbol of
-  // A/dt + cbar with cbar the median c) against 24 x 18, 34 x 25 and 68 x 50 (4x the elements of
-  // 34 x 25). Measured 15-16 iterations in adhesion, 21-26 in partial slip and 8-10 in full
-  // sliding (39-61 with cbar = 0: the slip diagonal dominates there); without the slip scaling
-  // 85-95 in partial slip, unpreconditioned CG grows with the condition number of A (~ the grid
-  // size). The bounds allow 1.6x growth from the coarsest grid to the finest.
+  // The preconditioner (the inverse of the circulant symbol of A/dt + cbar on the contact
+  // elements, cbar the median slip diagonal c_e times the slip unknowns' share of r; slip unknowns
+  // scaled by sqrt((kappa + cbar)/(kappa + c))) against 24 x 18, 34 x 25 and 68 x 50 (4x the
+  // elements of 34 x 25). Measured 14-17 iterations in adhesion, 17-21 in partial slip (19-27 with
+  // cbar = 0) and 8-9 in full sliding (39-61 with cbar = 0: the slip diagonal dominates there);
+  // without the slip scaling 85-95 in partial slip, unpreconditioned CG grows with the condition
+  // number of A (~ the grid size). The bounds allow 1.6x growth from the coarsest grid to the finest.
   for (const Creepage& c : {Creepage{0, 0, 0}, Creepage{1e-3, 1e-3, -0.053}, Creepage{0.1, 0, 0}}) {
     std::vector<double> its;
     for (auto [nx, ny] : std::vector<std::pair<int, int>>{{24, 18}, {34, 25}, {68, 50}})
       its.push_back(iterations_per_solve(patch(nx, ny), c));
     std::printf("xi_x = %g: PCG iterations per solve %.1f (24x18), %.1f (34x25), %.1f (68x50)\n", c.xi_x, its[0],
                 its[1], its[2]);
-    EXPECT_LE(its.back(), c.xi_x == 0 ? 25.0 : c.xi_x < 0.01 ? 35.0 : 15.0);
+    EXPECT_LE(its.back(), c.xi_x == 0 ? 25.0 : c.xi_x < 0.01 ? 28.0 : 15.0);
     EXPECT_LE(its.back(), 1.6 * its.front());
   }
 }
