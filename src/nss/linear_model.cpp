@@ -91,23 +91,30 @@
 // Matrix-free path (solver.linear_model = "matrix_free", or "auto" above kDenseReducedUnknowns =
 // 11000 reduced unknowns, where the dense factor passes ~1 GB). K0 x = D x + Pi' A (Pi x)/dt is one
 // FFT convolution (contact::ElementOperator with the shift-0 kernel, like K1 with shift 1), and
-// K0 solves are preconditioned CG (Reduced::pcg). Preconditioner: M^{-1} = W Pi' (dt C^{-1}) Pi W,
-// C^{-1} the inverse of the zero-padded circulant of the compliance, 2 x 2 per Fourier bin
+// K0 solves are preconditioned CG (Reduced::pcg). Preconditioner: M^{-1} = W Pi' (C/dt + cbar I)^{-1}
+// Pi W, C the zero-padded circulant of the compliance, inverted 2 x 2 per Fourier bin
 // (HalfSpaceOperator::inverse_circulant; its eigenvalues floored at 0.1 of the self-compliance:
 // the truncated kernel's circulant has a few slightly negative bins, 17 of 6800 on 68 x 50, which
-// unfloored took the iterations from 16 to 65), W = 1 on adhesion unknowns and
-// sqrt(kappa_e/(kappa_e + c_e)) on slip unknowns (kappa_e = t_e' A_ee t_e/dt): where c_e dominates
-// (deep slip, pn -> 0 at the edges) K0 is nearly diagonal and the full-space inverse would
-// overweight those rows. For the adhesion block R C^{-1} R' >= (R C R')^{-1} (Schur complement),
-// the restricted hypersingular-like inverse with log-type growth only. Measured PCG iterations per
-// solve at tolerance 1e-12 (tests/nss/matrix_free_test.cpp, time responses): full adhesion 14.3,
-// 15.1, 16.7, 17.5 on 24x18, 34x25, 68x50, 100x100; partial slip (paper state) 19.2, 21.7, 26.8,
-// 29.5; full sliding 39, 61, 81 on 34x25, 68x50, 100x100 (grows: there K0 ~ D + A/dt with c_e
-// ~30 kappa_e, and neither W nor C^{-1} alone approximates (c + sigma/dt)^{-1}; a symbol with a
-// representative c would be the next step). Without W: 85-95 in partial slip. Starting from the
-// rolled traction (Pi' S Pi x_prev, S one element in x) saves ~5 % in the recursion and
-// time_response and nothing in the Krylov steps (the orthonormalised block is not a traction
-// history), so the Krylov solves start from zero.
+// unfloored took the iterations from 16 to 65). W = 1 on adhesion unknowns and
+// sqrt((kappa_e + cbar)/(kappa_e + c_e)) on slip unknowns (kappa_e = t_e' A_ee t_e/dt), so that
+// the preconditioner's diagonal ~ 1/(kappa_e + cbar) becomes that of K0, 1/(kappa_e + c_e): where
+// c_e dominates (deep slip, pn -> 0 at the edges) K0 is nearly diagonal and the full-space inverse
+// would overweight those rows. cbar (preconditioner_shift) is the median c_e of the slip elements
+// times the slip unknowns' share of r: 0 in full adhesion, where R C^{-1} R' >= (R C R')^{-1}
+// (Schur complement) is the restricted hypersingular-like inverse with log-type growth only; the
+// median in full sliding, where K0 = D + Pi' A Pi/dt has c_e ~30 kappa_e and C^{-1} alone (which
+// grows like |k| in the Fourier bins) spreads a nearly diagonal spectrum instead of compressing
+// it. Measured PCG iterations per solve at tolerance 1e-12 (tests/nss/matrix_free_test.cpp, time
+// responses) on 24x18, 34x25, 68x50 (100x100 from the stress test): full adhesion 14.3, 15.1,
+// 16.7 (17.5); partial slip (paper state) 17.2, 18.2, 21.3 (27; with cbar = 0: 19.2, 21.7, 26.8,
+// 32.5); full sliding 8.0, 8.3, 9.2 (10.4; with cbar = 0: 39 and 61 on 34x25 and 68x50, 87 on
+// 100x100). The share weighting matters: cbar = the median in partial slip gives 26-29 (the
+// adhesion rows then see a wrong diagonal); 0.1-0.3 of it 20-25. A block-Jacobi preconditioner
+// (adhesion and slip elements each with their own symbol, the coupling dropped) gave 23-26 at
+// twice the FFT cost. Without W: 85-95 in partial slip. Starting from the rolled traction
+// (Pi' S Pi x_prev, S one element in x) saves ~5 % in the recursion and time_response and nothing
+// in the Krylov steps (the orthonormalised block is not a traction history), so the Krylov
+// solves start from zero.
 // Tolerance: relative residual 1e-12. The Krylov process then runs with an inexact N (each
 // block X = N V + E, |E|_K0 <~ 1e-12 cond-weighted), i.e. exactly for a perturbed rolling step; the
 // Markov parameters move by O(1e-12) relative and the a-posteriori check (1e-10 between models
@@ -117,16 +124,40 @@
 // the exact K0-Gram matrix of the stored basis); Y = K0 V is kept while it takes < 256 MB,
 // otherwise recomputed (memory r d instead of 2 r d: 200 x 200 partial slip, r ~ 41500, d ~ 1600,
 // 0.53 GB instead of 1.06 GB).
-// Cost (measured under load ~3-6 on this 2-core machine, bench --sweep-cost): one PCG iteration =
-// two FFT convolutions (K0 and M^{-1}, 8 transforms of the padded grid) ~0.13 ms on 34x25, ~1.3-1.8
-// ms on 68x50 and 100x100. The sweep needs 4 (block) x 2.3 Lc solves of ~25-30 iterations:
-// 34x25 1.45 s (dense 0.19 s), 68x50 20.7 s (dense 4.3 s), 100x100 partial slip 162 s (dense ~45 s,
-// 0.86 GB). So the matrix-free path is the memory-scalable one, not the fast one: each dense block
-// step is one streamed triangular solve (~7 ms on 68x50), each matrix-free one ~110 FFT
-// convolutions. Reaching the times (68x50 < 0.5 s, 200x200 < 10 s) needs ~1-2 convolutions
-// per column and step instead of ~60, i.e. a different use of the operator (e.g. rational Krylov at
-// a few frequencies with a preconditioned solver for K0 - z K1, or a multigrid K0 solve reaching
-// 1e-12 in ~3 V-cycles), not a better constant.
+// Threads (LinearModelInput::threads, solver.threads). The columns of a block (4: three creepages
+// and the normal load) are independent in K1 X, K0 X and the PCG solves, so Reduced::for_columns
+// shares them out among threads, each with its own copies of the FFT operators (an FFT
+// operator's work arrays serve one caller). Every column goes through the same operations as in a
+// serial run: the results are identical to the last bit for any thread count (tested). The dense
+// path's Cholesky solve stays serial: it streams the factor once for all columns, and two threads
+// with two columns each stream it twice (measured on r = 3541: 7.1 ms for 2 x 2 columns on two
+// threads against 7.8 ms for 4 on one).
+// Cost (bench --sweep-cost 34,68,100,200 on the paper state, unloaded 2-core machine, 2 threads,
+// 1000 frequencies, f and g, set-up included): dense 0.09 s (34x25), 2.1 s (68x50), 12.4 s
+// (100x74, 0.39 GB); matrix-free 0.38 s (34x25, 19.9 PCG iterations per solve), 5.0 s (68x50,
+// 22.8), 12.8 s (100x74, 25.3), 168 s (200x147, r = 30477, 412 block steps, 30.7, peak 0.53 GB).
+// (Before threads and the shifted preconditioner: 0.72, 9.7, 28.4 and 326 s.) One PCG iteration
+// is two FFT convolutions (K0 and M^{-1}, 8 transforms of the padded grid); on 200x147 the sweep
+// is ~50000 of them (4 columns x 412 steps x 30.7), ~95 % of its time; the a-posteriori checks
+// take 3.6 s. So the matrix-free path is the memory-scalable one, and as fast as the dense one
+// from ~100x74 up.
+// Not reached: the 68x50 in < 0.5 s and 200x200 in < 10 s. What was measured on the way:
+//   - The dense path cannot get there: the Krylov model needs at least one contact length of block
+//     steps (the input must cross the patch; 2.06 Lc here), each a pass over the factor (100 MB
+//     at r = 3541, ~7 ms at the measured ~14 GB/s), so >= 0.5 s of passes, plus the Cholesky
+//     factorisation (1.5e10 flops, 0.55 s).
+//   - Krylov at z = 1 (shift-invert with an LU of K0 - K1, for a band near omega = 0): on 34x25 over
+//     10 Hz - 10 kHz (omega dt up to 2.2) 2.8e-7 after 80 block steps, against 5e-15 for the
+//     polynomial Krylov at z = 0 used here: the noise band is not near z = 1 on these grids.
+//   - A hierarchical-matrix Cholesky (hmat-oss 1.8, Debian libhmat-oss, ACA+, admissibility 2,
+//     leaves of 64, on the dumped K0 of 68x50): at 1e-10 4.2 M entries (dense triangle 6.3 M),
+//     8.1 s to factor, 20 ms per 4-column solve; at 1e-6 2.4 M, 1.9 s, 12 ms (dense 0.57 s and
+//     7.8 ms). At r ~ 3500 a 2D patch's off-diagonal blocks do not compress enough to pay.
+//   - FFTW_MEASURE plans transform the padded grids 1.3-1.5x faster than FFTW_ESTIMATE (e.g.
+//     100 x 135: 43 against 60 us) but choose plans by timing, so the results would change in the
+//     last bits from run to run; not taken.
+// What would: a K0 solve of one or two convolutions (e.g. multigrid for the compliance reaching
+// 1e-12 in a few V-cycles) on the matrix-free path, and fewer, larger steps for the Krylov model.
 
 namespace rollnoise::nss {
 
