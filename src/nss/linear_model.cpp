@@ -541,16 +541,11 @@ const LinearContactModel::Reduced& LinearContactModel::reduced_matrix_free() con
   const contact::Grid& g = table_.grid();
   auto red = std::make_unique<Reduced>(contact::ElementOperator(A0_op_, g, el_, slip_, t_, dt_));
   red->matrix_free = true;
-  red->A = std::make_unique<contact::ElementOperator>(
-      std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 0), g, el_, slip_,
-      t_, dt_);
+  red->A = reduced_operator(ReducedOperator::compliance);
   // Preconditioner (see "Matrix-free path" at the top of the file): M^{-1} = W Pi' (C/dt + cbar I)^{-1}
   // Pi W, cbar = 0 with adhesion elements, else the median c_e.
   red->cbar = preconditioner_shift();
-  red->G = std::make_unique<contact::ElementOperator>(
-      std::make_shared<const contact::HalfSpaceOperator>(
-          contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor, red->cbar * dt_)),
-      g, el_, slip_, t_, 1.0 / dt_);
+  red->G = reduced_operator(ReducedOperator::preconditioner, red->cbar);
   red->d = step_matrix_slip_diagonal();
   red->w = Eigen::VectorXd::Ones(r_);
   const Eigen::Matrix2d self = (Eigen::Matrix2d() << table_(Component::xx, 0, 0), table_(Component::xy, 0, 0),
@@ -579,27 +574,38 @@ double LinearContactModel::preconditioner_shift() const {
   return double(n_slip_) / double(r_) * c[c.size() / 2];
 }
 
+std::unique_ptr<contact::ElementOperator> LinearContactModel::reduced_operator(ReducedOperator which,
+                                                                              double cbar) const {
+  const contact::Grid& g = table_.grid();
+  auto on_elements = [&](contact::HalfSpaceOperator op, double divisor) {
+    return std::make_unique<contact::ElementOperator>(std::make_shared<const contact::HalfSpaceOperator>(std::move(op)),
+                                                      g, el_, slip_, t_, divisor);
+  };
+  switch (which) {
+    case ReducedOperator::rolling_step:
+      return on_elements(contact::HalfSpaceOperator(table_, contact::Problem::Tangential, 1), dt_);
+    case ReducedOperator::compliance:
+      return on_elements(contact::HalfSpaceOperator(table_, contact::Problem::Tangential, 0), dt_);
+    case ReducedOperator::preconditioner:
+      return on_elements(contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor, cbar * dt_), 1.0 / dt_);
+  }
+  throw std::logic_error("reduced_operator: unknown operator");
+}
+
 void LinearContactModel::add_lanes(Reduced& red) const {
   // Lane 0 is the operators red holds; every further lane builds its own FFT operators (the kernel
   // spectra again: a few FFTs of the padded grid, ~1 MB on 100 x 100).
-  const contact::Grid& g = table_.grid();
   red.lanes.assign(1, Reduced::Lane{&red.K1, red.A.get(), red.G.get()});
+  auto own = [&red](std::unique_ptr<contact::ElementOperator> op) {
+    red.copies.push_back(std::move(op));
+    return red.copies.back().get();
+  };
   for (int t = 1; t < threads_; ++t) {
     Reduced::Lane lane;
-    red.copies.push_back(std::make_unique<contact::ElementOperator>(
-        std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 1), g, el_, slip_, t_,
-        dt_));
-    lane.K1 = red.copies.back().get();
+    lane.K1 = own(reduced_operator(ReducedOperator::rolling_step));
     if (red.matrix_free) {
-      red.copies.push_back(std::make_unique<contact::ElementOperator>(
-          std::make_shared<const contact::HalfSpaceOperator>(table_, contact::Problem::Tangential, 0), g, el_, slip_,
-          t_, dt_));
-      lane.A = red.copies.back().get();
-      red.copies.push_back(std::make_unique<contact::ElementOperator>(
-          std::make_shared<const contact::HalfSpaceOperator>(
-              contact::HalfSpaceOperator::inverse_circulant(table_, kSymbolFloor, red.cbar * dt_)),
-          g, el_, slip_, t_, 1.0 / dt_));
-      lane.G = red.copies.back().get();
+      lane.A = own(reduced_operator(ReducedOperator::compliance));
+      lane.G = own(reduced_operator(ReducedOperator::preconditioner, red.cbar));
     }
     red.lanes.push_back(lane);
   }

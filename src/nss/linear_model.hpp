@@ -88,6 +88,10 @@
 #include "contact/patch.hpp"
 #include "contact/tangential_solver.hpp"
 
+namespace rollnoise::contact {
+class ElementOperator;
+}  // namespace rollnoise::contact
+
 namespace rollnoise::nss {
 
 using CreepMatrix = Eigen::Matrix3cd;
@@ -311,6 +315,11 @@ class LinearContactModel {
   const Reduced& reduced_matrix_free() const;
   /// The per-thread copies of red's FFT operators (threads_ - 1 of them).
   void add_lanes(Reduced& red) const;
+  /// The FFT operators of the reduced form on the contact elements: the rolling step
+  /// K1 = Pi' A0 Pi/dt, the compliance part of K0, Pi' A Pi/dt, and the matrix-free
+  /// preconditioner Pi' (C/dt + cbar I)^{-1} Pi (linear_model.cpp, "Matrix-free path").
+  enum class ReducedOperator { rolling_step, compliance, preconditioner };
+  std::unique_ptr<contact::ElementOperator> reduced_operator(ReducedOperator which, double cbar = 0.0) const;
   /// The diagonal shift cbar of the matrix-free preconditioner's symbol (linear_model.cpp).
   double preconditioner_shift() const;
   /// Pi' S Pi X: the tractions rolled on by one element (the start of the PCG solves).
