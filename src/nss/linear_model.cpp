@@ -141,11 +141,24 @@
 // is ~50000 of them (4 columns x 412 steps x 30.7), ~95 % of its time; the a-posteriori checks
 // take 3.6 s. So the matrix-free path is the memory-scalable one, and as fast as the dense one
 // from ~100x74 up.
-// Not reached: the issue's 68x50 in < 0.5 s and 200x200 in < 10 s. What was measured on the way:
-//   - The dense path cannot get there: the Krylov model needs at least one contact length of block
-//     steps (the input must cross the patch; 2.06 Lc here), each a pass over the factor (100 MB
-//     at r = 3541, ~7 ms at the measured ~14 GB/s), so >= 0.5 s of passes, plus the Cholesky
-//     factorisation (1.5e10 flops, 0.55 s).
+// Not reached: 68x50 in < 0.5 s and 200x200 in < 10 s (docs/accuracy.md, "Limits of the sweep's
+// speed"). The cost is (K0 solves) x (cost of one), both measured:
+//   - Solves: ~2 contact lengths of block steps, 4 columns each (560 on 68x50, 1648 on 200x147).
+//     On 34x25 the model's error is 7.9e-5 after 1 Lc, 2.6e-9 after 5/3, 1.6e-12 after 2, and the
+//     same on the requested band (10 Hz - 10 kHz) as on [0, Nyquist] at every step: a check on the
+//     band alone would not stop earlier.
+//   - The dense path cannot get there: each block step is a pass over the factor (forward and back
+//     over the 50 MB triangle at r = 3541, ~7 ms at the measured ~14 GB/s): ~1 s for 140 steps,
+//     plus the Cholesky factorisation (1.5e10 flops, 0.55 s).
+//   - Matrix-free: a convolution on the padded grid is 4 real transforms, 0.23 ms (136 x 100) and
+//     1.43 ms (400 x 294). The targets on 2 threads, less the K1 and K0 products, leave ~6
+//     convolutions per solve: 3 PCG iterations to 1e-12, i.e. a preconditioned condition number
+//     ~1.001; the measured rates (23 and 31 iterations) correspond to 3.5 - 5.4.
+//   - Rational Krylov on the band (exact solves at shifts spread over 10 Hz - 10 kHz, real basis,
+//     Galerkin): 68x50 needs 17 shifts (132 vectors) for 3.6e-7 (9 shifts: 6e-2); on 34x25 more
+//     shifts made it worse (17: 1.1e-6, 33: 1.8e-3). At most 4x fewer vectors than the 560 here,
+//     each a complex non-Hermitian solve of K0 - z K1 (whose preconditioner would have to carry
+//     the transport): no net gain.
 //   - Krylov at z = 1 (shift-invert with an LU of K0 - K1, for a band near omega = 0): on 34x25 over
 //     10 Hz - 10 kHz (omega dt up to 2.2) 2.8e-7 after 80 block steps, against 5e-15 for the
 //     polynomial Krylov at z = 0 used here: the noise band is not near z = 1 on these grids.
@@ -156,8 +169,8 @@
 //   - FFTW_MEASURE plans transform the padded grids 1.3-1.5x faster than FFTW_ESTIMATE (e.g.
 //     100 x 135: 43 against 60 us) but choose plans by timing, so the results would change in the
 //     last bits from run to run; not taken.
-// What would: a K0 solve of one or two convolutions (e.g. multigrid for the compliance reaching
-// 1e-12 in a few V-cycles) on the matrix-free path, and fewer, larger steps for the Krylov model.
+// What would: a K0 solve to 1e-12 in ~3 convolutions, or a model with ~10x fewer vectors whose
+// solves cost no more than these; neither is known for this operator.
 
 namespace rollnoise::nss {
 
