@@ -267,10 +267,7 @@ struct LinearContactModel::Reduced {
   /// K0 X = D X + Pi' A Pi X / dt (matrix-free path), the columns in parallel.
   Eigen::MatrixXd apply_K0(const Eigen::MatrixXd& X) const {
     Eigen::MatrixXd Y(X.rows(), X.cols());
-    for_columns(X.cols(), [&](const Lane& l, Eigen::Index j) {
-      l.A->apply(X.col(j).data(), Y.col(j).data());
-      Y.col(j) += d.cwiseProduct(X.col(j));
-    });
+    for_columns(X.cols(), [&](const Lane& l, Eigen::Index j) { apply_K0(l, X.col(j), Y.col(j)); });
     return Y;
   }
   /// K0^{-1} B: the Cholesky factor (linalg::cholesky_solve_in_place: streams the factor once per
@@ -287,6 +284,12 @@ struct LinearContactModel::Reduced {
   }
 
  private:
+  /// y = K0 x = Pi' A Pi x / dt + D x for one column, with the lane's FFT operator.
+  void apply_K0(const Lane& lane, const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
+    lane.A->apply(x.data(), y.data());
+    y += d.cwiseProduct(x);
+  }
+
   // Preconditioned conjugate gradients (Saad, Iterative Methods for Sparse Linear Systems, 2nd ed.,
   // Alg. 9.1) for K0 x = b, M^{-1} = W G W; stops at |b - K0 x|_2 <= tolerance |b|_2.
   void pcg(const Lane& lane, const Eigen::VectorXd& b, Eigen::Ref<Eigen::VectorXd> x) const {
@@ -296,11 +299,12 @@ struct LinearContactModel::Reduced {
       x.setZero();
       return;
     }
-    Eigen::VectorXd r(b.size()), q(b.size()), z(b.size());
-    lane.A->apply(x.data(), r.data());
-    r = b - (r + d.cwiseProduct(x));
+    Eigen::VectorXd r(b.size()), q(b.size()), z(b.size()), wv(b.size());
+    apply_K0(lane, x, q);
+    r = b - q;
     auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
-      lane.G->apply(w.cwiseProduct(v).eval().data(), out.data());
+      wv = w.cwiseProduct(v);
+      lane.G->apply(wv.data(), out.data());
       out.array() *= w.array();
     };
     if (r.norm() <= tolerance * bnorm) return;
@@ -310,8 +314,7 @@ struct LinearContactModel::Reduced {
     const int max_iterations = 20000;
     for (int it = 1; it <= max_iterations; ++it) {
       ++iterations;
-      lane.A->apply(p.data(), q.data());
-      q += d.cwiseProduct(p);
+      apply_K0(lane, p, q);
       const double alpha = rz / p.dot(q);
       x += alpha * p;
       r -= alpha * q;
