@@ -12,6 +12,7 @@ struct CommonOptions {
   std::string output;                  ///< empty: CASENAME.h5 in the current folder
   std::vector<std::string> overrides;  ///< --set key=value
   bool quiet = false;
+  std::string contact_reference;       ///< --reference contact DIR (steady, validate)
 };
 
 /// Output path: -o, or CASENAME.h5.
@@ -46,6 +47,8 @@ int run_receptance(const CommonOptions& o);
 int run_statespace(const CommonOptions& o, const std::string& csv_prefix);
 /// rollnoise squeal (squeal_command.cpp); `route` is "1", "2" or "both".
 int run_squeal(const CommonOptions& o, const std::string& route);
+/// rollnoise contact-input (contact_input_command.cpp): -o is the folder of CASENAME.inp.
+int run_contact_input(const CommonOptions& o, bool steady_only);
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv);
 /// bench --sweep-cost: time and peak memory of the 1000-frequency sweep per grid, dense and
 /// matrix-free (bench_sweep_cost.cpp).

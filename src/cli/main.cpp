@@ -12,6 +12,7 @@
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
 //   rollnoise collect   STUDY.toml
+//   rollnoise contact-input CASE.toml [-o DIR] [--steady]   CONTACT's input for the case
 //   rollnoise keys                      the declared case keys with defaults and help
 //
 // Every command but keys takes -q (no progress output). Commands and options: docs/interface.md.
@@ -75,6 +76,10 @@ int main(int argc, char** argv) {
   add_common(response);
   auto* validate = app.add_subcommand("validate", "linear model against the unsteady solver");
   add_common(validate);
+  std::vector<std::string> reference;
+  for (auto* sub : {steady, validate})
+    sub->add_option("--reference", reference, "also compare with CONTACT's run in DIR: --reference contact DIR")
+        ->expected(2);
   auto* noise_cmd = app.add_subcommand("noise", "closed-loop contact-force spectra from roughness");
   add_common(noise_cmd);
   auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
@@ -100,6 +105,13 @@ int main(int argc, char** argv) {
                     "instead: time and peak memory of the 1000-frequency sweep, dense and matrix-free, on "
                     "these grids (nx, e.g. 34,68,100,200)")
       ->delimiter(',');
+  bool contact_input_steady = false;
+  auto* contact_input = app.add_subcommand("contact-input", "CONTACT's input (.inp) for the case (docs/contact_interop.md)");
+  contact_input->add_option("case", common.case_file, "case file (TOML)")->required();
+  contact_input->add_option("-o,--output", common.output, "folder of CASENAME.inp (default: the current folder)");
+  contact_input->add_option("--set", common.overrides, "override a case entry: --set grid.nx=60")->take_all();
+  contact_input->add_flag("--steady", contact_input_steady, "only the steady case, also when the case has an [excitation]");
+  contact_input->add_flag("-q,--quiet", common.quiet, "no progress output");
   auto* keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
   cli::StudyOptions study_options;
   auto* study = app.add_subcommand("study", "run a parameter study of noise cases (docs/study.md)");
@@ -131,8 +143,14 @@ int main(int argc, char** argv) {
       std::cout << io::describe_schema();
       return 0;
     }
+    if (!reference.empty()) {
+      if (reference[0] != "contact")
+        throw InputError("--reference", "--reference " + reference[0] + ": the known reference is 'contact DIR'");
+      common.contact_reference = reference[1];
+    }
     if (study->parsed()) return cli::run_study(study_options);  // its own output folder (docs/study.md)
     if (collect->parsed()) return cli::run_collect(study_options);
+    if (contact_input->parsed()) return cli::run_contact_input(common, contact_input_steady);
     // the output files, before any computation
     cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "");
     if (steady->parsed()) return cli::run_steady(common, sweeps);
