@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/contact_reference_report.hpp"
 #include "cli/contact_setup.hpp"
 #include "cli/progress.hpp"
 #include "contact/forces.hpp"
@@ -78,6 +79,7 @@ int run_response(const CommonOptions& o) {
 
 int run_validate(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
+  const auto reference = read_reference(o);  // CONTACT's run: bad files fail before any work
   const contact::CreepageHistory h = io::read_excitation(reader);
   MeanState ms = solve_mean_state(reader, true);
   io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact, h); });
@@ -120,6 +122,7 @@ int run_validate(const CommonOptions& o) {
   io::write_linear_response(w, "/validate/linear", lin);
   io::write_excitation(w, "/validate/excitation", h);
   io::write_validation(w, lin, unsteady, v, fr);
+  if (reference) report_validate_reference(w, *reference, lin, unsteady, t_start, fr, dt);
   const char* name[] = {"Fx", "Fy", "Mz"};
   if (v.fitted && fr.size() <= 5)
     for (size_t k = 0; k < fr.size(); ++k) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/contact_reference_report.hpp"
 #include "cli/progress.hpp"
 #include "contact/forces.hpp"
 #include "contact/steady_rolling.hpp"
@@ -39,6 +40,9 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
   io::ContactCase cc = io::read_contact_case(reader);
   io::within_case(reader, [&] { pipeline::place_contact(cc); });
   if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
+  if (!sweeps.empty() && !o.contact_reference.empty())
+    throw InputError("--reference", "--reference compares the steady solution; not with --sweep");
+  const auto reference = read_reference(o);  // CONTACT's run: bad files fail before any work
   // Read every sweep point before any work, so that bad input fails early.
   std::vector<double> values;
   std::vector<io::ContactCase> point_cases;  // the points' readers are not kept (memory)
@@ -71,6 +75,10 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
                 cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, cc.mu, cc.speed);
     print_solution(cc.grid, s, ms_since(t0));
     io::write_tangential(w, "/steady", cc.grid, cc.creepage, s);
+    if (reference) {
+      const auto f = contact::total_forces(cc.grid, s.px, s.py);
+      report_steady_reference(w, *reference, {f.Fx, f.Fy, f.Mz});
+    }
   } else {
     std::vector<double> force, creep;
     std::vector<int> n_adh, n_slip, iters;
