@@ -44,11 +44,16 @@ def main():
                 spec[kind + "_" + c] = rh.values(f, path)
             spec_units[c] = rh.units(f, f"/validate/spectrum/unsteady_{c}")
         err = rh.values(f, "/validate/errors/rms_relative")
+        # CONTACT's own run (validate --reference contact DIR), drawn beside the built-in solver
+        tc = rh.values(f, "/validate/contact/time") if "/validate/contact/time" in f else None
+        fc = rh.values(f, "/validate/contact/force") if tc is not None else None
 
     fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
     for j, ax in enumerate(axes):
         ax.plot(t * 1e3, fu[:, j], "k-", lw=1.2, label="unsteady (paper Eq. 2)")
         ax.plot(t * 1e3, fl[:, j], "r--", lw=1.0, label="linear model, recursion")
+        if fc is not None:
+            ax.plot(tc * 1e3, fc[:, j], "g.", ms=3, label="CONTACT (printed totals)")
         if fs is not None:
             ax.plot(t * 1e3, fs[:, j], "b:", lw=1.0, label="linear model, harmonic synthesis (Eqs. 33-34)")
         ax.set_ylabel(f"{COMPONENTS[j]} [{force_units[j]}]")
