@@ -55,12 +55,16 @@ def _numbers(words):
     return vals if words and all(v is not None for v in vals) else None
 
 
-def read_out(path):
+def _read_lines(path, what):
     try:
         with open(path) as f:
-            lines = f.read().splitlines()
+            return f.read().splitlines()
     except OSError as e:
-        raise ContactFileError(f"{path}: cannot open CONTACT output: {e.strerror}")
+        raise ContactFileError(f"{path}: cannot open CONTACT {what}: {e.strerror}")
+
+
+def read_out(path):
+    lines = _read_lines(path, "output")
     cases, case, ended, i = [], None, False, 0
     while i < len(lines):
         line = lines[i]
@@ -106,11 +110,7 @@ def read_out(path):
 
 
 def read_mat(path):
-    try:
-        with open(path) as f:
-            lines = f.read().splitlines()
-    except OSError as e:
-        raise ContactFileError(f"{path}: cannot open CONTACT traction file: {e.strerror}")
+    lines = _read_lines(path, "traction file")
     header, names, i = {}, None, 0
     while i < len(lines):
         t = lines[i].strip()
@@ -175,11 +175,7 @@ def integrate(mat):
 
 def read_inp(path):
     """Cases of a .inp: [{"module", "lines": [{"line", "numbers", "strings", "label"}]}]."""
-    try:
-        with open(path) as f:
-            lines = f.read().splitlines()
-    except OSError as e:
-        raise ContactFileError(f"{path}: cannot open CONTACT input: {e.strerror}")
+    lines = _read_lines(path, "input")
     cases = []
     for n, raw in enumerate(lines, 1):
         t = raw.strip()
