@@ -58,7 +58,9 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
                 " time steps of dt = dx/V with the creepage of rolling.creepage_sampling = \"" +
                 contact::sampling_name(cc.sampling) + "\""
           : std::string("module 3, steady rolling at the mean creepage");
-    text = io::module3_input(cc, io::contact_input_comments(reader.name(), reader.source(), what), t);
+    text = io::within_case(reader, [&] {
+      return io::module3_input(cc, io::contact_input_comments(reader.name(), reader.source(), what), t);
+    });
     std::printf("%s: CONTACT module 3, %s on %d x %d elements\n", reader.name().c_str(),
                 t ? ("1 steady + " + std::to_string(t->steps) + " transient cases").c_str() : "1 steady case",
                 cc.grid.nx, cc.grid.ny);
@@ -69,9 +71,11 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
       copies.push_back({p, (fs::path(dir) / fs::path(p).filename()).string()});
       outputs.push_back({"-o", copies.back().second});
     }
-    text = io::module1_input(
-        cc, io::contact_input_comments(reader.name(), reader.source(), "module 1, wheel-rail contact, steady rolling"),
-        fs::path(rail).filename().string(), fs::path(wheel).filename().string());
+    text = io::within_case(reader, [&] {
+      return io::module1_input(
+          cc, io::contact_input_comments(reader.name(), reader.source(), "module 1, wheel-rail contact, steady rolling"),
+          fs::path(rail).filename().string(), fs::path(wheel).filename().string());
+    });
     std::printf("%s: CONTACT module 1 (right wheel, vertical load %.6g N), profiles copied beside the input\n",
                 reader.name().c_str(), cc.normal_force);
   }

@@ -158,5 +158,20 @@ TEST(ContactInterop, CutContactFileExitsTwoNamingFileAndLine) {
   EXPECT_EQ(bad.status, 2) << bad.output;
 }
 
+TEST(ContactInterop, UnmappableKeysExitTwoNamingTheKeyWithoutOutput) {
+  const auto dir = temp_dir() / "contact_input_unmappable";
+  std::filesystem::remove_all(dir);
+  const std::pair<std::string, std::string> cases[] = {
+      {paper_case() + " --set 'friction.law=\"falling\"' --set friction.kinetic_ratio=0.5 --set friction.decay=1",
+       "friction.law"},
+      {source_file("cases/paper_s31_longitudinal.toml") + " --set 'transient.start=\"zero\"'", "transient.start"}};
+  for (const auto& [args, key] : cases) {
+    const Invocation r = run("contact-input " + args + " -o " + dir.string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(key), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(!std::filesystem::exists(dir) || std::filesystem::is_empty(dir));
+}
+
 }  // namespace
 }  // namespace rollnoise::cli_test
