@@ -6,7 +6,8 @@
 //    totals back and rollnoise's steady force agrees with them to 1e-5;
 //  - validate --reference contact on U1: the unsteady solver equals CONTACT's 41 cases to the printed
 //    digits (4) and to the rounding of the .mat's 6-digit DX, DY (2.1e-6) where those files are there;
-//  - module 1 for a profile case: the numbers of the C1 u3 run that map;
+//  - module 1 for a profile case: the numbers of the C1 u3 run that map, and the signs of its forces
+//    read back in rollnoise's conventions;
 //  - a cut CONTACT file: exit 2 naming file and line, no output.
 #include <gtest/gtest.h>
 
@@ -92,6 +93,29 @@ TEST(ContactInterop, WheelRailInputHasTheC1u3Numbers) {
       EXPECT_NEAR(x.numbers[k], y.numbers[k], 1e-8 * std::abs(y.numbers[k])) << y.label << " value " << k + 1;
     }
   }
+}
+
+TEST(ContactInterop, WheelRailReferenceSignsMatchRollnoisesWheelForces) {
+  // CONTACT's module 1 puts body 1 on the rail: rollnoise's forces on the wheel are (-FX, -FS, -MN),
+  // and the case's creepage is minus CONTACT's printed one. rollnoise's steady solution of the u3
+  // state on its own 24-element grid (its normal force 98.1 kN along the normal, CONTACT's 96.4 kN)
+  // then has CONTACT's Fx and Fy to 5 % and Mz of the same sign (the two contact points differ).
+  const auto dir = temp_dir() / "c1_vert";
+  std::filesystem::create_directories(dir);
+  for (const char* ext : {".inp", ".out"})
+    std::filesystem::copy_file(raw(std::string("C1_u3/u3_vert_d2") + ext), dir / (std::string("u3_vert_d2") + ext),
+                               std::filesystem::copy_options::overwrite_existing);
+  const auto out = (temp_dir() / "c1_reference.h5").string();
+  const Invocation r = run("steady " + raw("C1_u3/u3.toml") + " -o " + out + " --reference contact " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto ref = dataset(out, "/reference/contact/force"), steady = dataset(out, "/steady/force");
+  ASSERT_EQ(ref.size(), 3u);
+  EXPECT_DOUBLE_EQ(ref[0], -1.235e4);  // -FX printed
+  EXPECT_DOUBLE_EQ(ref[1], 2.240e4);   // -FS
+  EXPECT_DOUBLE_EQ(ref[2], -4.529);    // -MN * 1e-3
+  EXPECT_NEAR(steady[0], ref[0], 0.05 * std::abs(ref[0]));
+  EXPECT_NEAR(steady[1], ref[1], 0.05 * std::abs(ref[1]));
+  EXPECT_GT(steady[2] * ref[2], 0.0);
 }
 
 TEST(ContactInterop, SteadyRoundTripGivesTheReferenceForces) {
