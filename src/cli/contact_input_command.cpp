@@ -25,11 +25,13 @@ namespace fs = std::filesystem;
 io::ContactTransient transient_of(const io::CaseReader& reader, const io::ContactCase& cc) {
   if (reader.string("transient.start") != "steady")
     reader.fail("transient.start",
-                "contact-input: CONTACT's transient run starts from the steady state (transient.start = \"steady\")");
+                "contact-input: CONTACT's transient run starts from the steady state "
+                "(transient.start = \"steady\")");
   io::ContactTransient t{io::read_excitation(reader), 0, cc.grid.dx / cc.speed};
   const double count = std::floor(reader.real("transient.duration") / t.dt + 1e-9);
   io::within_case(reader, [&] {
-    pipeline::check_size(io::read_limits(reader), "transient.duration", count, "time steps of dt = dx/V", 0);
+    pipeline::check_size(io::read_limits(reader), "transient.duration", count,
+                         "time steps of dt = dx/V", 0);
   });
   t.steps = std::lround(count);
   if (t.steps < 1) reader.fail("transient.duration", "shorter than one time step dx/V");
@@ -44,7 +46,8 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
   io::ContactCase cc = io::read_contact_case(reader);
   io::within_case(reader, [&] { pipeline::place_contact(cc); });
   const std::string dir = o.output.empty() ? "." : o.output;
-  if (fs::exists(dir) && !fs::is_directory(dir)) throw InputError("-o", "-o " + dir + ": not a folder");
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw InputError("-o", "-o " + dir + ": not a folder");
   fs::create_directories(dir);
   const std::string inp = (fs::path(dir) / (reader.name() + ".inp")).string();
   std::vector<io::OutputFile> outputs = {{"-o", inp}};
@@ -54,15 +57,18 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
     std::optional<io::ContactTransient> t;
     if (!steady_only && reader.has("excitation")) t = transient_of(reader, cc);
     const std::string what =
-        t ? "module 3, transient: case 1 the steady state at the mean creepage, then " + std::to_string(t->steps) +
+        t ? "module 3, transient: case 1 the steady state at the mean creepage, then " +
+                std::to_string(t->steps) +
                 " time steps of dt = dx/V with the creepage of rolling.creepage_sampling = \"" +
                 contact::sampling_name(cc.sampling) + "\""
           : std::string("module 3, steady rolling at the mean creepage");
     text = io::within_case(reader, [&] {
-      return io::module3_input(cc, io::contact_input_comments(reader.name(), reader.source(), what), t);
+      return io::module3_input(cc, io::contact_input_comments(reader.name(), reader.source(), what),
+                               t);
     });
     std::printf("%s: CONTACT module 3, %s on %d x %d elements\n", reader.name().c_str(),
-                t ? ("1 steady + " + std::to_string(t->steps) + " transient cases").c_str() : "1 steady case",
+                t ? ("1 steady + " + std::to_string(t->steps) + " transient cases").c_str()
+                  : "1 steady case",
                 cc.grid.nx, cc.grid.ny);
   } else {
     const std::string rail = io::resolve_model_file(reader, "contact.rail_profile");
@@ -73,11 +79,15 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
     }
     text = io::within_case(reader, [&] {
       return io::module1_input(
-          cc, io::contact_input_comments(reader.name(), reader.source(), "module 1, wheel-rail contact, steady rolling"),
+          cc,
+          io::contact_input_comments(reader.name(), reader.source(),
+                                     "module 1, wheel-rail contact, steady rolling"),
           fs::path(rail).filename().string(), fs::path(wheel).filename().string());
     });
-    std::printf("%s: CONTACT module 1 (right wheel, vertical load %.6g N), profiles copied beside the input\n",
-                reader.name().c_str(), cc.normal_force);
+    std::printf(
+        "%s: CONTACT module 1 (right wheel, vertical load %.6g N), profiles copied beside the "
+        "input\n",
+        reader.name().c_str(), cc.normal_force);
   }
   io::check_outputs(outputs, io::case_input_files(reader));
   std::vector<io::TemporaryFile> files;

@@ -18,12 +18,14 @@ namespace rollnoise::cli {
 std::optional<io::ContactReference> read_reference(const CommonOptions& o);
 
 /// /reference/contact/* and the printed comparison with rollnoise's steady force (N, N, N m).
-void report_steady_reference(io::Hdf5Writer& w, const io::ContactReference& ref, const Eigen::Vector3d& steady);
+void report_steady_reference(io::Hdf5Writer& w, const io::ContactReference& ref,
+                             const Eigen::Vector3d& steady);
 
 /// /validate/contact/* and the printed comparison of the unsteady solver and the linear model with
 /// CONTACT's series. InputError naming --reference when CONTACT's time step is not rollnoise's or
 /// its run is longer than rollnoise's.
-void report_validate_reference(io::Hdf5Writer& w, const io::ContactReference& ref, const nss::LinearResponse& lin,
+void report_validate_reference(io::Hdf5Writer& w, const io::ContactReference& ref,
+                               const nss::LinearResponse& lin,
                                const std::vector<Eigen::Vector3d>& unsteady, double t_start,
                                const std::vector<double>& frequencies, double dt);
 

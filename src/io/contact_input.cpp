@@ -23,8 +23,9 @@ std::string solver_line() {
 
 std::string load_line(double force, const contact::Creepage& xi) {
   // CONTACT's CPHI is in rad/mm
-  return "  " + contact_number(force) + "  " + contact_number(xi.xi_x) + "  " + contact_number(xi.xi_y) + "  " +
-         contact_number(xi.phi / kMm) + "     FN, CKSI, CETA, CPHI\n";
+  return "  " + contact_number(force) + "  " + contact_number(xi.xi_x) + "  " +
+         contact_number(xi.xi_y) + "  " + contact_number(xi.phi / kMm) +
+         "     FN, CKSI, CETA, CPHI\n";
 }
 
 /// SCALE of IPOTCN = -3: the grid must span +-scale a by +-scale b; InputError otherwise.
@@ -34,9 +35,10 @@ double hertz_scale(const pipeline::ContactCase& c) {
   const bool centred = std::abs(g.x_min + 0.5 * g.nx * g.dx) <= 1e-9 * g.nx * g.dx &&
                        std::abs(g.y_min + 0.5 * g.ny * g.dy) <= 1e-9 * g.ny * g.dy;
   if (!centred || std::abs(sx - sy) > 1e-9 * sx)
-    throw InputError("grid.x_min",
-                     "contact-input: CONTACT's Hertzian grid (IPOTCN = -3) spans +-SCALE a by +-SCALE b; "
-                     "an explicit grid (grid.x_min ...) cannot be mapped");
+    throw InputError(
+        "grid.x_min",
+        "contact-input: CONTACT's Hertzian grid (IPOTCN = -3) spans +-SCALE a by +-SCALE b; "
+        "an explicit grid (grid.x_min ...) cannot be mapped");
   return sx;
 }
 
@@ -49,10 +51,12 @@ std::string steady_case(const pipeline::ContactCase& c, bool tractions_of_all_el
   s << " 3 MODULE\n";
   s << "  203100     P-B-T-N-F-S   PVTIME, BOUND, TANG, NORM, FORCE, STRESS\n";
   s << "  022020     L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER, RZNORM, EXRHS\n";
-  s << (tractions_of_all_elements ? " 0002311" : " 0001211") << "   H-G-I-A-O-W-R HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN\n";
+  s << (tractions_of_all_elements ? " 0002311" : " 0001211")
+    << "   H-G-I-A-O-W-R HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN\n";
   s << solver_line();
   s << load_line(c.normal_force, c.creepage);
-  s << "  " << contact_number(c.mu) << "  " << contact_number(c.mu) << "                       FSTAT, FKIN\n";
+  s << "  " << contact_number(c.mu) << "  " << contact_number(c.mu)
+    << "                       FSTAT, FKIN\n";
   // FACPHI (the spin offset of the rigid slip, in DQ) is CONTACT's default 1/6 when left out
   const bool default_facphi = std::abs(facphi - 1.0 / 6.0) < 1e-12;
   s << "  0.0  " << contact_number(c.grid.dx * kMm) << "  " << contact_number(c.speed * kMm)
@@ -63,7 +67,8 @@ std::string steady_case(const pipeline::ContactCase& c, bool tractions_of_all_el
     << contact_number(G) << "   POISS 1,2, GG 1,2\n";
   s << "   -3                                   IPOTCN\n";
   s << "  " << c.grid.nx << "  " << c.grid.ny << "  " << contact_number(c.a * kMm) << "  "
-    << contact_number(c.b * kMm) << "  " << contact_number(hertz_scale(c)) << "       MX, MY, AA, BB, SCALE\n";
+    << contact_number(c.b * kMm) << "  " << contact_number(hertz_scale(c))
+    << "       MX, MY, AA, BB, SCALE\n";
   return s.str();
 }
 
@@ -85,37 +90,44 @@ std::string contact_number(double v) {
   return buf;
 }
 
-std::vector<std::string> contact_input_comments(const std::string& case_name, const std::string& case_path,
-                                               const std::string& what) {
-  return {"written by rollnoise " + provenance().program_version + " (rollnoise contact-input) from case " +
-              case_name + " (" + case_path + ")",
+std::vector<std::string> contact_input_comments(const std::string& case_name,
+                                                const std::string& case_path,
+                                                const std::string& what) {
+  return {"written by rollnoise " + provenance().program_version +
+              " (rollnoise contact-input) from case " + case_name + " (" + case_path + ")",
           what};
 }
 
 std::string module3_input(const pipeline::ContactCase& c, const std::vector<std::string>& comments,
                           const std::optional<ContactTransient>& transient) {
   if (c.geometry != "hertz")
-    throw InputError("contact.geometry", "contact-input: module 3 is written for contact.geometry = \"hertz\"");
+    throw InputError("contact.geometry",
+                     "contact-input: module 3 is written for contact.geometry = \"hertz\"");
   if (c.falling.active())
-    throw InputError("friction.law",
-                     "contact-input: friction.law = \"falling\" cannot be mapped to CONTACT (its falling laws "
-                     "L = 2..4 have other forms); use \"constant\"");
+    throw InputError(
+        "friction.law",
+        "contact-input: friction.law = \"falling\" cannot be mapped to CONTACT (its falling laws "
+        "L = 2..4 have other forms); use \"constant\"");
   std::ostringstream s;
   for (const auto& line : comments) s << "% " << line << "\n";
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "E = %.6g Pa, nu = %.6g (G = %.10g N/mm2) both bodies; mu = %.6g Coulomb; V = %s mm/s; N = %s N; "
+                "E = %.6g Pa, nu = %.6g (G = %.10g N/mm2) both bodies; mu = %.6g Coulomb; V = %s "
+                "mm/s; N = %s N; "
                 "Hertz a = %.6g mm, b = %.6g mm; EPS = %g",
                 c.material.E, c.material.nu, c.material.shear_modulus() * kMpa, c.mu,
-                contact_number(c.speed * kMm).c_str(), contact_number(c.normal_force).c_str(), c.a * kMm, c.b * kMm,
-                kContactSolverEps);
+                contact_number(c.speed * kMm).c_str(), contact_number(c.normal_force).c_str(),
+                c.a * kMm, c.b * kMm, kContactSolverEps);
   s << "% " << buf << "\n";
-  std::snprintf(buf, sizeof buf, "grid MX = %d, MY = %d, DX = DQ = %s mm, DY = %s mm, dt = DQ/V = %.6g s; FACPHI = %.6g",
-                c.grid.nx, c.grid.ny, contact_number(c.grid.dx * kMm).c_str(), contact_number(c.grid.dy * kMm).c_str(),
-                c.grid.dx / c.speed, c.spin_offset);
+  std::snprintf(
+      buf, sizeof buf,
+      "grid MX = %d, MY = %d, DX = DQ = %s mm, DY = %s mm, dt = DQ/V = %.6g s; FACPHI = %.6g",
+      c.grid.nx, c.grid.ny, contact_number(c.grid.dx * kMm).c_str(),
+      contact_number(c.grid.dy * kMm).c_str(), c.grid.dx / c.speed, c.spin_offset);
   s << "% " << buf << "\n\n";
   if (!transient) {
-    std::snprintf(buf, sizeof buf, "%% case 1: steady rolling, cksi = %.6g, ceta = %.6g, cphi = %.6g rad/m\n",
+    std::snprintf(buf, sizeof buf,
+                  "%% case 1: steady rolling, cksi = %.6g, ceta = %.6g, cphi = %.6g rad/m\n",
                   c.creepage.xi_x, c.creepage.xi_y, c.creepage.phi);
     s << buf << steady_case(c, true) << "\n 0 MODULE\n";
     return s.str();

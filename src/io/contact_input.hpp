@@ -35,8 +35,9 @@ struct ContactTransient {
 constexpr double kContactSolverEps = 1e-8;
 
 /// The comment lines that open every input written: program, version, case name and path.
-std::vector<std::string> contact_input_comments(const std::string& case_name, const std::string& case_path,
-                                               const std::string& what);
+std::vector<std::string> contact_input_comments(const std::string& case_name,
+                                                const std::string& case_path,
+                                                const std::string& what);
 
 /// The module-3 input of a Hertzian case `c` (placed): steady without `transient`, else the
 /// steady state followed by transient.steps step cases. `comments` open the file ('% ' added).

@@ -28,7 +28,8 @@ std::string module1_input(const pipeline::ContactCase& c, const std::vector<std:
   if (c.geometry != "profiles" || !c.profiles || !c.placed)
     throw InputError("contact.geometry", "contact-input: module 1 needs a placed profile case");
   if (c.falling.active())
-    throw InputError("friction.law", "contact-input: friction.law = \"falling\" cannot be mapped to CONTACT");
+    throw InputError("friction.law",
+                     "contact-input: friction.law = \"falling\" cannot be mapped to CONTACT");
   const geometry::ContactGeometry& p = c.contact_point;
   const auto& track = c.profiles->track();
   const auto& ws = c.profiles->wheelset();
@@ -39,11 +40,13 @@ std::string module1_input(const pipeline::ContactCase& c, const std::vector<std:
   std::ostringstream s;
   for (const auto& line : comments) s << "% " << line << "\n";
   char buf[320];
-  std::snprintf(buf, sizeof buf,
-                "rollnoise contact point: y = %.6g mm, s_wheel = %.6g mm, delta = %.6g rad, r = %.6g mm; mean "
-                "creepage (%.6g, %.6g, %.6g rad/m): xi_x by VPITCH, xi_y by VY, spin from CONTACT's geometry",
-                p.y * kMm, p.wheel_s * kMm, p.contact_angle, p.rolling_radius * kMm, c.creepage.xi_x,
-                c.creepage.xi_y, c.creepage.phi);
+  std::snprintf(
+      buf, sizeof buf,
+      "rollnoise contact point: y = %.6g mm, s_wheel = %.6g mm, delta = %.6g rad, r = %.6g mm; "
+      "mean "
+      "creepage (%.6g, %.6g, %.6g rad/m): xi_x by VPITCH, xi_y by VY, spin from CONTACT's geometry",
+      p.y * kMm, p.wheel_s * kMm, p.contact_angle, p.rolling_radius * kMm, c.creepage.xi_x,
+      c.creepage.xi_y, c.creepage.phi);
   s << "% " << buf << "\n";
   s << "  1 MODULE\n";
   s << " 1203100    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS\n";

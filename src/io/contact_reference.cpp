@@ -20,7 +20,8 @@ std::string find_out_file(const std::string& folder) {
   for (const auto& e : fs::directory_iterator(folder))
     if (e.is_regular_file() && e.path().extension() == ".out") outs.push_back(e.path().string());
   if (outs.size() != 1)
-    throw InputError("--reference", "--reference contact " + folder + ": expected one CONTACT .out file, found " +
+    throw InputError("--reference", "--reference contact " + folder +
+                                        ": expected one CONTACT .out file, found " +
                                         std::to_string(outs.size()));
   return outs[0];
 }
@@ -30,7 +31,8 @@ double time_step(const std::vector<ContactInpCase>& cases, const std::string& in
   for (const auto& c : cases)
     for (const auto& l : c.lines)
       if (l.label.rfind("CHI, DQ, VELOC", 0) == 0 || l.label.rfind("DX, DS, DQREL", 0) == 0) {
-        if (c.module == 3 && l.numbers.size() >= 3 && l.numbers[2] > 0) return l.numbers[1] / l.numbers[2];
+        if (c.module == 3 && l.numbers.size() >= 3 && l.numbers[2] > 0)
+          return l.numbers[1] / l.numbers[2];
         if (c.module == 1) return 0.0;  // module 1: steady only here
       }
   throw InputError(inp, inp + ": no line 'CHI, DQ, VELOC' gives the rolling step");
@@ -51,13 +53,14 @@ ContactReference read_contact_reference(const std::string& folder) {
   const fs::path stem = fs::path(r.out_path).replace_extension();
   r.inp_path = stem.string() + ".inp";
   if (!fs::exists(r.inp_path))
-    throw InputError("--reference", "--reference contact " + folder + ": no input " + r.inp_path + " beside " +
-                                        r.out_path + " (the case times come from it)");
+    throw InputError("--reference", "--reference contact " + folder + ": no input " + r.inp_path +
+                                        " beside " + r.out_path + " (the case times come from it)");
   const ContactOut out = read_contact_out(r.out_path);
   const std::vector<ContactInpCase> inp = read_contact_inp(r.inp_path);
   if (inp.size() != out.cases.size())
-    throw InputError(r.out_path, r.out_path + ": " + std::to_string(out.cases.size()) + " cases, but " + r.inp_path +
-                                     " has " + std::to_string(inp.size()) + " (a run cut short?)");
+    throw InputError(r.out_path, r.out_path + ": " + std::to_string(out.cases.size()) +
+                                     " cases, but " + r.inp_path + " has " +
+                                     std::to_string(inp.size()) + " (a run cut short?)");
   r.module = out.cases.front().module;
   r.dt = time_step(inp, r.inp_path);
   const double sign = r.module == 1 ? -1.0 : 1.0;  // module 1: forces on the rail
@@ -65,15 +68,17 @@ ContactReference read_contact_reference(const std::string& folder) {
   for (std::size_t n = 0; n < out.cases.size(); ++n) {
     const ContactOutCase& c = out.cases[n];
     if (c.module == 1 && c.patches.size() != 1)
-      throw InputError(r.out_path, r.out_path + ":" + std::to_string(c.line) + ": case " + std::to_string(c.number) +
-                                       " has " + std::to_string(c.patches.size()) +
+      throw InputError(r.out_path, r.out_path + ":" + std::to_string(c.line) + ": case " +
+                                       std::to_string(c.number) + " has " +
+                                       std::to_string(c.patches.size()) +
                                        " contact patches; rollnoise compares one");
     const ContactOutPatch& p = c.patches.front();
     const std::string where = r.out_path + ":" + std::to_string(c.line);
     const char* fy = c.module == 1 ? "FS" : "FY";
     const char* mz = c.module == 1 ? "MN" : "MZ";
     r.time.push_back(double(n) * r.dt);
-    r.force.push_back(sign * Eigen::Vector3d(p.at("FX", where), p.at(fy, where), 1e-3 * p.at(mz, where)));
+    r.force.push_back(sign *
+                      Eigen::Vector3d(p.at("FX", where), p.at(fy, where), 1e-3 * p.at(mz, where)));
     r.normal_force.push_back(p.at("FN", where));
     const std::string mat = mat_name(stem.string(), c.number, c.module);
     if (fs::exists(mat)) {

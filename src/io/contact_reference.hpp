@@ -25,12 +25,12 @@ namespace rollnoise::io {
 struct ContactReference {
   std::string folder, out_path, inp_path;
   int module = 3;
-  double dt = 0.0;                               ///< DQ/VELOC (s)
-  std::vector<double> time;                      ///< s, one per case
-  std::vector<Eigen::Vector3d> force;            ///< printed (Fx, Fy, Mz) in N, N, N m
-  std::vector<Eigen::Vector3d> force_integrated; ///< from the .mat files, NaN where absent
-  std::vector<double> normal_force;              ///< printed FN (N)
-  std::optional<ContactMat> first_tractions;     ///< the .mat of case 1, if present
+  double dt = 0.0;                                ///< DQ/VELOC (s)
+  std::vector<double> time;                       ///< s, one per case
+  std::vector<Eigen::Vector3d> force;             ///< printed (Fx, Fy, Mz) in N, N, N m
+  std::vector<Eigen::Vector3d> force_integrated;  ///< from the .mat files, NaN where absent
+  std::vector<double> normal_force;               ///< printed FN (N)
+  std::optional<ContactMat> first_tractions;      ///< the .mat of case 1, if present
 };
 
 /// Reads the CONTACT run in `folder`: exactly one `.out`, the `.inp` of the same name, and the

@@ -23,7 +23,9 @@ void write_contact_steady_reference(Hdf5Writer& w, const ContactReference& ref);
 
 /// `unsteady` and `linear` at rollnoise's t_k = k dt, k = 0.. (at least as long as CONTACT's run);
 /// `errors` the linear model against CONTACT (nss::compare_linear_unsteady on CONTACT's times).
-void write_contact_validation(Hdf5Writer& w, const ContactReference& ref, const std::vector<Eigen::Vector3d>& unsteady,
-                              const std::vector<Eigen::Vector3d>& linear, const nss::ValidationErrors& errors);
+void write_contact_validation(Hdf5Writer& w, const ContactReference& ref,
+                              const std::vector<Eigen::Vector3d>& unsteady,
+                              const std::vector<Eigen::Vector3d>& linear,
+                              const nss::ValidationErrors& errors);
 
 }  // namespace rollnoise::io

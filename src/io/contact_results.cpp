@@ -56,8 +56,8 @@ bool no_numbers(const std::vector<std::string>& w) {
 }
 
 // The header lines of .out whose line of numbers a reader relies on (first word).
-const std::set<std::string> kRequiredHeaders = {"FN",     "FN/G",  "NPOT",    "CHI",  "FX(TR)",
-                                                "S_WS",   "VX_WS", "XCP(TR)", "XCP(W)"};
+const std::set<std::string> kRequiredHeaders = {"FN",   "FN/G",  "NPOT",    "CHI",   "FX(TR)",
+                                                "S_WS", "VX_WS", "XCP(TR)", "XCP(W)"};
 
 const char* kEndLine = "The CONTACT program ended succesfully.";  // CONTACT's spelling
 
@@ -70,12 +70,14 @@ bool parse_fortran_number(const std::string& text, double& value) {
     if (c == 'D' || c == 'd') c = 'E';  // Fortran double-precision exponent
   // g14.6 writes a 3-digit exponent without its letter: 0.228751-310 = 0.228751E-310
   for (std::size_t p = 1; p < s.size(); ++p)
-    if ((s[p] == '-' || s[p] == '+') && (std::isdigit(static_cast<unsigned char>(s[p - 1])) || s[p - 1] == '.')) {
+    if ((s[p] == '-' || s[p] == '+') &&
+        (std::isdigit(static_cast<unsigned char>(s[p - 1])) || s[p - 1] == '.')) {
       s.insert(p, "E");
       break;
     }
   const char c0 = s[0];
-  if (!(std::isdigit(static_cast<unsigned char>(c0)) || c0 == '-' || c0 == '+' || c0 == '.')) return false;
+  if (!(std::isdigit(static_cast<unsigned char>(c0)) || c0 == '-' || c0 == '+' || c0 == '.'))
+    return false;
   const bool ok = parse_finite(s, value);
   if (!ok && s.find('E') != std::string::npos) {  // a subnormal such as 0.228751E-310
     char* end = nullptr;
@@ -90,7 +92,9 @@ bool parse_fortran_number(const std::string& text, double& value) {
 
 double ContactOutPatch::at(const std::string& name, const std::string& where) const {
   const auto it = values.find(name);
-  if (it == values.end()) throw InputError(where, where + ": no value " + name + " in contact patch " + std::to_string(number));
+  if (it == values.end())
+    throw InputError(where,
+                     where + ": no value " + name + " in contact patch " + std::to_string(number));
   return it->second;
 }
 
@@ -129,11 +133,13 @@ ContactOut read_contact_out(const std::string& path) {
     // a header of names: its values on the next line, one number per name
     std::vector<double> v;
     const bool required = kRequiredHeaders.count(w[0]) > 0;
-    const bool pair = i + 1 < lines.size() && all_numbers(words(lines[i + 1]), v) && v.size() == w.size();
+    const bool pair =
+        i + 1 < lines.size() && all_numbers(words(lines[i + 1]), v) && v.size() == w.size();
     if (!pair) {
       if (required)
-        fail(path, i + 1, "expected the " + std::to_string(w.size()) + " numbers of '" + trim(lines[i]) +
-                              "' (truncated or not a CONTACT .out file?)");
+        fail(path, i + 1,
+             "expected the " + std::to_string(w.size()) + " numbers of '" + trim(lines[i]) +
+                 "' (truncated or not a CONTACT .out file?)");
       continue;
     }
     const bool per_patch = c->module == 3 || !c->patches.empty();
@@ -142,13 +148,15 @@ ContactOut read_contact_out(const std::string& path) {
     for (std::size_t k = 0; k < w.size(); ++k) target[w[k]] = v[k];
     ++i;
   }
-  if (out.cases.empty()) fail(path, lines.size() ? lines.size() - 1 : 0, "no ' Case n' block: not a CONTACT .out file");
+  if (out.cases.empty())
+    fail(path, lines.size() ? lines.size() - 1 : 0, "no ' Case n' block: not a CONTACT .out file");
   if (!ended)
     fail(path, lines.size() ? lines.size() - 1 : 0,
          "the file ends without CONTACT's last line '" + std::string(kEndLine) + "' (truncated?)");
   for (const auto& cs : out.cases)
     if (cs.patches.empty() || !cs.patches.front().values.count("FN"))
-      fail(path, std::size_t(cs.line - 1), "case " + std::to_string(cs.number) + " prints no total forces (FN FX ...)");
+      fail(path, std::size_t(cs.line - 1),
+           "case " + std::to_string(cs.number) + " prints no total forces (FN FX ...)");
   return out;
 }
 
@@ -179,7 +187,8 @@ ContactMat read_contact_mat(const std::string& path) {
   ContactMat m;
   m.path = path;
   std::size_t i = 0;
-  // header pairs: "% NAMES" then a line of values; the pair whose names start "I IGS" opens the table
+  // header pairs: "% NAMES" then a line of values; the pair whose names start "I IGS" opens the
+  // table
   for (; i < lines.size(); ++i) {
     const std::string t = trim(lines[i]);
     if (t.empty()) continue;
@@ -197,11 +206,14 @@ ContactMat read_contact_mat(const std::string& path) {
       if (names[k] != "-") m.header[names[k]] = v[k];
     ++i;
   }
-  if (m.column_names.empty()) fail(path, lines.size() ? lines.size() - 1 : 0, "no column line '% I IGS ...'");
+  if (m.column_names.empty())
+    fail(path, lines.size() ? lines.size() - 1 : 0, "no column line '% I IGS ...'");
   const auto fmt = m.header.find("FMT");
   if (fmt == m.header.end() || fmt->second != 2410)
-    fail(path, 1, "format FMT = " + (fmt == m.header.end() ? std::string("(none)") : std::to_string(long(fmt->second))) +
-                      "; this reader knows 2410");
+    fail(path, 1,
+         "format FMT = " +
+             (fmt == m.header.end() ? std::string("(none)") : std::to_string(long(fmt->second))) +
+             "; this reader knows 2410");
   for (const char* k : {"MX", "MY", "XL", "YL", "DX", "DY"})
     if (!m.header.count(k)) fail(path, 0, std::string("the header holds no ") + k);
   for (const auto& n : m.column_names) m.columns[n];
@@ -211,8 +223,9 @@ ContactMat read_contact_mat(const std::string& path) {
     const std::vector<std::string> w = words(lines[i]);
     if (w.empty()) continue;
     if (w.size() != m.column_names.size() || !all_numbers(w, v))
-      fail(path, i, "an element row needs " + std::to_string(m.column_names.size()) + " numbers (" +
-                        std::to_string(w.size()) + " words; truncated?)");
+      fail(path, i,
+           "an element row needs " + std::to_string(m.column_names.size()) + " numbers (" +
+               std::to_string(w.size()) + " words; truncated?)");
     if (v[0] < 1 || v[0] > double(n_elements) || v[0] != std::floor(v[0]))
       fail(path, i, "element number I = " + w[0] + " outside 1.." + std::to_string(n_elements));
     for (std::size_t k = 0; k < v.size(); ++k) m.columns[m.column_names[k]].push_back(v[k]);
@@ -264,7 +277,8 @@ std::vector<ContactInpCase> parse_contact_inp(const std::string& text, const std
       while (p < t.size() && std::isspace(static_cast<unsigned char>(t[p]))) ++p;
       if (p < t.size() && t[p] == '\'') {
         const std::size_t q = t.find('\'', p + 1);
-        if (q == std::string::npos) throw InputError(name, name + ":" + std::to_string(line_no) + ": unclosed quote");
+        if (q == std::string::npos)
+          throw InputError(name, name + ":" + std::to_string(line_no) + ": unclosed quote");
         l.strings.push_back(t.substr(p + 1, q - p - 1));
         p = q + 1;
         continue;
@@ -286,10 +300,14 @@ std::vector<ContactInpCase> parse_contact_inp(const std::string& text, const std
       cases.back().module = int(l.numbers[0]);
       continue;
     }
-    if (cases.empty()) throw InputError(name, name + ":" + std::to_string(line_no) + ": data before the first 'n MODULE' line");
+    if (cases.empty())
+      throw InputError(
+          name, name + ":" + std::to_string(line_no) + ": data before the first 'n MODULE' line");
     cases.back().lines.push_back(l);
   }
-  if (!ended) throw InputError(name, name + ":" + std::to_string(line_no) + ": no ' 0 MODULE' line ends the input (truncated?)");
+  if (!ended)
+    throw InputError(name, name + ":" + std::to_string(line_no) +
+                               ": no ' 0 MODULE' line ends the input (truncated?)");
   return cases;
 }
 

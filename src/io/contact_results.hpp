@@ -36,9 +36,9 @@ struct ContactOutPatch {
 /// One case (` Case n`) of `.out`.
 struct ContactOutCase {
   int number = 0;
-  int module = 3;         ///< 3 (basic contact problems) or 1 (wheel-rail contact)
-  int line = 0;           ///< line of ` Case n` (for messages)
-  NamedValues values;     ///< case-wide values: module 1 FX(TR) ... FZ(WS), S_WS ..., VX_WS ...
+  int module = 3;      ///< 3 (basic contact problems) or 1 (wheel-rail contact)
+  int line = 0;        ///< line of ` Case n` (for messages)
+  NamedValues values;  ///< case-wide values: module 1 FX(TR) ... FZ(WS), S_WS ..., VX_WS ...
   std::vector<ContactOutPatch> patches;  ///< module 3: one
 };
 
@@ -49,8 +49,8 @@ struct ContactOut {
 };
 
 /// Reads CONTACT's `.out`. InputError "PATH:LINE: ..." (key PATH) when it cannot be opened, holds
-/// no case, a known header (FN FX ..., FN/G ..., NPOT ..., CHI DQ ..., FX(TR) ...) is not followed by
-/// its line of numbers, or the end line (" The CONTACT program ended succesfully.") is missing.
+/// no case, a known header (FN FX ..., FN/G ..., NPOT ..., CHI DQ ..., FX(TR) ...) is not followed
+/// by its line of numbers, or the end line (" The CONTACT program ended succesfully.") is missing.
 ContactOut read_contact_out(const std::string& path);
 
 /// A `.mat` traction file: the header values by their names (MX, MY, XL, YL, DX, DY, T, VELOC,

@@ -4,9 +4,12 @@
 //    numbers compared, not text: 1e-12 relative);
 //  - round trip: the steady Hertzian case with --reference contact on S2 gives CONTACT's integrated
 //    totals back and rollnoise's steady force agrees with them to 1e-5;
-//  - validate --reference contact on U1: the unsteady solver equals CONTACT's 41 cases to the printed
-//    digits (4) and to the rounding of the .mat's 6-digit DX, DY (2.1e-6) where those files are there;
-//  - module 1 for a profile case: the numbers of the C1 u3 run that map, and the signs of its forces
+//  - validate --reference contact on U1: the unsteady solver equals CONTACT's 41 cases to the
+//  printed
+//    digits (4) and to the rounding of the .mat's 6-digit DX, DY (2.1e-6) where those files are
+//    there;
+//  - module 1 for a profile case: the numbers of the C1 u3 run that map, and the signs of its
+//  forces
 //    read back in rollnoise's conventions;
 //  - a cut CONTACT file: exit 2 naming file and line, no output.
 #include <gtest/gtest.h>
@@ -21,7 +24,9 @@
 namespace rollnoise::cli_test {
 namespace {
 
-std::string raw(const std::string& rel) { return std::string(ROLLNOISE_TEST_DATA) + "/contact/raw/" + rel; }
+std::string raw(const std::string& rel) {
+  return std::string(ROLLNOISE_TEST_DATA) + "/contact/raw/" + rel;
+}
 const char* kSixth = "0.16666666666666667";
 
 /// Every number and string of every data line of two CONTACT inputs equal (relative `tol`).
@@ -33,10 +38,12 @@ void expect_same_numbers(const std::string& written, const std::string& referenc
     ASSERT_EQ(a[c].lines.size(), b[c].lines.size()) << "case " << c + 1;
     for (std::size_t l = 0; l < a[c].lines.size(); ++l) {
       const auto &x = a[c].lines[l], &y = b[c].lines[l];
-      ASSERT_EQ(x.numbers.size(), y.numbers.size()) << written << ":" << x.line << " vs " << reference << ":" << y.line;
+      ASSERT_EQ(x.numbers.size(), y.numbers.size())
+          << written << ":" << x.line << " vs " << reference << ":" << y.line;
       for (std::size_t k = 0; k < x.numbers.size(); ++k)
         EXPECT_NEAR(x.numbers[k], y.numbers[k], tol * std::abs(y.numbers[k]))
-            << written << ":" << x.line << " value " << k + 1 << " vs " << reference << ":" << y.line;
+            << written << ":" << x.line << " value " << k + 1 << " vs " << reference << ":"
+            << y.line;
       EXPECT_EQ(x.strings, y.strings);
     }
   }
@@ -50,22 +57,26 @@ std::vector<double> dataset(const std::string& file, const std::string& path) {
 
 TEST(ContactInterop, SteadyInputReproducesTheReferenceInputsNumbers) {
   const auto dir = temp_dir() / "contact_input_s2";
-  const Invocation r = run("contact-input " + paper_case() + " -o " + dir.string() + " -q --set grid.spin_offset=" + kSixth);
+  const Invocation r = run("contact-input " + paper_case() + " -o " + dir.string() +
+                           " -q --set grid.spin_offset=" + kSixth);
   ASSERT_EQ(r.status, 0) << r.output;
   expect_same_numbers((dir / "hertz_paper.inp").string(), raw("S2/S2_coarse.inp"), 1e-12);
   // the case's own spin offset 0 is CONTACT's FACPHI = 0 (reference run S2facphi0)
   const Invocation r0 = run("contact-input " + paper_case() + " -o " + dir.string() + " -q");
   ASSERT_EQ(r0.status, 0) << r0.output;
   expect_same_numbers((dir / "hertz_paper.inp").string(), raw("S2/S2facphi0_coarse.inp"), 1e-12);
-  EXPECT_NE(file_contents((dir / "hertz_paper.inp").string()).find("% written by rollnoise"), std::string::npos);
+  EXPECT_NE(file_contents((dir / "hertz_paper.inp").string()).find("% written by rollnoise"),
+            std::string::npos);
 }
 
 TEST(ContactInterop, TransientInputReproducesU1StepByStep) {
   const auto dir = temp_dir() / "contact_input_u1";
-  const Invocation r = run("contact-input " + source_file("cases/paper_s31_longitudinal.toml") + " -o " +
-                           dir.string() + " -q --set transient.duration=0.00137856 --set grid.spin_offset=" + kSixth);
+  const Invocation r = run(
+      "contact-input " + source_file("cases/paper_s31_longitudinal.toml") + " -o " + dir.string() +
+      " -q --set transient.duration=0.00137856 --set grid.spin_offset=" + kSixth);
   ASSERT_EQ(r.status, 0) << r.output;
-  expect_same_numbers((dir / "paper_s31_longitudinal.inp").string(), raw("U1/U1_coarse_40steps.inp"), 1e-12);
+  expect_same_numbers((dir / "paper_s31_longitudinal.inp").string(),
+                      raw("U1/U1_coarse_40steps.inp"), 1e-12);
 }
 
 TEST(ContactInterop, WheelRailInputHasTheC1u3Numbers) {
@@ -77,7 +88,8 @@ TEST(ContactInterop, WheelRailInputHasTheC1u3Numbers) {
   const Invocation r = run("contact-input " + raw("C1_u3/u3.toml") + " -o " + dir.string() + " -q");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "MBench_S1002_v3.prw"));
-  const auto a = io::read_contact_inp((dir / "u3.inp").string()), b = io::read_contact_inp(raw("C1_u3/u3_vert_d2.inp"));
+  const auto a = io::read_contact_inp((dir / "u3.inp").string()),
+             b = io::read_contact_inp(raw("C1_u3/u3_vert_d2.inp"));
   ASSERT_EQ(a.size(), 1u);
   ASSERT_EQ(a[0].module, 1);
   ASSERT_EQ(a[0].lines.size(), b[0].lines.size());
@@ -90,23 +102,27 @@ TEST(ContactInterop, WheelRailInputHasTheC1u3Numbers) {
       const bool curve = y.label.rfind("GAUGHT", 0) == 0 && k == 4;
       const bool speeds = y.label.rfind("VS", 0) == 0 && k > 0;
       if (grid || curve || speeds) continue;
-      EXPECT_NEAR(x.numbers[k], y.numbers[k], 1e-8 * std::abs(y.numbers[k])) << y.label << " value " << k + 1;
+      EXPECT_NEAR(x.numbers[k], y.numbers[k], 1e-8 * std::abs(y.numbers[k]))
+          << y.label << " value " << k + 1;
     }
   }
 }
 
 TEST(ContactInterop, WheelRailReferenceSignsMatchRollnoisesWheelForces) {
-  // CONTACT's module 1 puts body 1 on the rail: rollnoise's forces on the wheel are (-FX, -FS, -MN),
-  // and the case's creepage is minus CONTACT's printed one. rollnoise's steady solution of the u3
-  // state on its own 24-element grid (its normal force 98.1 kN along the normal, CONTACT's 96.4 kN)
-  // then has CONTACT's Fx and Fy to 5 % and Mz of the same sign (the two contact points differ).
+  // CONTACT's module 1 puts body 1 on the rail: rollnoise's forces on the wheel are (-FX, -FS,
+  // -MN), and the case's creepage is minus CONTACT's printed one. rollnoise's steady solution of
+  // the u3 state on its own 24-element grid (its normal force 98.1 kN along the normal,
+  // CONTACT's 96.4 kN) then has CONTACT's Fx and Fy to 5 % and Mz of the same sign (the two contact
+  // points differ).
   const auto dir = temp_dir() / "c1_vert";
   std::filesystem::create_directories(dir);
   for (const char* ext : {".inp", ".out"})
-    std::filesystem::copy_file(raw(std::string("C1_u3/u3_vert_d2") + ext), dir / (std::string("u3_vert_d2") + ext),
+    std::filesystem::copy_file(raw(std::string("C1_u3/u3_vert_d2") + ext),
+                               dir / (std::string("u3_vert_d2") + ext),
                                std::filesystem::copy_options::overwrite_existing);
   const auto out = (temp_dir() / "c1_reference.h5").string();
-  const Invocation r = run("steady " + raw("C1_u3/u3.toml") + " -o " + out + " --reference contact " + dir.string());
+  const Invocation r =
+      run("steady " + raw("C1_u3/u3.toml") + " -o " + out + " --reference contact " + dir.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const auto ref = dataset(out, "/reference/contact/force"), steady = dataset(out, "/steady/force");
   ASSERT_EQ(ref.size(), 3u);
@@ -120,13 +136,15 @@ TEST(ContactInterop, WheelRailReferenceSignsMatchRollnoisesWheelForces) {
 
 TEST(ContactInterop, SteadyRoundTripGivesTheReferenceForces) {
   const auto out = (temp_dir() / "s2_reference.h5").string();
-  const Invocation r = run("steady " + paper_case() + " -o " + out + " --set grid.spin_offset=" + kSixth +
-                           " --reference contact " + raw("S2"));
+  const Invocation r =
+      run("steady " + paper_case() + " -o " + out + " --set grid.spin_offset=" + kSixth +
+          " --reference contact " + raw("S2"));
   ASSERT_EQ(r.status, 0) << r.output;
   const auto ref = dataset(out, "/reference/contact/force");
   const auto steady = dataset(out, "/steady/force");
   ASSERT_EQ(ref.size(), 3u);
-  // the integrated totals of S2_coarse.0001.mat (raw README: -11761.00 N, -8965.09 N, 22110.83 N mm)
+  // the integrated totals of S2_coarse.0001.mat (raw README: -11761.00 N, -8965.09 N, 22110.83 N
+  // mm)
   EXPECT_NEAR(ref[0], -11761.00, 0.006);
   EXPECT_NEAR(ref[1], -8965.09, 0.006);
   EXPECT_NEAR(ref[2], 22.11083, 0.006e-3);
@@ -139,9 +157,11 @@ TEST(ContactInterop, SteadyRoundTripGivesTheReferenceForces) {
 
 TEST(ContactInterop, TransientValidateAgreesToThePrintedDigits) {
   const auto out = (temp_dir() / "u1_reference.h5").string();
-  const Invocation r = run("validate " + source_file("cases/paper_s31_longitudinal.toml") + " -o " + out +
-                           " -q --set transient.duration=0.00137856 --set transient.analysis_start=0.0005"
-                           " --reference contact " + raw("U1"));
+  const Invocation r =
+      run("validate " + source_file("cases/paper_s31_longitudinal.toml") + " -o " + out +
+          " -q --set transient.duration=0.00137856 --set transient.analysis_start=0.0005"
+          " --reference contact " +
+          raw("U1"));
   ASSERT_EQ(r.status, 0) << r.output;
   std::vector<std::size_t> dims;
   io::Hdf5Reader h(out);
@@ -158,7 +178,8 @@ TEST(ContactInterop, TransientValidateAgreesToThePrintedDigits) {
       ++with_mat;
       // the .mat's DX = 0.478667, DY = 0.479627 mm carry 6 digits (relative rounding up to 1.05e-6
       // each), which scales the integrated totals by up to 2.1e-6 (0.026 N at 12500 N)
-      EXPECT_NEAR(unsteady[3 * k], integrated[3 * k], 2.1e-6 * std::abs(integrated[3 * k])) << "case " << k + 1;
+      EXPECT_NEAR(unsteady[3 * k], integrated[3 * k], 2.1e-6 * std::abs(integrated[3 * k]))
+          << "case " << k + 1;
     }
   }
   EXPECT_EQ(with_mat, 4);  // cases 1, 2, 11, 41
@@ -174,11 +195,13 @@ TEST(ContactInterop, CutContactFileExitsTwoNamingFileAndLine) {
   std::ofstream(dir / "S2_coarse.out") << text.substr(0, text.find("Performance"));
   const auto out = (temp_dir() / "cut.h5").string();
   std::filesystem::remove(out);
-  const Invocation r = run("steady " + paper_case() + " -o " + out + " --reference contact " + dir.string());
+  const Invocation r =
+      run("steady " + paper_case() + " -o " + out + " --reference contact " + dir.string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find((dir / "S2_coarse.out").string() + ":"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));
-  const Invocation bad = run("steady " + paper_case() + " -o " + out + " --reference abaqus " + dir.string());
+  const Invocation bad =
+      run("steady " + paper_case() + " -o " + out + " --reference abaqus " + dir.string());
   EXPECT_EQ(bad.status, 2) << bad.output;
 }
 
@@ -186,9 +209,11 @@ TEST(ContactInterop, UnmappableKeysExitTwoNamingTheKeyWithoutOutput) {
   const auto dir = temp_dir() / "contact_input_unmappable";
   std::filesystem::remove_all(dir);
   const std::pair<std::string, std::string> cases[] = {
-      {paper_case() + " --set 'friction.law=\"falling\"' --set friction.kinetic_ratio=0.5 --set friction.decay=1",
+      {paper_case() + " --set 'friction.law=\"falling\"' --set friction.kinetic_ratio=0.5 --set "
+                      "friction.decay=1",
        "friction.law"},
-      {source_file("cases/paper_s31_longitudinal.toml") + " --set 'transient.start=\"zero\"'", "transient.start"}};
+      {source_file("cases/paper_s31_longitudinal.toml") + " --set 'transient.start=\"zero\"'",
+       "transient.start"}};
   for (const auto& [args, key] : cases) {
     const Invocation r = run("contact-input " + args + " -o " + dir.string());
     EXPECT_EQ(r.status, 2) << r.output;

@@ -3,6 +3,8 @@
 // CONTACT's printed totals read back exactly, the totals integrated over the .mat rows equal the
 // ones documented with the files (to their 2 printed decimals), and bad or cut files give an
 // InputError that names the file and the line.
+#include "io/contact_results.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,12 +13,13 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "io/contact_results.hpp"
 
 namespace rollnoise::io {
 namespace {
 
-std::string raw(const std::string& rel) { return std::string(ROLLNOISE_TEST_DATA) + "/contact/raw/" + rel; }
+std::string raw(const std::string& rel) {
+  return std::string(ROLLNOISE_TEST_DATA) + "/contact/raw/" + rel;
+}
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path);
@@ -162,25 +165,30 @@ TEST(ContactResults, WheelRailC1CaseAndPatchTotals) {
 TEST(ContactResults, TruncatedOutNamesFileAndLine) {
   const std::string text = slurp(raw("S2/S2_coarse.out"));
   const std::size_t cut = text.find("TOTAL FORCES");
-  const std::string p = scratch("cut.out", text.substr(0, text.find('\n', text.find("FN  ", cut)) + 1));
+  const std::string p =
+      scratch("cut.out", text.substr(0, text.find('\n', text.find("FN  ", cut)) + 1));
   const std::string msg = error_of(read_contact_out, p);
   EXPECT_NE(msg.find(p + ":"), std::string::npos) << msg;
   EXPECT_NE(msg.find("FN"), std::string::npos) << msg;
   // cut after the last case: the end line is missing
   const std::string q = scratch("noend.out", text.substr(0, text.find("Performance timers")));
   EXPECT_NE(error_of(read_contact_out, q).find("truncated"), std::string::npos);
-  EXPECT_NE(error_of(read_contact_out, scratch("empty.out", "")).find("no ' Case n'"), std::string::npos);
+  EXPECT_NE(error_of(read_contact_out, scratch("empty.out", "")).find("no ' Case n'"),
+            std::string::npos);
 }
 
 TEST(ContactResults, TruncatedOrBadMatNamesFileAndLine) {
   const std::string text = slurp(raw("S2/S2_coarse.0001.mat"));
-  const std::string cut = scratch("cut.mat", text.substr(0, text.size() - 40));  // last row cut short
+  const std::string cut =
+      scratch("cut.mat", text.substr(0, text.size() - 40));  // last row cut short
   const std::string m1 = error_of(read_contact_mat, cut);
-  EXPECT_NE(m1.find(cut + ":863:"), std::string::npos) << m1;  // 12 header lines, the column line, 850 rows: the last one cut
+  EXPECT_NE(m1.find(cut + ":863:"), std::string::npos)
+      << m1;  // 12 header lines, the column line, 850 rows: the last one cut
   std::string bad = text;
   bad.replace(bad.find("0.958938E-01"), 12, "0.958938X-01");
   const std::string b = scratch("bad.mat", bad);
-  EXPECT_NE(error_of(read_contact_mat, b).find(b + ":18:"), std::string::npos) << error_of(read_contact_mat, b);
+  EXPECT_NE(error_of(read_contact_mat, b).find(b + ":18:"), std::string::npos)
+      << error_of(read_contact_mat, b);
   std::string fmt = text;
   fmt.replace(fmt.find("2410"), 4, "2310");
   EXPECT_NE(error_of(read_contact_mat, scratch("fmt.mat", fmt)).find("2410"), std::string::npos);
