@@ -1,4 +1,5 @@
 #include "io/parameter_table.hpp"
+#include "io/input_file.hpp"
 
 #include <toml++/toml.h>
 
@@ -76,11 +77,7 @@ std::string describe(const toml::node& n) {
 }  // namespace
 
 ParameterTable ParameterTable::read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open parameter file '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return parse(read_input(path, path, "the parameter file"), path);
 }
 
 ParameterTable ParameterTable::parse(const std::string& text, const std::string& origin) {

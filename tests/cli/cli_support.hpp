@@ -29,11 +29,20 @@ inline Invocation run(const std::string& args) {
   return {WEXITSTATUS(st), out};
 }
 
-/// A scratch folder of this test process.
+/// A scratch folder of this test process, removed with everything in it when the process ends
+/// (the suite leaves nothing in the temporary directory).
 inline std::filesystem::path temp_dir() {
-  const auto d = std::filesystem::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(d);
-  return d;
+  static const struct Scratch {
+    pid_t owner = ::getpid();
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      if (::getpid() == owner) std::filesystem::remove_all(dir, ec);
+    }
+  } scratch;
+  std::filesystem::create_directories(scratch.dir);
+  return scratch.dir;
 }
 
 inline std::string source_file(const std::string& relative) {
