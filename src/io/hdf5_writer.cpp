@@ -73,8 +73,8 @@ class Id {
 void Hdf5Writer::check(long status, const std::string& what) const {
   if (status >= 0) return;
   const std::string reason = hdf5_reason();
-  throw std::runtime_error("writing " + path_ + " (temporary " + temp_.path() + "): HDF5 cannot " + what +
-                           (reason.empty() ? std::string() : ": " + reason));
+  throw std::runtime_error("writing " + path_ + " (temporary " + temp_.path() + "): HDF5 cannot " +
+                           what + (reason.empty() ? std::string() : ": " + reason));
 }
 
 Hdf5Writer::Hdf5Writer(std::string path) : path_(std::move(path)), temp_(path_, "-o") {
@@ -85,7 +85,8 @@ Hdf5Writer::Hdf5Writer(std::string path) : path_(std::move(path)), temp_(path_, 
   // the 1.8 format: attributes above 64 kB (a long case text or command line) go to dense storage
   H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
   file_ = H5Fcreate(temp_.path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
-  if (file_ < 0) throw InputError("-o", "-o " + path_ + ": cannot create the HDF5 file " + temp_.path());
+  if (file_ < 0)
+    throw InputError("-o", "-o " + path_ + ": cannot create the HDF5 file " + temp_.path());
   try {
     const Provenance& p = provenance();
     attribute("/", "program_version", p.program_version);
@@ -106,7 +107,8 @@ void Hdf5Writer::set_string_attribute(long obj, const std::string& name, const s
   H5Tset_size(type, value.empty() ? 1 : value.size());
   H5Tset_cset(type, H5T_CSET_UTF8);
   const Id space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "replace attribute " + name);
+  if (H5Aexists(obj, name.c_str()) > 0)
+    check(H5Adelete(obj, name.c_str()), "replace attribute " + name);
   Id attr(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   check(attr, "create attribute " + name);
   check(H5Awrite(attr, type, value.empty() ? "" : value.c_str()), "write attribute " + name);
@@ -116,7 +118,9 @@ void Hdf5Writer::set_string_attribute(long obj, const std::string& name, const s
 void Hdf5Writer::write_raw(const std::string& path, long type, const void* data,
                            const std::vector<std::size_t>& dims, const std::string& units) {
   std::vector<hsize_t> d(dims.begin(), dims.end());
-  const Id space(d.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(int(d.size()), d.data(), nullptr), H5Sclose);
+  const Id space(
+      d.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(int(d.size()), d.data(), nullptr),
+      H5Sclose);
   const Id lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
   H5Pset_create_intermediate_group(lcpl, 1);
   Id set(H5Dcreate2(file_, path.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
@@ -145,11 +149,13 @@ void Hdf5Writer::write(const std::string& path, const std::vector<int>& data,
   write_raw(path, H5T_NATIVE_INT, data.data(), dims, units);
 }
 
-void Hdf5Writer::write(const std::string& path, const std::vector<std::string>& data, const std::string& units) {
+void Hdf5Writer::write(const std::string& path, const std::vector<std::string>& data,
+                       const std::string& units) {
   std::size_t width = 1;
   for (const auto& s : data) width = std::max(width, s.size());
   std::vector<char> buf(data.size() * width, '\0');
-  for (std::size_t i = 0; i < data.size(); ++i) std::copy(data[i].begin(), data[i].end(), buf.begin() + i * width);
+  for (std::size_t i = 0; i < data.size(); ++i)
+    std::copy(data[i].begin(), data[i].end(), buf.begin() + i * width);
   const Id type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type, width);
   H5Tset_strpad(type, H5T_STR_NULLPAD);
@@ -178,17 +184,21 @@ long Hdf5Writer::open_object(const std::string& object) {
   return obj;
 }
 
-void Hdf5Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
+void Hdf5Writer::attribute(const std::string& object, const std::string& name,
+                           const std::string& value) {
   Id obj(open_object(object), H5Oclose);
   set_string_attribute(obj, name, value);
   check(obj.close(), "write attribute " + name + " of " + object);
 }
 
-void Hdf5Writer::attribute(const std::string& object, const std::string& name, std::uint64_t value) {
+void Hdf5Writer::attribute(const std::string& object, const std::string& name,
+                           std::uint64_t value) {
   Id obj(open_object(object), H5Oclose);
-  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "replace attribute " + name);
+  if (H5Aexists(obj, name.c_str()) > 0)
+    check(H5Adelete(obj, name.c_str()), "replace attribute " + name);
   const Id space(H5Screate(H5S_SCALAR), H5Sclose);
-  Id attr(H5Acreate2(obj, name.c_str(), H5T_NATIVE_UINT64, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Id attr(H5Acreate2(obj, name.c_str(), H5T_NATIVE_UINT64, space, H5P_DEFAULT, H5P_DEFAULT),
+          H5Aclose);
   check(attr, "create attribute " + name);
   check(H5Awrite(attr, H5T_NATIVE_UINT64, &value), "write attribute " + name);
   check(attr.close(), "write attribute " + name);
@@ -200,7 +210,8 @@ void Hdf5Writer::commit() {
   const herr_t closed = H5Fclose(file_);
   file_ = -1;
   check(closed, "close the file");
-  sync_file(temp_.path(), path_);  // the data on disk (a full disk can show only now), then the rename
+  sync_file(temp_.path(),
+            path_);  // the data on disk (a full disk can show only now), then the rename
   temp_.commit();
 }
 

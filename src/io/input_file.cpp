@@ -36,8 +36,8 @@ std::string read_bounded(const std::string& path, const std::string& key, const 
   if (::fstat(fd, &st) != 0) refuse("cannot read " + what + ": " + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) refuse("is a folder, not " + what);
   if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > limit)
-    refuse(what + " is " + std::to_string(st.st_size) + " bytes, larger than the limit of " + limit_text(limit) +
-           " for an input file");
+    refuse(what + " is " + std::to_string(st.st_size) + " bytes, larger than the limit of " +
+           limit_text(limit) + " for an input file");
   std::string bytes;
   if (S_ISREG(st.st_mode)) bytes.reserve(std::size_t(st.st_size));
   char block[65536];
@@ -55,8 +55,8 @@ std::string read_bounded(const std::string& path, const std::string& key, const 
 
 }  // namespace
 
-const std::string& read_input(const std::string& path, const std::string& key, const std::string& what,
-                              std::uint64_t limit) {
+const std::string& read_input(const std::string& path, const std::string& key,
+                              const std::string& what, std::uint64_t limit) {
   struct Kept {
     std::string bytes;
     struct stat st;  // of a regular file when read: changed since (a test rewrote it), read again
@@ -69,8 +69,9 @@ const std::string& read_input(const std::string& path, const std::string& key, c
   const auto it = kept.find(path);
   if (it != kept.end()) {
     const struct stat& was = it->second.st;
-    if (!regular || (was.st_ino == now.st_ino && was.st_dev == now.st_dev && was.st_size == now.st_size &&
-                     was.st_mtim.tv_sec == now.st_mtim.tv_sec && was.st_mtim.tv_nsec == now.st_mtim.tv_nsec))
+    if (!regular ||
+        (was.st_ino == now.st_ino && was.st_dev == now.st_dev && was.st_size == now.st_size &&
+         was.st_mtim.tv_sec == now.st_mtim.tv_sec && was.st_mtim.tv_nsec == now.st_mtim.tv_nsec))
       return it->second.bytes;
     kept.erase(it);
   }

@@ -22,8 +22,8 @@ constexpr std::uint64_t kMaxInputBytes = 256ull << 20;
 /// The bytes of `path`, read once per process and then kept (read again only if a regular file has
 /// changed since). InputError(key, "PATH: ...") naming `what` (e.g. "the case file") if it is
 /// missing, a folder, unreadable or larger than `limit` bytes.
-const std::string& read_input(const std::string& path, const std::string& key, const std::string& what,
-                              std::uint64_t limit = kMaxInputBytes);
+const std::string& read_input(const std::string& path, const std::string& key,
+                              const std::string& what, std::uint64_t limit = kMaxInputBytes);
 
 /// A 64-bit FNV-1a digest of `bytes` as 16 hexadecimal digits (detects changed inputs; not a
 /// cryptographic hash).

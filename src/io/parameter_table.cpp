@@ -1,5 +1,4 @@
 #include "io/parameter_table.hpp"
-#include "io/input_file.hpp"
 
 #include <toml++/toml.h>
 
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/text_file.hpp"
 
 namespace rollnoise::io {

@@ -1,5 +1,4 @@
 #include "io/study_file.hpp"
-#include "io/input_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_schema.hpp"
+#include "io/input_file.hpp"
 
 namespace rollnoise::io {
 namespace {

@@ -27,20 +27,6 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = temp_dir() / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::vector<std::string> listing(const fs::path& d) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 // `command` run by bash (process substitution) with stdout and stderr captured and, if
 // `file_size_limit` > 0, RLIMIT_FSIZE set to it in the child (as `ulimit -f` would): a write
 // beyond it fails with EFBIG (or kills by SIGXFSZ, exit 153, if the program does not ignore it).
@@ -80,9 +66,12 @@ const std::string kSmall = " --set grid.nx=16 --set grid.ny=12";
 void expect_lost_write(const Invocation& r, const fs::path& folder, const std::string& output,
                        const std::string& reason) {
   EXPECT_EQ(r.status, 1) << r.output;
-  EXPECT_NE(r.output.find(output), std::string::npos) << "the message names the output:\n" << r.output;
-  EXPECT_NE(r.output.find(reason), std::string::npos) << "the message gives the reason:\n" << r.output;
-  EXPECT_TRUE(listing(folder).empty()) << "left behind: " << ::testing::PrintToString(listing(folder));
+  EXPECT_NE(r.output.find(output), std::string::npos) << "the message names the output:\n"
+                                                      << r.output;
+  EXPECT_NE(r.output.find(reason), std::string::npos) << "the message gives the reason:\n"
+                                                      << r.output;
+  EXPECT_TRUE(listing(folder).empty())
+      << "left behind: " << ::testing::PrintToString(listing(folder));
 }
 
 }  // namespace
@@ -108,7 +97,8 @@ TEST(FullDisk, TextOutputBeyondAFileSizeLimitIsAnErrorAndItsTemporaryIsRemoved) 
     ::setrlimit(RLIMIT_FSIZE, &lim);
     int code = 3;
     try {
-      auto t = rollnoise::io::write_text_file(csv, "--csv", [](std::ostream& o) { o << std::string(5000, 'x'); });
+      auto t = rollnoise::io::write_text_file(csv, "--csv",
+                                              [](std::ostream& o) { o << std::string(5000, 'x'); });
       code = 0;  // no error: the lost bytes went unnoticed
     } catch (const std::runtime_error& e) {
       code = std::string(e.what()).find("File too large") != std::string::npos ? 1 : 2;
@@ -126,13 +116,14 @@ TEST(FullDisk, SteadyOnAFullTmpfsExitsOneAndLeavesNothing) {
   // a 40 kB tmpfs in a private mount namespace (gone with the command); skipped where mounting is
   // not allowed
   const fs::path d = fresh_dir("tmpfs");
-  const Invocation probe =
-      run_bash("unshare -m sh -c 'mount -t tmpfs -o size=40k tmpfs " + d.string() + " && echo mounted'");
-  if (probe.output.find("mounted") == std::string::npos) GTEST_SKIP() << "cannot mount a tmpfs here: " << probe.output;
+  const Invocation probe = run_bash("unshare -m sh -c 'mount -t tmpfs -o size=40k tmpfs " +
+                                    d.string() + " && echo mounted'");
+  if (probe.output.find("mounted") == std::string::npos)
+    GTEST_SKIP() << "cannot mount a tmpfs here: " << probe.output;
   const std::string out = (d / "out.h5").string();
-  const Invocation r = run_bash("unshare -m sh -c 'mount -t tmpfs -o size=40k tmpfs " + d.string() + " && " +
-                                kProgram + " steady " + paper_case() + " -q -o " + out + "; s=$?; echo listing:; ls -A " +
-                                d.string() + "; exit $s'");
+  const Invocation r = run_bash("unshare -m sh -c 'mount -t tmpfs -o size=40k tmpfs " + d.string() +
+                                " && " + kProgram + " steady " + paper_case() + " -q -o " + out +
+                                "; s=$?; echo listing:; ls -A " + d.string() + "; exit $s'");
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
   const auto listed = r.output.find("listing:\n");
@@ -146,7 +137,8 @@ TEST(LostOutput, KeysAndStudyListToDevFullExitOne) {
   const fs::path d = fresh_dir("devfull");
   std::ofstream(d / "s.toml") << "base = \"" << source_file("tests/data/study/curve_small.toml")
                               << "\"\noutput = \"out\"\n[axes]\n\"friction.mu\" = [0.3, 0.4]\n";
-  for (const std::string& args : {std::string("keys"), "study " + (d / "s.toml").string() + " --list"}) {
+  for (const std::string& args :
+       {std::string("keys"), "study " + (d / "s.toml").string() + " --list"}) {
     const Invocation r = run_bash(kProgram + " " + args + " > /dev/full");
     EXPECT_EQ(r.status, 1) << args << ":\n" << r.output;
     EXPECT_NE(r.output.find("standard output"), std::string::npos) << args << ":\n" << r.output;
@@ -156,11 +148,13 @@ TEST(LostOutput, KeysAndStudyListToDevFullExitOne) {
 TEST(LostOutput, StudyListBeyondAFileSizeLimitExitsOne) {
   // 100,000 cases, ~100 bytes a line: 10 MB of commands against a 1 MB limit
   const fs::path d = fresh_dir("fsize_list");
-  std::ofstream(d / "s.toml") << "base = \"" << source_file("tests/data/study/curve_small.toml")
-                              << "\"\noutput = \"out\"\n[axes]\n\"friction.mu\" = { from = 0.1, to = 0.5, count = "
-                                 "100000 }\n";
-  const Invocation r =
-      run_bash(kProgram + " study " + (d / "s.toml").string() + " --list > " + (d / "cases.txt").string(), 1000000);
+  std::ofstream(d / "s.toml")
+      << "base = \"" << source_file("tests/data/study/curve_small.toml")
+      << "\"\noutput = \"out\"\n[axes]\n\"friction.mu\" = { from = 0.1, to = 0.5, count = "
+         "100000 }\n";
+  const Invocation r = run_bash(
+      kProgram + " study " + (d / "s.toml").string() + " --list > " + (d / "cases.txt").string(),
+      1000000);
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("standard output"), std::string::npos) << r.output;
 }
@@ -169,14 +163,15 @@ TEST(LostOutput, StudyListBeyondAFileSizeLimitExitsOne) {
 
 TEST(ReadOnce, CaseFromProcessSubstitutionAndFromAFifoRuns) {
   const fs::path d = fresh_dir("read_once");
-  Invocation r = run_bash(kProgram + " steady <(cat " + paper_case() + ") -q -o " + (d / "ps.h5").string() + kSmall);
+  Invocation r = run_bash(kProgram + " steady <(cat " + paper_case() + ") -q -o " +
+                          (d / "ps.h5").string() + kSmall);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(d / "ps.h5"));
 
   const fs::path fifo = d / "case.fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  r = run_bash("(cat " + paper_case() + " > " + fifo.string() + " &); timeout 60 " + kProgram + " steady " +
-               fifo.string() + " -q -o " + (d / "fifo.h5").string() + kSmall);
+  r = run_bash("(cat " + paper_case() + " > " + fifo.string() + " &); timeout 60 " + kProgram +
+               " steady " + fifo.string() + " -q -o " + (d / "fifo.h5").string() + kSmall);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(d / "fifo.h5"));
 }
@@ -184,7 +179,8 @@ TEST(ReadOnce, CaseFromProcessSubstitutionAndFromAFifoRuns) {
 // ---- item 6: sizes ----
 
 TEST(Sizes, CaseTextAndCommandLineAbove64kBAreStoredWhole) {
-  // 6000 frequencies in frequency.list (unused by steady, kept in /case) and a command line of ~70 kB
+  // 6000 frequencies in frequency.list (unused by steady, kept in /case) and a command line of ~70
+  // kB
   const fs::path d = fresh_dir("big_text");
   std::string list = "[";
   for (int i = 0; i < 6000; ++i) list += (i ? "," : "") + std::to_string(100 + i) + ".5";
@@ -192,9 +188,9 @@ TEST(Sizes, CaseTextAndCommandLineAbove64kBAreStoredWhole) {
   std::string repeated;
   for (int i = 0; i < 1000; ++i) repeated += " --set grid.spin_offset=0.0";
   const fs::path out = d / "big.h5";
-  const Invocation r =
-      run_bash(kProgram + " steady " + paper_case() + " -q -o " + out.string() + kSmall + " --set 'frequency.list=" +
-               list + "'" + repeated + " --set 'rolling.speed=13.8888888888888888888'");
+  const Invocation r = run_bash(kProgram + " steady " + paper_case() + " -q -o " + out.string() +
+                                kSmall + " --set 'frequency.list=" + list + "'" + repeated +
+                                " --set 'rolling.speed=13.8888888888888888888'");
   ASSERT_EQ(r.status, 0) << r.output.substr(0, 2000);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
@@ -207,7 +203,8 @@ TEST(Sizes, CaseTextAndCommandLineAbove64kBAreStoredWhole) {
     H5Tclose(t), H5Aclose(a), H5Oclose(o);
     return s;
   };
-  const std::string toml = attribute_size("/case", "toml"), cmd = attribute_size("/", "command_line");
+  const std::string toml = attribute_size("/case", "toml"),
+                    cmd = attribute_size("/", "command_line");
   H5Fclose(f);
   EXPECT_GT(toml.size(), 65536u);
   EXPECT_NE(toml.find("6099.5"), std::string::npos) << "the last frequency";
@@ -217,8 +214,9 @@ TEST(Sizes, CaseTextAndCommandLineAbove64kBAreStoredWhole) {
 
 TEST(Sizes, DevZeroAsAModelFileIsRefusedNamingTheKeyAndTheLimit) {
   const fs::path d = fresh_dir("dev_zero");
-  const Invocation r = run_bash(kProgram + " steady " + paper_case() + " -q -o " + (d / "z.h5").string() +
-                                " --set contact.geometry=profiles --set contact.wheel_profile=/dev/zero");
+  const Invocation r =
+      run_bash(kProgram + " steady " + paper_case() + " -q -o " + (d / "z.h5").string() +
+               " --set contact.geometry=profiles --set contact.wheel_profile=/dev/zero");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("contact.wheel_profile"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("limit of 268435456 bytes"), std::string::npos) << r.output;
@@ -229,7 +227,8 @@ TEST(Sizes, OutputNamesUpToNameMaxAreWrittenAndLeaveNoTemporary) {
   const fs::path d = fresh_dir("long_name");
   for (std::size_t length : {249u, 255u}) {
     const std::string name = std::string(length - 3, 'n') + ".h5";
-    const Invocation r = run_bash(kProgram + " steady " + paper_case() + " -q -o " + (d / name).string() + kSmall);
+    const Invocation r =
+        run_bash(kProgram + " steady " + paper_case() + " -q -o " + (d / name).string() + kSmall);
     EXPECT_EQ(r.status, 0) << length << ": " << r.output;
     EXPECT_EQ(listing(d), std::vector<std::string>{name}) << length;
     fs::remove(d / name);
@@ -240,8 +239,9 @@ TEST(Sizes, OutputNamesUpToNameMaxAreWrittenAndLeaveNoTemporary) {
 
 TEST(Quiet, NoiseWithQuietLeavesOutTheBandTable) {
   const fs::path d = fresh_dir("quiet");
-  const Invocation r = run_bash(kProgram + " noise " + source_file("tests/data/study/curve_small.toml") + " -q -o " +
-                                (d / "n.h5").string());
+  const Invocation r =
+      run_bash(kProgram + " noise " + source_file("tests/data/study/curve_small.toml") + " -q -o " +
+               (d / "n.h5").string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output.find("L_r"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("levels dB"), std::string::npos) << r.output;

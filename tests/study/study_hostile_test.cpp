@@ -57,7 +57,8 @@ void replace_in(const fs::path& p, const std::string& from, const std::string& t
 TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreComputedAgain) {
   const fs::path d = folder("stale");
   copy_base(d);
-  std::ofstream(d / "s.toml") << "base = \"base.toml\"\noutput = \"out\"\n[axes]\n\"curve.radius\" = [300.0, 500.0]\n";
+  std::ofstream(d / "s.toml")
+      << "base = \"base.toml\"\noutput = \"out\"\n[axes]\n\"curve.radius\" = [300.0, 500.0]\n";
   const std::string study = (d / "s.toml").string();
   auto r = run("study " + study + " -j 1 -q");
   ASSERT_EQ(r.status, 0) << r.output;
@@ -67,7 +68,8 @@ TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreCo
   replace_in(d / "base.toml", "mu = 0.3", "mu = 0.25");
   r = run("collect " + study);
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("0 complete, 0 failed, 0 missing, 2 stale"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0 complete, 0 failed, 0 missing, 2 stale"), std::string::npos)
+      << r.output;
   EXPECT_NE(text_of(d / "out/study.csv").find(",stale,"), std::string::npos);
   r = run("study " + study + " -j 1 -q");
   ASSERT_EQ(r.status, 0) << r.output;
@@ -86,14 +88,16 @@ TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreCo
 TEST(StudyRuns, ASecondRunOnTheSameFolderIsRefusedNamingTheFirst) {
   const fs::path d = folder("lock");
   // the 34 x 25 grid and 48 samples per band: about 0.2 s per case, 2 s for the study
-  std::ofstream(d / "s.toml") << "base = \"" << ROLLNOISE_SOURCE_DIR
-                              << "/tests/data/study/curve_small.toml\"\noutput = \"out\"\n[axes]\n"
-                                 "\"curve.radius\" = { from = 200.0, to = 1300.0, count = 12 }\n"
-                                 "\"grid.nx\" = [34]\n\"grid.ny\" = [25]\n\"noise.points_per_band\" = [48]\n";
+  std::ofstream(d / "s.toml")
+      << "base = \"" << ROLLNOISE_SOURCE_DIR
+      << "/tests/data/study/curve_small.toml\"\noutput = \"out\"\n[axes]\n"
+         "\"curve.radius\" = { from = 200.0, to = 1300.0, count = 12 }\n"
+         "\"grid.nx\" = [34]\n\"grid.ny\" = [25]\n\"noise.points_per_band\" = [48]\n";
   const std::string study = (d / "s.toml").string();
   const pid_t first = ::fork();
   if (first == 0) {
-    ::execl(ROLLNOISE_BINARY, ROLLNOISE_BINARY, "study", study.c_str(), "-j", "1", "-q", static_cast<char*>(nullptr));
+    ::execl(ROLLNOISE_BINARY, ROLLNOISE_BINARY, "study", study.c_str(), "-j", "1", "-q",
+            static_cast<char*>(nullptr));
     ::_exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -108,7 +112,8 @@ TEST(StudyRuns, ASecondRunOnTheSameFolderIsRefusedNamingTheFirst) {
   ::waitpid(first, &st, 0);
   ASSERT_TRUE(still_running) << "the first run ended before the second started";
   EXPECT_EQ(second.status, 2) << second.output;
-  EXPECT_NE(second.output.find("another rollnoise study (process " + std::to_string(first) + ")"), std::string::npos)
+  EXPECT_NE(second.output.find("another rollnoise study (process " + std::to_string(first) + ")"),
+            std::string::npos)
       << second.output;
   EXPECT_EQ(single.status, 2) << single.output;
   EXPECT_NE(single.output.find("another rollnoise study"), std::string::npos) << single.output;
