@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -282,9 +283,10 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   if (flange_share && !(std::sin(delta_f) - mu_f * std::cos(delta_f) > 0.0)) {
     // the flange friction is friction.mu unless given apart; delta_f comes from the profiles
     const std::string key = std::isnan(in.flange_friction) ? "friction.mu" : "curving.flange_friction";
-    throw InputError(key, key + " = " + std::to_string(mu_f) + ": the flange friction coefficient must stay below " +
-                              "tan(delta_f) = " + std::to_string(std::tan(delta_f)) + " (flange angle delta_f = " +
-                              std::to_string(delta_f) + " rad; Nadal), else the flange cannot carry a lateral force");
+    char values[160];
+    std::snprintf(values, sizeof values, " = %.4g: must stay below tan(delta_f) = %.4g (flange angle %.4g rad)",
+                  mu_f, std::tan(delta_f), delta_f);
+    throw InputError(key, key + values + ", Nadal's limit, else the flange cannot carry a lateral force");
   }
   std::array<double, 4> Qt = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};
   std::array<double, 2> Qf = {0.0, 0.0};  // flange vertical load of axle i (K6)
