@@ -174,6 +174,11 @@ class CaseLocks {
       range.l_start = off_t(indices[i]);
       range.l_len = off_t(indices[j - 1] - indices[i] + 1);
       if (::fcntl(fd_, F_SETLK, &range) != 0) {
+        if (errno != EACCES && errno != EAGAIN) {  // no locks on this file system (ENOLCK): run unlocked
+          std::fprintf(stderr, "study: warning: cannot lock %s (%s); concurrent runs are not detected\n",
+                       path.c_str(), std::strerror(errno));
+          return;
+        }
         struct flock holder = range;
         const bool known = ::fcntl(fd_, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK;
         ::close(fd_);
