@@ -39,9 +39,10 @@ std::string output_path(const CommonOptions& o, const std::string& case_name) {
 
 }  // namespace rollnoise::cli
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_command(int argc, char** argv) {
   using namespace rollnoise;
-  cli::start_process(argc, argv);  // stdout line-buffered; command line kept for the provenance
   gsl_set_error_handler_off();  // GSL errors are checked where they matter
   CLI::App app{"rollnoise: railway rolling contact and rolling noise in the frequency domain"};
   app.require_subcommand(1);
@@ -121,7 +122,13 @@ int main(int argc, char** argv) {
   study->add_option("--shard", study_options.shard,
                     "run shard i of N (i = 1..N); default from SLURM_ARRAY_TASK_ID/COUNT, else the whole study");
   study->add_flag("--list", study_options.list, "print one self-contained command per case (GNU parallel, HyperQueue)");
-  study->add_option("--case", study_options.case_index, "run case K alone (what --list prints)")->check(CLI::NonNegativeNumber);
+  study->add_option("--case", study_options.case_index, "run case K alone (what --list prints)")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            const bool digits = !v.empty() && v.find_first_not_of("0123456789") == std::string::npos;
+            return digits ? "" : "--case " + v + ": a case number K = 0, 1, 2, ... (see --list)";
+          },
+          "K"));
   study->add_flag("--no-reuse", study_options.no_reuse, "compute every case from scratch (to measure the reuse)");
   study->add_flag("-q,--quiet", study_options.quiet, "no progress output");
   auto* collect = app.add_subcommand("collect", "merge a study's cases into OUTPUT/study.h5 and study.csv");
@@ -176,4 +183,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  rollnoise::cli::start_process(argc, argv);  // stdout line-buffered; command line kept for the provenance
+  // exit 1 if anything printed was lost (a full disk or /dev/full as stdout): never 0 with lost output
+  return rollnoise::cli::finish_process(run_command(argc, argv));
 }

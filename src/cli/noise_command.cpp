@@ -27,37 +27,10 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
                 1e-3 * st.flange_normal_force, st.flange_angle);
 }
 
-}  // namespace
-
-int run_noise(const CommonOptions& o) {
-  const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
-  io::NoiseInputs in = io::read_noise_inputs(reader);
-  const pipeline::NoiseCase& nc = in.noise;
-  const pipeline::NoiseResult r = io::within_case(reader, [&] { return pipeline::run_noise(std::move(in.contact), nc); });
-
-  const std::string out = output_path(o, reader.name());
-  io::Hdf5Writer w(out);
-  io::write_noise(w, reader, nc, r);
-  w.commit();
-
-  const pipeline::ContactCase& cc = r.contact;
+// The 1/3-octave band levels, one line per band (left out with -q).
+void print_band_table(const pipeline::NoiseResult& r) {
   const auto& variants = r.variants;
   const auto& centres = r.axis.centres;
-  char track[64] = "tangent track";  // the radius as a number: any size prints (no int cast)
-  if (nc.curve_radius > 0) std::snprintf(track, sizeof track, "curve R = %.6g m", nc.curve_radius);
-  std::printf("%s: %s, V = %.3g m/s; leading outer wheel: creepages (%.4g, %.4g, %.4g rad/m), "
-              "contact angle %.3g rad\n",
-              reader.name().c_str(), track,
-              cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.curve.position.contact_angle);
-  print_contact_state(r.curve);
-  std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "
-              "structures %.1f s, total %.1f s\n",
-              r.stage.model->adhesion_elements(), r.stage.model->slip_elements(), r.axis.frequency.size(),
-              centres.size(), r.seconds_contact, r.seconds_structures, r.seconds_total);
-  if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());
-  std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n",
-              r.mean_force.Fx, r.mean_force.Fy, r.mean_force.Mz, cc.normal_force, r.g0(0).real(), r.g0(1).real(),
-              r.g0(2).real());
   std::printf("  levels dB re 1 N (Mz re 1 N m), %s coupling; d* = with minus without the coupling; "
               "muFz = 20 log10|Fy_mean/N| + Fz; b* = minus the %s baseline\n",
               r.coupled ? "with" : "without", variants.has_baseline() ? r.baseline_name.c_str() : "(no)");
@@ -81,6 +54,39 @@ int run_noise(const CommonOptions& o) {
     else
       std::printf(" %6s %6s\n", "-", "-");
   }
+}
+
+}  // namespace
+
+int run_noise(const CommonOptions& o) {
+  const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
+  io::NoiseInputs in = io::read_noise_inputs(reader);
+  const pipeline::NoiseCase& nc = in.noise;
+  const pipeline::NoiseResult r = io::within_case(reader, [&] { return pipeline::run_noise(std::move(in.contact), nc); });
+
+  const std::string out = output_path(o, reader.name());
+  io::Hdf5Writer w(out);
+  io::write_noise(w, reader, nc, r);
+  w.commit();
+
+  const pipeline::ContactCase& cc = r.contact;
+  const auto& centres = r.axis.centres;
+  char track[64] = "tangent track";  // the radius as a number: any size prints (no int cast)
+  if (nc.curve_radius > 0) std::snprintf(track, sizeof track, "curve R = %.6g m", nc.curve_radius);
+  std::printf("%s: %s, V = %.3g m/s; leading outer wheel: creepages (%.4g, %.4g, %.4g rad/m), "
+              "contact angle %.3g rad\n",
+              reader.name().c_str(), track,
+              cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.curve.position.contact_angle);
+  print_contact_state(r.curve);
+  std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "
+              "structures %.1f s, total %.1f s\n",
+              r.stage.model->adhesion_elements(), r.stage.model->slip_elements(), r.axis.frequency.size(),
+              centres.size(), r.seconds_contact, r.seconds_structures, r.seconds_total);
+  if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());
+  std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n",
+              r.mean_force.Fx, r.mean_force.Fy, r.mean_force.Mz, cc.normal_force, r.g0(0).real(), r.g0(1).real(),
+              r.g0(2).real());
+  if (!o.quiet) print_band_table(r);  // -q: the summary lines only
   std::printf("wrote %s\n", out.c_str());
   return 0;
 }

@@ -1,6 +1,10 @@
 #include "cli/run_files.hpp"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
@@ -9,7 +13,21 @@ namespace rollnoise::cli {
 
 void start_process(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  // beyond a file-size limit (ulimit -f) a write then fails with EFBIG, which the writers report
+  // (exit 1, temporaries removed), instead of SIGXFSZ killing the process mid-write
+  std::signal(SIGXFSZ, SIG_IGN);
   io::record_invocation(argc, argv);
+}
+
+int finish_process(int status) {
+  std::cout.flush();
+  errno = 0;
+  const bool flush_failed = std::fflush(stdout) != 0;
+  const int err = flush_failed ? errno : 0;
+  if (!flush_failed && !std::ferror(stdout) && std::cout) return status;
+  std::fprintf(stderr, "rollnoise: error: cannot write the standard output%s%s: output lost\n",
+               err ? ": " : "", err ? std::strerror(err) : "");
+  return 1;
 }
 
 void check_run_files(const CommonOptions& o, const std::string& csv) {

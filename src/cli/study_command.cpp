@@ -35,7 +35,10 @@ int run_study(const StudyOptions& o) {
   if (o.list) {  // one self-contained command per case, for GNU parallel or HyperQueue
     const std::string program = io::shell_quote({program_path()}), file = io::shell_quote({plan.file});
     for (const auto& c : cases)
-      if (shard.contains(c.index)) std::printf("%s study %s --case %zu -q\n", program.c_str(), file.c_str(), c.index);
+      if (shard.contains(c.index) &&
+          (std::printf("%s study %s --case %zu -q\n", program.c_str(), file.c_str(), c.index) < 0 ||
+           std::ferror(stdout)))
+        break;  // stdout lost (a full disk): main's check (finish_process) reports it, exit 1
     return 0;
   }
   if (o.case_index >= 0) {
@@ -43,7 +46,7 @@ int run_study(const StudyOptions& o) {
     if (!o.quiet)
       std::printf("%s: case %ld %s (%.2f s)\n", plan.file.c_str(), o.case_index,
                   s.skipped ? "already complete" : s.failed ? "failed (see its .error file)" : "complete", s.seconds);
-    return 0;
+    return s.failed > 0 ? 1 : 0;
   }
 
   study::RunOptions ro;
@@ -70,14 +73,15 @@ int run_study(const StudyOptions& o) {
     for (const auto& [index, message] : s.failures)
       std::fprintf(stderr, "  case %zu (%s): %s\n", index, pipeline::describe(plan, cases[index]).c_str(), message.c_str());
   }
-  return 0;
+  return s.failed > 0 ? 1 : 0;  // a study with a failed case is not a success (the log above names them)
 }
 
 int run_collect(const StudyOptions& o) {
   const pipeline::StudyPlan plan = io::read_study_file(o.study_file);
   const study::CollectSummary s = study::collect(plan);
-  std::printf("collect %s: %ld complete, %ld failed, %ld missing\nwrote %s\nwrote %s\n", plan.file.c_str(), s.complete,
-              s.failed, s.missing, s.h5.c_str(), s.csv.c_str());
+  std::printf("collect %s: %ld complete, %ld failed, %ld missing, %ld stale%s\nwrote %s\nwrote %s\n", plan.file.c_str(),
+              s.complete, s.failed, s.missing, s.stale,
+              s.stale ? " (computed from other inputs: run the study again)" : "", s.h5.c_str(), s.csv.c_str());
   return 0;
 }
 

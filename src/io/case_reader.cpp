@@ -16,6 +16,7 @@
 #define ROLLNOISE_SOURCE_DIR "."
 #endif
 #include "io/case_schema.hpp"
+#include "io/input_file.hpp"
 
 namespace rollnoise::io {
 
@@ -99,12 +100,8 @@ CaseReader CaseReader::from_file(const std::string& path,
   const fs::file_status st = fs::status(path, ec);
   if (!fs::exists(st)) throw InputError("(file)", path + ": no such case file");
   if (fs::is_directory(st)) throw InputError("(file)", path + ": is a directory, not a case file (TOML)");
-  std::ifstream in(path);
-  if (!in) throw InputError("(file)", path + ": cannot open the case file: " + std::strerror(errno));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError("(file)", path + ": cannot read the case file");
-  return from_string(ss.str(), path, overrides);
+  // read once (a pipe or <(...) can be read only once; the run and the check of its files share it)
+  return from_string(read_input(path, "(file)", "the case file"), path, overrides);
 }
 
 std::string CaseReader::folder() const {
@@ -276,17 +273,29 @@ namespace fs = std::filesystem;
 
 std::string find_model_file(const CaseReader& r, const std::string& key) {
   const fs::path given = r.string(key);
-  if (given.is_absolute()) return fs::exists(given) ? given.string() : std::string();
+  std::error_code ec;  // a symbolic-link loop or an unreadable folder: not found here
+  if (given.is_absolute()) return fs::exists(given, ec) ? given.string() : std::string();
   const fs::path folder = r.folder().empty() ? fs::path(".") : fs::path(r.folder());
   for (const fs::path& base : {folder, folder / "..", fs::path(ROLLNOISE_SOURCE_DIR)})
-    if (fs::exists(base / given)) return (base / given).lexically_normal().string();
+    if (fs::exists(base / given, ec)) return (base / given).lexically_normal().string();
   return {};
 }
 
 std::string resolve_model_file(const CaseReader& r, const std::string& key) {
   const std::string found = find_model_file(r, key);
-  if (!found.empty()) return found;
+  if (!found.empty()) {
+    // read it now, once and bounded, so that a folder, a device or a huge file is refused naming the key
+    try {
+      read_input(found, key, "the file of " + key);
+    } catch (const InputError& e) {
+      r.fail(key, e.what());
+    }
+    return found;
+  }
   const fs::path given = r.string(key);
+  std::error_code ec;
+  if (given.is_absolute() && !fs::exists(given, ec) && ec && ec != std::errc::no_such_file_or_directory)
+    r.fail(key, "file " + given.string() + " cannot be opened: " + ec.message());
   if (given.is_absolute()) r.fail(key, "file " + given.string() + " does not exist");
   r.fail(key, "file " + given.string() + " found neither beside the case file, in its parent folder, "
               "nor in the source tree");

@@ -47,6 +47,14 @@ void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& 
   if (wheel && rail) c.profiles = std::make_shared<const geometry::WheelRailPair>(*wheel, *rail);
   problems.check([&] { c.wheelset = {r.real("contact.lateral_displacement"), r.real("contact.yaw")}; });
   c.grid_options.nx = static_cast<int>(nx);
+  // the grid is placed around the contact the profiles give (pipeline::place_contact): a fixed
+  // extent is not honoured there, so it is refused rather than silently ignored
+  for (const char* key : {"grid.x_min", "grid.x_max", "grid.y_min", "grid.y_max"})
+    problems.check([&] {
+      if (r.has(key))
+        r.fail(key, "is used only with contact.geometry = \"hertz\"; with \"profiles\" the grid is placed around "
+                    "the contact the profiles give (set its size with grid.scale, grid.nx)");
+    });
   problems.check([&] { c.grid_options.scale = std::max(1.25, r.real("grid.scale")); });
 }
 

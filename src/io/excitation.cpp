@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace rollnoise::io {
 
@@ -76,8 +77,13 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
   }
   // csv
   const std::filesystem::path file = excitation_file_path(r);
-  std::ifstream in(file);
-  if (!in) r.fail("excitation.file", "cannot open " + file.string());
+  std::istringstream in([&]() -> std::string {
+    try {
+      return read_input(file.string(), "excitation.file", "the excitation file");
+    } catch (const InputError& e) {
+      r.fail("excitation.file", e.what());
+    }
+  }());
   std::vector<double> t;
   std::vector<contact::Creepage> v;
   std::vector<double> dn;  // optional 5th column: normal-load variation (N)

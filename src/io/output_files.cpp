@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <csignal>
 #include <cstring>
 #include <ctime>
@@ -177,7 +178,10 @@ TemporaryFile::TemporaryFile(std::string final_path, const std::string& option)
     : final_(std::move(final_path)) {
   const fs::path p = final_;
   const std::string folder = folder_of(p);
-  std::string name = (fs::path(folder) / ("." + p.filename().string() + ".XXXXXX")).string();
+  // ".NAME.XXXXXX" adds 8 characters: a NAME near NAME_MAX (255) is shortened in the temporary
+  std::string stem = p.filename().string();
+  if (stem.size() + 8 > NAME_MAX) stem.resize(NAME_MAX - 8);
+  std::string name = (fs::path(folder) / ("." + stem + ".XXXXXX")).string();
   if (name.size() >= kPathMax) throw InputError(option, option + " " + final_ + ": path too long");
   SignalsBlocked blocked;  // the temporary is in the table before a signal can remove the process
   install_handlers();
@@ -216,6 +220,42 @@ void TemporaryFile::commit() {
                              std::strerror(errno));
   g_used[slot_] = 0;
   slot_ = -1;
+}
+
+void write_bytes(const TemporaryFile& t, const std::string& bytes) {
+  auto failed = [&](const char* what, int err) {
+    throw std::runtime_error("writing " + t.final_path() + " (temporary " + t.path() + "): " + what + ": " +
+                             std::strerror(err));
+  };
+  const int fd = ::open(t.path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) failed("cannot open", errno);
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : EIO;
+      ::close(fd);
+      failed("write failed", err);
+    }
+    done += std::size_t(n);
+  }
+  if (::fsync(fd) != 0 && errno != EINVAL) {
+    const int err = errno;
+    ::close(fd);
+    failed("fsync failed", err);
+  }
+  if (::close(fd) != 0) failed("close failed", errno);
+}
+
+void sync_file(const std::string& temp, const std::string& final_path) {
+  const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+  int err = fd < 0 ? errno : 0;
+  if (fd >= 0) {
+    if (::fsync(fd) != 0 && errno != EINVAL) err = errno;
+    if (::close(fd) != 0 && !err) err = errno;
+  }
+  if (err)
+    throw std::runtime_error("writing " + final_path + " (temporary " + temp + "): " + std::strerror(err));
 }
 
 std::string shell_quote(const std::vector<std::string>& args) {

@@ -7,7 +7,8 @@
 //    (the case file and every model file the case names, case_input_files()) or another output
 //    of the same run. Paths are compared resolved: std::filesystem::equivalent when both exist (a
 //    symlink or hard link to the case is caught), weakly_canonical otherwise.
-//  - TemporaryFile: a unique file `.NAME.XXXXXX` (mkstemp) in the output's folder, renamed onto
+//  - TemporaryFile: a unique file `.NAME.XXXXXX` (mkstemp; NAME shortened so that the temporary's
+//    name stays within NAME_MAX) in the output's folder, renamed onto
 //    NAME by commit() (rename(2) within one folder is atomic: a reader sees the old file or the
 //    complete new one, and two concurrent runs to one output each write their own temporary, so
 //    the final file is one complete run, never a mix). It is removed when dropped uncommitted
@@ -20,7 +21,7 @@
 //    (git describe --always --dirty at build time, "unknown" outside git).
 #pragma once
 
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -79,17 +80,25 @@ class TemporaryFile {
   int slot_ = -1;  ///< index in the signal handler's table; -1: committed or moved from
 };
 
-/// A text output (CSV) written by `fill(std::ostream&)` into a TemporaryFile, returned uncommitted
-/// (the caller commits it with the run's other outputs). InputError naming `option` if it cannot be
-/// opened; std::runtime_error if writing fails.
+/// Write `bytes` to the temporary `t` (every write checked, then fsync and close checked).
+/// std::runtime_error naming the output and the reason (e.g. "No space left on device") if any of
+/// it fails; the caller drops `t`, which removes the temporary.
+void write_bytes(const TemporaryFile& t, const std::string& bytes);
+
+/// Flush the file `temp` (the temporary of `final_path`) to disk, checked: std::runtime_error naming
+/// the output and the reason if the file system reports an error only now.
+void sync_file(const std::string& temp, const std::string& final_path);
+
+/// A text output (CSV) written by `fill(std::ostream&)` into memory, then into a TemporaryFile with
+/// every write checked (write_bytes), returned uncommitted (the caller commits it with the run's
+/// other outputs). InputError naming `option` if it cannot be created; std::runtime_error if
+/// writing fails.
 template <class Fill>
 TemporaryFile write_text_file(const std::string& path, const std::string& option, Fill&& fill) {
   TemporaryFile t(path, option);
-  std::ofstream out(t.path());
-  if (!out) throw InputError(option, option + " " + path + ": cannot write " + t.path());
-  fill(out);
-  out.close();
-  if (!out) throw std::runtime_error("writing " + t.path() + " (for " + path + ") failed");
+  std::ostringstream out;
+  fill(static_cast<std::ostream&>(out));
+  write_bytes(t, out.str());
   return t;
 }
 

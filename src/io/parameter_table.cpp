@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/text_file.hpp"
 
 namespace rollnoise::io {
@@ -76,11 +77,7 @@ std::string describe(const toml::node& n) {
 }  // namespace
 
 ParameterTable ParameterTable::read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open parameter file '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return parse(read_input(path, path, "the parameter file"), path);
 }
 
 ParameterTable ParameterTable::parse(const std::string& text, const std::string& origin) {

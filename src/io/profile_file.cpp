@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/text_file.hpp"
 
 namespace rollnoise::io {
@@ -38,8 +39,7 @@ std::string extension(const std::string& path) {
 }
 
 std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, path + ": cannot open the profile file");
+  std::istringstream in(read_input(path, path, "the profile file"));
   std::vector<std::string> lines;
   std::string l;
   while (std::getline(in, l)) lines.push_back(l);

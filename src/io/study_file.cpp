@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_schema.hpp"
+#include "io/input_file.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -105,7 +106,7 @@ pipeline::StudyPlan read_study_file(const std::string& path) {
   if (fs::is_directory(path)) throw InputError("(file)", path + ": is a directory, not a study file");
   toml::table doc;
   try {
-    doc = toml::parse_file(path);
+    doc = toml::parse(read_input(path, "(file)", "the study file"), path);
   } catch (const toml::parse_error& e) {
     std::ostringstream msg;
     msg << path << ":" << e.source().begin.line << ":" << e.source().begin.column

@@ -36,7 +36,10 @@ std::string number(double v) {
 }
 
 const char* status_name(CaseStatus s) {
-  return s == CaseStatus::kComplete ? "complete" : s == CaseStatus::kFailed ? "failed" : "missing";
+  return s == CaseStatus::kComplete ? "complete"
+         : s == CaseStatus::kFailed ? "failed"
+         : s == CaseStatus::kStale  ? "stale"
+                                    : "missing";
 }
 
 }  // namespace
@@ -163,7 +166,7 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
       else
         w.write("/study/parameters/" + key, text, units_of(key) + " (TOML text)");
     }
-    w.write("/study/status", status, {n}, "0 complete, 1 failed, 2 missing");
+    w.write("/study/status", status, {n}, "0 complete, 1 failed, 2 missing, 3 stale");
     w.write("/study/message", message, "-");
     w.write("/study/run_time", run_time, {n}, "s");
     w.write("/study/creepage", creepage, {n, 3}, "-, -, rad/m");

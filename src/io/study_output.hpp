@@ -39,7 +39,7 @@ struct CaseRecord {
 /// nullopt when the file lacks what a noise case writes.
 std::optional<CaseRecord> read_case_record(const std::string& path);
 
-enum class CaseStatus { kComplete = 0, kFailed = 1, kMissing = 2 };
+enum class CaseStatus { kComplete = 0, kFailed = 1, kMissing = 2, kStale = 3 };
 
 /// One row per case of the study.
 struct StudyRow {

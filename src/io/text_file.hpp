@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 
 namespace rollnoise::io {
 
@@ -45,12 +46,11 @@ inline bool parse_finite(const std::string& cell, double& value) {
 }
 
 /// Calls row(where, line) for every line of the text file `path` that is neither blank nor a '#'
-/// comment, with the trimmed line and where = "path:line number". Throws InputError (key `path`)
-/// if the file cannot be opened; `what` names the file's kind in that message.
+/// comment, with the trimmed line and where = "path:line number". The file is read once
+/// (read_input); InputError (key `path`) if it cannot be read; `what` names its kind in the message.
 template <class Row>
 void for_each_data_line(const std::string& path, const std::string& what, Row&& row) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open " + what + " '" + path + "'");
+  std::istringstream in(read_input(path, path, what));
   std::string line;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     const std::string t = trim(line);

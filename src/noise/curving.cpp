@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -279,10 +280,14 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
       !std::isnan(in.flange_angle) ? in.flange_angle : (table ? table->flange_angle : 0.0);
   const double mu_f = std::isnan(in.flange_friction) ? in.friction : in.flange_friction;
   const bool flange_share = delta_f > 0.0;
-  if (flange_share && !(std::sin(delta_f) - mu_f * std::cos(delta_f) > 0.0))
-    throw InputError("curving.flange_angle",
-                     "curving.flange_angle: tan(delta_f) must exceed the flange friction "
-                     "coefficient (Nadal), else the flange cannot carry a lateral force");
+  if (flange_share && !(std::sin(delta_f) - mu_f * std::cos(delta_f) > 0.0)) {
+    // the flange friction is friction.mu unless given apart; delta_f comes from the profiles
+    const std::string key = std::isnan(in.flange_friction) ? "friction.mu" : "curving.flange_friction";
+    char values[160];
+    std::snprintf(values, sizeof values, " = %.4g: must stay below tan(delta_f) = %.4g (flange angle %.4g rad)",
+                  mu_f, std::tan(delta_f), delta_f);
+    throw InputError(key, key + values + ", Nadal's limit, else the flange cannot carry a lateral force");
+  }
   std::array<double, 4> Qt = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};
   std::array<double, 2> Qf = {0.0, 0.0};  // flange vertical load of axle i (K6)
   const double unloaded = 1e-3;           // tread loads below this fraction of Q: wheel unloaded

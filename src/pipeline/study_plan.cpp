@@ -111,13 +111,16 @@ Shard shard_from_environment() {
   const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
   if (!id || !count) return {};
   const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
-  long i = 0, n = 0, m = 0;
+  const char* step = std::getenv("SLURM_ARRAY_TASK_STEP");  // --array=1-9:2 runs tasks 1, 3, 5, 7, 9
+  long i = 0, n = 0, m = 0, k = 1;
   if (!parse_integer(id, 0, 1000000, i) || !parse_integer(count, 1, 1000000, n) ||
-      (min && !parse_integer(min, 0, 1000000, m)) || i - m < 0 || i - m >= n)
+      (min && !parse_integer(min, 0, 1000000, m)) || (step && !parse_integer(step, 1, 1000000, k)) || i - m < 0 ||
+      (i - m) % k != 0 || (i - m) / k >= n)
     throw InputError("SLURM_ARRAY_TASK_ID", std::string("cannot take the shard from SLURM_ARRAY_TASK_ID=") + id +
                                                 ", SLURM_ARRAY_TASK_COUNT=" + count +
-                                                (min ? std::string(", SLURM_ARRAY_TASK_MIN=") + min : std::string()));
-  return {i - m + 1, n};
+                                                (min ? std::string(", SLURM_ARRAY_TASK_MIN=") + min : std::string()) +
+                                                (step ? std::string(", SLURM_ARRAY_TASK_STEP=") + step : std::string()));
+  return {(i - m) / k + 1, n};
 }
 
 namespace {

@@ -64,7 +64,8 @@ struct Shard {
 /// "i/N" (the value of option `what`); InputError naming `what` otherwise.
 Shard parse_shard(const std::string& text, const std::string& what = "--shard");
 /// From Slurm job arrays: SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT (and SLURM_ARRAY_TASK_MIN,
-/// default 0, so arrays numbered 0..N-1 or 1..N both work); the whole study when not set.
+/// default 0, so arrays numbered 0..N-1 or 1..N both work, and SLURM_ARRAY_TASK_STEP, default 1,
+/// for arrays with a step such as --array=1-9:2); the whole study when not set.
 Shard shard_from_environment();
 
 /// The case's files in the output folder: case_0007.h5 and, when it failed, case_0007.error.

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
+#include "io/output_files.hpp"
 #include "study/runner.hpp"
 
 namespace rollnoise::study {
@@ -12,10 +13,16 @@ std::vector<io::StudyRow> collect_rows(const pipeline::StudyPlan& plan) {
   for (const pipeline::StudyCase& c : pipeline::expand(plan)) {
     io::StudyRow row;
     row.parameters = c;
-    const auto record = is_complete(plan, c) ? io::read_case_record(pipeline::case_output(plan, c.index)) : std::nullopt;
+    const CaseState state = case_state(plan, c);
+    const auto record =
+        state == CaseState::kComplete ? io::read_case_record(pipeline::case_output(plan, c.index)) : std::nullopt;
     if (record) {
       row.status = io::CaseStatus::kComplete;
       row.record = *record;
+    } else if (state == CaseState::kStale) {
+      row.status = io::CaseStatus::kStale;
+      row.message = "stale: computed from other inputs (the base case, an axis value or a model file changed "
+                    "since); run the study again";
     } else if (const auto error = io::read_case_error(pipeline::case_error(plan, c.index))) {
       row.status = io::CaseStatus::kFailed;
       row.message = *error;
@@ -28,15 +35,18 @@ std::vector<io::StudyRow> collect_rows(const pipeline::StudyPlan& plan) {
 CollectSummary collect(const pipeline::StudyPlan& plan) {
   if (!std::filesystem::is_directory(plan.output))
     throw InputError("output", plan.file + ": output: no folder " + plan.output + " (run the study first)");
-  const std::vector<io::StudyRow> rows = collect_rows(plan);
   CollectSummary s;
+  s.h5 = plan.output + "/study.h5";
+  s.csv = plan.output + "/study.csv";
+  // the outputs checked before any case is read (a folder named study.h5 is refused up front)
+  io::check_outputs({{"output", s.h5}, {"output", s.csv}}, {{"the study file", plan.file}});
+  const std::vector<io::StudyRow> rows = collect_rows(plan);
   for (const auto& r : rows) {
     s.complete += r.status == io::CaseStatus::kComplete;
     s.failed += r.status == io::CaseStatus::kFailed;
     s.missing += r.status == io::CaseStatus::kMissing;
+    s.stale += r.status == io::CaseStatus::kStale;
   }
-  s.h5 = plan.output + "/study.h5";
-  s.csv = plan.output + "/study.csv";
   io::write_study_table(s.h5, s.csv, plan, rows);
   return s;
 }

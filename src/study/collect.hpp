@@ -1,5 +1,5 @@
 // `rollnoise collect`: the cases of a study in one table (docs/study.md): per case its parameters,
-// status (complete, failed with its message, or missing), run time, mean contact state and band
+// status (complete, failed with its message, missing, or stale: computed from other inputs), run time, mean contact state and band
 // levels, written to OUTPUT/study.h5 and OUTPUT/study.csv.
 #pragma once
 
@@ -15,7 +15,7 @@ namespace rollnoise::study {
 std::vector<io::StudyRow> collect_rows(const pipeline::StudyPlan& plan);
 
 struct CollectSummary {
-  long complete = 0, failed = 0, missing = 0;
+  long complete = 0, failed = 0, missing = 0, stale = 0;
   std::string h5, csv;
 };
 /// collect_rows, written to the output folder.

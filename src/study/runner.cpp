@@ -1,5 +1,6 @@
 #include "study/runner.hpp"
 
+#include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -9,13 +10,16 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/noise_case.hpp"
+#include "io/output_files.hpp"
 #include "io/study_output.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
@@ -65,7 +69,12 @@ class SharedCounters {
 void record_failure(const pipeline::StudyPlan& plan, std::size_t index, const std::string& message) {
   std::error_code ec;
   fs::remove(pipeline::case_output(plan, index), ec);
-  io::write_case_error(pipeline::case_error(plan, index), message);
+  try {
+    io::write_case_error(pipeline::case_error(plan, index), message);
+  } catch (const std::exception& e) {  // e.g. the disk is full: the failure goes to stderr instead
+    std::fprintf(stderr, "study: case %zu failed (%s), and its error file could not be written: %s\n", index,
+                 message.c_str(), e.what());
+  }
 }
 
 // The cases of one reuse group, in this process: stages 1-4 once (when reusing), each case's bands,
@@ -91,7 +100,7 @@ void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::Stud
         if (reuse) loop = r;
       }
       io::within_case(reader, [&] { pipeline::add_bands(r, in.noise); });
-      io::write_study_case(pipeline::case_output(plan, index), reader, in.noise, r, case_stamp(plan, c),
+      io::write_study_case(pipeline::case_output(plan, index), reader, in.noise, r, case_stamp(plan, c, reader),
                            seconds_since(t0));
       std::error_code ec;
       fs::remove(pipeline::case_error(plan, index), ec);
@@ -147,6 +156,51 @@ void add_counts(RunSummary& s, const Shared& shared) {
   s.spectra_reused = shared.spectra_reused;
 }
 
+// Byte K of OUTPUT/.lock locked (fcntl, exclusive, released when the run ends however it ends) for
+// every case K this run may compute: a second run on any of them is refused, naming the first.
+class CaseLocks {
+ public:
+  CaseLocks(const pipeline::StudyPlan& plan, const std::vector<std::size_t>& indices) {
+    const std::string path = plan.output + "/.lock";
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd_ < 0)
+      throw InputError("output", plan.file + ": output: cannot open the lock file " + path + ": " + std::strerror(errno));
+    for (std::size_t i = 0; i < indices.size();) {  // contiguous cases as one range
+      std::size_t j = i + 1;
+      while (j < indices.size() && indices[j] == indices[j - 1] + 1) ++j;
+      struct flock range {};
+      range.l_type = F_WRLCK;
+      range.l_whence = SEEK_SET;
+      range.l_start = off_t(indices[i]);
+      range.l_len = off_t(indices[j - 1] - indices[i] + 1);
+      if (::fcntl(fd_, F_SETLK, &range) != 0) {
+        if (errno != EACCES && errno != EAGAIN) {  // no locks on this file system (ENOLCK): run unlocked
+          std::fprintf(stderr, "study: warning: cannot lock %s (%s); concurrent runs are not detected\n",
+                       path.c_str(), std::strerror(errno));
+          return;
+        }
+        struct flock holder = range;
+        const bool known = ::fcntl(fd_, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK;
+        ::close(fd_);
+        throw InputError("output", plan.file + ": output " + plan.output + ": another rollnoise study" +
+                                       (known ? " (process " + std::to_string(holder.l_pid) + ")" : std::string()) +
+                                       " is running cases of this study in this folder (from case " +
+                                       std::to_string(known ? std::size_t(holder.l_start) : indices[i]) +
+                                       "); wait for it to end, or give each run its own --shard");
+      }
+      i = j;
+    }
+  }
+  ~CaseLocks() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  CaseLocks(const CaseLocks&) = delete;
+  CaseLocks& operator=(const CaseLocks&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 void prepare_output(const pipeline::StudyPlan& plan) {
   std::error_code ec;
   fs::create_directories(plan.output, ec);
@@ -156,13 +210,36 @@ void prepare_output(const pipeline::StudyPlan& plan) {
 
 }  // namespace
 
-std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c, const io::CaseReader& reader) {
+  // the case as run (base + axes, as TOML) and the bytes of every model file it reads
+  std::string inputs = "case " + io::digest(reader.toml_text());
+  for (const io::InputFile& f : io::case_input_files(reader))
+    if (f.what != "the case file") inputs += ", " + f.what + " " + io::digest(io::read_input(f.path, f.what, f.what));
+  return case_label(plan, c) + "; inputs " + inputs;
+}
+
+std::string case_label(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
   return "base " + plan.base + "; case " + std::to_string(c.index) + ": " + pipeline::describe(plan, c);
 }
 
-bool is_complete(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+std::optional<std::string> case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+  try {
+    return case_stamp(plan, c, io::CaseReader::from_file(plan.base, pipeline::overrides(plan, c)));
+  } catch (const InputError&) {
+    return std::nullopt;  // a case that cannot be read is never complete (it fails when run)
+  }
+}
+
+CaseState case_state(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
   const auto stamp = io::read_case_stamp(pipeline::case_output(plan, c.index));
-  return stamp && *stamp == case_stamp(plan, c);
+  if (!stamp) return CaseState::kNotRun;
+  const auto now = case_stamp(plan, c);
+  if (now && *stamp == *now) return CaseState::kComplete;
+  return CaseState::kStale;
+}
+
+bool is_complete(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c) {
+  return case_state(plan, c) == CaseState::kComplete;
 }
 
 std::vector<std::vector<std::size_t>> reuse_groups(const pipeline::StudyPlan& plan,
@@ -186,10 +263,14 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
   const auto t0 = Clock::now();
   const std::vector<pipeline::StudyCase> cases = pipeline::expand(plan);
   prepare_output(plan);
+  std::vector<std::size_t> shard;
+  for (const auto& c : cases)
+    if (o.shard.contains(c.index)) shard.push_back(c.index);
+  const CaseLocks locks(plan, shard);
   RunSummary s;
   std::vector<std::size_t> selection;
-  for (const auto& c : cases) {
-    if (!o.shard.contains(c.index)) continue;
+  for (std::size_t index : shard) {
+    const pipeline::StudyCase& c = cases[index];
     ++s.cases;
     if (is_complete(plan, c))
       ++s.skipped;
@@ -255,6 +336,7 @@ RunSummary run_one_case(const pipeline::StudyPlan& plan, std::size_t index) {
     throw InputError("--case", "the study has cases 0 to " + std::to_string(cases.size() - 1) + ", not " +
                                    std::to_string(index));
   prepare_output(plan);
+  const CaseLocks locks(plan, {index});
   RunSummary s;
   s.cases = 1;
   if (is_complete(plan, cases[index])) {

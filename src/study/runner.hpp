@@ -2,9 +2,12 @@
 // Slurm array task or a GNU parallel job), or one case; resuming where a run stopped.
 //
 // Each case is `rollnoise noise BASE --set key=value ...` run in a worker: its file case_NNNN.h5
-// is written whole or not at all, so a complete file is a finished case and a rerun skips it (its
-// `study_case` attribute must name the same parameters). A case that fails gets case_NNNN.error
-// with its message; the others go on.
+// is written whole or not at all, so a complete file is a finished case and a rerun skips it if
+// its `study_case` attribute (case_stamp) names the same parameters and the same digests of the
+// case as run and of every model file it reads; a file computed from other inputs is stale and run
+// again. A case that fails gets case_NNNN.error with its message; the others go on. A run holds a
+// lock on each case of its shard (byte K of OUTPUT/.lock, fcntl): a second run on the same cases
+// is refused, naming the process that holds them.
 //
 // Reuse (what a case does not need to compute again):
 //   - cases that differ only in roughness.* keys share the curve state, the contact, the creep
@@ -17,10 +20,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "io/case_reader.hpp"
 #include "pipeline/study_plan.hpp"
 
 namespace rollnoise::study {
@@ -53,9 +58,21 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& options)
 /// the command `--list` prints for each case. InputError naming --case when out of range.
 RunSummary run_one_case(const pipeline::StudyPlan& plan, std::size_t index);
 
-/// The stamp that marks a complete case of this study in its file (base case and parameters).
-std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
-/// Whether the case's file is complete and of this study (same stamp).
+/// The base case and the parameters of case `c` ("base PATH; case K: key=value, ...").
+std::string case_label(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
+/// The stamp that marks a complete case of this study in its file: case_label, then the digests
+/// (io::digest) of the case as run (`reader`: base + axes, as TOML text) and of the bytes of every
+/// model file it reads (io::case_input_files).
+std::string case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c, const io::CaseReader& reader);
+/// The same, reading the case now; nullopt if it cannot be read (it will fail when run).
+std::optional<std::string> case_stamp(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
+
+enum class CaseState { kNotRun, kComplete, kStale };
+/// kComplete: the case's file holds this study's stamp as of now; kStale: a file of this case
+/// computed from other inputs (the base case, an axis or a model file changed since) or of another
+/// study; kNotRun: no readable file.
+CaseState case_state(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
+/// case_state == kComplete.
 bool is_complete(const pipeline::StudyPlan& plan, const pipeline::StudyCase& c);
 
 /// The groups of cases that share stages 1-4 (equal overrides but for roughness.* keys), in the

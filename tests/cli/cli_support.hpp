@@ -4,12 +4,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace rollnoise::cli_test {
 
@@ -29,11 +31,36 @@ inline Invocation run(const std::string& args) {
   return {WEXITSTATUS(st), out};
 }
 
-/// A scratch folder of this test process.
+/// A scratch folder of this test process, removed with everything in it when the process ends
+/// (the suite leaves nothing in the temporary directory).
 inline std::filesystem::path temp_dir() {
-  const auto d = std::filesystem::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
+  static const struct Scratch {
+    pid_t owner = ::getpid();
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("rollnoise_cli_" + std::to_string(::getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      if (::getpid() == owner) std::filesystem::remove_all(dir, ec);
+    }
+  } scratch;
+  std::filesystem::create_directories(scratch.dir);
+  return scratch.dir;
+}
+
+/// A fresh empty folder `name` in temp_dir(), for one test.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const std::filesystem::path d = temp_dir() / name;
+  std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;
+}
+
+/// The names in folder `d`, sorted.
+inline std::vector<std::string> listing(const std::filesystem::path& d) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(d)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 inline std::string source_file(const std::string& relative) {

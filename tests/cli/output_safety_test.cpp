@@ -34,27 +34,11 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-// A fresh empty folder for one test.
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = temp_dir() / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-// The names in folder `d`, sorted.
-std::vector<std::string> listing(const fs::path& d) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 // The paper's Hertzian case copied into `d` as c.toml.

@@ -149,3 +149,63 @@ TEST(ErrorKeys, EveryListedPseudoKeyIsStillUsed) {
     EXPECT_EQ(rollnoise::io::find_key(key), nullptr) << key << " is a case key: remove it from the list";
   }
 }
+
+// Issue 30, item 5: keys in messages built at run time. Each invocation fails with exit 2 and the
+// message "rollnoise: error: CASE: KEY: ..." names a declared case key (or an option), never a
+// field of the numerics (curving.flange_angle) nor a bare "filesystem error"; --case names the
+// option without printing the largest double as its range.
+#include "../cli/cli_support.hpp"
+
+namespace {
+
+// The key in "rollnoise: error: CASE: KEY: ..." (or, for several problems, in the first line
+// "  CASE: KEY: ..." after "rollnoise: error: N problems in the case:"), or "".
+std::string key_after(const std::string& output, const std::string& case_file) {
+  const auto error = output.find("rollnoise: error: ");
+  if (error == std::string::npos) return "";
+  const auto at = output.find(case_file + ": ", error);
+  if (at == std::string::npos) return "";
+  const auto from = at + case_file.size() + 2;
+  return output.substr(from, output.find(':', from) - from);
+}
+
+}  // namespace
+
+TEST(ErrorKeys, KeysNamedInMessagesBuiltAtRunTimeAreCaseKeys) {
+  using rollnoise::cli_test::run;
+  const fs::path d = rollnoise::cli_test::temp_dir() / "runtime_keys";
+  fs::remove_all(d);
+  fs::create_directories(d / "profile_folder");
+  fs::create_symlink(d / "loop_a", d / "loop_b");
+  fs::create_symlink(d / "loop_b", d / "loop_a");
+  const std::string hertz = rollnoise::cli_test::paper_case();
+  const std::string curve = rollnoise::cli_test::source_file("cases/curve_300m.toml");
+  const std::string out = " -q -o " + (d / "x.h5").string();
+  const std::string profiles = " --set contact.geometry=profiles";
+  struct Failure {
+    std::string args, case_file, key;
+  };
+  const std::vector<Failure> failures = {
+      {"noise " + curve + out + " --set friction.mu=10", curve, "friction.mu"},
+      {"steady " + hertz + out + profiles + " --set contact.wheel_profile=" + (d / "loop_a").string(), hertz,
+       "contact.wheel_profile"},
+      {"steady " + hertz + out + profiles + " --set contact.rail_profile=" + (d / "profile_folder").string(), hertz,
+       "contact.rail_profile"},
+      {"steady " + hertz + out + profiles + " --set grid.x_min=-0.02 --set grid.x_max=0.02 --set grid.y_min=-0.02 "
+       "--set grid.y_max=0.02",
+       hertz, "grid.x_min"},
+  };
+  for (const Failure& f : failures) {
+    const auto r = run(f.args);
+    EXPECT_EQ(r.status, 2) << f.args << "\n" << r.output;
+    const std::string key = key_after(r.output, f.case_file);
+    EXPECT_EQ(key, f.key) << f.args << "\n" << r.output;
+    EXPECT_NE(rollnoise::io::find_key(key), nullptr) << key << " is no case key:\n" << r.output;
+    EXPECT_EQ(r.output.find("filesystem error"), std::string::npos) << r.output;
+  }
+  const auto r = run("study " + rollnoise::cli_test::source_file("cases/study_300m_radius_speed.toml") + " --case -1");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--case"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("1.79769e+308"), std::string::npos) << r.output;
+  fs::remove_all(d);
+}

@@ -24,8 +24,21 @@ Axis numbers(const std::string& key, std::vector<double> v) {
   return a;
 }
 
+// This test process's scratch folder, removed when the process ends (the suite leaves nothing behind).
+std::filesystem::path scratch() {
+  static const struct Scratch {
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("rollnoise_study_plan_" + std::to_string(::getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  } s;
+  return s.dir;
+}
+
 std::string write_file(const std::string& name, const std::string& text) {
-  const auto d = std::filesystem::temp_directory_path() / ("rollnoise_study_plan_" + std::to_string(::getpid()));
+  const auto d = scratch();
   std::filesystem::create_directories(d);
   const auto p = d / name;
   std::ofstream(p) << text;
@@ -111,6 +124,25 @@ TEST(StudyPlan, SlurmArrayVariablesGiveTheShardWhateverTheArraysFirstIndex) {
   ::unsetenv("SLURM_ARRAY_TASK_COUNT");
   ::unsetenv("SLURM_ARRAY_TASK_MIN");
   EXPECT_EQ(pipeline::shard_from_environment().count, 1);
+}
+
+// Issue 30, item 7: --array=1-5:2 runs tasks 1, 3, 5 (COUNT 3, MIN 1, STEP 2): shards 1/3, 2/3, 3/3.
+TEST(StudyPlan, SlurmArrayWithAStepGivesEveryTaskItsOwnShard) {
+  ::setenv("SLURM_ARRAY_TASK_COUNT", "3", 1);
+  ::setenv("SLURM_ARRAY_TASK_MIN", "1", 1);
+  ::setenv("SLURM_ARRAY_TASK_STEP", "2", 1);
+  for (long id : {1, 3, 5}) {
+    ::setenv("SLURM_ARRAY_TASK_ID", std::to_string(id).c_str(), 1);
+    const pipeline::Shard s = pipeline::shard_from_environment();
+    EXPECT_EQ(s.index, (id - 1) / 2 + 1) << "task " << id;
+    EXPECT_EQ(s.count, 3) << "task " << id;
+  }
+  for (const char* id : {"2", "7"}) {  // not a task of this array
+    ::setenv("SLURM_ARRAY_TASK_ID", id, 1);
+    EXPECT_THROW(pipeline::shard_from_environment(), InputError) << id;
+  }
+  for (const char* v : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_COUNT", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_STEP"})
+    ::unsetenv(v);
 }
 
 TEST(StudyFile, AxesKeepTheOrderWrittenAndAcceptRangesListsAndDottedKeys) {
