@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "cli/commands.hpp"
 #include "contact/creepage_history.hpp"
@@ -14,6 +13,7 @@
 #include "io/contact_input.hpp"
 #include "io/contact_input_wheelrail.hpp"
 #include "io/excitation.hpp"
+#include "io/input_file.hpp"
 #include "io/output_files.hpp"
 #include "pipeline/limits.hpp"
 
@@ -93,9 +93,8 @@ int run_contact_input(const CommonOptions& o, bool steady_only) {
   std::vector<io::TemporaryFile> files;
   files.push_back(io::write_text_file(inp, "-o", [&](std::ostream& out) { out << text; }));
   for (const auto& [from, to] : copies) {
-    std::ifstream in(from, std::ios::binary);
-    if (!in) throw InputError(from, "cannot read profile '" + from + "'");
-    files.push_back(io::write_text_file(to, "-o", [&](std::ostream& out) { out << in.rdbuf(); }));
+    const std::string& bytes = io::read_input(from, from, "the profile");
+    files.push_back(io::write_text_file(to, "-o", [&](std::ostream& out) { out << bytes; }));
   }
   for (auto& f : files) f.commit();
   std::printf("wrote %s\n", inp.c_str());

@@ -4,11 +4,11 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "io/input_file.hpp"
 #include "io/text_file.hpp"
 
 namespace rollnoise::io {
@@ -22,8 +22,7 @@ std::vector<std::string> words(const std::string& line) {
 }
 
 std::vector<std::string> read_lines(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open CONTACT " + what + " '" + path + "'");
+  std::istringstream in(read_input(path, path, "the CONTACT " + what));
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) {
     if (!l.empty() && l.back() == '\r') l.pop_back();
@@ -312,11 +311,7 @@ std::vector<ContactInpCase> parse_contact_inp(const std::string& text, const std
 }
 
 std::vector<ContactInpCase> read_contact_inp(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open CONTACT input '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_contact_inp(s.str(), path);
+  return parse_contact_inp(read_input(path, path, "the CONTACT input"), path);
 }
 
 }  // namespace rollnoise::io
