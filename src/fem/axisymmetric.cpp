@@ -96,31 +96,44 @@ AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
   return out;
 }
 
-Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& dofs,
-                                const Eigen::Vector2d& point, double tolerance) {
+MeshPoint locate(const QuadraticTriangleMesh& mesh, const Eigen::Vector2d& point,
+                 double tolerance) {
   double best = std::numeric_limits<double>::infinity();
-  int best_t = -1;
-  Eigen::Vector3d best_l;
+  MeshPoint at;
   for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
     const auto& t = mesh.triangles[e];
-    Eigen::Vector3d l = area_coordinates(mesh, t, point);
-    // Distance outside: project onto the triangle by clamping (approximate, exact on an edge).
+    const Eigen::Vector2d a = mesh.nodes[t[0]];
+    // Cheap rejection: a point within `tolerance` of the triangle is within its size + tolerance of
+    // corner 0.
+    const double size = std::max((mesh.nodes[t[1]] - a).norm(), (mesh.nodes[t[2]] - a).norm());
+    if ((point - a).norm() > size + tolerance) continue;
+    const Eigen::Vector3d l = area_coordinates(mesh, t, point);
+    // Outside: the clamped coordinates give a point of the triangle (exact on an edge).
     Eigen::Vector3d c = l.cwiseMax(0.0);
     c /= c.sum();
-    const Eigen::Vector2d q =
-        c(0) * mesh.nodes[t[0]] + c(1) * mesh.nodes[t[1]] + c(2) * mesh.nodes[t[2]];
+    const Eigen::Vector2d q = c(0) * a + c(1) * mesh.nodes[t[1]] + c(2) * mesh.nodes[t[2]];
     const double dist = l.minCoeff() >= 0.0 ? 0.0 : (q - point).norm();
-    if (dist < best) best = dist, best_t = static_cast<int>(e), best_l = c;
+    if (dist < best) best = dist, at = {static_cast<int>(e), c(1), c(2)};
     if (dist == 0.0) break;
   }
-  if (best_t < 0 || best > tolerance)
+  if (at.triangle < 0 || best > tolerance)
     throw std::invalid_argument("point (" + std::to_string(point.x()) + ", " +
                                 std::to_string(point.y()) + ") m is outside the section mesh");
-  const auto& t = mesh.triangles[best_t];
-  const auto N = triangle6_shape(best_l(1), best_l(2));
+  return at;
+}
+
+Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& dofs,
+                                const MeshPoint& at) {
+  const auto& t = mesh.triangles[at.triangle];
+  const auto N = triangle6_shape(at.xi, at.eta);
   Eigen::Vector3d u = Eigen::Vector3d::Zero();
   for (int i = 0; i < 6; ++i) u += N(i) * dofs.segment<3>(3 * t[i]);
   return u;
+}
+
+Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& dofs,
+                                const Eigen::Vector2d& point, double tolerance) {
+  return displacement_at(mesh, dofs, locate(mesh, point, tolerance));
 }
 
 Eigen::Vector3d kinetic_energy_shares(const Eigen::SparseMatrix<double>& mass,

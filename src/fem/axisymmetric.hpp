@@ -41,10 +41,23 @@ struct AxisymmetricMatrices {
 AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
                                            const IsotropicMaterial& material, int n);
 
-/// The displacement (U_r, U_theta, U_z) of a DOF vector at a point (r, z) of the section, by the
-/// shape functions of the triangle that contains it (the nearest triangle for a point just outside,
-/// e.g. on a curved surface sampled between nodes). Throws std::invalid_argument when the point is
-/// farther than `tolerance` from the mesh.
+/// Where a point lies in the mesh: its triangle and reference coordinates (xi, eta).
+struct MeshPoint {
+  int triangle = -1;
+  double xi = 0.0, eta = 0.0;
+};
+
+/// Locates (r, z) in the triangle that contains it (the nearest triangle, and the nearest point of
+/// it, for a point just outside, e.g. on a curved surface sampled between nodes). Throws
+/// std::invalid_argument when the point is farther than `tolerance` from the mesh.
+MeshPoint locate(const QuadraticTriangleMesh& mesh, const Eigen::Vector2d& point,
+                 double tolerance = 1e-6);
+
+/// The displacement (U_r, U_theta, U_z) of a DOF vector at a located point, by the shape functions.
+Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& dofs,
+                                const MeshPoint& at);
+
+/// locate() then displacement_at().
 Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& dofs,
                                 const Eigen::Vector2d& point, double tolerance = 1e-6);
 

@@ -1,7 +1,7 @@
 #include "fem/eigen_solve.hpp"
 
 #include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/MatOp/SymShiftInvert.h>
+#include <Eigen/SparseCholesky>
 #include <Spectra/SymGEigsShiftSolver.h>
 
 #include <Eigen/Eigenvalues>
@@ -29,6 +29,30 @@ SpMat restrict_to(const SpMat& a, const std::vector<int>& index, int nfree) {
   return r;
 }
 
+// (K - sigma M)^{-1} for Spectra's shift-invert mode by a sparse LDL^T factorisation (K - sigma M
+// is symmetric positive definite for sigma below the lowest eigenvalue): the operator interface of
+// Spectra::SymShiftInvert, with Eigen's SimplicialLDLT (AMD ordering) in place of its SparseLU.
+class ShiftInvertLdlt {
+ public:
+  using Scalar = double;
+  ShiftInvertLdlt(const SpMat& k, const SpMat& m) : k_(k), m_(m) {}
+  Eigen::Index rows() const { return k_.rows(); }
+  Eigen::Index cols() const { return k_.cols(); }
+  void set_shift(double sigma) {
+    ldlt_.compute(k_ - sigma * m_);
+    if (ldlt_.info() != Eigen::Success)
+      throw NumericalError("LDL^T factorisation of K - sigma M failed (shift " + std::to_string(sigma) + ")");
+  }
+  void perform_op(const double* x, double* y) const {
+    Eigen::Map<Eigen::VectorXd>(y, rows()) = ldlt_.solve(Eigen::Map<const Eigen::VectorXd>(x, rows()));
+  }
+
+ private:
+  const SpMat& k_;
+  const SpMat& m_;
+  Eigen::SimplicialLDLT<SpMat> ldlt_;
+};
+
 // Eigenpairs (ascending) of the reduced problem: Spectra's shift-invert Lanczos, or a dense solve
 // when the requested count reaches the size of the problem.
 std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& k, const SpMat& m,
@@ -44,11 +68,11 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& k, const 
         throw NumericalError("dense generalised eigen solve of the FE model failed");
       return {dense.eigenvalues(), dense.eigenvectors()};
     }
-    using Op = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
+    using Op = ShiftInvertLdlt;
     using BOp = Spectra::SparseSymMatProd<double>;
     Op op(k, m);
     BOp bop(m);
-    const int ncv = std::min(n, std::max(2 * nev + 1, 40));
+    const int ncv = std::min(n, std::max(2 * nev + 1, 30));
     Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, nev, ncv,
                                                                                   sigma);
     solver.init();

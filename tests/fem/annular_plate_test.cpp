@@ -99,7 +99,7 @@ double kirchhoff_hz(const Plate& p, double k) {
 int nodal_circles(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& phi, const Plate& p) {
   std::vector<double> w;
   for (int i = 1; i <= 200; ++i)
-    w.push_back(displacement_at(mesh, phi, {p.b + (p.a - p.b) * i / 200.0, 0.0})(2));
+    w.push_back(displacement_at(mesh, phi, Eigen::Vector2d(p.b + (p.a - p.b) * i / 200.0, 0.0))(2));
   const double big = std::max(std::abs(*std::max_element(w.begin(), w.end())),
                               std::abs(*std::min_element(w.begin(), w.end())));
   int changes = 0, sign = 0;
