@@ -153,3 +153,37 @@ Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, d
 }
 
 }  // namespace rollnoise::dynamics
+
+namespace rollnoise::dynamics {
+
+std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, int n_min,
+                                          const WheelModalDamping& damping) {
+  // Radius of the tread at s (linear between samples).
+  const auto it = std::upper_bound(w.tread_s.begin(), w.tread_s.end(), s);
+  const std::size_t i1 = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - w.tread_s.begin(), 1),
+                                               w.tread_s.size() - 1);
+  const double x =
+      std::clamp((s - w.tread_s[i1 - 1]) / (w.tread_s[i1] - w.tread_s[i1 - 1]), 0.0, 1.0);
+  const double r = (1 - x) * w.tread_r[i1 - 1] + x * w.tread_r[i1];
+  std::vector<WheelMode> table;
+  for (const auto& m : w.modes) {
+    if (m.n < n_min) continue;
+    const Eigen::Vector3d u = tread_shape_at(w, m, s);  // throws off the tread
+    WheelMode cos_partner;
+    cos_partner.frequency = m.frequency;
+    cos_partner.damping_ratio = m.n == 0 ? damping.n0 : (m.n == 1 ? damping.n1 : damping.higher);
+    cos_partner.modal_mass = 1.0;
+    cos_partner.label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) + " " +
+                        std::to_string(m.nodal_circles) + " circles";
+    cos_partner.shape << -u(0), 0.0, u(2), 0.0;
+    table.push_back(cos_partner);
+    if (m.n == 0) continue;
+    WheelMode sin_partner = cos_partner;
+    sin_partner.label += " sin";
+    sin_partner.shape << 0.0, -u(1), 0.0, m.n * u(2) / r;
+    table.push_back(sin_partner);
+  }
+  return table;
+}
+
+}  // namespace rollnoise::dynamics

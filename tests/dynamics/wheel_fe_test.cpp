@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -100,4 +101,39 @@ TEST(WheelFe, TreadShapeOfAxialModeIsAxialAndInterpolated) {
   EXPECT_LT((tread_shape_at(w, *m, w.tread_s[i]) - m->tread_shape.row(i).transpose()).norm(),
             1e-12 * m->tread_shape.norm());
   EXPECT_THROW(tread_shape_at(w, *m, 0.2), InputError);
+}
+
+// The FE wheel at a contact (contact_mode_table): at s = -20 mm (towards the flange) the table
+// carries the FE shape (phi_y = U_z, phi_z = -U_r of the cos partner), and the wheel model built
+// from it is reciprocal (H = H^T to round-off) and passive ((H - H^H)/2i negative semidefinite:
+// no power generated) at 200 Hz to 4 kHz.
+TEST(WheelFe, ContactTableCarriesTreadShapeAndGivesReciprocalPassiveReceptance) {
+  WheelFeOptions o;
+  o.n_max = 6;
+  o.f_max = 4000.0;
+  o.mesh_size = 0.016;
+  const auto w = wheel_fe_modes(default_section(), o);
+  const auto table = contact_mode_table(w, -0.02, 2);
+  const WheelFeMode* m = find(w, 3, ModeFamily::kAxial, 0);
+  ASSERT_NE(m, nullptr);
+  const Eigen::Vector3d u = tread_shape_at(w, *m, -0.02);
+  bool found = false;
+  for (const auto& t : table)
+    if (t.frequency == m->frequency && t.label.find("sin") == std::string::npos) {
+      EXPECT_EQ(t.shape(2), u(2));
+      EXPECT_EQ(t.shape(0), -u(0));
+      found = true;
+    }
+  EXPECT_TRUE(found);
+  RigidWheelset ws;
+  ws.mass = 1500, ws.roll_inertia = 700, ws.spin_inertia = 110, ws.yaw_inertia = 700;
+  ws.contact_offset_y = 0.75, ws.wheel_radius = 0.46;
+  const WheelModel model(ws, table);
+  for (double f : {200.0, 950.0, 2000.0, 4000.0}) {
+    const Receptance4 h = model.receptance(f);
+    EXPECT_LT((h - h.transpose()).norm(), 1e-12 * h.norm()) << f << " Hz";
+    const Eigen::Matrix4cd dissipation = (h - h.adjoint()) / cdouble(0, 2);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4cd> eig(dissipation);
+    EXPECT_LE(eig.eigenvalues().maxCoeff(), 1e-12 * h.norm()) << f << " Hz";
+  }
 }
