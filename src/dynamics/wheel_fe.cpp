@@ -14,19 +14,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 void check_options(const WheelSection& s, const WheelFeOptions& o) {
   if (s.bore_segments.empty())
-    throw InputError("wheel.section", "the wheel section has no bore segment");
+    throw InputError("wheel_fe", "the wheel section has no bore segment");
   if (s.tread_segments.empty())
-    throw InputError("wheel.section", "the wheel section has no tread segment");
-  if (!(o.mesh_size > 0)) throw InputError("wheel.mesh_size", "wheel.mesh_size must be > 0 m");
-  if (o.n_max < 0 || o.n_max > 50)
-    throw InputError("wheel.n_max", "wheel.n_max must lie in [0, 50]");
-  if (!(o.f_max > 0)) throw InputError("wheel.f_max", "wheel.f_max must be > 0 Hz");
+    throw InputError("wheel_fe", "the wheel section has no tread segment");
+  if (!(o.mesh_size > 0)) throw InputError("wheel_fe", "wheel.mesh_size must be > 0 m");
+  if (o.n_max < 0 || o.n_max > 50) throw InputError("wheel_fe", "wheel.n_max must lie in [0, 50]");
+  if (!(o.f_max > 0)) throw InputError("wheel_fe", "wheel.f_max must be > 0 Hz");
   const auto& m = o.material;
-  if (!(m.youngs_modulus > 0))
-    throw InputError("wheel.youngs_modulus", "wheel.youngs_modulus must be > 0 Pa");
+  if (!(m.youngs_modulus > 0)) throw InputError("wheel_fe", "wheel.youngs_modulus must be > 0 Pa");
   if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
-    throw InputError("wheel.poisson_ratio", "wheel.poisson_ratio must lie in (-1, 0.5)");
-  if (!(m.density > 0)) throw InputError("wheel.density", "wheel.density must be > 0 kg/m^3");
+    throw InputError("wheel_fe", "wheel.poisson_ratio must lie in (-1, 0.5)");
+  if (!(m.density > 0)) throw InputError("wheel_fe", "wheel.density must be > 0 kg/m^3");
 }
 
 // Tread samples: points of the running-surface segments every `spacing` in s (the segments are
@@ -75,16 +73,7 @@ int sign_changes(const fem::QuadraticTriangleMesh& mesh, const Eigen::VectorXd& 
                  const std::vector<fem::MeshPoint>& line, int c) {
   std::vector<double> v;
   for (const auto& p : line) v.push_back(fem::displacement_at(mesh, phi, p)(c));
-  double big = 0.0;
-  for (double x : v) big = std::max(big, std::abs(x));
-  int changes = 0, sign = 0;
-  for (double x : v) {
-    if (std::abs(x) < 0.05 * big) continue;
-    const int s = x > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) ++changes;
-    sign = s;
-  }
-  return changes;
+  return fem::sign_changes(v, 0.05);
 }
 
 }  // namespace
@@ -142,8 +131,8 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
 Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, double s) {
   const auto& t = w.tread_s;
   if (t.empty() || s < t.front() - 1e-9 || s > t.back() + 1e-9)
-    throw InputError("wheel.contact_s", "contact position s = " + std::to_string(s) +
-                                            " m is outside the wheel's running surface");
+    throw InputError("tread_position", "contact position s = " + std::to_string(s) +
+                                           " m is outside the wheel's running surface");
   const auto it = std::upper_bound(t.begin(), t.end(), s);
   const std::size_t i1 =
       std::min<std::size_t>(std::max<std::ptrdiff_t>(it - t.begin(), 1), t.size() - 1);

@@ -145,6 +145,19 @@ Eigen::Vector3d kinetic_energy_shares(const Eigen::SparseMatrix<double>& mass,
   return e / e.sum();
 }
 
+int sign_changes(const std::vector<double>& values, double relative_threshold) {
+  double big = 0.0;
+  for (double x : values) big = std::max(big, std::abs(x));
+  int changes = 0, sign = 0;
+  for (double x : values) {
+    if (std::abs(x) < relative_threshold * big) continue;
+    const int s = x > 0 ? 1 : -1;
+    if (sign != 0 && s != sign) ++changes;
+    sign = s;
+  }
+  return changes;
+}
+
 std::vector<int> nodes_on_segments(const QuadraticTriangleMesh& mesh,
                                    const std::vector<int>& segments) {
   std::set<int> nodes;

@@ -66,6 +66,10 @@ Eigen::Vector3d displacement_at(const QuadraticTriangleMesh& mesh, const Eigen::
 Eigen::Vector3d kinetic_energy_shares(const Eigen::SparseMatrix<double>& mass,
                                       const Eigen::VectorXd& phi);
 
+/// Sign changes along a sequence of values (e.g. a mode's displacement along a line: its nodal
+/// points), ignoring values smaller than `relative_threshold` times the largest magnitude.
+int sign_changes(const std::vector<double>& values, double relative_threshold);
+
 /// Nodes on the boundary edges that lie on the given outline segments (sorted, unique).
 std::vector<int> nodes_on_segments(const QuadraticTriangleMesh& mesh,
                                    const std::vector<int>& segments);

@@ -100,16 +100,7 @@ int nodal_circles(const QuadraticTriangleMesh& mesh, const Eigen::VectorXd& phi,
   std::vector<double> w;
   for (int i = 1; i <= 200; ++i)
     w.push_back(displacement_at(mesh, phi, Eigen::Vector2d(p.b + (p.a - p.b) * i / 200.0, 0.0))(2));
-  const double big = std::max(std::abs(*std::max_element(w.begin(), w.end())),
-                              std::abs(*std::min_element(w.begin(), w.end())));
-  int changes = 0, sign = 0;
-  for (double v : w) {
-    if (std::abs(v) < 0.02 * big) continue;
-    const int s = v > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) ++changes;
-    sign = s;
-  }
-  return changes;
+  return sign_changes(w, 0.02);
 }
 
 // The FE bending (U_z-dominated) modes of order n: frequency (Hz) and nodal circles, ascending.
