@@ -1,0 +1,178 @@
+#include "dynamics/wheel_fe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/errors.hpp"
+#include "fem/eigen_solve.hpp"
+
+namespace rollnoise::dynamics {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void check_options(const WheelSection& s, const WheelFeOptions& o) {
+  if (s.bore_segments.empty())
+    throw InputError("wheel_fe", "the wheel section has no bore segment");
+  if (s.tread_segments.empty())
+    throw InputError("wheel_fe", "the wheel section has no tread segment");
+  if (!(o.mesh_size > 0)) throw InputError("wheel_fe", "wheel.mesh_size must be > 0 m");
+  if (o.n_max < 0 || o.n_max > 50) throw InputError("wheel_fe", "wheel.n_max must lie in [0, 50]");
+  if (!(o.f_max > 0)) throw InputError("wheel_fe", "wheel.f_max must be > 0 Hz");
+  const auto& m = o.material;
+  if (!(m.youngs_modulus > 0)) throw InputError("wheel_fe", "wheel.youngs_modulus must be > 0 Pa");
+  if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
+    throw InputError("wheel_fe", "wheel.poisson_ratio must lie in (-1, 0.5)");
+  if (!(m.density > 0)) throw InputError("wheel_fe", "wheel.density must be > 0 kg/m^3");
+}
+
+// Tread samples: points of the running-surface segments every `spacing` in s (the segments are
+// monotone in z = s along the S1002 outline), ascending in s.
+void sample_tread(const WheelSection& sec, double spacing, WheelFeModes& w) {
+  std::map<double, double> r_of_s;
+  const int n = static_cast<int>(sec.outline.size());
+  for (int seg : sec.tread_segments) {
+    const Eigen::Vector2d a = sec.outline[seg], b = sec.outline[(seg + 1) % n];
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(b.y() - a.y()) / spacing)));
+    for (int k = 0; k <= steps; ++k) {
+      const Eigen::Vector2d p = a + (b - a) * (double(k) / steps);
+      r_of_s[p.y()] = p.x();
+    }
+  }
+  for (auto [s, r] : r_of_s) w.tread_s.push_back(s), w.tread_r.push_back(r);
+}
+
+// The mid-line of the section from the bore to the rim: at each radius, the middle of the section's
+// extent in z (for counting nodal circles).
+std::vector<fem::MeshPoint> mid_line(const fem::QuadraticTriangleMesh& mesh) {
+  double rmin = 1e300, rmax = -1e300;
+  for (const auto& p : mesh.nodes) rmin = std::min(rmin, p.x()), rmax = std::max(rmax, p.x());
+  std::vector<fem::MeshPoint> line;
+  const int samples = 120;
+  for (int i = 0; i <= samples; ++i) {
+    const double r = rmin + (rmax - rmin) * (0.02 + 0.96 * i / samples);
+    double zlo = 1e300, zhi = -1e300;
+    for (const auto& e : mesh.boundary_edges) {
+      const Eigen::Vector2d a = mesh.nodes[e[0]], b = mesh.nodes[e[2]];
+      if ((a.x() - r) * (b.x() - r) > 0 || a.x() == b.x()) continue;
+      const double z = a.y() + (b.y() - a.y()) * (r - a.x()) / (b.x() - a.x());
+      zlo = std::min(zlo, z), zhi = std::max(zhi, z);
+    }
+    if (zlo > zhi) continue;
+    try {
+      line.push_back(fem::locate(mesh, {r, 0.5 * (zlo + zhi)}, 1e-3));
+    } catch (const std::invalid_argument&) {  // a mid-point outside a non-convex section
+    }
+  }
+  return line;
+}
+
+// Sign changes of component c along the line, ignoring values below 5 % of the largest.
+int sign_changes(const fem::QuadraticTriangleMesh& mesh, const Eigen::VectorXd& phi,
+                 const std::vector<fem::MeshPoint>& line, int c) {
+  std::vector<double> v;
+  for (const auto& p : line) v.push_back(fem::displacement_at(mesh, phi, p)(c));
+  return fem::sign_changes(v, 0.05);
+}
+
+}  // namespace
+
+const char* family_name(ModeFamily f) {
+  switch (f) {
+    case ModeFamily::kAxial:
+      return "axial";
+    case ModeFamily::kRadial:
+      return "radial";
+    default:
+      return "circumferential";
+  }
+}
+
+WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options) {
+  check_options(section, options);
+  WheelFeModes w;
+  w.mesh = fem::mesh_polygon(section.outline, options.mesh_size);
+  sample_tread(section, options.tread_spacing, w);
+  std::vector<int> fixed;
+  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
+    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
+  const auto line = mid_line(w.mesh);
+  std::vector<fem::MeshPoint> tread_points;
+  for (std::size_t i = 0; i < w.tread_s.size(); ++i)
+    tread_points.push_back(fem::locate(w.mesh, {w.tread_r[i], w.tread_s[i]}, 1e-4));
+  for (int n = 0; n <= options.n_max; ++n) {
+    const auto km = fem::assemble_axisymmetric(w.mesh, options.material, n);
+    if (n == 0)
+      w.mass = Eigen::VectorXd::Ones(km.mass.rows())
+                   .dot(km.mass * Eigen::VectorXd::Ones(km.mass.rows())) /
+               3.0;
+    const auto modes = fem::lowest_modes(km.stiffness, km.mass, fixed, 2 * kPi * options.f_max);
+    for (int j = 0; j < modes.omega.size(); ++j) {
+      WheelFeMode m;
+      m.frequency = modes.omega(j) / (2 * kPi);
+      m.n = n;
+      m.tread_shape.resize(w.tread_s.size(), 3);
+      for (std::size_t i = 0; i < w.tread_s.size(); ++i)
+        m.tread_shape.row(i) =
+            fem::displacement_at(w.mesh, modes.shapes.col(j), tread_points[i]).transpose();
+      // Family: the direction with the largest mean square on the tread ("dominant at the rim").
+      const Eigen::Vector3d ms = m.tread_shape.colwise().squaredNorm().transpose();
+      const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
+      m.family = c == 0 ? ModeFamily::kRadial
+                        : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
+      m.nodal_circles = sign_changes(w.mesh, modes.shapes.col(j), line, c);
+      w.modes.push_back(std::move(m));
+    }
+  }
+  return w;
+}
+
+Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, double s) {
+  const auto& t = w.tread_s;
+  if (t.empty() || s < t.front() - 1e-9 || s > t.back() + 1e-9)
+    throw InputError("tread_position", "contact position s = " + std::to_string(s) +
+                                           " m is outside the wheel's running surface");
+  const auto it = std::upper_bound(t.begin(), t.end(), s);
+  const std::size_t i1 =
+      std::min<std::size_t>(std::max<std::ptrdiff_t>(it - t.begin(), 1), t.size() - 1);
+  const std::size_t i0 = i1 - 1;
+  const double x = std::clamp((s - t[i0]) / (t[i1] - t[i0]), 0.0, 1.0);
+  return ((1 - x) * mode.tread_shape.row(i0) + x * mode.tread_shape.row(i1)).transpose();
+}
+
+}  // namespace rollnoise::dynamics
+
+namespace rollnoise::dynamics {
+
+std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, int n_min,
+                                          const WheelModalDamping& damping) {
+  // Radius of the tread at s (linear between samples).
+  const auto it = std::upper_bound(w.tread_s.begin(), w.tread_s.end(), s);
+  const std::size_t i1 = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - w.tread_s.begin(), 1),
+                                               w.tread_s.size() - 1);
+  const double x =
+      std::clamp((s - w.tread_s[i1 - 1]) / (w.tread_s[i1] - w.tread_s[i1 - 1]), 0.0, 1.0);
+  const double r = (1 - x) * w.tread_r[i1 - 1] + x * w.tread_r[i1];
+  std::vector<WheelMode> table;
+  for (const auto& m : w.modes) {
+    if (m.n < n_min) continue;
+    const Eigen::Vector3d u = tread_shape_at(w, m, s);  // throws off the tread
+    WheelMode cos_partner;
+    cos_partner.frequency = m.frequency;
+    cos_partner.damping_ratio = m.n == 0 ? damping.n0 : (m.n == 1 ? damping.n1 : damping.higher);
+    cos_partner.modal_mass = 1.0;
+    cos_partner.label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) + " " +
+                        std::to_string(m.nodal_circles) + " circles";
+    cos_partner.shape << -u(0), 0.0, u(2), 0.0;
+    table.push_back(cos_partner);
+    if (m.n == 0) continue;
+    WheelMode sin_partner = cos_partner;
+    sin_partner.label += " sin";
+    sin_partner.shape << 0.0, -u(1), 0.0, m.n * u(2) / r;
+    table.push_back(sin_partner);
+  }
+  return table;
+}
+
+}  // namespace rollnoise::dynamics

@@ -1,0 +1,91 @@
+// The wheel as an axisymmetric finite-element structure (fem/axisymmetric.hpp): its modes for
+// n = 0..n_max up to f_max with the bore clamped, each classified by family (the dominant
+// direction on the tread: axial, radial or circumferential) and nodal circles, and its shape
+// (U_r, U_theta, U_z) sampled along the tread and flange surface (docs/models.md Sec. 3.4).
+//
+// The bore is clamped: a rigid axle seat transmits only the n = 0 and n = 1 resultants (force and
+// moment) of the bore tractions, so for n >= 2 the clamp is what the wheelset does; the n = 0, 1
+// modes, where the axle's own flexibility and the rigid-body motion matter, are those of the
+// rigid-wheelset model of today (dynamics/wheel.hpp) and are reported here for information only.
+#pragma once
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "dynamics/wheel.hpp"
+#include "fem/axisymmetric.hpp"
+#include "fem/mesh.hpp"
+
+namespace rollnoise::dynamics {
+
+/// The wheel's cross-section: a closed outline in (r, z) (m), z lateral from the taping line,
+/// positive towards the field side (the profile coordinate s), with the outline segments (i: point
+/// i -> i + 1) of the bore and of the running surface (tread and flange).
+struct WheelSection {
+  std::vector<Eigen::Vector2d> outline;
+  std::vector<int> bore_segments;
+  std::vector<int> tread_segments;
+};
+
+struct WheelFeOptions {
+  fem::IsotropicMaterial material;  ///< steel by default
+  double mesh_size = 0.008;         ///< target element size (m)
+  int n_max = 10;                   ///< highest number of nodal diameters
+  double f_max = 6000.0;            ///< highest natural frequency kept (Hz)
+  double tread_spacing = 1e-3;      ///< spacing of the tread samples in s (m)
+};
+
+enum class ModeFamily { kAxial, kRadial, kCircumferential };
+const char* family_name(ModeFamily f);
+
+/// One mode of order n, mass-normalised (phi^T M phi = 1 with M over the whole wheel): modal mass
+/// 1 kg for the shapes as given.
+struct WheelFeMode {
+  double frequency = 0.0;  ///< Hz
+  int n = 0;               ///< nodal diameters
+  ModeFamily family = ModeFamily::kAxial;
+  int nodal_circles = 0;
+  /// (U_r, U_theta, U_z) (m per sqrt(kg)) at the tread samples, one row per sample: the motion is
+  /// u_r = U_r cos n theta, u_theta = U_theta sin n theta, u_z = U_z cos n theta.
+  Eigen::MatrixX3d tread_shape;
+};
+
+struct WheelFeModes {
+  fem::QuadraticTriangleMesh mesh;
+  std::vector<double> tread_s;     ///< lateral coordinate s (m) of the tread samples, ascending
+  std::vector<double> tread_r;     ///< radius (m) of the tread samples
+  std::vector<WheelFeMode> modes;  ///< ascending in n, then frequency
+  double mass = 0.0;               ///< of the wheel (kg)
+};
+
+/// Meshes the section and computes the modes. Throws InputError for a bad section or options.
+WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options);
+
+/// (U_r, U_theta, U_z) of a mode at lateral position s on the tread (linear interpolation between
+/// samples); throws InputError when s is outside the sampled tread.
+Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, double s);
+
+}  // namespace rollnoise::dynamics
+
+namespace rollnoise::dynamics {
+
+/// Modal damping ratios by number of nodal diameters: Thompson's typical values for solid wheels
+/// (Railway Noise and Vibration, 2009, Ch. 5), those of the mode table (docs/models.md Sec. 3.2).
+struct WheelModalDamping {
+  double n0 = 1e-3;      ///< n = 0
+  double n1 = 1e-2;      ///< n = 1 (axle coupling)
+  double higher = 1e-4;  ///< n >= 2
+};
+
+/// The FE modes with n >= n_min as the contact-point mode table of WheelModel (wheel.hpp): the
+/// contact at the bottom of the wheel (theta = 0, radial direction -z), at lateral position s on
+/// the tread (m, positive towards the field side = +y for a wheel at +y). Each mode gives its cos
+/// partner, phi = (z, x, y, rot z) = (-U_r, 0, U_z, 0), and for n >= 1 its sin partner (the set
+/// turned by pi/2n: u_theta = -U_theta cos n theta), phi = (0, -U_theta, 0, n U_z / r) with the
+/// rotation about z taken as du_y/dx = (1/r) du_z/dtheta as in the table (Sec. 3.2). Modal mass
+/// 1 kg (mass-normalised shapes). n_min = 2 leaves n = 0, 1 to the rigid wheelset (Sec. 3.4).
+std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, int n_min,
+                                          const WheelModalDamping& damping = {});
+
+}  // namespace rollnoise::dynamics
