@@ -257,7 +257,8 @@ Eigen::MatrixXcd RailWaveguide::transfer(const RailWaves& w, const Eigen::Matrix
   return Y.transpose() * weight.asDiagonal() * Z;
 }
 
-Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& normal) const {
+Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& normal,
+                                             double head_bottom) const {
   const Eigen::Vector2d n = normal.normalized(), t(n.y(), -n.x());
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(dofs(), 4);
   L(dof(node, 1), kZ) = n.x();
@@ -265,21 +266,32 @@ Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& no
   L(dof(node, 0), kX) = 1.0;
   L(dof(node, 1), kY) = t.x();
   L(dof(node, 2), kY) = t.y();
-  // psi_n = -t . grad(u_x) at the node, averaged over the triangles that share it.
-  int sharing = 0;
-  for (const auto& tri : mesh_.triangles) {
-    const auto at = std::find(tri.begin(), tri.end(), node);
-    if (at == tri.end()) continue;
-    const int a = static_cast<int>(at - tri.begin());
-    static const double corner[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
-    const Eigen::Matrix<double, 2, 6> dN = fem::triangle6_shape_derivatives(corner[a][0], corner[a][1]);
-    const Eigen::Matrix<double, 2, 6> xy = fem::triangle6_coordinates(mesh_.nodes, tri);
-    const Eigen::Matrix<double, 2, 6> grad = fem::triangle6_jacobian(dN, xy).inverse() * dN;
-    for (int b = 0; b < 6; ++b) L(dof(tri[b], 0), kRotZ) -= t.dot(grad.col(b));
-    ++sharing;
+  // psi_n = -t . b, b the gradient of the plane u_x = a + b . (r - r_h) fitted over the head
+  // (least squares over the triangles whose centroid lies at z >= head_bottom):
+  // b = I_h^{-1} Int_head (r - r_h) u_x dA, I_h = Int_head (r - r_h)(r - r_h)^T dA.
+  double area = 0.0;
+  Eigen::Vector2d first(0.0, 0.0);
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
+  std::vector<int> head;
+  for (int t = 0; t < static_cast<int>(mesh_.triangles.size()); ++t) {
+    Eigen::Vector2d c(0.0, 0.0);
+    for (int a = 0; a < 3; ++a) c += mesh_.nodes[mesh_.triangles[t][a]] / 3.0;
+    if (c.y() < head_bottom) continue;
+    head.push_back(t);
+    for (const SectionPoint& p : section_points(mesh_, t)) {
+      area += p.weight;
+      first += p.weight * p.position;
+      second += p.weight * p.position * p.position.transpose();
+    }
   }
-  if (sharing == 0) throw InputError("contact", "rail contact node belongs to no triangle");
-  L.col(kRotZ) /= sharing;
+  if (head.empty()) throw InputError("track.rail.head_bottom", "no triangle of the rail head above it");
+  const Eigen::Vector2d rh = first / area;
+  const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
+  const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA
+  for (int tri : head)
+    for (const SectionPoint& p : section_points(mesh_, tri))
+      for (int b = 0; b < 6; ++b)
+        L(dof(mesh_.triangles[tri][b], 0), kRotZ) += p.weight * c.dot(p.position - rh) * p.shape(b);
   return L;
 }
 

@@ -109,10 +109,12 @@ class RailWaveguide {
   /// rail's outward normal `normal` (unit, in (y, z)) as the loop's contact frame
   /// (docs/noise_loop.md Sec. 1), columns in Receptance4 order: force along the normal n, force
   /// along x, force along the lateral tangent t = (n_z, -n_y), and a moment about n applied as the
-  /// couple of longitudinal forces that does work on psi_n = -du_x/dt (the rotation about n of the
-  /// section's material at the node, averaged over the triangles sharing it). The response is
-  /// projected on the same distributions, so the receptance is reciprocal.
-  Eigen::MatrixXd contact_loads(int node, const Eigen::Vector2d& normal) const;
+  /// linearly varying axial traction over the head (the triangles with centroid z >= `head_bottom`,
+  /// m) that does work on psi_n = -t . grad u_x of the plane fitted to u_x over the head by least
+  /// squares: the rotation about n of the head as a whole (Timoshenko's section rotation), not the
+  /// local one under the load. The response is projected on the same distributions, so the
+  /// receptance is reciprocal.
+  Eigen::MatrixXd contact_loads(int node, const Eigen::Vector2d& normal, double head_bottom) const;
 
   /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
   /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads
@@ -134,6 +136,9 @@ class RailWaveguide {
   Eigen::MatrixXcd support_stiffness(cdouble omega) const;
   void assemble();
 };
+
+/// The bottom of the UIC60 head (z of the head's underside at its side, m) for contact_loads.
+constexpr double kUic60HeadBottom = 0.133;
 
 /// Node of the boundary nearest to `point` (y, z) (m).
 int nearest_boundary_node(const fem::QuadraticTriangleMesh& mesh, const Eigen::Vector2d& point);

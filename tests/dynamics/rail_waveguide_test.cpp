@@ -198,8 +198,8 @@ TEST(RailWaveguide, EccentricContactReceptanceIsReciprocalAndPassive) {
   const Eigen::Vector2d normal(-std::sin(gamma), std::cos(gamma));
   const int gauge = rd::nearest_boundary_node(mesh, Eigen::Vector2d(-0.0335, 0.1665));
   const int top = rd::nearest_boundary_node(mesh, Eigen::Vector2d(0.0, 0.172));
-  const Eigen::MatrixXd La = rail.contact_loads(gauge, normal);
-  const Eigen::MatrixXd Lb = rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0));
+  const Eigen::MatrixXd La = rail.contact_loads(gauge, normal, rd::kUic60HeadBottom);
+  const Eigen::MatrixXd Lb = rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), rd::kUic60HeadBottom);
   for (double f : {2500.0}) {
     const rd::RailWaves w = rail.waves(2.0 * M_PI * f);
     const rd::Receptance4 R = rail.contact_receptance(w, La, La, 0.0);
