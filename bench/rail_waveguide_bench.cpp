@@ -23,13 +23,18 @@ void RailWaveguideReceptancePerFrequency(benchmark::State& state) {
       dynamics::FootSupport{t.vertical_support, t.lateral_support, t.longitudinal_support,
                             t.sleeper_spacing});
   const int top = dynamics::nearest_boundary_node(mesh, Eigen::Vector2d(0.0, 0.172));
-  const Eigen::MatrixXd L = rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), dynamics::kUic60HeadBottom);
+  const Eigen::MatrixXd L =
+      rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), dynamics::kUic60HeadBottom);
   for (auto _ : state) {
     const dynamics::RailWaves w = rail.waves(2.0 * M_PI * 1000.0);
     benchmark::DoNotOptimize(rail.contact_receptance(w, L, L, 0.0));
   }
   state.counters["dofs"] = rail.dofs();
 }
-BENCHMARK(RailWaveguideReceptancePerFrequency)->Arg(40)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(RailWaveguideReceptancePerFrequency)
+    ->Arg(40)
+    ->Arg(30)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);
 
 }  // namespace

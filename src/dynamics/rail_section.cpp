@@ -85,8 +85,8 @@ SectionProperties section_properties(const fem::QuadraticTriangleMesh& mesh) {
     for (const SectionPoint& p : section_points(mesh, t)) {
       const Eigen::Vector2d r = p.position - s.centroid;
       const Eigen::Matrix<double, 6, 6> ke = p.weight * p.gradient.transpose() * p.gradient;
-      const Eigen::Matrix<double, 6, 1> fe =
-          p.weight * (p.gradient.row(0).transpose() * r.y() - p.gradient.row(1).transpose() * r.x());
+      const Eigen::Matrix<double, 6, 1> fe = p.weight * (p.gradient.row(0).transpose() * r.y() -
+                                                         p.gradient.row(1).transpose() * r.x());
       for (int i = 0; i < 6; ++i) {
         f(tri[i]) += fe(i);
         for (int j = 0; j < 6; ++j) K(tri[i], tri[j]) += ke(i, j);

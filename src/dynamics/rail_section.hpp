@@ -41,14 +41,14 @@ std::vector<Eigen::Vector2d> uic60_outline();
 /// Properties of a meshed section (SI). Coordinates of the centroid in the mesh's (y, z); the
 /// second moments about the centroid; the shear centre relative to the centroid.
 struct SectionProperties {
-  double area = 0.0;                  ///< A (m^2)
-  Eigen::Vector2d centroid{0.0, 0.0};  ///< (y_c, z_c) (m)
-  double second_moment_yy = 0.0;      ///< I_yy = Int z^2 dA, vertical bending (m^4)
-  double second_moment_zz = 0.0;      ///< I_zz = Int y^2 dA, lateral bending (m^4)
-  double product_moment = 0.0;        ///< I_yz = Int y z dA (m^4)
-  double torsion_constant = 0.0;      ///< J of Eq. (S2) (m^4)
+  double area = 0.0;                       ///< A (m^2)
+  Eigen::Vector2d centroid{0.0, 0.0};      ///< (y_c, z_c) (m)
+  double second_moment_yy = 0.0;           ///< I_yy = Int z^2 dA, vertical bending (m^4)
+  double second_moment_zz = 0.0;           ///< I_zz = Int y^2 dA, lateral bending (m^4)
+  double product_moment = 0.0;             ///< I_yz = Int y z dA (m^4)
+  double torsion_constant = 0.0;           ///< J of Eq. (S2) (m^4)
   Eigen::Vector2d shear_centre{0.0, 0.0};  ///< (y_p, z_p) from the centroid, Eq. (S3) (m)
-  double warping_constant = 0.0;      ///< I_w of Eq. (S4) (m^6)
+  double warping_constant = 0.0;           ///< I_w of Eq. (S4) (m^6)
 
   /// Polar moment about the centroid, I_yy + I_zz (m^4).
   double polar_moment() const { return second_moment_yy + second_moment_zz; }

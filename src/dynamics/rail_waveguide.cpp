@@ -2,10 +2,10 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
-#include <utility>
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -171,7 +171,8 @@ Eigen::MatrixXcd RailWaveguide::support_stiffness(cdouble omega) const {
 Eigen::VectorXd RailWaveguide::dispersion(double k, int count) const {
   Eigen::MatrixXd K = k0_ + k * k1_ + k * k * k2_ + support_stiffness(cdouble(0.0)).real();
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, m_, Eigen::EigenvaluesOnly);
-  if (es.info() != Eigen::Success) throw NumericalError("rail waveguide: dispersion eigensolver failed");
+  if (es.info() != Eigen::Success)
+    throw NumericalError("rail waveguide: dispersion eigensolver failed");
   const int m = std::min<int>(count, static_cast<int>(es.eigenvalues().size()));
   Eigen::VectorXd f(m);
   for (int i = 0; i < m; ++i) f(i) = std::sqrt(std::max(0.0, es.eigenvalues()(i))) / (2.0 * M_PI);
@@ -284,7 +285,8 @@ Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& no
       second += p.weight * p.position * p.position.transpose();
     }
   }
-  if (head.empty()) throw InputError("track.rail.head_bottom", "no triangle of the rail head above it");
+  if (head.empty())
+    throw InputError("track.rail.head_bottom", "no triangle of the rail head above it");
   const Eigen::Vector2d rh = first / area;
   const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
   const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA

@@ -27,9 +27,9 @@
 //   (A2 k^2 + A1 k + A0) phi = 0,  A0 = (1 + i eta) K0 + Ks(omega) - omega^2 M, A1 = (1 + i eta)
 //   K1, A2 = (1 + i eta) K2,                                                                (W3)
 //
-// n = 3 x nodes. K0, K2, M and the support couple no u'_x with (u_y, u_z) and K1 couples only those,
-// so Q(-k) = P Q(k) P with P = -1 on the u'_x and +1 elsewhere: the 2n roots come in pairs +-k,
-// and with phi = (k v, u_s) (u_s = the (u_y, u_z)) the quadratic problem is linear in k^2,
+// n = 3 x nodes. K0, K2, M and the support couple no u'_x with (u_y, u_z) and K1 couples only
+// those, so Q(-k) = P Q(k) P with P = -1 on the u'_x and +1 elsewhere: the 2n roots come in pairs
+// +-k, and with phi = (k v, u_s) (u_s = the (u_y, u_z)) the quadratic problem is linear in k^2,
 //
 //   [Ax C; 0 As] z + k^2 [Bx 0; C^T Bs] z = 0,  z = (v, u_s),                               (W5)
 //
@@ -44,7 +44,8 @@
 // Q(k)^{-1} by residues (Q symmetric, simple roots: Res Q^{-1} = phi phi^T / d,
 // d = phi^T (2k A2 + A1) phi; contour closed in the lower half plane for x >= 0):
 //
-//   G'(x) = -i sum_{Im k_j < 0} phi_j phi_j^T e^{-i k_j x} / d_j  (x >= 0),  G'(-x) = P G'(x) P,  (W4)
+//   G'(x) = -i sum_{Im k_j < 0} phi_j phi_j^T e^{-i k_j x} / d_j  (x >= 0),  G'(-x) = P G'(x) P,
+//   (W4)
 //
 // (Gry 1996, Eqs. 23-25; Nilsson et al. 2009, Eq. 20), and in physical variables
 // G(x) = T G'(x) T^*, T = diag(i on u_x, 1 elsewhere). Reciprocal by construction:
@@ -129,9 +130,9 @@ class RailWaveguide {
   fem::QuadraticTriangleMesh mesh_;
   RailMaterial material_;
   std::optional<FootSupport> support_;
-  Eigen::MatrixXd k0_, k1_, k2_, m_;     // Eq. (W1)
-  Eigen::MatrixXd foot_;                 // Int_foot N^T N ds per direction, / (L b)
-  Eigen::VectorXi is_axial_;             // 1 on the u_x components
+  Eigen::MatrixXd k0_, k1_, k2_, m_;  // Eq. (W1)
+  Eigen::MatrixXd foot_;              // Int_foot N^T N ds per direction, / (L b)
+  Eigen::VectorXi is_axial_;          // 1 on the u_x components
 
   Eigen::MatrixXcd support_stiffness(cdouble omega) const;
   void assemble();

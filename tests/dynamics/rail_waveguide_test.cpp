@@ -84,7 +84,8 @@ TEST(RailSection, TorsionConstantOfRectangleMatchesSaintVenantSeries) {
 // below the centroid (towards the foot, whose warping dominates; Thompson 2009 Sec. 3.4 places it
 // in the lower web).
 TEST(RailSection, Uic60OutlineNearEn13674Values) {
-  const rd::SectionProperties s = rd::section_properties(rf::mesh_polygon(rd::uic60_outline(), 0.01));
+  const rd::SectionProperties s =
+      rd::section_properties(rf::mesh_polygon(rd::uic60_outline(), 0.01));
   EXPECT_NEAR(s.area / 76.70e-4, 1.0, 0.03);
   EXPECT_NEAR(s.second_moment_yy / 3038.3e-8, 1.0, 0.02);
   EXPECT_NEAR(s.second_moment_zz / 512.3e-8, 1.0, 0.03);
@@ -111,7 +112,8 @@ std::vector<double> vlasov_wavenumbers(const rd::SectionProperties& s, const rd:
   const double zp = s.shear_centre.y(), mA = rho * s.area * w * w;
   const double c = mA * zp, r = rho * w * w * (s.polar_moment() + s.area * zp * zp);
   const double a = E * s.second_moment_zz, e = E * s.warping_constant, g = G * s.torsion_constant;
-  // (a q^2 - mA)(e q^2 + g q - r) - c^2 = a e q^4 + a g q^3 - (a r + mA e) q^2 - mA g q + mA r - c^2
+  // (a q^2 - mA)(e q^2 + g q - r) - c^2 = a e q^4 + a g q^3 - (a r + mA e) q^2 - mA g q + mA r -
+  // c^2
   Eigen::Matrix4d C = Eigen::Matrix4d::Zero();  // companion of the quartic in q
   const double coef[5] = {mA * r - c * c, -mA * g, -(a * r + mA * e), a * g, a * e};
   for (int i = 0; i < 3; ++i) C(i + 1, i) = 1.0;
@@ -149,20 +151,20 @@ TEST(RailWaveguide, FreeRailWavenumbersEqualBeamTheoryAt100Hz) {
   EXPECT_NEAR(nearest(fe, krod) / krod, 1.0, 0.02) << "rod";
 }
 
-// Where the section does not deform: the vertical receptance of the head's crown (a uniform vertical
-// traction over the crown, |y| < 25 mm, its response averaged the same way) on the continuous
-// support equals the Timoshenko beam (track.hpp, kappa = 0.4, the section's own A and I, the same
-// support) within 1.5 dB from 100 to 500 Hz (the acceptance). A nodal point force adds the
-// local deformation under it (a real, mesh-dependent compliance, ~1.8e-9 m/N on this mesh); the
-// response of the foot's bottom to the same load is the beam's too.
+// Where the section does not deform: the vertical receptance of the head's crown (a uniform
+// vertical traction over the crown, |y| < 25 mm, its response averaged the same way) on the
+// continuous support equals the Timoshenko beam (track.hpp, kappa = 0.4, the section's own A and I,
+// the same support) within 1.5 dB from 100 to 500 Hz (the acceptance). A nodal point force
+// adds the local deformation under it (a real, mesh-dependent compliance, ~1.8e-9 m/N on this
+// mesh); the response of the foot's bottom to the same load is the beam's too.
 TEST(RailWaveguide, CentredVerticalReceptanceEqualsTimoshenkoTrack100To500Hz) {
   const rf::QuadraticTriangleMesh mesh = rf::mesh_polygon(rd::uic60_outline(), 0.04);
   const rd::SectionProperties s = rd::section_properties(mesh);
   const rd::TrackParameters t = rd::uic60_ballasted();
   const rd::RailMaterial m = steel(t.vertical.loss_factor);
-  const rd::RailWaveguide rail(
-      mesh, m, rd::FootSupport{t.vertical_support, t.lateral_support, t.longitudinal_support,
-                               t.sleeper_spacing});
+  const rd::RailWaveguide rail(mesh, m,
+                               rd::FootSupport{t.vertical_support, t.lateral_support,
+                                               t.longitudinal_support, t.sleeper_spacing});
   std::vector<int> crown, foot;
   for (int i = 0; i < static_cast<int>(mesh.boundary_edges.size()); ++i) {
     bool in_crown = true, in_foot = true;
@@ -178,7 +180,8 @@ TEST(RailWaveguide, CentredVerticalReceptanceEqualsTimoshenkoTrack100To500Hz) {
   const rd::BeamSection beam = beam_of(s, s.second_moment_yy, 0.4, m);
   for (double f : {100.0, 250.0, 500.0}) {
     const rd::RailWaves w = rail.waves(2.0 * M_PI * f);
-    const cd tb = rd::continuous_transfer(beam, t.vertical_support, t.sleeper_spacing, f, 0.0)(0, 0);
+    const cd tb =
+        rd::continuous_transfer(beam, t.vertical_support, t.sleeper_spacing, f, 0.0)(0, 0);
     EXPECT_NEAR(db(rail.transfer(w, L, L, 0.0)(0, 0)), db(tb), 1.5) << "f = " << f;
     EXPECT_NEAR(db(rail.transfer(w, B, L, 0.0)(0, 0)), db(tb), 1.5) << "foot, f = " << f;
   }
@@ -190,16 +193,16 @@ TEST(RailWaveguide, CentredVerticalReceptanceEqualsTimoshenkoTrack100To500Hz) {
 TEST(RailWaveguide, EccentricContactReceptanceIsReciprocalAndPassive) {
   const rf::QuadraticTriangleMesh mesh = rf::mesh_polygon(rd::uic60_outline(), 0.04);
   const rd::TrackParameters t = rd::uic60_ballasted();
-  const rd::RailWaveguide rail(
-      mesh, steel(0.02),
-      rd::FootSupport{t.vertical_support, t.lateral_support, t.longitudinal_support,
-                      t.sleeper_spacing});
+  const rd::RailWaveguide rail(mesh, steel(0.02),
+                               rd::FootSupport{t.vertical_support, t.lateral_support,
+                                               t.longitudinal_support, t.sleeper_spacing});
   const double gamma = 0.52;
   const Eigen::Vector2d normal(-std::sin(gamma), std::cos(gamma));
   const int gauge = rd::nearest_boundary_node(mesh, Eigen::Vector2d(-0.0335, 0.1665));
   const int top = rd::nearest_boundary_node(mesh, Eigen::Vector2d(0.0, 0.172));
   const Eigen::MatrixXd La = rail.contact_loads(gauge, normal, rd::kUic60HeadBottom);
-  const Eigen::MatrixXd Lb = rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), rd::kUic60HeadBottom);
+  const Eigen::MatrixXd Lb =
+      rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), rd::kUic60HeadBottom);
   for (double f : {2500.0}) {
     const rd::RailWaves w = rail.waves(2.0 * M_PI * f);
     const rd::Receptance4 R = rail.contact_receptance(w, La, La, 0.0);
