@@ -87,13 +87,13 @@ RailWaveguide::RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial
   if (!(material_.youngs_modulus > 0.0) || !(material_.density > 0.0) ||
       !(material_.poisson_ratio > -1.0 && material_.poisson_ratio < 0.5) ||
       !(material_.loss_factor >= 0.0))
-    throw InputError("track.rail", "rail material: E > 0, rho > 0, -1 < nu < 1/2, eta >= 0");
+    throw InputError("rail_material", "rail material: E > 0, rho > 0, -1 < nu < 1/2, eta >= 0");
   if (support_) {
     support_->vertical.validate("track.support.vertical");
     support_->lateral.validate("track.support.lateral");
     support_->longitudinal.validate("track.support.longitudinal");
     if (!(support_->sleeper_spacing > 0.0))
-      throw InputError("track.sleeper_spacing", "sleeper spacing must be > 0");
+      throw InputError("rail_support", "sleeper spacing must be > 0");
   }
   assemble();
 }
@@ -150,7 +150,7 @@ void RailWaveguide::assemble() {
         for (int b = 0; b < 3; ++b) foot_(e[a], e[b]) += gw[q] * 0.5 * len * N(a) * N(b);
     }
   }
-  if (!(width > 0.0)) throw InputError("track.rail.outline", "the rail section has no flat foot");
+  if (!(width > 0.0)) throw InputError("rail_section", "the rail section has no flat foot");
   foot_ /= support_->sleeper_spacing * width;
 }
 
@@ -286,7 +286,7 @@ Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& no
     }
   }
   if (head.empty())
-    throw InputError("track.rail.head_bottom", "no triangle of the rail head above it");
+    throw InputError("rail_section", "no triangle of the rail head above it");
   const Eigen::Vector2d rh = first / area;
   const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
   const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA
@@ -309,7 +309,7 @@ Eigen::VectorXd RailWaveguide::edge_traction(const std::vector<int>& edges, int 
     f(dof(e[2], direction)) += len / 6.0;
     length += len;
   }
-  if (!(length > 0.0)) throw InputError("track.rail", "edge traction on no boundary edge");
+  if (!(length > 0.0)) throw InputError("rail_section", "edge traction on no boundary edge");
   return f / length;
 }
 
@@ -326,7 +326,7 @@ int nearest_boundary_node(const fem::QuadraticTriangleMesh& mesh, const Eigen::V
       const double d = (mesh.nodes[v] - point).norm();
       if (best < 0 || d < dist) best = v, dist = d;
     }
-  if (best < 0) throw InputError("track.rail.outline", "the rail mesh has no boundary");
+  if (best < 0) throw InputError("rail_section", "the rail mesh has no boundary");
   return best;
 }
 
