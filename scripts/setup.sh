@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PACKAGES=(g++ cmake make pkg-config libeigen3-dev libfftw3-dev libgsl-dev libhdf5-dev libcli11-dev
           libtomlplusplus-dev libgtest-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib
-          libgmsh-dev gmsh libspectra-dev
+          libgmsh-dev gmsh libspectra-dev liblapack-dev
           parallel)  # GNU parallel: the study tests run shards under it (docs/study.md)
 missing=()
 for p in "${PACKAGES[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

@@ -1,0 +1,147 @@
+// The rail as a waveguide: a 2.5D (waveguide, semi-analytical) finite-element model of the
+// cross-section, exact along the rail (Gavric, JSV 185, 1995; Gry, JSV 195, 1996; Nilsson, Jones,
+// Thompson & Ryue, JSV 321, 2009; Thompson, Railway Noise and Vibration, 2009, Sec. 4.6).
+//
+// Displacement u(x, y, z, t) = U(y, z) e^{i(omega t - k x)} (rollnoise's e^{i omega t}; d/dx -> -ik
+// as in track_beam.hpp), U interpolated by 6-node triangles over the section, three components
+// (u_x, u_y, u_z) per node. With the strains e = (e_xx, e_yy, e_zz, g_yz, g_xz, g_xy) and the
+// longitudinal component rotated by i, u_x = i u'_x (Gavric 1995, Eq. 10), every strain is a real
+// combination of real nodal values times a diagonal phase S = diag(1, 1, 1, 1, i, i):
+//
+//   e = S (B1 + k B2) U',   B1: (0, du_y/dy, du_z/dz, du_y/dz + du_z/dy, du'_x/dz, du'_x/dy),
+//                           B2: (u'_x, 0, 0, 0, -u_z, -u_y) (N-weighted),
+//
+// and since S^H D S = D for the isotropic D, the strain energy gives the real symmetric
+//
+//   K(k) = K0 + k K1 + k^2 K2,  K0 = Int B1^T D B1, K1 = Int (B1^T D B2 + B2^T D B1),
+//   K2 = Int B2^T D B2,  M = Int rho N^T N,                                                 (W1)
+//
+// with the material loss factor as D(1 + i eta). A distributed support across the foot's bottom
+// (the pad / sleeper / ballast layers of track.hpp, smeared along the rail and over the foot width
+// b) adds Ks(omega) = Int_foot N^T N ds diag(K_x, K_y, K_z)(omega) / (L b) to K0 (Eq. 1 of
+// track.hpp per rail seat, L the sleeper spacing).
+//
+// Dispersion: at real k the undamped free rail's det(K(k) - omega^2 M) = 0 is a symmetric
+// eigenproblem in omega^2 (W2). Per frequency: the quadratic eigenproblem in k,
+//
+//   (A2 k^2 + A1 k + A0) phi = 0,  A0 = (1 + i eta) K0 + Ks(omega) - omega^2 M, A1 = (1 + i eta)
+//   K1, A2 = (1 + i eta) K2,                                                                (W3)
+//
+// n = 3 x nodes. K0, K2, M and the support couple no u'_x with (u_y, u_z) and K1 couples only
+// those, so Q(-k) = P Q(k) P with P = -1 on the u'_x and +1 elsewhere: the 2n roots come in pairs
+// +-k, and with phi = (k v, u_s) (u_s = the (u_y, u_z)) the quadratic problem is linear in k^2,
+//
+//   [Ax C; 0 As] z + k^2 [Bx 0; C^T Bs] z = 0,  z = (v, u_s),                               (W5)
+//
+// (Ax, As, Bx, Bs the u'_x and u_s blocks of A0 and A2, C the u'_x-u_s block of A1; substitute
+// phi in Q(k) phi = 0 and divide the u'_x rows by k): n x n instead of the 2n x 2n companion form
+// [0 I; -A2^{-1}A0 -A2^{-1}A1] (Tisseur & Meerbergen, SIAM Rev. 43, 2001, Sec. 3.4), solved as
+// the standard problem B^{-1} A z = -k^2 z. Of each pair the wave travelling or decaying towards
+// +x is the root with Im k < 0, for an undamped propagating root the one with positive group
+// velocity c_g = Re(phi^H (2k A2 + A1) phi) / (2 omega phi^H M phi) (Nilsson et al. 2009).
+//
+// Forced response: the Green's function between nodal loads is the inverse Fourier transform of
+// Q(k)^{-1} by residues (Q symmetric, simple roots: Res Q^{-1} = phi phi^T / d,
+// d = phi^T (2k A2 + A1) phi; contour closed in the lower half plane for x >= 0):
+//
+//   G'(x) = -i sum_{Im k_j < 0} phi_j phi_j^T e^{-i k_j x} / d_j  (x >= 0),  G'(-x) = P G'(x) P,
+//   (W4)
+//
+// (Gry 1996, Eqs. 23-25; Nilsson et al. 2009, Eq. 20), and in physical variables
+// G(x) = T G'(x) T^*, T = diag(i on u_x, 1 elsewhere). Reciprocal by construction:
+// G(-x) = G(x)^T.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "dynamics/receptance.hpp"
+#include "dynamics/track.hpp"
+#include "fem/mesh.hpp"
+
+namespace rollnoise::dynamics {
+
+/// Isotropic, linear-elastic rail steel.
+struct RailMaterial {
+  double youngs_modulus = 210e9;  ///< E (Pa)
+  double poisson_ratio = 0.3;     ///< nu (-)
+  double density = 7850.0;        ///< rho (kg/m^3)
+  double loss_factor = 0.02;      ///< eta (-)
+};
+
+/// The pad / sleeper / ballast layers under the foot, smeared along the rail (continuous support).
+struct FootSupport {
+  Support vertical, lateral, longitudinal;
+  double sleeper_spacing = 0.6;  ///< L (m)
+};
+
+/// The n waves of one frequency that travel or decay towards +x (Eq. W3).
+struct RailWaves {
+  cdouble omega;
+  Eigen::VectorXcd wavenumbers;  ///< k_j (rad/m)
+  Eigen::MatrixXcd shapes;       ///< phi_j in the rotated variables (u'_x = -i u_x), columns
+  Eigen::VectorXcd norms;        ///< d_j of Eq. (W4)
+};
+
+class RailWaveguide {
+ public:
+  /// `support`: none for the free rail. The foot is the set of boundary edges along the lowest z.
+  RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial& material,
+                std::optional<FootSupport> support);
+
+  int dofs() const { return static_cast<int>(m_.rows()); }
+  /// Degree of freedom of `node` in direction 0 (x), 1 (y), 2 (z).
+  static int dof(int node, int direction) { return 3 * node + direction; }
+  const fem::QuadraticTriangleMesh& mesh() const { return mesh_; }
+
+  /// The lowest `count` natural frequencies (Hz) of the undamped rail at real wavenumber k (rad/m),
+  /// Eq. (W2); a support enters with its static stiffness.
+  Eigen::VectorXd dispersion(double k, int count) const;
+
+  /// Eq. (W3) at angular frequency omega (rad/s; real).
+  RailWaves waves(double omega) const;
+
+  /// Eq. (W4): responses r_i = response.col(i) . u(x_r) per loads f_j = load.col(j) applied at
+  /// x_l, x = x_r - x_l (m); `response` and `load` in physical nodal components (dofs() rows).
+  Eigen::MatrixXcd transfer(const RailWaves& w, const Eigen::MatrixXd& response,
+                            const Eigen::MatrixXd& load, double x) const;
+
+  /// The nodal load distributions of a contact on the section's boundary at `node` with the
+  /// rail's outward normal `normal` (unit, in (y, z)) as the loop's contact frame
+  /// (docs/noise_loop.md Sec. 1), columns in Receptance4 order: force along the normal n, force
+  /// along x, force along the lateral tangent t = (n_z, -n_y), and a moment about n applied as the
+  /// linearly varying axial traction over the head (the triangles with centroid z >= `head_bottom`,
+  /// m) that does work on psi_n = -t . grad u_x of the plane fitted to u_x over the head by least
+  /// squares: the rotation about n of the head as a whole (Timoshenko's section rotation), not the
+  /// local one under the load. The response is projected on the same distributions, so the
+  /// receptance is reciprocal.
+  Eigen::MatrixXd contact_loads(int node, const Eigen::Vector2d& normal, double head_bottom) const;
+
+  /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
+  /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads
+  /// Int N ds / length. Used as a load and as the matching average of the response.
+  Eigen::VectorXd edge_traction(const std::vector<int>& edges, int direction) const;
+
+  /// The 4x4 receptance between contacts a (response) and b (load) at x = x_a - x_b.
+  Receptance4 contact_receptance(const RailWaves& w, const Eigen::MatrixXd& loads_a,
+                                 const Eigen::MatrixXd& loads_b, double x) const;
+
+ private:
+  fem::QuadraticTriangleMesh mesh_;
+  RailMaterial material_;
+  std::optional<FootSupport> support_;
+  Eigen::MatrixXd k0_, k1_, k2_, m_;  // Eq. (W1)
+  Eigen::MatrixXd foot_;              // Int_foot N^T N ds per direction, / (L b)
+  Eigen::VectorXi is_axial_;          // 1 on the u_x components
+
+  Eigen::MatrixXcd support_stiffness(cdouble omega) const;
+  void assemble();
+};
+
+/// The bottom of the UIC60 head (z of the head's underside at its side, m) for contact_loads.
+constexpr double kUic60HeadBottom = 0.133;
+
+/// Node of the boundary nearest to `point` (y, z) (m).
+int nearest_boundary_node(const fem::QuadraticTriangleMesh& mesh, const Eigen::Vector2d& point);
+
+}  // namespace rollnoise::dynamics
