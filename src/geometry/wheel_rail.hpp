@@ -162,6 +162,18 @@ ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& 
 double lateral_gap(const WheelRailPair& pair, const ContactGeometry& c, double y_c);
 constexpr double far_distance = 1e-2;
 
+/// Everything about one lateral strip y_c of the contact frame of `c`: the gap g(y_c) along the
+/// normal, the wheel radius r and the lead x_w (relative to c.x) of the wheel point of the strip,
+/// and the projection factor k of the wheel's longitudinal rise (undeformed_distance below).
+struct GapStrip {
+  bool found = false;
+  double gap = far_distance;
+  double radius = 0.0;
+  double lead = 0.0;
+  double k = 1.0;
+};
+GapStrip gap_strip(const WheelRailPair& pair, const ContactGeometry& c, double y_c);
+
 /// The undeformed distance on the grid (contact frame, x from the contact point's lead, y_c from
 /// the contact point), layout [iy][ix] (contact::GridField):
 ///   h(x, y) = g(y) + k(y) (x - x_w(y))^2 / (2 r(y)),

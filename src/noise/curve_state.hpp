@@ -23,7 +23,9 @@
 //     wheel, contact frame of loop.hpp, whose y axis rises by sin(gamma)):
 //       Q_t = N cos(gamma) + F_y sin(gamma)   =>   N = (Q_t - F_y sin(gamma)) / cos(gamma) (K8)
 //     F_y from Kalker's f22 scaled to Q_t (K5) with the cubic saturation at mu Q_t (spin
-//     neglected, as in the estimate).
+//     neglected, as in the estimate) gave F_y in the estimate; the state itself lowers the wheel
+//     vertically under Q_t (geometry/loaded_contact.hpp, as CONTACT module 1 with a prescribed
+//     vertical force): N and F_y from the steady rolling solution of the patch, (K8) = (V1).
 // The flange contact is not a second coupling point of the loop (a later step): its load is
 // reported, the loop runs on the tread contact.
 #pragma once
@@ -35,6 +37,7 @@
 
 #include "contact/material.hpp"
 #include "contact/patch.hpp"
+#include "geometry/loaded_contact.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "noise/curving.hpp"
 #include "noise/loop.hpp"
@@ -52,6 +55,7 @@ struct CurveStateInput {
   double cg_height = 1.5;        ///< h_cg (m) above the rails, (K4); 0: no load transfer
   double wheel_load = 0.0;       ///< Q (N): static vertical load per wheel
   double friction = 0.3;         ///< mu, also at the flange
+  double spin_offset = 0.0;      ///< of the steady rolling solution (grid.spin_offset)
   // Multibody input: the wheelset's position (and optionally the creepages) given.
   bool multibody = false;
   double lateral = 0.0;                     ///< u (m)
@@ -77,7 +81,9 @@ struct CurveContactState {
   double load_transfer = 0.0;         ///< dQ (N)
   double tread_load = 0.0;            ///< Q_t (N), vertical
   double lateral_creep_force = 0.0;   ///< F_y (N) on the wheel, contact frame
-  double normal_force = 0.0;          ///< N (N) of the tread contact, (K8)
+  double normal_force = 0.0;          ///< N (N) of the tread contact, (K8) = (V1)
+  /// The tread contact lowered vertically under Q_t: patch, steady state, forces (N, F_y above).
+  std::shared_ptr<const geometry::LoadedContact> loaded;
   bool two_point = false;             ///< the leading axle at its outer flange
   double flange_angle = 0.0;          ///< delta_f (rad)
   double flange_lateral_force = 0.0;  ///< |Y| (N)
