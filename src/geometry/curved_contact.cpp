@@ -197,7 +197,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     contact::SteadyRollingInput rolling = in.rolling;
     local_creepages(c, cp.rows, g, in, rolling);
     LoadedContact out;
-    double dz = 0.0, c0 = std::cos(c.contact_angle);
+    double dz = 0.0, c0 = std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
     contact::GridField h = cp.h;
     for (out.iterations = 1;; ++out.iterations) {
       for (int iy = 0; iy < g.ny; ++iy)
@@ -223,21 +223,29 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
       const double a = g.element_area();
       out.force_track = {lon * a, lat * a, up * a};
       const double dz_next = patch->normal.approach / c0, mean_cos = pc / psum;
-      const bool settled = std::abs(up * a - Q) <= std::max(in.tolerance, 1e-8) * Q &&
-                           std::abs(dz_next - dz) <= 1e-6 * std::abs(dz_next) + 1e-15 &&
-                           std::abs(mean_cos - c0) <= 1e-7;
+      const bool settled = std::abs(up * a - Q) <= std::max(in.tolerance, 1e-5) * Q &&
+                           std::abs(dz_next - dz) <= 1e-4 * std::abs(dz_next) + 1e-13 &&
+                           std::abs(mean_cos - c0) <= 1e-5;
       if (settled) break;
       if (out.iterations >= in.max_iterations) {
         std::ostringstream m;
         m << "wheel lowered under its vertical load " << Q << " N on the curved surface: no"
           << " fixed point in " << in.max_iterations << " iterations (vertical force "
-          << up * a << " N, lowering change " << dz_next - dz << " m)";
+          << up * a << " N, lowering change " << dz_next - dz << " m, mean cos change "
+          << mean_cos - c0 << ")";
         throw NumericalError(m.str());
       }
-      // The vertical approach dz cos δ(s) at the fixed point; c0 the pressure-weighted mean.
+      // The vertical approach dz cos δ(s) at the fixed point; c0 the pressure-weighted mean. The
+      // tolerances above leave an error in h~ of < 1e-4 dz |cos δ - c0|, < 1e-4 of the approach.
       dz = dz_next;
       c0 = mean_cos;
-      N += (Q - up * a) / mean_cos;
+      // N from (C3): secant steps on up(N) - Q after a first step with d(up)/dN = mean cos d.
+      const double r = up * a - Q;
+      double next = N - r / mean_cos;
+      if (out.iterations > 1 && r != r_prev) next = N - r * (N - N_prev) / (r - r_prev);
+      if (!(next > 0.5 * N && next < 2.0 * N)) next = N - r / mean_cos;  // a wild secant step
+      N_prev = N, r_prev = r;
+      N = next;
     }
     if (attempt < 3 && contact::reaches_border(g, patch->normal.pn)) {
       options.scale *= 1.5;

@@ -44,6 +44,7 @@ LoadedContact lower_under_vertical_load(const WheelRailPair& pair, const Contact
   auto patch = std::make_shared<contact::ContactPatch>(
       solve_wheel_rail_patch(pair, c, N, in.material, in.grid));
   const contact::GridField h = patch->undeformed_distance;
+  double N_prev = 0.0, r_prev = 0.0;
   for (out.iterations = 1;; ++out.iterations) {
     if (out.iterations > 1)
       patch = std::make_shared<contact::ContactPatch>(
@@ -52,7 +53,13 @@ LoadedContact lower_under_vertical_load(const WheelRailPair& pair, const Contact
     out.tangential =
         contact::solve_steady_rolling(patch->influence, patch->normal.pn, in.rolling, {}, start);
     out.creep_force = integrate_creep_force(patch->grid, out.tangential);
-    const double next = (Q - out.creep_force[1] * sd) / cd;  // (V1)
+    // (V1) as a root of r(N) = N cos d + F_y(N) sin d - Q: secant steps after a first fixed-point
+    // step (the fixed point alone contracts by mu tan d only, slowly on a flank).
+    const double r = N * cd + out.creep_force[1] * sd - Q;
+    double next = (Q - out.creep_force[1] * sd) / cd;
+    if (out.iterations > 1 && r != r_prev) next = N - r * (N - N_prev) / (r - r_prev);
+    if (!(next > 0.5 * N && next < 2.0 * N)) next = (Q - out.creep_force[1] * sd) / cd;
+    N_prev = N, r_prev = r;
     const double change = std::abs(next - N);
     if (change <= in.tolerance * N) break;
     if (out.iterations >= in.max_iterations) {

@@ -24,8 +24,10 @@
 //       Q_t = N cos(gamma) + F_y sin(gamma)   =>   N = (Q_t - F_y sin(gamma)) / cos(gamma) (K8)
 //     F_y from Kalker's f22 scaled to Q_t (K5) with the cubic saturation at mu Q_t (spin
 //     neglected, as in the estimate) gave F_y in the estimate; the state itself lowers the wheel
-//     vertically under Q_t (geometry/loaded_contact.hpp, as CONTACT module 1 with a prescribed
-//     vertical force): N and F_y from the steady rolling solution of the patch, (K8) = (V1).
+//     vertically under its whole load Q_o (geometry/loaded_contact.hpp, curved_contact.hpp, as
+//     CONTACT module 1 with a prescribed vertical force and its curved-surface option): N and F_y
+//     from the steady rolling solution of the patch, (K8) = (V1). A patch that wraps onto the
+//     flank carries the flank's share: the estimate's flange share is reported, not added.
 // The flange contact is not a second coupling point of the loop (a later step): its load is
 // reported, the loop runs on the tread contact.
 #pragma once
@@ -56,6 +58,9 @@ struct CurveStateInput {
   double wheel_load = 0.0;       ///< Q (N): static vertical load per wheel
   double friction = 0.3;         ///< mu, also at the flange
   double spin_offset = 0.0;      ///< of the steady rolling solution (grid.spin_offset)
+  /// Elements in x (at most) of the grid on which the wheel is lowered under its load (the
+  /// resultant changes by < 0.5 % from 16 to 24 elements in flange-root contact).
+  int lowering_nx = 24;
   // Multibody input: the wheelset's position (and optionally the creepages) given.
   bool multibody = false;
   double lateral = 0.0;                     ///< u (m)
@@ -79,7 +84,7 @@ struct CurveContactState {
   double f11 = 0.0, f22 = 0.0;        ///< Kalker's coefficients at the contact for the load Q (N)
   double wheel_load = 0.0;            ///< Q (N)
   double load_transfer = 0.0;         ///< dQ (N)
-  double tread_load = 0.0;            ///< Q_t (N), vertical
+  double tread_load = 0.0;            ///< Q_o (N): the vertical load the patch carries
   double lateral_creep_force = 0.0;   ///< F_y (N) on the wheel, contact frame
   double normal_force = 0.0;          ///< N (N) of the tread contact, (K8) = (V1)
   /// The tread contact lowered vertically under Q_t: patch, steady state, forces (N, F_y above).

@@ -176,32 +176,50 @@ TEST(LoadedContact, CurvedSurfaceReducesToThePlaneForAFlatPatch) {
                 Q, p.force_track[0], p.force_track[1], p.force_track[2], w.force_track[0],
                 w.force_track[1], w.force_track[2], w.angle_min, w.angle_max, d, w.iterations);
     EXPECT_LT(d, Q > 5e4 ? 0.01 : 0.003);
-    EXPECT_NEAR(w.force_track[2], Q, 1e-7 * Q);
+    EXPECT_NEAR(w.force_track[2], Q, 1e-5 * Q);  // the curved iteration stops at 1e-5 Q
   }
 }
 
 // The 300 m case's leading outer wheel (u = 6.20 mm, psi = 7.786 mrad): the patch wraps from the
-// flange root onto the flank. On the curved reference surface, lowered under the outer wheel's
-// vertical load, its resultant on the wheel against CONTACT module 1's curved-surface result
-// (issue 24: lateral -28.5 kN, longitudinal 9.9 kN on the wheel; planar option -35.4 kN).
+// flange root onto the flank. CONTACT module 1 with its curved-surface option (issue 24; the run's
+// input is not in the repository) gives on the wheel lateral -28.5 kN, longitudinal 9.9 kN, at
+// the vertical force of rollnoise's tread load Q_t = 98.9 kN (the same convention as its u3 runs,
+// tests/data/contact/C1_u3; our planar patch at 98.9 kN reproduces the issue's rollnoise numbers
+// -26.6 kN, 12.7 kN). The curved reference surface: within 5 % laterally, 10 % longitudinally.
+// Our own check: the resultant changes by < 0.5 % from the 16- to the 24-element grid (x and s
+// refined together), and the patch spans the contact angles from the flange root (< 0.4 rad) to
+// the flank (> 0.9 rad). ROLLNOISE_FLANGE_STUDY=<Q in N> prints a study (u = 6.20, 6.25 mm; 16,
+// 24, 32 elements; planar and curved).
 TEST(LoadedContact, FlangeRootPatchWrapsOntoTheFlank) {
   const WheelRailPair pair(io::read_profile(kProfiles + "MBench_S1002_v3.prw"),
                            io::read_profile(kProfiles + "MBench_UIC60_v3.prr"));
-  const double Q = 98.1e3 * (1.0 + 2 * 0.08 * 1.5 / (1.5066 * 1.5066));
   const char* env = std::getenv("ROLLNOISE_FLANGE_STUDY");
-  for (double u : {6.20e-3, 6.25e-3}) {
+  const double Q = env && std::atof(env) > 0 ? std::atof(env) : 98.9e3;
+  auto solve = [&](double u, int n, bool curved) {
     const ContactGeometry c = find_contact(pair, {u, 7.786e-3});
-    for (int nx : {16, 24, 32}) {
-      for (bool curved : {false, true}) {
-        if (!env && (u > 6.2e-3 || nx != 24)) continue;
-        const LoadedContact w =
-            lower_under_vertical_load(pair, c, curve_input(pair, c, Q, 300, nx, curved));
-        std::printf("u %.2f mm nx %d %s: force on wheel (%.0f, %.0f, %.0f) N, N %.0f, angles "
-                    "%.3f..%.3f (contact point %.3f), grid %d x %d, %d iterations\n",
-                    u * 1e3, nx, curved ? "curved" : "planar", w.force_track[0], w.force_track[1],
-                    w.force_track[2], w.normal_force, w.angle_min, w.angle_max, c.contact_angle,
-                    w.patch->grid.nx, w.patch->grid.ny, w.iterations);
-      }
-    }
+    VerticalLoadInput in = curve_input(pair, c, Q, 300, n, curved);
+    in.grid.min_elements_across = n;
+    const LoadedContact w = lower_under_vertical_load(pair, c, in);
+    std::printf("u %.2f mm n %d %s: force on wheel (%.0f, %.0f, %.0f) N, N %.0f, angles "
+                "%.3f..%.3f (contact point %.3f), grid %d x %d, %d iterations\n",
+                u * 1e3, n, curved ? "curved" : "planar", w.force_track[0], w.force_track[1],
+                w.force_track[2], w.normal_force, w.angle_min, w.angle_max, c.contact_angle,
+                w.patch->grid.nx, w.patch->grid.ny, w.iterations);
+    return w;
+  };
+  if (env) {
+    for (double u : {6.20e-3, 6.25e-3})
+      for (int n : {16, 24, 32})
+        for (bool curved : {false, true}) solve(u, n, curved);
+    return;
   }
+  const LoadedContact w = solve(6.20e-3, 24, true);
+  const LoadedContact coarse = solve(6.20e-3, 16, true);
+  EXPECT_NEAR(w.force_track[1], -28.5e3, 0.05 * 28.5e3);
+  EXPECT_NEAR(w.force_track[0], 9.9e3, 0.10 * 9.9e3);
+  EXPECT_NEAR(w.force_track[2], Q, 1e-5 * Q);  // the curved iteration stops at 1e-5 Q
+  EXPECT_LT(w.angle_min, 0.4);
+  EXPECT_GT(w.angle_max, 0.9);
+  for (int i : {0, 1})
+    EXPECT_LT(std::abs(w.force_track[i] - coarse.force_track[i]), 0.005 * std::abs(w.force_track[i]));
 }
