@@ -223,3 +223,31 @@ TEST(LoadedContact, FlangeRootPatchWrapsOntoTheFlank) {
   for (int i : {0, 1})
     EXPECT_LT(std::abs(w.force_track[i] - coarse.force_track[i]), 0.005 * std::abs(w.force_track[i]));
 }
+
+// Tangent track without cant deficiency: the left wheel of the wheelset at (-u, -psi) is the
+// mirror image of the right wheel at (u, psi); lowered under the same load on the curved surface
+// with the mirrored creepages, the two contacts agree within 1e-6 relative (the left one is
+// computed in the mirrored frame, so its numbers read like the right's).
+TEST(LoadedContact, TangentTrackSidesMirror) {
+  const WheelRailPair pair(io::read_profile(kProfiles + "MBench_S1002_v3.prw"),
+                           io::read_profile(kProfiles + "MBench_UIC60_v3.prr"));
+  const ContactGeometry right = find_contact(pair, {2e-3, 1e-3}, Side::Right);
+  const ContactGeometry left = find_contact(pair, {-2e-3, -1e-3}, Side::Left);
+  auto lower = [&](const ContactGeometry& c) {
+    VerticalLoadInput in;
+    in.vertical_load = 98.1e3;
+    in.material = contact::Material{210e9, 0.28};
+    in.grid.nx = 16;
+    in.rolling = contact::SteadyRollingInput(
+        0.3, 20.0, {1e-3, -c.local_pose.yaw, -std::sin(c.contact_angle) / c.rolling_radius});
+    in.curved = true;
+    in.yaw = c.local_pose.yaw;
+    return lower_under_vertical_load(pair, c, in);
+  };
+  const LoadedContact r = lower(right), l = lower(left);
+  const double scale = std::hypot(r.force_track[0], r.force_track[1], r.force_track[2]);
+  EXPECT_NEAR(l.geometry.contact_angle, r.geometry.contact_angle, 1e-6 * r.geometry.contact_angle);
+  EXPECT_NEAR(l.geometry.wheel_s, r.geometry.wheel_s, 1e-6 * std::abs(r.geometry.wheel_s));
+  EXPECT_NEAR(l.normal_force, r.normal_force, 1e-6 * r.normal_force);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(l.force_track[i], r.force_track[i], 1e-6 * scale) << i;
+}
