@@ -112,12 +112,8 @@ contact::Grid curved_grid(const WheelRailPair& pair, const ContactGeometry& c, c
   const auto [lo, hi] = small_gap_range(pair, c, arc, options.scale * hz.b,
                                         options.gap_factor * hz.approach,
                                         std::min(hz.a, hz.b) / 20.0);
-  g.ny = static_cast<int>(std::ceil((hi - lo) / g.dy));
-  if (g.nx * g.ny > options.max_elements) {
-    g.ny = std::max(4, options.max_elements / g.nx);
-    g.dy = (hi - lo) / g.ny;
-  }
-  g.y_min = 0.5 * (lo + hi) - 0.5 * g.ny * g.dy;
+  cover_rows(g, lo, hi, std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across)),
+             options.max_elements);
   return g;
 }
 

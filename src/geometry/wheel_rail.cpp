@@ -346,15 +346,20 @@ contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, d
   g.nx = options.nx;
   g.dx = 2.0 * ex / g.nx;
   g.x_min = -ex;
-  g.dy = std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across));
+  cover_rows(g, y_lo, y_hi, std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across)),
+             options.max_elements);
+  return g;
+}
+
+void cover_rows(contact::Grid& g, double y_lo, double y_hi, double dy, int max_elements) {
+  g.dy = dy;
   g.ny = static_cast<int>(std::ceil((y_hi - y_lo) / g.dy));
-  if (g.nx * g.ny > options.max_elements) {
-    g.ny = std::max(4, options.max_elements / g.nx);
+  if (g.nx * g.ny > max_elements) {
+    g.ny = std::max(4, max_elements / g.nx);
     g.dy = (y_hi - y_lo) / g.ny;
   }
   // Centre the rows on the y-range.
   g.y_min = 0.5 * (y_lo + y_hi) - 0.5 * g.ny * g.dy;
-  return g;
 }
 
 contact::ContactPatch solve_wheel_rail_patch(const WheelRailPair& pair, const ContactGeometry& c,

@@ -210,6 +210,10 @@ contact::HertzContact hertz_estimate(const ContactGeometry& c, double normal_for
 contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, double normal_force,
                           const contact::Material& material, const GridOptions& options = {});
 
+/// The rows of `g` over [y_lo, y_hi] with the element width dy (wider when nx x ny would exceed
+/// max_elements), centred on the range.
+void cover_rows(contact::Grid& g, double y_lo, double y_hi, double dy, int max_elements);
+
 /// choose_grid + undeformed_distance + contact::solve_patch; when the contact area reaches the
 /// border of the grid, the grid is enlarged (scale x 1.5, up to 3 times).
 contact::ContactPatch solve_wheel_rail_patch(const WheelRailPair& pair, const ContactGeometry& c,
