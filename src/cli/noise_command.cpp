@@ -18,13 +18,19 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
   if (!curve.state) return;
   const noise::CurveContactState& st = *curve.state;
   std::printf("  contact (%s): u = %.2f mm, psi = %.2f mrad; on the wheel at s = %.1f mm, on the rail at %.1f mm, "
-              "r = %.4f m; Q = %.1f kN + dQ %.1f kN, tread %.1f kN (N = %.1f kN); %s",
+              "r = %.4f m; Q = %.1f kN + dQ %.1f kN, patch %.1f kN (N = %.1f kN); %s",
               st.estimated ? "bogie estimate" : "multibody", 1e3 * st.lateral, 1e3 * st.yaw, 1e3 * st.contact.wheel_s,
               1e3 * st.contact.rail_y, st.contact.rolling_radius, 1e-3 * st.wheel_load, 1e-3 * st.load_transfer,
               1e-3 * st.tread_load, 1e-3 * st.normal_force, st.two_point ? "two-point: flange " : "one-point\n");
   if (st.two_point)
-    std::printf("%.1f kN vertical (N_f %.1f kN at %.3f rad, not coupled in the loop)\n", 1e-3 * st.flange_vertical_load,
-                1e-3 * st.flange_normal_force, st.flange_angle);
+    std::printf("%.1f kN vertical in the estimate (N_f %.1f kN at %.3f rad; not added: the patch carries the wheel "
+                "load)\n",
+                1e-3 * st.flange_vertical_load, 1e-3 * st.flange_normal_force, st.flange_angle);
+  if (st.loaded)
+    std::printf("  wheel lowered under %.1f kN on the curved surface: force on the wheel (%.1f, %.1f, %.1f) kN "
+                "(longitudinal, lateral towards the outer rail, up), contact angles %.3f..%.3f rad\n",
+                1e-3 * st.loaded->vertical_load, 1e-3 * st.loaded->force_track[0], 1e-3 * st.loaded->force_track[1],
+                1e-3 * st.loaded->force_track[2], st.loaded->angle_min, st.loaded->angle_max);
 }
 
 // The 1/3-octave band levels, one line per band (left out with -q).

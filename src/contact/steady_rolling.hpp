@@ -31,6 +31,10 @@ struct SteadyRollingInput {
   double spin_offset = 0.0;  ///< spin term at x + spin_offset dx (0: paper Eq. 21; 1/6: CONTACT)
   /// Falling friction mu(|s|) = mu [(1 - A) e^{-B |s|} + A] (friction_law.hpp; default constant).
   FallingFriction falling;
+  /// Per-element creepages (-), grid layout: when not empty they replace the rigid slip of the
+  /// mean creepages, w = V (local_creepage_x, local_creepage_y) (a contact on a curved reference
+  /// surface, whose creepages vary across the patch: geometry/curved_contact.hpp).
+  GridField local_creepage_x, local_creepage_y;
 };
 
 /// Steady rolling for the pressure pn on the grid of `A`. `start` (optional) warm-starts from a

@@ -88,16 +88,7 @@ struct ContactFrameCurve {
   }
 };
 
-// Everything about one lateral strip y_c of the contact grid.
-struct Strip {
-  bool found = false;
-  double gap = far_distance;  // g(y_c)
-  double radius = 0.0;        // wheel radius r at the wheel point of the strip
-  double lead = 0.0;          // x of the wheel point relative to the contact point
-  double k = 1.0;             // projection factor of the wheel's longitudinal rise
-};
-
-Strip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
+GapStrip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
   const double c = std::cos(cg.contact_angle), s = std::sin(cg.contact_angle);
   const WheelsetPose& pose = cg.local_pose;
   auto rail_point = [&](double y) { return std::make_pair(y, pair.rail_z(y)); };
@@ -110,7 +101,7 @@ Strip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
   ContactFrameCurve<decltype(rail_point)> rail{rail_point, cg.y, ry_lo, ry_hi, cg.y, cg.z, c, s};
   ContactFrameCurve<decltype(wheel_point)> wheel{
       wheel_point, cg.wheel_s, pair.wheel().y_min(), pair.wheel().y_max(), cg.y, cg.z, c, s};
-  Strip st;
+  GapStrip st;
   const auto pr = rail.at(t);
   const auto pw = wheel.at(t);
   if (!pr || !pw) return st;
@@ -301,6 +292,10 @@ ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& 
   return c;
 }
 
+GapStrip gap_strip(const WheelRailPair& pair, const ContactGeometry& c, double y_c) {
+  return strip_at(pair, c, y_c);
+}
+
 double lateral_gap(const WheelRailPair& pair, const ContactGeometry& c, double y_c) {
   return strip_at(pair, c, y_c).gap;
 }
@@ -309,7 +304,7 @@ contact::GridField undeformed_distance(const WheelRailPair& pair, const ContactG
                                        const contact::Grid& grid) {
   contact::GridField h(grid.size());
   for (int iy = 0; iy < grid.ny; ++iy) {
-    const Strip st = strip_at(pair, c, grid.y(iy));
+    const GapStrip st = strip_at(pair, c, grid.y(iy));
     for (int ix = 0; ix < grid.nx; ++ix) {
       double v = far_distance;
       if (st.found) {
@@ -351,15 +346,20 @@ contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, d
   g.nx = options.nx;
   g.dx = 2.0 * ex / g.nx;
   g.x_min = -ex;
-  g.dy = std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across));
+  cover_rows(g, y_lo, y_hi, std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across)),
+             options.max_elements);
+  return g;
+}
+
+void cover_rows(contact::Grid& g, double y_lo, double y_hi, double dy, int max_elements) {
+  g.dy = dy;
   g.ny = static_cast<int>(std::ceil((y_hi - y_lo) / g.dy));
-  if (g.nx * g.ny > options.max_elements) {
-    g.ny = std::max(4, options.max_elements / g.nx);
+  if (g.nx * g.ny > max_elements) {
+    g.ny = std::max(4, max_elements / g.nx);
     g.dy = (y_hi - y_lo) / g.ny;
   }
   // Centre the rows on the y-range.
   g.y_min = 0.5 * (y_lo + y_hi) - 0.5 * g.ny * g.dy;
-  return g;
 }
 
 contact::ContactPatch solve_wheel_rail_patch(const WheelRailPair& pair, const ContactGeometry& c,

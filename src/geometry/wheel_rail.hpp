@@ -162,6 +162,18 @@ ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& 
 double lateral_gap(const WheelRailPair& pair, const ContactGeometry& c, double y_c);
 constexpr double far_distance = 1e-2;
 
+/// Everything about one lateral strip y_c of the contact frame of `c`: the gap g(y_c) along the
+/// normal, the wheel radius r and the lead x_w (relative to c.x) of the wheel point of the strip,
+/// and the projection factor k of the wheel's longitudinal rise (undeformed_distance below).
+struct GapStrip {
+  bool found = false;
+  double gap = far_distance;
+  double radius = 0.0;
+  double lead = 0.0;
+  double k = 1.0;
+};
+GapStrip gap_strip(const WheelRailPair& pair, const ContactGeometry& c, double y_c);
+
 /// The undeformed distance on the grid (contact frame, x from the contact point's lead, y_c from
 /// the contact point), layout [iy][ix] (contact::GridField):
 ///   h(x, y) = g(y) + k(y) (x - x_w(y))^2 / (2 r(y)),
@@ -197,6 +209,10 @@ contact::HertzContact hertz_estimate(const ContactGeometry& c, double normal_for
 /// dx = 2 scale a / nx, dy = min(dx, 2b / min_elements_across).
 contact::Grid choose_grid(const WheelRailPair& pair, const ContactGeometry& c, double normal_force,
                           const contact::Material& material, const GridOptions& options = {});
+
+/// The rows of `g` over [y_lo, y_hi] with the element width dy (wider when nx x ny would exceed
+/// max_elements), centred on the range.
+void cover_rows(contact::Grid& g, double y_lo, double y_hi, double dy, int max_elements);
 
 /// choose_grid + undeformed_distance + contact::solve_patch; when the contact area reaches the
 /// border of the grid, the grid is enlarged (scale x 1.5, up to 3 times).

@@ -70,6 +70,13 @@ void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline
     w.write(g + "tread_load", st->tread_load, "N (vertical)");
     w.write(g + "wheelset_lateral", st->lateral, "m");
     w.write(g + "wheelset_yaw", st->yaw, "rad");
+    if (st->loaded) {
+      const auto& f = st->loaded->force_track;
+      w.write(g + "force_track", std::vector<double>{f[0], f[1], f[2]}, {3},
+              "N (on the wheel: longitudinal, lateral towards the outer rail, up)");
+      w.write(g + "angle_range", std::vector<double>{st->loaded->angle_min, st->loaded->angle_max},
+              {2}, "rad (contact angles over the loaded patch on the curved surface)");
+    }
   }
 }
 

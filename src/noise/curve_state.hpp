@@ -23,7 +23,11 @@
 //     wheel, contact frame of loop.hpp, whose y axis rises by sin(gamma)):
 //       Q_t = N cos(gamma) + F_y sin(gamma)   =>   N = (Q_t - F_y sin(gamma)) / cos(gamma) (K8)
 //     F_y from Kalker's f22 scaled to Q_t (K5) with the cubic saturation at mu Q_t (spin
-//     neglected, as in the estimate).
+//     neglected, as in the estimate) gave F_y in the estimate; the state itself lowers the wheel
+//     vertically under its whole load Q_o (geometry/loaded_contact.hpp, curved_contact.hpp, as
+//     CONTACT module 1 with a prescribed vertical force and its curved-surface option): N and F_y
+//     from the steady rolling solution of the patch, (K8) = (V1). A patch that wraps onto the
+//     flank carries the flank's share: the estimate's flange share is reported, not added.
 // The flange contact is not a second coupling point of the loop (a later step): its load is
 // reported, the loop runs on the tread contact.
 #pragma once
@@ -35,6 +39,7 @@
 
 #include "contact/material.hpp"
 #include "contact/patch.hpp"
+#include "geometry/loaded_contact.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "noise/curving.hpp"
 #include "noise/loop.hpp"
@@ -52,6 +57,10 @@ struct CurveStateInput {
   double cg_height = 1.5;        ///< h_cg (m) above the rails, (K4); 0: no load transfer
   double wheel_load = 0.0;       ///< Q (N): static vertical load per wheel
   double friction = 0.3;         ///< mu, also at the flange
+  double spin_offset = 0.0;      ///< of the steady rolling solution (grid.spin_offset)
+  /// Elements in x (at most) of the grid on which the wheel is lowered under its load (the
+  /// resultant changes by < 0.5 % from 16 to 24 elements in flange-root contact).
+  int lowering_nx = 24;
   // Multibody input: the wheelset's position (and optionally the creepages) given.
   bool multibody = false;
   double lateral = 0.0;                     ///< u (m)
@@ -75,9 +84,11 @@ struct CurveContactState {
   double f11 = 0.0, f22 = 0.0;        ///< Kalker's coefficients at the contact for the load Q (N)
   double wheel_load = 0.0;            ///< Q (N)
   double load_transfer = 0.0;         ///< dQ (N)
-  double tread_load = 0.0;            ///< Q_t (N), vertical
+  double tread_load = 0.0;            ///< Q_o (N): the vertical load the patch carries
   double lateral_creep_force = 0.0;   ///< F_y (N) on the wheel, contact frame
-  double normal_force = 0.0;          ///< N (N) of the tread contact, (K8)
+  double normal_force = 0.0;          ///< N (N) of the tread contact, (K8) = (V1)
+  /// The tread contact lowered vertically under Q_t: patch, steady state, forces (N, F_y above).
+  std::shared_ptr<const geometry::LoadedContact> loaded;
   bool two_point = false;             ///< the leading axle at its outer flange
   double flange_angle = 0.0;          ///< delta_f (rad)
   double flange_lateral_force = 0.0;  ///< |Y| (N)

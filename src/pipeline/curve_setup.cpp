@@ -22,6 +22,7 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
   in.cg_height = nc.cg_height;
   in.wheel_load = c.normal_force;
   in.friction = c.mu;
+  in.spin_offset = c.spin_offset;
   in.multibody = nc.multibody;
   if (nc.multibody) {
     in.lateral = nc.wheelset_lateral;

@@ -1,0 +1,273 @@
+#include "geometry/curved_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "contact/halfspace_operator.hpp"
+#include "core/errors.hpp"
+
+namespace rollnoise::geometry {
+namespace {
+
+// The rail profile around the contact point parametrised by its arc length s (track frame of
+// this side): s -> track y by linear interpolation of a table with 0.01 mm steps.
+class RailArc {
+ public:
+  RailArc(const WheelRailPair& pair, double y0) {
+    const double step = 1e-5, reach = 0.03;
+    const double lo = std::max(y0 - reach, pair.rail().y_min() + pair.rail_offset());
+    const double hi = std::min(y0 + reach, pair.rail().y_max() + pair.rail_offset());
+    for (double y = y0; y >= lo; y -= step) y_.insert(y_.begin(), y);
+    for (double y = y0 + step; y <= hi; y += step) y_.push_back(y);
+    s_.assign(y_.size(), 0.0);
+    const auto i0 = std::lower_bound(y_.begin(), y_.end(), y0 - 0.5 * step) - y_.begin();
+    for (std::size_t i = i0 + 1; i < y_.size(); ++i)
+      s_[i] = s_[i - 1] + std::hypot(y_[i] - y_[i - 1], pair.rail_z(y_[i]) - pair.rail_z(y_[i - 1]));
+    for (auto i = i0; i > 0; --i)
+      s_[i - 1] = s_[i] - std::hypot(y_[i] - y_[i - 1], pair.rail_z(y_[i]) - pair.rail_z(y_[i - 1]));
+  }
+  bool contains(double s) const { return s >= s_.front() && s <= s_.back(); }
+  double y(double s) const {
+    const auto j = std::clamp<std::ptrdiff_t>(
+        std::upper_bound(s_.begin(), s_.end(), s) - s_.begin(), 1, s_.size() - 1);
+    const double t = (s - s_[j - 1]) / (s_[j] - s_[j - 1]);
+    return y_[j - 1] + t * (y_[j] - y_[j - 1]);
+  }
+
+ private:
+  std::vector<double> y_, s_;
+};
+
+// One grid row of the curved surface.
+struct Row {
+  bool found = false;
+  double y = 0.0, angle = 0.0;  // rail point (track y) and contact angle δ(s)
+  GapStrip strip;               // g(s), r(s), x_w(s), k(s) in the frame of the row
+};
+
+// The row at arc length s: the rail point, its normal, and the wheel's cross-section met along
+// the normal (root of the wheel point's offset along the row's tangent, then gap_strip at 0).
+Row row_at(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc, double s) {
+  Row row;
+  if (!arc.contains(s)) return row;
+  row.y = arc.y(s);
+  row.angle = std::atan(-pair.rail_slope(row.y));
+  const double cd = std::cos(row.angle), sd = std::sin(row.angle), rz = pair.rail_z(row.y);
+  auto offset = [&](double p) {
+    const WheelPoint w = pair.wheel_point(p, c.local_pose);
+    return (w.y - row.y) * cd - (w.z - rz) * sd;
+  };
+  const double p_lo = pair.wheel().y_min(), p_hi = pair.wheel().y_max();
+  double pa = std::clamp(c.wheel_s + (row.y - c.y), p_lo, p_hi), fa = offset(pa);
+  const double dir = fa > 0.0 ? -1.0 : 1.0, step = 1e-4;
+  double pb = pa, fb = fa;
+  for (int k = 0; k < 300 && (fb > 0.0) == (fa > 0.0); ++k) {
+    pa = pb, fa = fb;
+    pb = std::clamp(pa + dir * step, p_lo, p_hi);
+    if (pb == pa) return row;
+    fb = offset(pb);
+  }
+  if ((fb > 0.0) == (fa > 0.0)) return row;
+  for (int it = 0; it < 60; ++it) {
+    const double pm = 0.5 * (pa + pb), fm = offset(pm);
+    if ((fm > 0.0) == (fa > 0.0))
+      pa = pm, fa = fm;
+    else
+      pb = pm;
+  }
+  ContactGeometry cs = c;
+  cs.y = row.y;
+  cs.z = rz;
+  cs.contact_angle = row.angle;
+  cs.wheel_s = 0.5 * (pa + pb);
+  row.strip = gap_strip(pair, cs, 0.0);
+  row.found = row.strip.found;
+  return row;
+}
+
+// The rows' range of arc length where the gap stays below `limit` (m), as choose_grid.
+std::pair<double, double> small_gap_range(const WheelRailPair& pair, const ContactGeometry& c,
+                                          const RailArc& arc, double half, double limit,
+                                          double step) {
+  double lo = -half, hi = half;
+  for (double dir : {-1.0, 1.0})
+    for (double t = step; t < 0.03; t += step) {
+      const Row r = row_at(pair, c, arc, dir * t);
+      if (!r.found || !(r.strip.gap <= limit)) break;
+      if (dir < 0)
+        lo = std::min(lo, -t - step);
+      else
+        hi = std::max(hi, t + step);
+    }
+  return {lo, hi};
+}
+
+// The (x, s) grid: x as choose_grid, s over the small-gap range of the curved surface.
+contact::Grid curved_grid(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc,
+                          double normal_force, const VerticalLoadInput& in,
+                          const GridOptions& options) {
+  contact::Grid g = choose_grid(pair, c, normal_force, in.material, options);
+  const contact::HertzContact hz = hertz_estimate(c, normal_force, in.material, options);
+  const auto [lo, hi] = small_gap_range(pair, c, arc, options.scale * hz.b,
+                                        options.gap_factor * hz.approach,
+                                        std::min(hz.a, hz.b) / 20.0);
+  cover_rows(g, lo, hi, std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across)),
+             options.max_elements);
+  return g;
+}
+
+// The per-element creepages (C4).
+void local_creepages(const ContactGeometry& c, const std::vector<Row>& rows,
+                     const contact::Grid& g, const VerticalLoadInput& in,
+                     contact::SteadyRollingInput& r) {
+  const double w_v = 1.0 / c.rolling_radius, inv_R = in.inverse_radius;
+  const double sy = std::sin(in.yaw);
+  auto lateral = [&](double radius, double angle, double x) {
+    const double xa = x + c.x;
+    const double vy = -w_v * radius * sy - xa * inv_R, vz = w_v * xa;
+    return vy * std::cos(angle) - vz * std::sin(angle);
+  };
+  const double s0 = lateral(c.rolling_radius, c.contact_angle, 0.0);
+  r.local_creepage_x.assign(g.size(), r.creepage.xi_x);
+  r.local_creepage_y.assign(g.size(), r.creepage.xi_y);
+  for (int iy = 0; iy < g.ny; ++iy) {
+    const Row& row = rows[iy];
+    if (!row.found) continue;
+    const double xi_x = r.creepage.xi_x - w_v * (row.strip.radius - c.rolling_radius) +
+                        (row.y - c.y) * inv_R;
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const int k = g.index(ix, iy);
+      r.local_creepage_x[k] = xi_x;
+      r.local_creepage_y[k] =
+          r.creepage.xi_y +
+          lateral(row.strip.radius, row.angle, g.x(ix) + r.spin_offset * g.dx) - s0;
+    }
+  }
+}
+
+struct CurvedPatch {
+  contact::Grid grid;
+  std::vector<Row> rows;
+  contact::GridField h;
+};
+
+CurvedPatch curved_patch(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc,
+                         double normal_force, const VerticalLoadInput& in,
+                         const GridOptions& options) {
+  CurvedPatch p;
+  p.grid = curved_grid(pair, c, arc, normal_force, in, options);
+  p.h.assign(p.grid.size(), far_distance);
+  for (int iy = 0; iy < p.grid.ny; ++iy) {
+    p.rows.push_back(row_at(pair, c, arc, p.grid.y(iy)));
+    const Row& r = p.rows.back();
+    if (!r.found) continue;
+    for (int ix = 0; ix < p.grid.nx; ++ix) {
+      const double dx = p.grid.x(ix) - r.strip.lead;
+      p.h[p.grid.index(ix, iy)] = r.strip.gap + r.strip.k * dx * dx / (2.0 * r.strip.radius);  // (C1)
+    }
+  }
+  return p;
+}
+
+}  // namespace
+
+LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGeometry& c,
+                                      const VerticalLoadInput& in) {
+  const RailArc arc(pair, c.y);
+  const double Q = in.vertical_load;
+  double N = Q / std::cos(c.contact_angle);
+  // The grid, enlarged while the area reaches its border (as solve_wheel_rail_patch).
+  GridOptions options = in.grid;
+  for (int attempt = 0;; ++attempt) {
+    const CurvedPatch cp = curved_patch(pair, c, arc, N, in, options);
+    const contact::Grid& g = cp.grid;
+    std::vector<double> cosd(g.ny), sind(g.ny);
+    for (int iy = 0; iy < g.ny; ++iy) {
+      const double d = cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle;
+      cosd[iy] = std::cos(d), sind[iy] = std::sin(d);
+    }
+    auto patch = std::make_shared<contact::ContactPatch>(g, in.material);
+    const contact::HalfSpaceOperator op(patch->influence, contact::Problem::Normal, 0,
+                                        contact::Backend::Auto);
+    contact::SteadyRollingInput rolling = in.rolling;
+    local_creepages(c, cp.rows, g, in, rolling);
+    LoadedContact out;
+    double dz = 0.0, c0 = std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
+    contact::GridField h = cp.h;
+    for (out.iterations = 1;; ++out.iterations) {
+      for (int iy = 0; iy < g.ny; ++iy)
+        for (int ix = 0; ix < g.nx; ++ix)
+          h[g.index(ix, iy)] = cp.h[g.index(ix, iy)] - dz * (cosd[iy] - c0);
+      const contact::GridField* start = out.iterations > 1 ? &patch->normal.pn : nullptr;
+      patch->normal = contact::solve_normal(g, op, h, N, {}, start);
+      const contact::TangentialSolution* tstart = out.iterations > 1 ? &out.tangential : nullptr;
+      out.tangential = contact::solve_steady_rolling(patch->influence, patch->normal.pn, rolling,
+                                                     {}, tstart);
+      // (C3) and the forces on the wheel, each row with its own orientation.
+      double up = 0.0, lat = 0.0, lon = 0.0, pc = 0.0, psum = 0.0;
+      for (int iy = 0; iy < g.ny; ++iy)
+        for (int ix = 0; ix < g.nx; ++ix) {
+          const int k = g.index(ix, iy);
+          const double pn = patch->normal.pn[k], py = out.tangential.py[k];
+          up += pn * cosd[iy] + py * sind[iy];
+          lat += py * cosd[iy] - pn * sind[iy];
+          lon += out.tangential.px[k];
+          pc += pn * cosd[iy];
+          psum += pn;
+        }
+      const double a = g.element_area();
+      out.force_track = {lon * a, lat * a, up * a};
+      const double dz_next = patch->normal.approach / c0, mean_cos = pc / psum;
+      const bool settled = std::abs(up * a - Q) <= std::max(in.tolerance, 1e-5) * Q &&
+                           std::abs(dz_next - dz) <= 1e-4 * std::abs(dz_next) + 1e-13 &&
+                           std::abs(mean_cos - c0) <= 1e-5;
+      if (settled) break;
+      if (out.iterations >= in.max_iterations) {
+        std::ostringstream m;
+        m << "wheel lowered under its vertical load " << Q << " N on the curved surface: no"
+          << " fixed point in " << in.max_iterations << " iterations (vertical force "
+          << up * a << " N, lowering change " << dz_next - dz << " m, mean cos change "
+          << mean_cos - c0 << ")";
+        throw NumericalError(m.str());
+      }
+      // The vertical approach dz cos δ(s) at the fixed point; c0 the pressure-weighted mean. The
+      // tolerances above leave an error in h~ of < 1e-4 dz |cos δ - c0|, < 1e-4 of the approach.
+      dz = dz_next;
+      c0 = mean_cos;
+      // N from (C3): secant steps on up(N) - Q after a first step with d(up)/dN = mean cos d.
+      const double r = up * a - Q;
+      double next = N - r / mean_cos;
+      if (out.iterations > 1 && r != r_prev) next = N - r * (N - N_prev) / (r - r_prev);
+      if (!(next > 0.5 * N && next < 2.0 * N)) next = N - r / mean_cos;  // a wild secant step
+      N_prev = N, r_prev = r;
+      N = next;
+    }
+    if (attempt < 3 && contact::reaches_border(g, patch->normal.pn)) {
+      options.scale *= 1.5;
+      options.gap_factor *= 1.5;
+      continue;
+    }
+    contact::check_inside_potential_area(g, patch->normal.pn, " on the curved surface");
+    patch->undeformed_distance = h;
+    out.geometry = c;
+    out.vertical_load = Q;
+    out.normal_force = N;
+    out.creep_force = integrate_creep_force(g, out.tangential);
+    out.vertical_approach = dz;
+    out.curved = true;
+    out.angle_min = 10.0, out.angle_max = -10.0;
+    for (int iy = 0; iy < g.ny; ++iy) {
+      out.row_angle.push_back(cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle);
+      for (int ix = 0; ix < g.nx; ++ix)
+        if (patch->normal.pn[g.index(ix, iy)] > 0.0) {
+          out.angle_min = std::min(out.angle_min, out.row_angle.back());
+          out.angle_max = std::max(out.angle_max, out.row_angle.back());
+        }
+    }
+    out.patch = std::move(patch);
+    return out;
+  }
+}
+
+}  // namespace rollnoise::geometry
