@@ -54,7 +54,7 @@ class HalfSpaceOperator {
   /// kernel is not positive definite at every bin (measured on 68 x 50: 17 of 6800 bins slightly
   /// negative), while the smallest true eigenvalues are of the order of the self-compliance.
   /// Restricted to part of the grid it approximates the inverse of A restricted there (the
-  /// preconditioner of nss/linear_model.cpp). With `diagonal` > 0 the symbol inverted is that of
+  /// preconditioner of nss/reduced_form.cpp). With `diagonal` > 0 the symbol inverted is that of
   /// A + diagonal I (the eigenvalues floored first, then shifted).
   static HalfSpaceOperator inverse_circulant(const InfluenceTable& table, double floor, double diagonal = 0.0);
 

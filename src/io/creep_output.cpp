@@ -73,7 +73,7 @@ void write_extrapolation(Hdf5Writer& w, const std::vector<double>& freq, const p
 
 std::string creep_method(const pipeline::CreepResult& c, bool direct) {
   if (direct) return "complex LU per frequency (--direct)";
-  // the route the fast sweep took (nss/linear_model.cpp, "Numerics of the fast sweep")
+  // the route the fast sweep took (nss/markov_sweep.cpp)
   switch (c.state.model->sweep_info().method) {
     case nss::SweepInfo::Method::krylov:
       return "block Krylov reduced model (Markov parameters, Horner per frequency)";

@@ -15,8 +15,8 @@
 //    rotation of loop.hpp applied to the shape);
 //  * rail: dynamics::RailModel::receptance_laplace (the closed forms at complex frequency; the
 //    hysteretic loss factors k(1 + i eta) are continued as constants);
-//  * contact: contact_receptance_laplace with f(s), g(s) of the linear NSS model at complex s
-//    (MarkovContact below: its Markov series, or an exact evaluator with the guard of the series).
+//  * contact: contact_receptance_laplace with f(s), g(s) of the contact's transfer at complex s
+//    (ContactTransfer, noise/contact_transfer.hpp).
 //
 // Route 2 (mode_roots). With R(s) = rest (everything but the flexible wheel modes), Psi the
 // 4 x N mode shapes and Sylvester's determinant identity,
@@ -58,53 +58,10 @@
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "noise/contact_receptance.hpp"
+#include "noise/contact_transfer.hpp"
 #include "noise/loop.hpp"
 
 namespace rollnoise::noise {
-
-/// The linear contact at complex s from the Markov parameters of the discrete-time NSS model
-/// (nss::LinearContactModel::markov_parameters(), load_markov_parameters()):
-///   f(s) = -sum_j h_j z^j,   g(s) = sum_j gm_j z^j,   z = exp(-s dt)
-/// (the model's own sums with z = e^{-i omega dt} continued; Horner). |z| = exp(-sigma dt): for a
-/// growing s (sigma > 0) the series converges faster than on the unit circle, for a decaying one
-/// it converges while |z| rho < 1, rho the decay ratio per step of h_j (|h_j| ~ rho^j), i.e. for
-/// sigma > ln(rho)/dt; min_sigma() = 0.9 ln(rho)/dt. Evaluations beyond that, or where the truncated tail
-/// |h_J| |z|^J exceeds 1e-6 of the largest term, throw NumericalError (the guard).
-///
-/// With an exact evaluator (LaplaceEvaluator: pipeline/squeal passes the NSS model's
-/// creep_coefficients_laplace and normal_load_coefficients_laplace, which carry the creepage
-/// sampling's factor and fall back to the model's Hessenberg form where the series does not
-/// converge) creep() and load() return the evaluator's values; the Markov parameters, where the
-/// model has them (constant friction), still set min_sigma() and the guard. Without them (falling
-/// friction: the model has no Markov parameters) there is no guard (min_sigma() = -1e300): the
-/// evaluator is exact at every s but the contact's own poles.
-struct LaplaceEvaluator {
-  std::function<Eigen::Matrix3cd(cdouble)> creep;
-  std::function<Eigen::Vector3cd(cdouble)> load;  ///< empty: g = 0
-};
-
-class MarkovContact {
- public:
-  /// `load` may be empty (no normal-load input: g = 0).
-  MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eigen::Vector3d> load, double time_step);
-  /// With an exact evaluator (see above); `creep` and `load` may be empty (no guard).
-  MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eigen::Vector3d> load, double time_step,
-                LaplaceEvaluator exact);
-  Eigen::Matrix3cd creep(cdouble s) const;
-  Eigen::Vector3cd load(cdouble s) const;
-  /// The lowest growth rate (most negative sigma, 1/s) at which the series still converge.
-  double min_sigma() const { return min_sigma_; }
-  double time_step() const { return dt_; }
-
- private:
-  /// min_sigma_ from the decay of the series (none without one); the time step checked.
-  void set_guard();
-  void check(cdouble z, double tail_head, double tail_last) const;
-  std::vector<Eigen::Matrix3d> h_;
-  std::vector<Eigen::Vector3d> gm_;
-  double dt_ = 0.0, min_sigma_ = 0.0;
-  LaplaceEvaluator exact_;
-};
 
 /// One wheel mode in the contact frame.
 struct LoopMode {

@@ -26,7 +26,7 @@
 // spin offset belongs to the input only. Creep coefficients: F~ = -f xi~ (Eqs. 28-30), rows Fx, Fy,
 // Mz, columns xi_x, xi_y, phi.
 //
-// The reduced, symmetric form used by the fast paths (linear_model.cpp explains it in full). Only
+// The reduced, symmetric form used by the fast paths (markov_sweep.cpp and reduced_form.cpp explain it in full). Only
 // P~ = B Q propagates, and P~_e lies along t_e in a slip element, so the traction amplitudes
 // pi (2 per adhesion element, pi_e = -t_e' q_e per slip element; P~ = Pi pi) are the state. The
 // t_e-component of the slip equations and both adhesion equations give
@@ -68,7 +68,7 @@
 // the recursion with the creepage of step k taken at t_k (CONTACT's convention). With midstep the
 // creepage is taken at t_k - dt/2: for xi~(t) = xi^ e^{i w t} the recursion sees xi~_k = xi^
 // e^{-i w dt/2} e^{i w t_k}, so f_midstep(w) = f_contact(w) e^{-i w dt/2} exactly, on every f route
-// (the factor is applied in one place, linear_model.cpp). With average the creepage of step k is its
+// (the factor is applied in one place, transfer.cpp). With average the creepage of step k is its
 // mean over [t_{k-1}, t_k], xi~_k = xi^ e^{-i w dt/2} sinc(w dt/2) e^{i w t_k}, so f_average(w) =
 // f_contact(w) e^{-i w dt/2} sinc(w dt/2). g is the same in every sampling (the load is taken at t_k
 // with the traction it bounds). time_response() takes the creepages of the steps as the sampling
@@ -87,6 +87,7 @@
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
 #include "contact/tangential_solver.hpp"
+#include "nss/step_solver.hpp"
 
 namespace rollnoise::contact {
 class ElementOperator;
@@ -98,12 +99,12 @@ using CreepMatrix = Eigen::Matrix3cd;
 /// Normal-load coefficients g = (g_x, g_y, g_z) (-, -, m): F~ = -f xi~ + g N~ (docs/nss_normal_load.md).
 using LoadVector = Eigen::Vector3cd;
 
-/// How K0 is solved (solver.linear_model; linear_model.cpp, "Matrix-free path"): a dense Cholesky
+/// How K0 is solved (solver.linear_model; reduced_form.cpp, "Matrix-free path"): a dense Cholesky
 /// factor, or K0 applied by FFT and solved by preconditioned CG; automatic: dense up to
 /// kDenseReducedUnknowns reduced unknowns.
 enum class LinearSolver { automatic, dense, matrix_free };
 
-/// The largest r for which `automatic` takes the dense path (measured, linear_model.cpp).
+/// The largest r for which `automatic` takes the dense path (measured, docs/accuracy.md).
 constexpr int kDenseReducedUnknowns = 11000;
 /// The most threads the linear model uses (LinearModelInput::threads): one per column of a block.
 constexpr int kMaxThreads = 4;
@@ -132,7 +133,7 @@ struct LinearModelInput {
   contact::CreepageSampling sampling = contact::CreepageSampling::average;
   /// Threads of the fast sweep, the recursion and time_response (solver.threads): the columns of
   /// a block (K1 and K0 products, PCG solves) are shared out among them; 0: one per hardware
-  /// thread, at most 4 (the block size). The results do not depend on it (linear_model.cpp).
+  /// thread, at most 4 (the block size). The results do not depend on it (step_solver.hpp).
   int threads = 0;
 };
 
@@ -142,7 +143,7 @@ bool uses_matrix_free(LinearSolver solver, int reduced_unknowns);
 /// Estimated peak memory (bytes) of the linear model and its fast sweep on the path taken, for
 /// r reduced unknowns, `grid_elements` elements of the potential contact area and Lc steps per
 /// contact length: dense, the factor (8 r^2) and the Krylov basis with K0 times it; matrix-free,
-/// the basis alone (or with K0 times it where that fits: linear_model.cpp) and the FFT work
+/// the basis alone (or with K0 times it where that fits: markov_sweep.cpp) and the FFT work
 /// arrays. An upper bound of the measured peak (bench: `rollnoise bench --sweep-cost`).
 double linear_model_bytes(LinearSolver solver, int reduced_unknowns, int grid_elements, int steps_per_contact_length);
 
@@ -208,7 +209,7 @@ class LinearContactModel {
   /// frequency. The h_j come from a block Krylov reduced model built with 4/3 to 3 contact lengths
   /// of block steps (3 vectors each; exact for j below the number of steps, the rest extrapolated
   /// by the reduced dynamics; f checked a posteriori to 1e-10 relative over [0, Nyquist]: see
-  /// linear_model.cpp); if that check fails, from the exact recursion
+  /// markov_sweep.cpp); if that check fails, from the exact recursion
   /// (creep_coefficients_markov); if the h_j have not decayed within `max_contact_lengths`, from
   /// creep_coefficients_hessenberg(). The model is built on the first call and kept.
   /// Throws InputError above the Nyquist limit.
@@ -253,13 +254,15 @@ class LinearContactModel {
   /// then an O(n^2) Hessenberg solve per frequency. Exact (no truncation), slow (O(n^3) set-up).
   std::vector<CreepMatrix> creep_coefficients_hessenberg(const std::vector<double>& frequencies) const;
 
-  /// The Markov parameters h_j behind creep_coefficients() (empty until it is first called): exact
-  /// ones from the recursion, or those of the Krylov reduced model (see sweep_info()). They are
-  /// those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with midstep sampling,
-  /// -e^{-i w dt/2} sinc(w dt/2) sum_j h_j z^j with average (contact::step_sampling_factor).
-  const std::vector<Eigen::Matrix3d>& markov_parameters() const { return markov_; }
-  /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3) (empty until the sweep ran).
-  const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return load_markov_; }
+  /// The Markov parameters h_j behind creep_coefficients() (built on the first call of either,
+  /// once; empty when the sweep uses the Hessenberg form: falling friction, or both Markov routes
+  /// failed): exact ones from the recursion, or those of the Krylov reduced model (see
+  /// sweep_info()). They are those of the creepage at t_k: f = -e^{-i w dt/2} sum_j h_j z^j with
+  /// midstep sampling, -e^{-i w dt/2} sinc(w dt/2) sum_j h_j z^j with average
+  /// (contact::step_sampling_factor).
+  const std::vector<Eigen::Matrix3d>& markov_parameters() const { return series().creep; }
+  /// The Markov parameters of g, g(z) = sum_j gm_j z^j (G3), built with markov_parameters().
+  const std::vector<Eigen::Vector3d>& load_markov_parameters() const { return series().load; }
   /// dx dy U' bN of (G2): the instantaneous part of g (the frozen-slip-direction response, -, -, m).
   const Eigen::Vector3d& load_direct_term() const { return dN_; }
   /// Whether falling friction enters the model (some slip element has mu' != 0); then every sweep
@@ -267,8 +270,8 @@ class LinearContactModel {
   bool falling_friction() const { return falling_; }
   /// Whether there is a normal-load input at all (slip elements exist); without it g = 0.
   bool has_normal_load_input() const { return block_ == 4; }
-  /// How the last creep_coefficients() built its Markov parameters.
-  const SweepInfo& sweep_info() const { return info_; }
+  /// How the fast sweep built its Markov parameters (builds them, as markov_parameters()).
+  const SweepInfo& sweep_info() const { return series().info; }
 
   /// Force variations (Fx, Fy, Mz) at t_k = k dt for the creepage variations of step k, taken as
   /// sampling() defines them (CreepageHistory::step_variation(sampling(), k, dt), k = 0, 1, ...), by the discrete-time recursion
@@ -302,34 +305,74 @@ class LinearContactModel {
   Eigen::VectorXd step_matrix_slip_diagonal() const;
 
  private:
+  /// How the model solves: the reduced form with K0 factored densely or solved by PCG, or the
+  /// paper's form (falling friction: the reduced K0 would be indefinite, see above). Decided once,
+  /// in the constructor.
+  enum class Route { reduced_dense, reduced_matrix_free, paper_form };
+  struct Dense;           // the paper's formulation, assembled densely (paper_form.cpp)
+  struct HessenbergForm;  // M0^{-1} M1 = Q H Q' and the projected inputs and outputs (paper_form.cpp)
+  /// The parts built on first use, each exactly once (std::call_once: a model shared by threads
+  /// does not race): the step solver of the route, the paper form, its Hessenberg form and
+  /// spectral radius, and the Markov series of the fast sweep.
+  struct Built;
+  /// The Markov parameters of f and g with how they were obtained (transfer.cpp).
+  struct MarkovSeries {
+    std::vector<Eigen::Matrix3d> creep;
+    std::vector<Eigen::Vector3d> load;
+    SweepInfo info;
+  };
+
+  // ---- the frozen patch (linear_model.cpp; constructor steps) ----
+  /// Element data of the scaled formulation (t_e, c_e, kappa_e, the offsets, r); returns
+  /// mu(|s_bar|) per element.
+  std::vector<double> freeze_elements(const contact::ContactPatch& patch, const contact::TangentialSolution& mean,
+                                      const LinearModelInput& in);
+  /// The inputs W and outputs L per unit creepage, and their reduced forms.
+  void set_inputs_and_outputs(const contact::Grid& grid, const LinearModelInput& in);
+  /// The normal-load input (G1-G2): bN, A bN/dt, A0 bN/dt and their reduced forms (needs A0_op_).
+  void set_normal_load_input(const contact::ContactPatch& patch, const contact::TangentialSolution& mean,
+                             const std::vector<double>& mu_bar);
+  /// B_e of a slip element: -t t' (constant friction) - kappa s^ s^' (falling friction).
+  Eigen::Matrix2d slip_traction_matrix(int a) const;
+
+  // ---- the paper form (paper_form.cpp) ----
+  const Dense& dense() const;  // built once, on first use
+  std::unique_ptr<Dense> assemble_paper_form() const;
+  const HessenbergForm& hessenberg() const;  // built once, on first use (O(n^3))
+  std::unique_ptr<HessenbergForm> hessenberg_form() const;
+  /// f and/or g by the Hessenberg form (either pointer may be null).
+  void hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
+                        std::vector<LoadVector>* g) const;
+  /// The same at one complex z = e^{-s dt} (f without the sampling factor).
+  void hessenberg_at(std::complex<double> z, CreepMatrix* f, LoadVector* g) const;
   /// time_response in the paper form (falling friction).
   std::vector<Eigen::Vector3d> time_response_dense(const std::vector<Eigen::Vector3d>& xi,
                                                    const std::vector<double>& dN) const;
-  struct Dense;    // the paper's formulation, assembled densely on demand
-  struct Reduced;  // the symmetric reduced formulation (Cholesky of K0, FFT operator for K1)
-  const Dense& dense() const;
-  /// B_e of a slip element: -t t' (constant friction) - kappa s^ s^' (falling friction).
-  Eigen::Matrix2d slip_traction_matrix(int a) const;
-  const Reduced& reduced() const;          // on the path taken
-  const Reduced& reduced_factor() const;   // dense (Cholesky), built on demand
-  const Reduced& reduced_matrix_free() const;
-  /// The per-thread copies of red's FFT operators (threads_ - 1 of them).
-  void add_lanes(Reduced& red) const;
+
+  // ---- the step solvers of the reduced form (reduced_form.cpp) ----
+  /// The step solver of the route (built on first use); throws std::logic_error on the paper form.
+  const StepSolver& step() const;
+  /// K0 = D + Pi' A Pi / dt, its lower triangle, assembled densely.
+  Eigen::MatrixXd assemble_K0() const;
+  /// The Cholesky step with `threads` operator sets (throws std::logic_error with falling friction).
+  std::unique_ptr<DenseCholeskyStep> make_dense_step(int threads) const;
+  std::unique_ptr<PcgStep> make_pcg_step() const;
+  /// Builds the FFT operator sets of the step solvers, one per thread (the first shares A0_op_).
+  OperatorFactory operator_factory(bool matrix_free, double cbar) const;
   /// The FFT operators of the reduced form on the contact elements: the rolling step
   /// K1 = Pi' A0 Pi/dt, the compliance part of K0, Pi' A Pi/dt, and the matrix-free
-  /// preconditioner Pi' (C/dt + cbar I)^{-1} Pi (linear_model.cpp, "Matrix-free path").
+  /// preconditioner Pi' (C/dt + cbar I)^{-1} Pi (docs/contact_model.md, "Matrix-free path").
   enum class ReducedOperator { rolling_step, compliance, preconditioner };
   std::unique_ptr<contact::ElementOperator> reduced_operator(ReducedOperator which, double cbar = 0.0) const;
-  /// The diagonal shift cbar of the matrix-free preconditioner's symbol (linear_model.cpp).
+  /// The diagonal shift cbar of the matrix-free preconditioner's symbol.
   double preconditioner_shift() const;
   /// Pi' S Pi X: the tractions rolled on by one element (the start of the PCG solves).
   Eigen::MatrixXd rolled(const Eigen::MatrixXd& X) const;
-  void reduce() const;  // lazily builds the Hessenberg form for the sweeps
-  /// Markov parameters of f (h_j) and of g (gm_j, G3), as one Markov route produced them.
-  struct MarkovModel {
-    std::vector<Eigen::Matrix3d> creep;
-    std::vector<Eigen::Vector3d> load;
-  };
+  /// K0^{-1} B where B is the right-hand side of the step after `previous` (a traction history):
+  /// an iterative solver starts from `previous` rolled on by one element, a direct one ignores it.
+  Eigen::MatrixXd solve_step(const StepSolver& step, const Eigen::MatrixXd& B, const Eigen::MatrixXd& previous) const;
+
+  // ---- the Markov sweep (markov_sweep.cpp) ----
   /// The starting block K0^{-1} [-Pi' W, s y] of the Markov sequence (r x block_), with Z = K0 X,
   /// gm_0 = dN + L' x0 of (G3), and the scale s of y (to the creepage columns).
   struct StartBlock {
@@ -338,29 +381,28 @@ class LinearContactModel {
     double load_scale = 1.0;
   };
   StartBlock start_block() const;
-  /// The block Krylov reduced model (linear_model.cpp, steps 2-3); nothing if it fails its checks.
-  std::optional<MarkovModel> krylov_markov(int max_contact_lengths, SweepInfo& info) const;
+  /// The block Krylov reduced model (markov_sweep.cpp, steps 2-3); nothing if it fails its checks.
+  std::optional<MarkovSeries> krylov_markov(int max_contact_lengths, SweepInfo& info) const;
   /// The exact recursion; nothing if the h_j do not decay within max_contact_lengths.
-  std::optional<MarkovModel> exact_markov(int max_contact_lengths, SweepInfo& info) const;
-  /// Krylov, else exact, into markov_ and load_markov_; false: fall back to the Hessenberg form.
-  bool build_markov(int max_contact_lengths) const;
+  std::optional<MarkovSeries> exact_markov(int max_contact_lengths, SweepInfo& info) const;
   /// Split the Markov parameters of the block (3 creepage columns, 1 scaled load column) into f's
   /// and g's.
-  MarkovModel markov_model(const std::vector<Eigen::MatrixXd>& h, const StartBlock& start) const;
+  MarkovSeries markov_model(const std::vector<Eigen::MatrixXd>& h, const StartBlock& start) const;
+
+  // ---- the transfer function (transfer.cpp) ----
+  /// The Markov series of the fast sweep (built on first use): Krylov, else the exact recursion;
+  /// empty with info.method = hessenberg when both fail or on the paper form.
+  const MarkovSeries& series(int max_contact_lengths = 60) const;
   /// f of the creepage at t_k (CONTACT's sampling) -> f of sampling_, in place (one factor per
   /// frequency; the identity for contact).
   void apply_sampling(std::vector<CreepMatrix>& f, const std::vector<double>& frequencies) const;
   /// f = -sum_j h_j z^j at the frequencies (Horner), with the sampling's phase.
   std::vector<CreepMatrix> creep_from_markov(const std::vector<Eigen::Matrix3d>& h,
                                              const std::vector<double>& frequencies) const;
-  /// f and/or g by the Hessenberg form (either pointer may be null).
-  void hessenberg_sweep(const std::vector<double>& frequencies, std::vector<CreepMatrix>* f,
-                        std::vector<LoadVector>* g) const;
-  /// The same at one complex z = e^{-s dt} (f without the sampling factor).
-  void hessenberg_at(std::complex<double> z, CreepMatrix* f, LoadVector* g) const;
 
   double dt_ = 0.0, speed_ = 0.0, mu_ = 0.0;
   LinearSolver solver_ = LinearSolver::automatic;
+  Route route_ = Route::reduced_dense;
   contact::CreepageSampling sampling_ = contact::CreepageSampling::average;
   int steps_per_contact_length_ = 1;
   int threads_ = 1;  ///< LinearModelInput::threads resolved (>= 1)
@@ -378,23 +420,12 @@ class LinearContactModel {
   Eigen::MatrixXd L_;   ///< n x 3 outputs: dx dy B' U1, B' U2, B' Usp0
   Eigen::MatrixXd Wr_;  ///< r x 3 reduced inputs  -Pi' W
   Eigen::MatrixXd Lr_;  ///< r x 3 reduced outputs  dx dy Pi' U
-  mutable std::unique_ptr<Dense> dense_;
-  mutable std::unique_ptr<Reduced> reduced_;     ///< dense
-  mutable std::unique_ptr<Reduced> reduced_mf_;  ///< matrix-free
   // Normal-load input (G1-G3), zero when there is no slip element.
   int block_ = 3;            ///< Krylov block: 3 creepage inputs (+ 1 normal load)
   Eigen::VectorXd wN0_, wN1_;  ///< n: A bN/dt, A0 bN/dt (paper form, per N)
   Eigen::VectorXd rN0_, rN1_;  ///< r: -Pi' A bN/dt, +Pi' A0 bN/dt
   Eigen::Vector3d dN_ = Eigen::Vector3d::Zero();  ///< dx dy U' bN
-  mutable std::vector<Eigen::Matrix3d> markov_;
-  mutable std::vector<Eigen::Vector3d> load_markov_;
-  mutable bool markov_failed_ = false;  ///< the Markov routes failed: sweeps use the Hessenberg form
-  mutable SweepInfo info_;
-  // Hessenberg form of M0^{-1} M1 = Q H Q'
-  mutable bool hessenberg_ = false;
-  mutable Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> H_;
-  mutable Eigen::MatrixXd Rhat_, Lhat_;  ///< Q' M0^{-1} [W, wN0, wN1], Q' L
-  mutable double spectral_radius_ = -1.0;  ///< of M0^{-1} M1 (negative: not yet computed)
+  std::unique_ptr<Built> built_;
 };
 
 }  // namespace rollnoise::nss

@@ -41,7 +41,7 @@ int SquealResult::unstable_count() const {
 }
 
 noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const CurveSetup& curve,
-                               const ContactStage& stage, const noise::MarkovContact& contact, bool coupled) {
+                               const ContactStage& stage, const noise::ContactTransfer& contact, bool coupled) {
   noise::LaplaceLoop loop;
   loop.modes = noise::contact_frame_modes(*nc.wheel, curve.position);
   const Eigen::Matrix4d rigid = noise::rigid_flexibility(nc.wheel->wheelset(), curve.position);
@@ -73,31 +73,22 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
   r.contact = std::move(c);
   r.stage = contact_stage(r.contact, nc.use_nss);
   r.contact.grid = r.stage.patch->grid;
-  std::unique_ptr<noise::MarkovContact> markov;
+  std::unique_ptr<noise::ContactTransfer> transfer;
   if (nc.use_nss) {
     check_nyquist(r.contact, in_band, "noise.band_max");
     const nss::LinearContactModel& model = *r.stage.model;
     // Falling friction: no Markov parameters (the paper form only); the contact's own stability is
     // checked first. Constant friction: the sweep's Markov parameters (their decay proves it stable).
-    if (!model.falling_friction()) model.creep_coefficients({0.0});
     if (model.markov_parameters().empty()) check_contact_stability(model, r);
     r.coupled = nc.normal_coupling && model.has_normal_load_input();
-    // f(s), g(s) exactly, with the case's creepage sampling (nss::creepage_sampling_factor); the
-    // Markov parameters, where they exist, keep their guard.
-    noise::LaplaceEvaluator exact;
-    exact.creep = [&model](dynamics::cdouble s) { return model.creep_coefficients_laplace(s); };
-    if (r.coupled)
-      exact.load = [&model](dynamics::cdouble s) { return model.normal_load_coefficients_laplace(s); };
-    markov = std::make_unique<noise::MarkovContact>(model.markov_parameters(),
-                                                    r.coupled ? model.load_markov_parameters() : std::vector<Eigen::Vector3d>{},
-                                                    model.time_step(), std::move(exact));
+    transfer = std::make_unique<noise::NssTransfer>(r.stage.model, r.coupled);
   } else {  // Kalker's constant f: one Markov parameter h_0 = -f (any time step), g = 0
     const ContactCase& cc = r.contact;
-    markov = std::make_unique<noise::MarkovContact>(
+    transfer = std::make_unique<noise::MarkovContact>(
         std::vector<Eigen::Matrix3d>{-noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu)},
         std::vector<Eigen::Vector3d>{}, 1.0);
   }
-  const noise::MarkovContact& contact = *markov;
+  const noise::ContactTransfer& contact = *transfer;
   r.min_sigma = contact.min_sigma();
   r.seconds_contact = seconds_since(t0);
 

@@ -53,7 +53,7 @@ void check_contact_stability(const nss::LinearContactModel& model, SquealResult&
 /// The loop at complex s of a solved contact stage (for tests and other drivers): the contact's
 /// Markov parameters must exist (the stage's model swept once).
 noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const CurveSetup& curve,
-                               const ContactStage& stage, const noise::MarkovContact& contact, bool coupled);
+                               const ContactStage& stage, const noise::ContactTransfer& contact, bool coupled);
 
 /// Route 1 on a case (docs/squeal.md Sec. 4): the rail's receptance alpha_r (4 x 4, contact frame)
 /// and the contact's [-f | g] (3 x 4, `rollnoise statespace`'s convention, f with the model's

@@ -1,5 +1,5 @@
 // The matrix-free path of the linear NSS model (K0 applied by FFT, solved by preconditioned CG;
-// nss/linear_model.cpp, "Matrix-free path") against the dense path (Cholesky factor of K0), the
+// nss/reduced_form.cpp, "Matrix-free path") against the dense path (Cholesky factor of K0), the
 // reference: creep and normal-load coefficients over [0, Nyquist], the time response, and the
 // grid independence of the PCG iteration counts that the preconditioner is for.
 #include <gtest/gtest.h>
@@ -131,7 +131,7 @@ TEST(MatrixFree, PcgIterationCountsAreNearlyGridIndependent) {
   }
 }
 
-// Threads share out the columns of a block (nss/linear_model.cpp, "Threads"); each column is
+// Threads share out the columns of a block (nss/step_solver.hpp, "Threads"); each column is
 // computed with the same operations as in a serial run, so f, g and the time response are the
 // same to the last bit with 1 and with 4 threads, on both paths (4 > the cores of a CI machine:
 // the threads then interleave, which must not matter either).

@@ -62,7 +62,7 @@ struct SweepResult {
 };
 
 /// Tolerances (relative to the Frobenius norm of f in the scaled units of passivity_margin):
-///  - the fast sweep is checked a posteriori to 1e-10 (linear_model.cpp, measured 1e-15..6e-13
+///  - the fast sweep is checked a posteriori to 1e-10 (markov_sweep.cpp; docs/accuracy.md, measured 1e-15..6e-13
 ///    against the exact recursion): fast vs direct within 1e-9;
 ///  - passivity: the smallest eigenvalue of the Hermitian part >= -1e-9 |f| (an exact theorem for
 ///    the discrete model; f is accurate to 1e-10, the 3 x 3 eigenvalues to |f| eps);
