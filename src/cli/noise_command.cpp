@@ -33,6 +33,26 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
                 1e-3 * st.loaded->force_track[2], st.loaded->angle_min, st.loaded->angle_max);
 }
 
+// One line per wheel of curve.wheels: axle position, contact on wheel and rail, angle, creepages,
+// vertical load, N, force on the wheel in the track frame; the levels summed over the bands.
+void print_wheels(const pipeline::NoiseResult& r) {
+  if (r.wheels.empty()) return;
+  std::printf("  wheels (each wheel's patch in the loop alone; lateral force towards the outer rail; %.1f s):\n",
+              r.seconds_wheels);
+  for (const pipeline::WheelNoise& wn : r.wheels) {
+    const noise::WheelContact& w = wn.state;
+    const auto f = w.force_track();
+    double total = 0.0;  // the power sum of the Fz band levels (dB re 1 N)
+    for (const auto& l : wn.bands.force_level) total += std::pow(10.0, 0.1 * l[0]);
+    std::printf("  %-14s u %5.2f mm psi %6.2f mrad | wheel s %6.1f mm rail %6.1f mm angle %.3f rad | xi (%.2e, %.2e, "
+                "%.3f rad/m) | Q %5.1f kN N %5.1f kN | F (%5.1f, %5.1f, %5.1f) kN | Fz %.1f dB re 1 N\n",
+                noise::wheel_name(w.wheel), 1e3 * w.lateral, 1e3 * w.yaw, 1e3 * w.contact.wheel_s,
+                1e3 * w.contact.rail_y, w.contact.contact_angle, w.creepage(0), w.creepage(1), w.creepage(2),
+                1e-3 * w.vertical_load, 1e-3 * w.normal_force(), 1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2],
+                10.0 * std::log10(total));
+  }
+}
+
 // The 1/3-octave band levels, one line per band (left out with -q).
 void print_band_table(const pipeline::NoiseResult& r) {
   const auto& variants = r.variants;
@@ -88,6 +108,7 @@ int run_noise(const CommonOptions& o) {
               "structures %.1f s, total %.1f s\n",
               r.stage.model->adhesion_elements(), r.stage.model->slip_elements(), r.axis.frequency.size(),
               centres.size(), r.seconds_contact, r.seconds_structures, r.seconds_total);
+  print_wheels(r);
   if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());
   std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n",
               r.mean_force.Fx, r.mean_force.Fy, r.mean_force.Mz, cc.normal_force, r.g0(0).real(), r.g0(1).real(),

@@ -242,6 +242,25 @@ std::vector<double> CaseReader::real_list(const std::string& key) const {
   return out;
 }
 
+std::vector<std::string> CaseReader::string_list(const std::string& key) const {
+  const Value v = lookup(*this, doc_->table, key);
+  const auto* arr = v.node->as_array();
+  if (!arr) fail(key, "expected an array of strings, got " + describe(*v.node));
+  const KeySpec& spec = *find_key(key);
+  std::vector<std::string> out;
+  for (size_t i = 0; i < arr->size(); ++i) {
+    if (!(*arr)[i].is_string()) fail(key, "element " + std::to_string(i) + " is not a string");
+    out.push_back((*arr)[i].as_string()->get());
+    if (!spec.allowed.empty() &&
+        std::find(spec.allowed.begin(), spec.allowed.end(), out.back()) == spec.allowed.end()) {
+      std::string list;
+      for (const auto& a : spec.allowed) list += " \"" + a + "\"";
+      fail(key, "element \"" + out.back() + "\" is not one of" + list);
+    }
+  }
+  return out;
+}
+
 std::array<double, 3> CaseReader::real3(const std::string& key) const {
   const auto v = real_list(key);
   if (v.size() != 3)

@@ -43,6 +43,8 @@ class CaseReader {
   std::string string(const std::string& key) const;
   std::array<double, 3> real3(const std::string& key) const;
   std::vector<double> real_list(const std::string& key) const;
+  /// An array of strings, each one of the key's allowed values (when it has any).
+  std::vector<std::string> string_list(const std::string& key) const;
 
   /// Throw InputError for `key` with the file name in front of `message`.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;

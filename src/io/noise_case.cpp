@@ -39,8 +39,22 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
     c.multibody = r.string("curve.creepage") == "multibody";
     if (c.multibody && r.string("contact.geometry") != "profiles")
       r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
-    for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage"})
+    for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage",
+                            "wheelset.inner_wheel_load", "wheelset.inner_creepage",
+                            "trailing_wheelset.lateral_displacement", "trailing_wheelset.yaw",
+                            "trailing_wheelset.wheel_load", "trailing_wheelset.inner_wheel_load",
+                            "trailing_wheelset.creepage", "trailing_wheelset.inner_creepage"})
       if (r.has(key) && !c.multibody) r.fail(key, "only used with curve.creepage = \"multibody\"");
+    if (r.has("curve.wheels")) {
+      if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
+        r.fail("curve.wheels", "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
+                               "\"multibody\"");
+      c.wheels = r.string_list("curve.wheels");
+      if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");
+      for (std::size_t i = 0; i < c.wheels.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (c.wheels[i] == c.wheels[j]) r.fail("curve.wheels", "names \"" + c.wheels[i] + "\" twice");
+    }
     if (r.string("contact.geometry") == "profiles" && r.string("curve.creepage") != "case")
       for (const char* key : {"contact.lateral_displacement", "contact.yaw", "creepage.mean"})
         if (r.has(key))
@@ -53,6 +67,20 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
       if (r.has("wheelset.creepage")) {
         const auto xi = r.real3("wheelset.creepage");
         c.wheelset_creepage = Eigen::Vector3d(xi[0], xi[1], xi[2]);
+      }
+      c.trailing_lateral = r.real("trailing_wheelset.lateral_displacement");
+      c.trailing_yaw = r.real("trailing_wheelset.yaw");
+      // per wheel, in the order of noise::WheelId (leading outer/inner, trailing outer/inner)
+      const char* loads[4] = {nullptr, "wheelset.inner_wheel_load", "trailing_wheelset.wheel_load",
+                              "trailing_wheelset.inner_wheel_load"};
+      const char* creeps[4] = {nullptr, "wheelset.inner_creepage", "trailing_wheelset.creepage",
+                               "trailing_wheelset.inner_creepage"};
+      for (int k = 1; k < 4; ++k) {
+        if (r.has(loads[k])) c.wheel_loads[k] = r.real(loads[k]);
+        if (r.has(creeps[k])) {
+          const auto xi = r.real3(creeps[k]);
+          c.wheel_creepages[k] = Eigen::Vector3d(xi[0], xi[1], xi[2]);
+        }
       }
     }
   });

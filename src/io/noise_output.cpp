@@ -7,6 +7,12 @@
 namespace rollnoise::io {
 namespace {
 
+std::vector<double> flatten_levels(const noise::BandLevels& b) {
+  std::vector<double> fl;
+  for (const auto& l : b.force_level) fl.insert(fl.end(), l.begin(), l.end());
+  return fl;
+}
+
 void write_bands(Hdf5Writer& w, const std::string& g, const noise::BandLevels& b, bool roughness) {
   const std::size_t nb = b.centre.size();
   std::vector<double> fl, vl;
@@ -80,6 +86,61 @@ void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline
   }
 }
 
+namespace {
+
+void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelNoise& wn) {
+  const noise::WheelContact& st = wn.state;
+  const geometry::LoadedContact& loaded = *st.loaded;
+  const std::string g = group + "/contact/";
+  w.write(g + "normal_stiffness", wn.normal_stiffness, "N/m");
+  w.write(g + "angle", st.contact.contact_angle, "rad");
+  w.write(g + "position_wheel", st.contact.wheel_s,
+          "m (wheel profile coordinate from the nominal running circle, field side > 0)");
+  w.write(g + "position_rail", st.contact.rail_y,
+          "m (rail profile coordinate from the rail's centre line, field side > 0)");
+  w.write(g + "lateral_position", st.contact.y, "m (contact point from the track centre line, this side)");
+  w.write(g + "normal_force", st.normal_force(), "N");
+  w.write(g + "creepage", std::vector<double>{st.creepage(0), st.creepage(1), st.creepage(2)}, {3},
+          "-, -, rad/m (the wheel's own contact frame; mirrored for an inner wheel)");
+  w.write(g + "creepage_given", std::vector<int>{st.creepage_given ? 1 : 0}, {}, "-");
+  w.write(g + "rolling_radius", st.contact.rolling_radius, "m");
+  w.write(g + "vertical_load", st.vertical_load, "N");
+  w.write(g + "wheelset_lateral", st.lateral, "m");
+  w.write(g + "wheelset_yaw", st.yaw, "rad");
+  w.write(g + "creep_force", std::vector<double>{loaded.creep_force[0], loaded.creep_force[1]}, {2},
+          "N (on the wheel, contact frame of the curved patch at the contact point: Fx, Fy)");
+  const auto f = st.force_track();
+  w.write(g + "force_track", std::vector<double>{f[0], f[1], f[2]}, {3},
+          "N (on the wheel: longitudinal, lateral towards the outer rail, up)");
+  w.write(g + "angle_range", std::vector<double>{loaded.angle_min, loaded.angle_max}, {2},
+          "rad (contact angles over the loaded patch on the curved surface)");
+  w.write(g + "loop_mean_force", std::vector<double>{wn.mean_force.Fx, wn.mean_force.Fy, wn.mean_force.Mz}, {3},
+          "N, N, N m (steady state on the loop's planar patch at N: Fx, Fy, Mz)");
+  w.write(group + "/bands/force_level", flatten_levels(wn.bands), {wn.bands.centre.size(), 4},
+          "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
+  std::vector<double> vl;
+  for (const auto& l : wn.bands.velocity_level)
+    for (const auto& side : l) vl.insert(vl.end(), side.begin(), side.end());
+  w.write(group + "/bands/velocity_level", vl, {wn.bands.centre.size(), 2, 4},
+          "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
+}
+
+}  // namespace
+
+void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
+  if (r.wheels.empty()) return;
+  for (const pipeline::WheelNoise& wn : r.wheels)
+    write_wheel(w, std::string("/noise/wheels/") + noise::wheel_name(wn.state.wheel), wn);
+  w.attribute("/noise/wheels", "loop",
+              "each wheel's main patch runs the single-contact loop ALONE (its own patch, creepages and "
+              "receptances at its contact; the wheels are not coupled through the wheelset or the track); "
+              "leading_outer is the top-level /noise run");
+  w.attribute("/noise/wheels", "frames",
+              "contact and creepage in each wheel's own contact frame (y_c to its field side, mirrored for "
+              "the inner wheels); force_track in the track frame with the lateral component towards the "
+              "outer rail");
+}
+
 CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve) {
   if (!curve.creepage_from_curve()) return r;
   std::ostringstream v;
@@ -109,6 +170,7 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   w.write("/noise/creep/g", flatten(r.load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
   write_contact_state(w, "/noise/contact", nc, r.contact, r.curve, r.stage.normal_stiffness);
+  write_wheels(w, r);
   if (r.curve.estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
     w.write("/noise/curving/attack_angle", r.curve.curving.leading.attack_angle, "rad");

@@ -18,6 +18,10 @@ CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, cons
 void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline::NoiseCase& nc,
                          const pipeline::ContactCase& c, const pipeline::CurveSetup& curve, double normal_stiffness);
 
+/// /noise/wheels/<wheel>/{contact, bands}: each wheel's contact state and its loop's band levels
+/// (curve.wheels), with the attribute `loop` saying that each ran alone.
+void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& res);
+
 void write_noise(Hdf5Writer& w, const CaseReader& r, const pipeline::NoiseCase& nc, const pipeline::NoiseResult& res);
 
 void write_receptance(Hdf5Writer& w, const CaseReader& r, const pipeline::ReceptanceResult& res);

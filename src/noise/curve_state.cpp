@@ -19,7 +19,29 @@ Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeom
   return {f(0, 0), f(1, 1)};
 }
 
+// The wheel's input at the axle position (u, psi): profiles, material, grid, curve, friction.
+WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, double psi) {
+  WheelContactInput w;
+  w.pair = in.pair;
+  w.material = in.material;
+  w.grid = in.grid;
+  w.lowering_nx = in.lowering_nx;
+  w.inverse_radius = std::isinf(in.radius) ? 0.0 : 1.0 / in.radius;
+  w.speed = in.speed;
+  w.friction = in.friction;
+  w.spin_offset = in.spin_offset;
+  w.wheel = id;
+  w.lateral = u;
+  w.yaw = psi;
+  return w;
+}
+
 }  // namespace
+
+std::string multibody_key(WheelId id, const std::string& what) {
+  return std::string(is_leading(id) ? "wheelset." : "trailing_wheelset.") +
+         (is_outer(id) ? "" : "inner_") + what;
+}
 
 void CurveStateInput::validate() const {
   if (!pair) throw InputError("contact.geometry", "the curve contact state needs the profiles");
@@ -43,6 +65,20 @@ void CurveStateInput::validate() const {
       throw InputError("wheelset.yaw", "wheelset.yaw must lie within +-0.05 rad");
     if (creepage && !creepage->allFinite())
       throw InputError("wheelset.creepage", "wheelset.creepage must be finite");
+    if (!std::isfinite(trailing_lateral) || std::abs(trailing_lateral) > 0.02)
+      throw InputError("trailing_wheelset.lateral_displacement",
+                       "trailing_wheelset.lateral_displacement must lie within +-20 mm");
+    if (!std::isfinite(trailing_yaw) || std::abs(trailing_yaw) > 0.05)
+      throw InputError("trailing_wheelset.yaw", "trailing_wheelset.yaw must lie within +-0.05 rad");
+    for (WheelId id : kAllWheels) {
+      const std::string key = multibody_key(id, "wheel_load");
+      const auto& q = wheel_loads[static_cast<std::size_t>(id)];
+      if (q && (!(*q > 0.0) || !std::isfinite(*q)))
+        throw InputError(key, key + " must be positive and finite");
+      const auto& xi = wheel_creepages[static_cast<std::size_t>(id)];
+      if (xi && !xi->allFinite())
+        throw InputError(multibody_key(id, "creepage"), multibody_key(id, "creepage") + " must be finite");
+    }
   }
 }
 
@@ -63,7 +99,6 @@ double flange_vertical_load(double lateral_force, double flange_angle, double mu
 CurveContactState curve_contact_state(const CurveStateInput& in) {
   in.validate();
   const geometry::WheelRailPair& pair = *in.pair;
-  const double inv_R = std::isinf(in.radius) ? 0.0 : 1.0 / in.radius;
   const double r0 = pair.wheelset().nominal_radius;
   const double l0 = geometry::find_contact(pair, {0.0, 0.0}).y;  // the centred contact point
   const double Q = in.wheel_load;
@@ -118,36 +153,49 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
       s.flange_vertical_load = lead.flange_vertical_load;
     }
   }
-  const double gamma = s.contact.contact_angle, rc = s.contact.rolling_radius;
-  s.inner_rolling_radius =
-      geometry::find_contact(pair, {s.lateral, s.yaw}, geometry::Side::Left).rolling_radius;
-  if (in.creepage) {
-    s.creepage = *in.creepage;
-  } else {  // (K2) with the actual contact
-    s.creepage = {l0 * inv_R - (rc - s.inner_rolling_radius) / (2.0 * r0), -s.yaw / std::cos(gamma),
-                  -std::sin(gamma) / rc - std::cos(gamma) * inv_R};
-  }
-  // (K8) = (V1): the wheel lowered vertically under its whole vertical load Q_o = Q + dQ on the
-  // curved reference surface of the rail profile (geometry/curved_contact.hpp), N and F_y from the
-  // steady rolling solution of its patch. A patch that wraps from the flange root onto the flank
-  // carries the flank's share itself: the estimate's flange share is reported, not added.
-  geometry::VerticalLoadInput v;
-  v.vertical_load = Q + s.load_transfer;
-  v.material = in.material;
-  v.grid = in.grid;
-  v.grid.nx = std::min(v.grid.nx, in.lowering_nx);  // the resultant: < 0.5 % from 16 to 24
-  v.rolling = contact::SteadyRollingInput(in.friction, in.speed,
-                                          {s.creepage(0), s.creepage(1), s.creepage(2)},
-                                          in.spin_offset);
-  v.curved = true;
-  v.yaw = s.yaw;
-  v.inverse_radius = inv_R;
-  s.loaded = std::make_shared<const geometry::LoadedContact>(
-      geometry::lower_under_vertical_load(pair, s.contact, v));
-  s.tread_load = v.vertical_load;
+  // (K2') with the actual contact and (K8) = (V1): the wheel lowered vertically under its whole
+  // vertical load Q_o = Q + dQ on the curved reference surface of the rail profile
+  // (noise/wheel_contact.hpp, geometry/curved_contact.hpp), N and F_y from the steady rolling
+  // solution of its patch. A patch that wraps from the flange root onto the flank carries the
+  // flank's share itself: the estimate's flange share is reported, not added.
+  WheelContactInput w = wheel_input(in, WheelId::leading_outer, s.lateral, s.yaw);
+  w.vertical_load = Q + s.load_transfer;
+  w.creepage = in.creepage;
+  s.wheel = wheel_contact(w);
+  s.contact = s.wheel.contact;
+  s.inner_rolling_radius = s.wheel.other_rolling_radius;
+  s.creepage = s.wheel.creepage;
+  s.loaded = s.wheel.loaded;
+  s.tread_load = w.vertical_load;
   s.lateral_creep_force = s.loaded->creep_force[1];
   s.normal_force = s.loaded->normal_force;
   return s;
+}
+
+std::vector<WheelContact> bogie_wheel_contacts(const CurveStateInput& in,
+                                               const CurveContactState& s,
+                                               const std::vector<WheelId>& wheels) {
+  std::vector<WheelContact> out;
+  for (WheelId id : wheels) {
+    if (id == WheelId::leading_outer) {
+      out.push_back(s.wheel);
+      continue;
+    }
+    const bool lead = is_leading(id), outer = is_outer(id);
+    const double u = lead ? s.lateral : s.estimated ? s.estimate.trailing.lateral : in.trailing_lateral;
+    const double psi = lead ? s.yaw : s.estimated ? s.estimate.trailing.attack_angle : in.trailing_yaw;
+    WheelContactInput w = wheel_input(in, id, u, psi);
+    const std::size_t k = static_cast<std::size_t>(id);
+    if (s.estimated)  // (K4): Q +- dQ
+      w.vertical_load = s.wheel_load + (outer ? s.load_transfer : -s.load_transfer);
+    else
+      w.vertical_load = in.wheel_loads[k]           ? *in.wheel_loads[k]
+                        : in.static_wheel_load > 0.0 ? in.static_wheel_load
+                                                     : in.wheel_load;
+    if (in.multibody) w.creepage = in.wheel_creepages[k];
+    out.push_back(wheel_contact(w));
+  }
+  return out;
 }
 
 contact::ContactPatch solve_curve_patch(const CurveStateInput& in, const CurveContactState& s) {

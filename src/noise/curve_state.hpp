@@ -10,12 +10,12 @@
 //  2. Contact: geometry::find_contact(pair, {u, psi}) for the outer (= geometry's right) wheel;
 //     u and psi of curving.hpp and of the geometry layer have the same sign (u towards the outer
 //     flange, psi turning the forward direction towards the outer rail).
-//  3. Creepages (unless given): (K2) with the actual contact,
-//       xi_x = l0/R - (r_o - r_i)/(2 r0),  xi_y = -psi / cos(gamma),
+//  3. Creepages (unless given): (K2') of wheel_contact.hpp with the actual contact,
+//       xi_x = y_c/R - (r_o - r_i)/(2 r0),  xi_y = -psi / cos(gamma),
 //       phi  = -sin(gamma)/r_c - cos(gamma)/R
 //     r_o, r_i the rolling radii of the outer and inner wheel at (u, psi), gamma and r_c those of
-//     the outer contact, r0 the nominal radius, l0 the lateral position of the centred
-//     wheelset's contact point.
+//     the outer contact, r0 the nominal radius, y_c the contact point's lateral distance from the
+//     track centre line (the bogie estimate itself uses l0, the centred wheelset's).
 //  4. Loads. Vertical load of the outer wheel Q_o = Q + dQ (K4: dQ/Q = 2 h_d h_cg / s^2, s = 2 l0;
 //     multibody: the given load, dQ = 0); with the leading axle at its outer flange the flange
 //     contact carries Q_f (K6) and the tread contact Q_t = Q_o - Q_f. The normal force of the
@@ -33,9 +33,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "contact/material.hpp"
 #include "contact/patch.hpp"
@@ -43,6 +46,7 @@
 #include "geometry/wheel_rail.hpp"
 #include "noise/curving.hpp"
 #include "noise/loop.hpp"
+#include "noise/wheel_contact.hpp"
 
 namespace rollnoise::noise {
 
@@ -66,6 +70,13 @@ struct CurveStateInput {
   double lateral = 0.0;                     ///< u (m)
   double yaw = 0.0;                         ///< psi (rad)
   std::optional<Eigen::Vector3d> creepage;  ///< (xi_x, xi_y, phi); empty: (K2)
+  /// Multibody input of the other wheels: the trailing wheelset's u (m) and psi (rad), and per
+  /// wheel (indexed by WheelId) its vertical load (N; empty: `static_wheel_load`) and creepages (its own contact frame; empty: (K2')). The leading outer wheel's
+  /// load and creepages are `wheel_load` and `creepage` above.
+  double trailing_lateral = 0.0, trailing_yaw = 0.0;
+  double static_wheel_load = 0.0;  ///< (N) contact.normal_force; 0: wheel_load
+  std::array<std::optional<double>, 4> wheel_loads;
+  std::array<std::optional<Eigen::Vector3d>, 4> wheel_creepages;
   double table_step = 0.1e-3;               ///< lateral step of the profile table (m)
   /// The profile table of `pair` (profile_curving_table), to share between states; empty: made
   /// here.
@@ -95,12 +106,18 @@ struct CurveContactState {
   double flange_normal_force = 0.0;   ///< N_f (N)
   double flange_vertical_load = 0.0;  ///< Q_f (N)
   Eigen::Vector3d creepage = Eigen::Vector3d::Zero();  ///< (xi_x, xi_y, phi) (-, -, 1/m)
+  /// The leading outer wheel as a wheel value (contact, creepage and loaded above are its).
+  WheelContact wheel;
 
   /// The loop's contact position: wheel profile coordinate s, rail profile coordinate, angle.
   ContactPosition position() const {
     return {contact.wheel_s, contact.rail_y, contact.contact_angle};
   }
 };
+
+/// The multibody key of a wheel's `what` ("wheel_load", "creepage"): wheelset.wheel_load,
+/// wheelset.inner_wheel_load, trailing_wheelset.wheel_load, trailing_wheelset.inner_wheel_load.
+std::string multibody_key(WheelId id, const std::string& what);
 
 /// Load transfer to the outer wheel (K4): dQ = 2 Q h_d h_cg / s^2 (N).
 double cant_deficiency_load_transfer(double wheel_load, double cant_deficiency, double cg_height,
@@ -112,6 +129,15 @@ double flange_vertical_load(double lateral_force, double flange_angle, double mu
 
 /// Steps 1-4 above. InputError naming the key for bad input; NumericalError from the estimate.
 CurveContactState curve_contact_state(const CurveStateInput& in);
+
+/// Every wheel's contact state, in the order of `wheels` (docs/noise_loop.md Sec. 7.3): each wheel
+/// on its own rail at its axle's (u, psi) (leading: the state's; trailing: the estimate's trailing
+/// axle, or the multibody input), lowered under its vertical load (estimate: Q +- dQ on the
+/// outer/inner wheels (K4); multibody: the given loads), creepages (K2') or given. The leading
+/// outer wheel is the state's own `wheel` (not recomputed).
+std::vector<WheelContact> bogie_wheel_contacts(const CurveStateInput& in,
+                                               const CurveContactState& s,
+                                               const std::vector<WheelId>& wheels);
 
 /// The patch of the state: geometry::solve_wheel_rail_patch at the contact with the normal force N.
 contact::ContactPatch solve_curve_patch(const CurveStateInput& in, const CurveContactState& s);

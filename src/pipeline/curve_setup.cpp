@@ -1,6 +1,9 @@
 #include "pipeline/curve_setup.hpp"
 
 #include <limits>
+#include <string>
+
+#include "core/errors.hpp"
 
 #include "noise/kalker_linear.hpp"
 
@@ -29,6 +32,11 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.yaw = nc.wheelset_yaw;
     if (nc.wheelset_load) in.wheel_load = *nc.wheelset_load;
     in.creepage = nc.wheelset_creepage;
+    in.trailing_lateral = nc.trailing_lateral;
+    in.trailing_yaw = nc.trailing_yaw;
+    in.wheel_loads = nc.wheel_loads;
+    in.wheel_creepages = nc.wheel_creepages;
+    in.static_wheel_load = c.normal_force;
   }
   in.validate();
   return in;
@@ -51,11 +59,33 @@ noise::BogieCurvingInput bogie_curving_input(const ContactCase& c, const NoiseCa
   return in;
 }
 
+std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase& nc) {
+  if (!s.state) return {};
+  if (nc.wheels.empty()) {  // the default
+    if (nc.curve_radius > 0.0) return {noise::kAllWheels.begin(), noise::kAllWheels.end()};
+    return {noise::WheelId::leading_outer};
+  }
+  std::vector<noise::WheelId> ids;
+  for (const std::string& name : nc.wheels) {
+    const auto id = noise::wheel_from_name(name);
+    if (!id) throw InputError("curve.wheels", "\"" + name + "\" is not a wheel");
+    ids.push_back(*id);
+  }
+  return ids;
+}
+
+std::vector<noise::WheelContact> curve_wheels(const CurveSetup& s, const NoiseCase& nc) {
+  const std::vector<noise::WheelId> ids = curve_wheel_ids(s, nc);
+  if (ids.empty()) return {};
+  return noise::bogie_wheel_contacts(*s.state_input, *s.state, ids);
+}
+
 CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc) {
   CurveSetup s;
   s.position = {0.0, 0.0, nc.contact_angle};
   if (c.profiles && (nc.estimate_creepage || nc.multibody)) {
-    s.state = noise::curve_contact_state(curve_state_input(c, nc));
+    s.state_input = curve_state_input(c, nc);
+    s.state = noise::curve_contact_state(*s.state_input);
     s.estimated = s.state->estimated;
     s.curving = s.state->estimate;
     place_contact_at(c, s.state->contact, s.state->normal_force);

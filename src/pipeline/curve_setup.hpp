@@ -11,6 +11,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "noise/curve_state.hpp"
 #include "noise/curving.hpp"
@@ -25,6 +26,9 @@ struct CurveSetup {
   noise::CurvingEstimate curving;   ///< when estimated
   bool estimated = false;           ///< the creepages come from a curving estimate
   std::optional<noise::CurveContactState> state;  ///< profiles (estimate or multibody)
+  /// The inputs the state was found from (with `state`): the other wheels use them
+  /// (curve_wheels).
+  std::optional<noise::CurveStateInput> state_input;
   /// The creepages were set by the stage (estimate or multibody), not read from the case.
   bool creepage_from_curve() const { return state.has_value() || estimated; }
   /// The rolling radius of the contact (m): of the state, of the estimate or the nominal one.
@@ -34,6 +38,14 @@ struct CurveSetup {
 /// Resolve the curve contact state and set c's contact point, normal force, a, b, grid and
 /// creepage accordingly. InputError (curve.* / wheelset.* keys) for inputs outside the models.
 CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc);
+
+/// The wheels of curve.wheels (docs/interface.md): as listed, or by default all four in a curve and
+/// the leading outer wheel alone on tangent track; none without a curve contact state.
+std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase& nc);
+
+/// Every wheel's contact state (noise::bogie_wheel_contacts) of curve_wheel_ids, one immutable
+/// value per wheel; the leading outer wheel's is the state's.
+std::vector<noise::WheelContact> curve_wheels(const CurveSetup& s, const NoiseCase& nc);
 
 /// The inputs of the curve contact state: the case's profiles, material, grid options, curve,
 /// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; validated.

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
@@ -27,6 +29,14 @@ struct NoiseCase {
   double wheelset_lateral = 0.0, wheelset_yaw = 0.0;
   std::optional<double> wheelset_load;
   std::optional<Eigen::Vector3d> wheelset_creepage;
+  /// The other wheels of a multibody run: [trailing_wheelset] position, and per wheel (index
+  /// noise::WheelId) its optional load and creepages (the leading outer's are wheelset_load and
+  /// wheelset_creepage).
+  double trailing_lateral = 0.0, trailing_yaw = 0.0;
+  std::array<std::optional<double>, 4> wheel_loads;
+  std::array<std::optional<Eigen::Vector3d>, 4> wheel_creepages;
+  /// curve.wheels: the names of the wheels computed (empty: the default, docs/interface.md).
+  std::vector<std::string> wheels;
   std::unique_ptr<dynamics::RailModel> rail;
   std::unique_ptr<dynamics::WheelModel> wheel;
   /// What the wheel and rail models were built from (files as resolved, support, position): equal

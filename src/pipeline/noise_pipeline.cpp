@@ -17,7 +17,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Kalker's linear theory (full adhesion) of the case's semi-axes: constant f, g = 0.
+}  // namespace
+
 noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n) {
   noise::ContactCoefficients k = noise::constant_coefficients(
       noise::kalker_creep_matrix(c.a, c.b, c.material.shear_modulus(), c.material.nu).cast<std::complex<double>>(),
@@ -25,8 +26,6 @@ noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t
   k.load.clear();
   return k;
 }
-
-}  // namespace
 
 ContactStage contact_stage(const ContactCase& c, bool with_model) {
   ContactStage s;
@@ -89,6 +88,34 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   return r;
 }
 
+namespace {
+
+// curve.wheels: every wheel's contact state, and its loop alone; the leading outer wheel is the
+// main run's (its state, patch, loop), the others run on the shared spectra.
+std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, const noise::StructureSpectra& spectra) {
+  std::vector<WheelNoise> out;
+  for (const noise::WheelContact& w : curve_wheels(r.curve, nc)) {
+    if (w.wheel != noise::WheelId::leading_outer) {
+      out.push_back(wheel_noise(r.contact, nc, w, spectra, r.axis.frequency));
+      continue;
+    }
+    WheelNoise m;
+    m.state = w;
+    m.contact = r.contact;
+    m.normal_stiffness = r.stage.normal_stiffness;
+    m.mean_force = r.mean_force;
+    if (r.stage.model) {
+      m.adhesion_elements = r.stage.model->adhesion_elements();
+      m.slip_elements = r.stage.model->slip_elements();
+    }
+    m.loop = r.variants.main;
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+}  // namespace
+
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
   NoiseResult r;
@@ -112,9 +139,10 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 
   // 4. structures once, then the loop per contact model
   const auto t1 = Clock::now();
-  const noise::StructuralReceptances structures =
-      reuse ? noise::structural_receptances(*nc.wheel, *reuse->spectra(nc, freq), r.curve.position)
-            : noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
+  const std::shared_ptr<const noise::StructureSpectra> spectra =
+      reuse ? reuse->spectra(nc, freq)
+            : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, freq));
+  const noise::StructuralReceptances structures = noise::structural_receptances(*nc.wheel, *spectra, r.curve.position);
   r.seconds_structures = seconds_since(t1);
   using Baseline = NoiseCase::Baseline;
   noise::LoopVariantsInput in;
@@ -133,6 +161,9 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
   r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
   r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
+  const auto t2 = Clock::now();
+  r.wheels = wheel_loops(r, nc, *spectra);
+  r.seconds_wheels = seconds_since(t2);
   r.seconds_total = seconds_since(t0);
   return r;
 }
@@ -153,6 +184,8 @@ void add_bands(NoiseResult& r, const NoiseCase& nc) {
     r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
   }
   if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
+  for (WheelNoise& w : r.wheels)
+    w.bands = w.state.wheel == noise::WheelId::leading_outer ? r.bands : wheel_bands(w, nc, centres);
 }
 
 ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {

@@ -31,6 +31,7 @@
 #include "pipeline/contact_case.hpp"
 #include "pipeline/curve_setup.hpp"
 #include "pipeline/noise_case.hpp"
+#include "pipeline/wheel_noise.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -41,6 +42,10 @@ struct ContactStage {
   contact::TangentialSolution steady;
   std::shared_ptr<const nss::LinearContactModel> model;
 };
+
+/// Kalker's linear theory (full adhesion) of the case's semi-axes at n frequencies: constant f,
+/// g = 0 (no load coefficients).
+noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n);
 
 /// Patch, normal stiffness, steady rolling and (with_model) the linear model of a placed case.
 ContactStage contact_stage(const ContactCase& c, bool with_model = true);
@@ -72,7 +77,10 @@ struct NoiseResult {
   contact::TangentialForces mean_force;  ///< of the steady state
   /// 20 log10 |F_y / N| (dB): the level of mu F_z relative to F_z (NaN without a lateral force)
   double lateral_to_normal_db = 0.0;
-  double seconds_contact = 0.0, seconds_structures = 0.0, seconds_total = 0.0;
+  /// curve.wheels: each wheel's contact state and its loop run alone (pipeline/wheel_noise.hpp);
+  /// the leading outer wheel's is the main run above.
+  std::vector<WheelNoise> wheels;
+  double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
 };
 
 /// What the cases of a study share (docs/study.md). The wheel's modal and the rail's receptances

@@ -364,6 +364,52 @@ TEST(NoiseCommand, WritesTheCurveContactState) {
   EXPECT_NE(bad.output.find("wheelset.yaw"), std::string::npos) << bad.output;
 }
 
+// curve.wheels (default: all four in a curve): each wheel's contact state and its loop's levels
+// under /noise/wheels/<wheel>, with units; each patch carries its wheel's vertical load (the
+// force in the track frame has up = vertical_load within 1e-5); the leading outer wheel is the
+// top-level run (same normal force and band levels, bit for bit); the summary prints one line per
+// wheel; a wrong wheel name or a [trailing_wheelset] key outside a multibody run names its key.
+TEST(NoiseCommand, WritesEveryWheelsContactStateAndLevels) {
+  const fs::path out = temp_dir() / "noise_wheels.h5";
+  const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
+                           "--set track.support=continuous --set noise.compare=\"none\" -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const auto top_levels = read_doubles(f, "/noise/bands/force_level");
+  const auto top_normal = read_doubles(f, "/noise/contact/normal_force");
+  for (const std::string w : {"leading_outer", "leading_inner", "trailing_outer", "trailing_inner"}) {
+    EXPECT_NE(r.output.find("  " + w + " "), std::string::npos) << w << r.output;
+    const std::string g = "/noise/wheels/" + w;
+    EXPECT_EQ(read_units(f, (g + "/contact/force_track").c_str()).substr(0, 1), "N") << w;
+    EXPECT_EQ(read_units(f, (g + "/contact/creepage").c_str()).substr(0, 11), "-, -, rad/m") << w;
+    EXPECT_EQ(read_units(f, (g + "/contact/position_wheel").c_str()).substr(0, 1), "m") << w;
+    const auto force = read_doubles(f, (g + "/contact/force_track").c_str());
+    const auto load = read_doubles(f, (g + "/contact/vertical_load").c_str());
+    const auto levels = read_doubles(f, (g + "/bands/force_level").c_str());
+    ASSERT_EQ(force.size(), 3u) << w;
+    ASSERT_EQ(load.size(), 1u) << w;
+    EXPECT_NEAR(force[2], load[0], 1e-5 * load[0]) << w;
+    ASSERT_EQ(levels.size(), top_levels.size()) << w;
+    for (double l : levels) EXPECT_TRUE(std::isfinite(l)) << w;
+    if (w == "leading_outer") {
+      EXPECT_EQ(levels, top_levels);
+      EXPECT_EQ(read_doubles(f, (g + "/contact/normal_force").c_str()), top_normal);
+    }
+  }
+  H5Fclose(f);
+  EXPECT_NE(r.output.find("in the loop alone"), std::string::npos) << r.output;
+
+  const Invocation bad = run("noise " + curve_case() + " --set curve.wheels=[\"front_left\"] -o " +
+                             (temp_dir() / "bad_wheels.h5").string());
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("curve.wheels"), std::string::npos) << bad.output;
+  const Invocation trailing = run("noise " + curve_case() + " --set trailing_wheelset.yaw=0.001 -o " +
+                                  (temp_dir() / "bad_trailing.h5").string());
+  EXPECT_EQ(trailing.status, 2) << trailing.output;
+  EXPECT_NE(trailing.output.find("trailing_wheelset.yaw"), std::string::npos) << trailing.output;
+}
+
 TEST(NoiseCommand, BandsAboveTheGridsNyquistLimitAreAnInputError) {
   const Invocation r = run("noise " + curve_case() + " --set noise.band_max=20000.0 --set noise.points_per_band=4 "
                            "--set track.support=continuous -o " + (temp_dir() / "nyq.h5").string());

@@ -1,0 +1,43 @@
+// The noise loop for each wheel of the bogie (curve.wheels, docs/noise_loop.md Sec. 7.3): until the
+// loop couples several contacts (issue 25), every wheel's main patch runs the single-contact loop
+// ALONE on its own contact state (noise/wheel_contact.hpp): its patch, normal stiffness, steady
+// rolling, linear model, f(w) and g(w), the structures at its contact position and its band levels.
+// The wheel and rail spectra are shared (one structure_spectra for all wheels); the leading outer
+// wheel is the main run's (not repeated).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "contact/forces.hpp"
+#include "noise/bands.hpp"
+#include "noise/loop.hpp"
+#include "noise/wheel_contact.hpp"
+#include "pipeline/contact_case.hpp"
+#include "pipeline/noise_case.hpp"
+
+namespace rollnoise::pipeline {
+
+/// One wheel's loop alone: its state, what the loop ran on and its levels.
+struct WheelNoise {
+  noise::WheelContact state;
+  ContactCase contact;            ///< placed at the wheel's contact, its creepages and N
+  double normal_stiffness = 0.0;  ///< k_N (N/m)
+  contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
+  int adhesion_elements = 0, slip_elements = 0;
+  noise::LoopResult loop;   ///< the main variant (with g when normal_coupling)
+  noise::BandLevels bands;  ///< set by add_wheel_bands
+};
+
+/// The loop of each wheel but the leading outer one (the main run's), on the shared spectra at
+/// `frequency`. `base`: the case as read (placed or not); InputError naming noise.band_max when a
+/// wheel's grid cannot resolve the frequencies.
+WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
+                       const noise::StructureSpectra& spectra, const std::vector<double>& frequency);
+
+/// The band levels of a wheel's loop (its contact filter's semi-axes, the case's roughness).
+noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,
+                              const std::vector<double>& centres);
+
+}  // namespace rollnoise::pipeline
