@@ -80,14 +80,6 @@ std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCa
   return s;
 }
 
-NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
-  const auto t0 = Clock::now();
-  NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
-  add_bands(r, nc);
-  r.seconds_total = seconds_since(t0);
-  return r;
-}
-
 namespace {
 
 // curve.wheels: every wheel's contact state, and its loop alone; the leading outer wheel is the
@@ -115,6 +107,18 @@ std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, c
 }
 
 }  // namespace
+
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
+  const auto t0 = Clock::now();
+  NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
+  const auto t1 = Clock::now();
+  r.wheels = wheel_loops(r, nc, *r.spectra);
+  r.seconds_wheels = seconds_since(t1);
+  add_bands(r, nc);
+  r.seconds_total = seconds_since(t0);
+  return r;
+}
+
 
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
@@ -161,9 +165,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
   r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
   r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
-  const auto t2 = Clock::now();
-  r.wheels = wheel_loops(r, nc, *spectra);
-  r.seconds_wheels = seconds_since(t2);
+  r.spectra = spectra;
   r.seconds_total = seconds_since(t0);
   return r;
 }

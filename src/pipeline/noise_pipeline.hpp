@@ -77,8 +77,11 @@ struct NoiseResult {
   contact::TangentialForces mean_force;  ///< of the steady state
   /// 20 log10 |F_y / N| (dB): the level of mu F_z relative to F_z (NaN without a lateral force)
   double lateral_to_normal_db = 0.0;
+  /// The wheel and rail spectra at the frequencies (shared by the wheels' loops).
+  std::shared_ptr<const noise::StructureSpectra> spectra;
   /// curve.wheels: each wheel's contact state and its loop run alone (pipeline/wheel_noise.hpp);
-  /// the leading outer wheel's is the main run above.
+  /// the leading outer wheel's is the main run above. Set by run_noise (not by run_noise_loop: a
+  /// study writes the top-level results only).
   std::vector<WheelNoise> wheels;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
 };
@@ -107,7 +110,8 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 /// one run_noise_loop result, then add_bands with each case's NoiseCase.
 void add_bands(NoiseResult& r, const NoiseCase& nc);
 
-/// The whole pipeline for a read noise case (stages 1-5).
+/// The whole pipeline for a read noise case (stages 1-5), and the loop of every wheel of
+/// curve.wheels (pipeline/wheel_noise.hpp).
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
 
 /// `rollnoise receptance`: wheel, rail and contact receptances at the contact point and mean state

@@ -223,7 +223,7 @@ std::string curve_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/cases/cu
 TEST(NoiseCommand, CurveCaseGivesBandLevelsAndTheNSSModelChangesTangentialNotVerticalForces) {
   const fs::path out = temp_dir() / "noise.h5";
   const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 --set noise.compare=kalker "
-                           "--set track.support=continuous --set noise.band_max=2000.0 -o " + out.string());
+                           "--set track.support=continuous --set 'curve.wheels=[\"leading_outer\"]' --set noise.band_max=2000.0 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
@@ -258,7 +258,7 @@ TEST(NoiseCommand, CurveCaseGivesBandLevelsAndTheNSSModelChangesTangentialNotVer
 TEST(NoiseCommand, CoupledUncoupledAndQuasiSteadyOutputs) {
   const fs::path out = temp_dir() / "noise_coupling.h5";
   const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=12 "
-                           "--set track.support=continuous --set noise.band_max=2000.0 -o " + out.string());
+                           "--set track.support=continuous --set 'curve.wheels=[\"leading_outer\"]' --set noise.band_max=2000.0 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
@@ -304,7 +304,7 @@ TEST(NoiseCommand, DeprecatedCompareKalkerIsAnAliasAndMayNotContradict) {
     for (std::string line; std::getline(in, line);)
       if (line.rfind("compare", 0) != 0) o << line << "\n";
   }
-  const std::string base = "noise " + old_case.string() + " --set noise.points_per_band=4 --set track.support=continuous "
+  const std::string base = "noise " + old_case.string() + " --set noise.points_per_band=4 --set track.support=continuous --set 'curve.wheels=[\"leading_outer\"]' "
                            "--set noise.band_max=500.0 ";
   const fs::path out = temp_dir() / "noise_alias.h5";
   const Invocation r = run(base + "--set noise.compare_kalker=yes -o " + out.string());
@@ -327,7 +327,7 @@ TEST(NoiseCommand, DeprecatedCompareKalkerIsAnAliasAndMayNotContradict) {
 TEST(NoiseCommand, WritesTheCurveContactState) {
   const fs::path out = temp_dir() / "noise_contact.h5";
   const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
-                           "--set track.support=continuous --set noise.compare=\"none\" -o " + out.string());
+                           "--set track.support=continuous --set 'curve.wheels=[\"leading_outer\"]' --set noise.compare=\"none\" -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("two-point"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("on the wheel at"), std::string::npos) << r.output;
@@ -400,7 +400,7 @@ TEST(NoiseCommand, WritesEveryWheelsContactStateAndLevels) {
   H5Fclose(f);
   EXPECT_NE(r.output.find("in the loop alone"), std::string::npos) << r.output;
 
-  const Invocation bad = run("noise " + curve_case() + " --set curve.wheels=[\"front_left\"] -o " +
+  const Invocation bad = run("noise " + curve_case() + " --set 'curve.wheels=[\"front_left\"]' -o " +
                              (temp_dir() / "bad_wheels.h5").string());
   EXPECT_EQ(bad.status, 2) << bad.output;
   EXPECT_NE(bad.output.find("curve.wheels"), std::string::npos) << bad.output;
