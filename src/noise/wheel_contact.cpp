@@ -9,10 +9,14 @@ namespace rollnoise::noise {
 
 const char* wheel_name(WheelId w) {
   switch (w) {
-    case WheelId::leading_outer: return "leading_outer";
-    case WheelId::leading_inner: return "leading_inner";
-    case WheelId::trailing_outer: return "trailing_outer";
-    case WheelId::trailing_inner: return "trailing_inner";
+    case WheelId::leading_outer:
+      return "leading_outer";
+    case WheelId::leading_inner:
+      return "leading_inner";
+    case WheelId::trailing_outer:
+      return "trailing_outer";
+    case WheelId::trailing_inner:
+      return "trailing_inner";
   }
   return "?";
 }
@@ -39,8 +43,9 @@ Eigen::Vector3d kinematic_creepage(const geometry::ContactGeometry& c, double ot
 WheelContact wheel_contact(const WheelContactInput& in) {
   if (!in.pair) throw InputError("contact.geometry", "a wheel's contact state needs the profiles");
   if (!(in.vertical_load > 0.0) || !std::isfinite(in.vertical_load))
-    throw InputError("curve.wheels", std::string("the vertical load of the ") + wheel_name(in.wheel) +
-                                         " wheel must be positive (a lifted wheel is not modelled)");
+    throw InputError("curve.wheels",
+                     std::string("the vertical load of the ") + wheel_name(in.wheel) +
+                         " wheel must be positive (a lifted wheel is not modelled)");
   const geometry::WheelRailPair& pair = *in.pair;
   const bool outer = is_outer(in.wheel);
   const geometry::Side side = outer ? geometry::Side::Right : geometry::Side::Left;
@@ -64,9 +69,8 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   v.material = in.material;
   v.grid = in.grid;
   v.grid.nx = std::min(v.grid.nx, in.lowering_nx);
-  v.rolling = contact::SteadyRollingInput(in.friction, in.speed,
-                                          {w.creepage(0), w.creepage(1), w.creepage(2)},
-                                          in.spin_offset);
+  v.rolling = contact::SteadyRollingInput(
+      in.friction, in.speed, {w.creepage(0), w.creepage(1), w.creepage(2)}, in.spin_offset);
   v.curved = true;
   v.yaw = w.contact.local_pose.yaw;
   v.inverse_radius = kappa;

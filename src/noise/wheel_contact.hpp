@@ -44,23 +44,27 @@ enum class WheelId { leading_outer, leading_inner, trailing_outer, trailing_inne
 const char* wheel_name(WheelId w);
 /// The wheel of a name; empty for an unknown name.
 std::optional<WheelId> wheel_from_name(const std::string& name);
-inline bool is_outer(WheelId w) { return w == WheelId::leading_outer || w == WheelId::trailing_outer; }
-inline bool is_leading(WheelId w) { return w == WheelId::leading_outer || w == WheelId::leading_inner; }
+inline bool is_outer(WheelId w) {
+  return w == WheelId::leading_outer || w == WheelId::trailing_outer;
+}
+inline bool is_leading(WheelId w) {
+  return w == WheelId::leading_outer || w == WheelId::leading_inner;
+}
 constexpr std::array<WheelId, 4> kAllWheels = {WheelId::leading_outer, WheelId::leading_inner,
                                                WheelId::trailing_outer, WheelId::trailing_inner};
 
 struct WheelContactInput {
   std::shared_ptr<const geometry::WheelRailPair> pair;  ///< required
   contact::Material material;
-  geometry::GridOptions grid;  ///< of the patch
-  int lowering_nx = 24;        ///< elements in x (at most) of the lowering (curve_state.hpp)
+  geometry::GridOptions grid;   ///< of the patch
+  int lowering_nx = 24;         ///< elements in x (at most) of the lowering (curve_state.hpp)
   double inverse_radius = 0.0;  ///< 1/R (1/m), 0 on tangent track
   double speed = 0.0;           ///< V (m/s)
   double friction = 0.3;        ///< mu
   double spin_offset = 0.0;     ///< of the steady rolling solution
   WheelId wheel = WheelId::leading_outer;
-  double lateral = 0.0;  ///< u (m) of the wheel's axle, towards the outer rail
-  double yaw = 0.0;      ///< psi (rad) of the wheel's axle, turning towards the outer rail
+  double lateral = 0.0;        ///< u (m) of the wheel's axle, towards the outer rail
+  double yaw = 0.0;            ///< psi (rad) of the wheel's axle, turning towards the outer rail
   double vertical_load = 0.0;  ///< the wheel's vertical load (N), > 0
   /// (xi_x, xi_y, phi) in the wheel's own contact frame (multibody input); empty: (K2').
   std::optional<Eigen::Vector3d> creepage;

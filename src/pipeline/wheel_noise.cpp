@@ -7,7 +7,8 @@
 namespace rollnoise::pipeline {
 
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
-                       const noise::StructureSpectra& spectra, const std::vector<double>& frequency) {
+                       const noise::StructureSpectra& spectra,
+                       const std::vector<double>& frequency) {
   WheelNoise out;
   out.state = w;
   ContactCase c = base;

@@ -22,8 +22,8 @@ namespace rollnoise::pipeline {
 /// One wheel's loop alone: its state, what the loop ran on and its levels.
 struct WheelNoise {
   noise::WheelContact state;
-  ContactCase contact;            ///< placed at the wheel's contact, its creepages and N
-  double normal_stiffness = 0.0;  ///< k_N (N/m)
+  ContactCase contact;                   ///< placed at the wheel's contact, its creepages and N
+  double normal_stiffness = 0.0;         ///< k_N (N/m)
   contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
   int adhesion_elements = 0, slip_elements = 0;
   noise::LoopResult loop;   ///< the main variant (with g when normal_coupling)
@@ -34,7 +34,8 @@ struct WheelNoise {
 /// `frequency`. `base`: the case as read (placed or not); InputError naming noise.band_max when a
 /// wheel's grid cannot resolve the frequencies.
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
-                       const noise::StructureSpectra& spectra, const std::vector<double>& frequency);
+                       const noise::StructureSpectra& spectra,
+                       const std::vector<double>& frequency);
 
 /// The band levels of a wheel's loop (its contact filter's semi-axes, the case's roughness).
 noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,

@@ -14,28 +14,18 @@
 #include "geometry/profile.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
-#include "noise_fixture.hpp"
+#include "curve_fixture.hpp"
 
 using namespace noise_test;
 namespace rg = rollnoise::geometry;
 
 namespace {
 
-constexpr double kQ = 98.1e3;  // static wheel load (N)
-constexpr double kV = 70 / 3.6;
+constexpr double kQ = kCurveQ;  // static wheel load (N)
+constexpr double kV = kCurveV;
 
-const std::shared_ptr<const rg::WheelRailPair>& pair() {
-  static const auto p = std::make_shared<const rg::WheelRailPair>(
-      rollnoise::io::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
-      rollnoise::io::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
-  return p;
-}
-
-const std::shared_ptr<const rn::ProfileCurvingTable>& table() {
-  static const auto t =
-      std::make_shared<const rn::ProfileCurvingTable>(rn::profile_curving_table(*pair()));
-  return t;
-}
+const std::shared_ptr<const rg::WheelRailPair>& pair() { return s1002_uic60(); }
+const std::shared_ptr<const rn::ProfileCurvingTable>& table() { return s1002_uic60_table(); }
 
 rn::CurveStateInput input(double radius, double cant_deficiency, double mu = 0.3) {
   rn::CurveStateInput in;

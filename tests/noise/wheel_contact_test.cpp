@@ -11,10 +11,10 @@
 #include <memory>
 
 #include "core/errors.hpp"
+#include "curve_fixture.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
 #include "noise/curve_state.hpp"
-#include "noise_fixture.hpp"
 
 using namespace noise_test;
 namespace rg = rollnoise::geometry;
@@ -22,20 +22,14 @@ using rn::WheelId;
 
 namespace {
 
-constexpr double kQ = 98.1e3;  // static wheel load (N)
-constexpr double kV = 70 / 3.6;
+constexpr double kQ = kCurveQ;  // static wheel load (N)
+constexpr double kV = kCurveV;
 
 const std::shared_ptr<const rg::WheelRailPair>& pair() {
-  static const auto p = std::make_shared<const rg::WheelRailPair>(
-      rollnoise::io::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
-      rollnoise::io::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
-  return p;
+  return s1002_uic60();
 }
-
 const std::shared_ptr<const rn::ProfileCurvingTable>& table() {
-  static const auto t =
-      std::make_shared<const rn::ProfileCurvingTable>(rn::profile_curving_table(*pair()));
-  return t;
+  return s1002_uic60_table();
 }
 
 rn::WheelContactInput wheel_input(WheelId id, double u, double psi, double inv_R) {
@@ -79,7 +73,8 @@ const std::vector<WheelId> kFour(rn::kAllWheels.begin(), rn::kAllWheels.end());
 TEST(WheelContact, TangentTrackInnerWheelMirrorsTheOuterWheel) {
   const double u = 2e-3, psi = 1e-3;
   const rn::WheelContact in = rn::wheel_contact(wheel_input(WheelId::leading_inner, u, psi, 0.0));
-  const rn::WheelContact out = rn::wheel_contact(wheel_input(WheelId::leading_outer, -u, -psi, 0.0));
+  const rn::WheelContact out =
+      rn::wheel_contact(wheel_input(WheelId::leading_outer, -u, -psi, 0.0));
   EXPECT_EQ(in.contact.side, rg::Side::Left);
   auto near = [](double a, double b, double scale) { EXPECT_NEAR(a, b, 1e-6 * scale); };
   near(in.contact.contact_angle, out.contact.contact_angle, out.contact.contact_angle);
@@ -139,12 +134,13 @@ TEST(WheelContact, FourWheelsSignConventionsAndLoadsIn300mCurve) {
   EXPECT_LT(w[0].force_track()[1], 0.0) << "leading outer: the flank pushes towards the centre";
   for (const rn::WheelContact& x : w) {
     const auto f = x.force_track();
-    std::printf("%-14s u %5.2f mm psi %5.2f mrad s %6.1f mm rail %6.1f mm angle %.3f..%.3f xi "
-                "(%+.2e, %+.2e, %+.3f) Q %.1f N %.1f F (%+.1f, %+.1f, %.1f) kN\n",
-                rn::wheel_name(x.wheel), 1e3 * x.lateral, 1e3 * x.yaw, 1e3 * x.contact.wheel_s,
-                1e3 * x.contact.rail_y, x.loaded->angle_min, x.loaded->angle_max, x.creepage(0),
-                x.creepage(1), x.creepage(2), 1e-3 * x.vertical_load, 1e-3 * x.normal_force(),
-                1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2]);
+    std::printf(
+        "%-14s u %5.2f mm psi %5.2f mrad s %6.1f mm rail %6.1f mm angle %.3f..%.3f xi "
+        "(%+.2e, %+.2e, %+.3f) Q %.1f N %.1f F (%+.1f, %+.1f, %.1f) kN\n",
+        rn::wheel_name(x.wheel), 1e3 * x.lateral, 1e3 * x.yaw, 1e3 * x.contact.wheel_s,
+        1e3 * x.contact.rail_y, x.loaded->angle_min, x.loaded->angle_max, x.creepage(0),
+        x.creepage(1), x.creepage(2), 1e-3 * x.vertical_load, 1e-3 * x.normal_force(), 1e-3 * f[0],
+        1e-3 * f[1], 1e-3 * f[2]);
   }
 }
 

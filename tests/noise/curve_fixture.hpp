@@ -1,0 +1,30 @@
+// Shared inputs of the curve-state tests: S1002 on UIC60 1:40 (the profiles of models/), their
+// profile curving table, the 10 t static wheel load and 70 km/h of cases/curve_300m.toml.
+#pragma once
+
+#include <memory>
+
+#include "geometry/wheel_rail.hpp"
+#include "io/profile_file.hpp"
+#include "noise/curving.hpp"
+#include "noise_fixture.hpp"
+
+namespace noise_test {
+
+inline constexpr double kCurveQ = 98.1e3;    // static wheel load (N)
+inline constexpr double kCurveV = 70 / 3.6;  // m/s
+
+inline const std::shared_ptr<const rollnoise::geometry::WheelRailPair>& s1002_uic60() {
+  static const auto p = std::make_shared<const rollnoise::geometry::WheelRailPair>(
+      rollnoise::io::read_profile(model_path("profiles/MBench_S1002_v3.prw")),
+      rollnoise::io::read_profile(model_path("profiles/MBench_UIC60_v3.prr")));
+  return p;
+}
+
+inline const std::shared_ptr<const rn::ProfileCurvingTable>& s1002_uic60_table() {
+  static const auto t =
+      std::make_shared<const rn::ProfileCurvingTable>(rn::profile_curving_table(*s1002_uic60()));
+  return t;
+}
+
+}  // namespace noise_test
