@@ -45,7 +45,7 @@ void print_wheels(const pipeline::NoiseResult& r) {
     double total = 0.0;  // the power sum of the Fz band levels (dB re 1 N)
     for (const auto& l : wn.bands.force_level) total += std::pow(10.0, 0.1 * l[0]);
     std::printf("  %-14s u %5.2f mm psi %6.2f mrad | wheel s %6.1f mm rail %6.1f mm angle %.3f rad | xi (%.2e, %.2e, "
-                "%.3f rad/m) | Q %5.1f kN N %5.1f kN | F (%5.1f, %5.1f, %5.1f) kN | Fz %.1f dB re 1 N\n",
+                "%.3f rad/m) | Q %5.1f kN N %5.1f kN | F (%5.1f, %5.1f, %5.1f) kN | Fz %.1f dB re 1 N (all bands)\n",
                 noise::wheel_name(w.wheel), 1e3 * w.lateral, 1e3 * w.yaw, 1e3 * w.contact.wheel_s,
                 1e3 * w.contact.rail_y, w.contact.contact_angle, w.creepage(0), w.creepage(1), w.creepage(2),
                 1e-3 * w.vertical_load, 1e-3 * w.normal_force(), 1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2],
