@@ -8,18 +8,15 @@
 namespace rollnoise::noise {
 namespace {
 
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d) {
-  Eigen::Matrix3d S;
-  S << 0.0, -d.z(), d.y(),  //
-      d.z(), 0.0, -d.x(),   //
-      -d.y(), d.x(), 0.0;
-  return S;
-}
-
-Eigen::Matrix<double, 6, 6> lever(const Eigen::Vector3d& d) {  // L(d) of (M2)
-  Eigen::Matrix<double, 6, 6> L = Eigen::Matrix<double, 6, 6>::Identity();
-  L.topRightCorner<3, 3>() = -cross_matrix(d);
-  return L;
+// L(d) M of (M2) applied to the columns of a 6-row M: u' = u + th x d (loop.hpp's L2).
+template <class M>
+void apply_lever(M& m, const Eigen::Vector3d& d) {
+  for (Eigen::Index j = 0; j < m.cols(); ++j) {  // written out: Eigen's complex cross() conjugates
+    const cdouble tx = m(3, j), ty = m(4, j), tz = m(5, j);
+    m(0, j) += ty * d.z() - tz * d.y();
+    m(1, j) += tz * d.x() - tx * d.z();
+    m(2, j) += tx * d.y() - ty * d.x();
+  }
 }
 
 // RailModel::receptance's assembly (dynamics/track.cpp) for a transfer: vertical beam (w, psi)
@@ -64,8 +61,11 @@ Eigen::Matrix<double, 6, 6> side_reflection(int side) {
 }
 
 Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a, const Eigen::Vector3d& d_b) {
-  const Eigen::Matrix<cdouble, 6, 6> La = lever(d_a).cast<cdouble>(), Lb = lever(d_b).cast<cdouble>();
-  return La * alpha * Lb.transpose();
+  Receptance6 left = alpha;  // L(d_a) alpha
+  apply_lever(left, d_a);
+  Receptance6 both = left.transpose();  // L(d_b) (L(d_a) alpha)^T, transposed back
+  apply_lever(both, d_b);
+  return both.transpose();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -131,10 +131,9 @@ Eigen::Vector3d wheelset_arm(const dynamics::RigidWheelset& w, const ContactPoin
 Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w, const ContactPoint& a,
                                                const ContactPoint& b) {
   if (a.wheelset != b.wheelset) return Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> inv;
-  inv << 1.0 / w.mass, 1.0 / w.mass, 1.0 / w.mass, 1.0 / w.roll_inertia, 1.0 / w.spin_inertia, 1.0 / w.yaw_inertia;
-  const Eigen::Matrix<double, 6, 6> C =
-      lever(wheelset_arm(w, a)) * inv.asDiagonal() * lever(wheelset_arm(w, b)).transpose();  // (M2)
+  // the centre flexibility: wheelset_centre_receptance at omega = 1 is -C
+  const Receptance6 centre = -wheelset_centre_receptance(w, 1.0 / (2.0 * M_PI));
+  const Eigen::Matrix<double, 6, 6> C = move_points(centre, wheelset_arm(w, a), wheelset_arm(w, b)).real();  // (M2)
   return side_reflection(a.side) * C * side_reflection(b.side);
 }
 
