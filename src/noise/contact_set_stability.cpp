@@ -186,22 +186,40 @@ std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::si
   return start;
 }
 
-// Newton at fixed lambda: central-difference derivative, then secant updates.
-std::optional<cdouble> newton(const ModalForm& H, cdouble s, double lambda, const StabilityOptions& o, int& count) {
+// Newton at fixed lambda: central-difference derivative, then secant updates, on H deflated by the
+// other branches of the cluster, H(s) / prod_j (s - s_j) (Aberth 1973; the Weierstrass-Aberth
+// deflation): the same root, but a near-double root of H (the same mode of two weakly coupled
+// wheels, e.g. sin partners that hardly touch the contact) becomes simple, where plain Newton
+// converged too slowly to reach the tolerance.
+std::optional<cdouble> newton(const ModalForm& H, cdouble s, double lambda, const StabilityOptions& o, int& count,
+                              const std::vector<cdouble>& others = {}) {
+  auto G = [&](cdouble z) {
+    cdouble v = H(z, lambda);
+    for (cdouble sj : others) v /= (z - sj);
+    return v;
+  };
   const double h = 1e-6 * std::abs(s);
-  cdouble g = H(s, lambda);
-  cdouble dg = (H(s + h, lambda) - H(s - h, lambda)) / (2.0 * h);
+  cdouble g = G(s);
+  cdouble dg = (G(s + h) - G(s - h)) / (2.0 * h);
   for (int it = 0; it < o.max_iterations; ++it) {
     const cdouble ds = -g / dg;
     ++count;
     if (!std::isfinite(ds.real()) || !std::isfinite(ds.imag())) return std::nullopt;
     s += ds;
     if (std::abs(ds) <= o.tolerance * std::abs(s)) return s;
-    const cdouble g_new = H(s, lambda);
+    const cdouble g_new = G(s);
     dg = (g_new - g) / ds;
     g = g_new;
   }
   return std::nullopt;
+}
+
+// The other branches of a cluster, for the deflation of branch i.
+std::vector<cdouble> others_of(const std::vector<cdouble>& s, std::size_t i) {
+  std::vector<cdouble> o;
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (j != i) o.push_back(s[j]);
+  return o;
 }
 
 // Euler-Newton continuation of the branches s (at lambda) to lambda = 1; returns lambda reached.
@@ -229,13 +247,17 @@ double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lam
         if (j != i) trust = std::min(trust, std::max(0.5 * std::abs(pred[i] - pred[j]), 1e-7 * std::abs(s0)));
       std::optional<cdouble> r;
       try {
-        r = newton(H, pred[i], target, o, iterations[i]);
+        r = newton(H, pred[i], target, o, iterations[i], others_of(pred, i));
       } catch (const NumericalError&) {
         r.reset();
       }
       accepted = r && std::abs(*r - pred[i]) <= trust &&
                  std::abs(*r - pred[i]) <= 0.5 * std::abs(pred[i] - s[i]) + 1e-9 * std::abs(s0);
       if (accepted) next[i] = *r;
+      // A branch that does not move (a mode that hardly touches any contact, e.g. a sin partner
+      // with a small spin creep coefficient, next to the same mode of the other wheel: a
+      // near-double root that Newton cannot resolve to the tolerance) keeps its prediction.
+      if (!accepted && std::abs(pred[i] - s[i]) <= 1e-9 * std::abs(s0)) accepted = true, next[i] = pred[i];
     }
     if (accepted) {
       lambda = target, s = next, have_slope = false, ++steps;
@@ -311,10 +333,10 @@ std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& lo
     bool ok = true;
     try {
       if (c > 1) s = split_cluster(H, cluster, s0, lambda1);
-      for (std::size_t i = 0; i < c && ok && c > 1; ++i) {
-        const auto r = newton(H, s[i], lambda1, o, iterations[i]);
-        ok = r.has_value();
-        if (ok) s[i] = *r;
+      const std::vector<cdouble> start = s;  // first order in lambda1: kept where Newton fails
+      for (std::size_t i = 0; i < c && c > 1; ++i) {
+        const auto r = newton(H, start[i], lambda1, o, iterations[i], others_of(start, i));
+        if (r && std::abs(*r - start[i]) <= 0.5 * std::abs(start[i] - s0) + 1e-9 * std::abs(s0)) s[i] = *r;
       }
     } catch (const NumericalError&) {
       ok = false;
