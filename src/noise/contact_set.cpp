@@ -21,7 +21,8 @@ void apply_lever(M& m, const Eigen::Vector3d& d) {
 
 // RailModel::receptance's assembly (dynamics/track.cpp) for a transfer: vertical beam (w, psi)
 // per (F, M), lateral beam (w, psi) per (Fy, Mz), the rod in x and the head height h.
-Receptance4 rail_four(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
+Receptance4 rail_four(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
+                      double h) {
   using namespace dynamics;
   Receptance4 R = Receptance4::Zero();
   R(kZ, kZ) = Hv(0, 0);
@@ -42,7 +43,8 @@ bool same_wheel(const ContactPoint& a, const ContactPoint& b) {
 }  // namespace
 
 void validate_contacts(const std::vector<ContactPoint>& contacts) {
-  if (contacts.empty()) throw InputError("contacts", "the loop with several contacts needs at least one contact");
+  if (contacts.empty())
+    throw InputError("contacts", "the loop with several contacts needs at least one contact");
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ContactPoint& c = contacts[i];
     const std::string where = "contacts[" + std::to_string(i) + "]";
@@ -60,7 +62,8 @@ Eigen::Matrix<double, 6, 6> side_reflection(int side) {
   return P;
 }
 
-Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a, const Eigen::Vector3d& d_b) {
+Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a,
+                        const Eigen::Vector3d& d_b) {
   Receptance6 left = alpha;  // L(d_a) alpha
   apply_lever(left, d_a);
   Receptance6 both = left.transpose();  // L(d_b) (L(d_a) alpha)^T, transposed back
@@ -75,8 +78,10 @@ Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a, co
 RailLine::RailLine(const dynamics::TrackParameters& track, dynamics::TrackSupport support)
     : track_(track),
       support_(support),
-      vertical_(track.vertical, track.vertical_support, track.sleeper_spacing, track.supports_each_side),
-      lateral_(track.lateral, track.lateral_support, track.sleeper_spacing, track.supports_each_side) {
+      vertical_(track.vertical, track.vertical_support, track.sleeper_spacing,
+                track.supports_each_side),
+      lateral_(track.lateral, track.lateral_support, track.sleeper_spacing,
+               track.supports_each_side) {
   track_.validate();
 }
 
@@ -89,8 +94,10 @@ Receptance4 RailLine::transfer(double frequency, double x_r, double x_e) const {
     Hv = vertical_.transfer(frequency, x_r, x_e);
     Hl = lateral_.transfer(frequency, x_r, x_e);
   } else {
-    Hv = dynamics::continuous_transfer(track_.vertical, track_.vertical_support, L, frequency, x_r - x_e);
-    Hl = dynamics::continuous_transfer(track_.lateral, track_.lateral_support, L, frequency, x_r - x_e);
+    Hv = dynamics::continuous_transfer(track_.vertical, track_.vertical_support, L, frequency,
+                                       x_r - x_e);
+    Hl = dynamics::continuous_transfer(track_.lateral, track_.lateral_support, L, frequency,
+                                       x_r - x_e);
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / L;
   const cdouble rod = dynamics::rod_receptance(track_.vertical, omega, s_x, x_r - x_e);
@@ -99,7 +106,8 @@ Receptance4 RailLine::transfer(double frequency, double x_r, double x_e) const {
 
 Receptance4 RailLine::transfer_laplace(cdouble s, double x_r, double x_e) const {
   if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "rail transfer receptance needs a finite, non-zero Laplace variable s");
+    throw InputError("frequency",
+                     "rail transfer receptance needs a finite, non-zero Laplace variable s");
   const cdouble omega = cdouble(0.0, -1.0) * s;  // i omega = s
   const double wr = omega.real(), L = track_.sleeper_spacing;
   Eigen::Matrix2cd Hv, Hl;
@@ -108,15 +116,17 @@ Receptance4 RailLine::transfer_laplace(cdouble s, double x_r, double x_e) const 
     Hl = lateral_.transfer_at(omega, x_r, x_e);
   } else {
     auto beam = [&](const dynamics::BeamSection& b, const dynamics::Support& sup) {
-      return dynamics::InfiniteBeam(b, omega, sup.dynamic_stiffness(omega) / L, sup.dynamic_stiffness(wr) / L)
+      return dynamics::InfiniteBeam(b, omega, sup.dynamic_stiffness(omega) / L,
+                                    sup.dynamic_stiffness(wr) / L)
           .transfer(x_r - x_e);
     };
     Hv = beam(track_.vertical, track_.vertical_support);
     Hl = beam(track_.lateral, track_.lateral_support);
   }
   const dynamics::Support& lon = track_.longitudinal_support;
-  const cdouble rod = dynamics::rod_receptance(track_.vertical, omega, lon.dynamic_stiffness(omega) / L, x_r - x_e,
-                                               lon.dynamic_stiffness(wr) / L);
+  const cdouble rod =
+      dynamics::rod_receptance(track_.vertical, omega, lon.dynamic_stiffness(omega) / L, x_r - x_e,
+                               lon.dynamic_stiffness(wr) / L);
   return rail_four(Hv, Hl, rod, track_.head_height);
 }
 
@@ -128,16 +138,18 @@ Eigen::Vector3d wheelset_arm(const dynamics::RigidWheelset& w, const ContactPoin
   return {0.0, c.side * (w.contact_offset_y + c.position.wheel_shift_y), -w.wheel_radius};
 }
 
-Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w, const ContactPoint& a,
-                                               const ContactPoint& b) {
+Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w,
+                                               const ContactPoint& a, const ContactPoint& b) {
   if (a.wheelset != b.wheelset) return Eigen::Matrix<double, 6, 6>::Zero();
   // the centre flexibility: wheelset_centre_receptance at omega = 1 is -C
   const Receptance6 centre = -wheelset_centre_receptance(w, 1.0 / (2.0 * M_PI));
-  const Eigen::Matrix<double, 6, 6> C = move_points(centre, wheelset_arm(w, a), wheelset_arm(w, b)).real();  // (M2)
+  const Eigen::Matrix<double, 6, 6> C =
+      move_points(centre, wheelset_arm(w, a), wheelset_arm(w, b)).real();  // (M2)
   return side_reflection(a.side) * C * side_reflection(b.side);
 }
 
-Receptance6 wheel_modal_cross(const Receptance4& modal, const ContactPoint& a, const ContactPoint& b) {
+Receptance6 wheel_modal_cross(const Receptance4& modal, const ContactPoint& a,
+                              const ContactPoint& b) {
   if (!same_wheel(a, b)) return Receptance6::Zero();
   // Both points in the wheel's own (local) frame: the reference point's modal receptance moved by
   // each contact's shift (loop.hpp's wheel_receptance6 for a = b).
@@ -160,8 +172,8 @@ Receptance6 rail_cross(const Receptance4& transfer, const ContactPoint& a, const
 // ---------------------------------------------------------------------------------------------
 
 ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
-                                            const std::vector<ContactPoint>& contacts, double frequency,
-                                            const CrossCoupling& cross) {
+                                            const std::vector<ContactPoint>& contacts,
+                                            double frequency, const CrossCoupling& cross) {
   validate_contacts(contacts);
   const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
   const double omega = dynamics::angular(frequency);
@@ -169,7 +181,8 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
   ContactSetReceptance out;
   out.wheel6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
   out.rail6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
-  // Rail transfers between positions on one rail, each pair once (reciprocity: H(b, a) = H(a, b)^T).
+  // Rail transfers between positions on one rail, each pair once (reciprocity: H(b, a) = H(a,
+  // b)^T).
   std::vector<Receptance4> transfer(static_cast<std::size_t>(n * n));
   for (Eigen::Index a = 0; a < n; ++a)
     for (Eigen::Index b = a; b < n; ++b) {
@@ -182,10 +195,12 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
       const ContactPoint &ca = contacts[a], &cb = contacts[b];
       const bool self = a == b;
       Receptance6 w = Receptance6::Zero(), r = Receptance6::Zero();
-      if (self || cross.wheelset) w += rigid_flexibility6(wheel.wheelset(), ca, cb).cast<cdouble>() / (-omega * omega);
+      if (self || cross.wheelset)
+        w += rigid_flexibility6(wheel.wheelset(), ca, cb).cast<cdouble>() / (-omega * omega);
       if (self || cross.wheel) w += wheel_modal_cross(modal, ca, cb);
       if ((self || cross.rail) && ca.side == cb.side) r = rail_cross(transfer[a * n + b], ca, cb);
-      const Eigen::Matrix<cdouble, 6, 4> Tb = contact_frame(cb.position.contact_angle).cast<cdouble>();
+      const Eigen::Matrix<cdouble, 6, 4> Tb =
+          contact_frame(cb.position.contact_angle).cast<cdouble>();
       out.wheel6.block<6, 4>(6 * a, 4 * b) = w * Tb;
       out.rail6.block<6, 4>(6 * a, 4 * b) = r * Tb;
     }
@@ -193,7 +208,8 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
   out.wheel = Eigen::MatrixXcd(4 * n, 4 * n);
   out.rail = Eigen::MatrixXcd(4 * n, 4 * n);
   for (Eigen::Index a = 0; a < n; ++a) {
-    const Eigen::Matrix<cdouble, 4, 6> Ta = contact_frame(contacts[a].position.contact_angle).cast<cdouble>().transpose();
+    const Eigen::Matrix<cdouble, 4, 6> Ta =
+        contact_frame(contacts[a].position.contact_angle).cast<cdouble>().transpose();
     out.wheel.middleRows(4 * a, 4) = Ta * out.wheel6.middleRows(6 * a, 6);
     out.rail.middleRows(4 * a, 4) = Ta * out.rail6.middleRows(6 * a, 6);
   }

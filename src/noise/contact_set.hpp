@@ -56,8 +56,8 @@ namespace rollnoise::noise {
 
 /// One contact of the bogie: which wheel, where on it and on the rail.
 struct ContactPoint {
-  int wheelset = 0;  ///< index of the wheelset (0 leading, 1 trailing, ...)
-  int side = 1;      ///< +1 or -1: the wheel and rail of this side (the local frame, above)
+  int wheelset = 0;          ///< index of the wheelset (0 leading, 1 trailing, ...)
+  int side = 1;              ///< +1 or -1: the wheel and rail of this side (the local frame, above)
   ContactPosition position;  ///< shift on the wheel, offset on the rail head, angle (local frame)
   double rail_x = 0.3;       ///< position along the rail (m), measured from a sleeper (discrete
                              ///< support; the leading axle at x, the trailing at x + wheelbase)
@@ -79,7 +79,8 @@ void validate_contacts(const std::vector<ContactPoint>& contacts);
 Eigen::Matrix<double, 6, 6> side_reflection(int side);
 
 /// (M2): L(d_a) alpha L(d_b)^T.
-Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a, const Eigen::Vector3d& d_b);
+Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a,
+                        const Eigen::Vector3d& d_b);
 
 /// One rail as a line of points: the 4x4 (z, x, y, rot z) transfer receptance between two points
 /// along it, assembled as dynamics::RailModel::receptance assembles the point receptance (the
@@ -114,8 +115,8 @@ struct ContactSetReceptance {
 /// The assembly at one frequency (Hz) from the wheel model (all wheelsets alike), a rail line per
 /// side (both sides alike here: `rail`) and the contacts; `cross` selects the cross terms.
 ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
-                                            const std::vector<ContactPoint>& contacts, double frequency,
-                                            const CrossCoupling& cross = {});
+                                            const std::vector<ContactPoint>& contacts,
+                                            double frequency, const CrossCoupling& cross = {});
 
 /// The 4N x 4N contact-frame blocks (M1) from 6x6 common-frame pieces: `alpha(a, b)` gives the
 /// 6x6 receptance between contacts a and b already in a's and b's LOCAL frames (zero blocks are
@@ -125,9 +126,11 @@ Eigen::MatrixXcd contact_frame_blocks(const std::vector<ContactPoint>& contacts,
   const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(4 * n, 4 * n);
   for (Eigen::Index a = 0; a < n; ++a) {
-    const Eigen::Matrix<cdouble, 6, 4> Ta = contact_frame(contacts[a].position.contact_angle).cast<cdouble>();
+    const Eigen::Matrix<cdouble, 6, 4> Ta =
+        contact_frame(contacts[a].position.contact_angle).cast<cdouble>();
     for (Eigen::Index b = 0; b < n; ++b) {
-      const Eigen::Matrix<cdouble, 6, 4> Tb = contact_frame(contacts[b].position.contact_angle).cast<cdouble>();
+      const Eigen::Matrix<cdouble, 6, 4> Tb =
+          contact_frame(contacts[b].position.contact_angle).cast<cdouble>();
       A.block<4, 4>(4 * a, 4 * b) = Ta.transpose() * alpha(a, b) * Tb;
     }
   }
@@ -141,12 +144,13 @@ Eigen::Vector3d wheelset_arm(const dynamics::RigidWheelset& w, const ContactPoin
 /// Rigid wheelset between contacts a and b in their local frames, -(1/omega^2) C_ab with C_ab
 /// returned here (real): P_a L(d_a) diag(1/M, .., 1/I_zz) L(d_b)^T P_b; zero for different
 /// wheelsets.
-Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w, const ContactPoint& a,
-                                               const ContactPoint& b);
+Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w,
+                                               const ContactPoint& a, const ContactPoint& b);
 
 /// Flexible wheel (modal part) between contacts a and b of the same wheel in the local frame from
 /// the modal receptance at the reference point (limitation above); zero for different wheels.
-Receptance6 wheel_modal_cross(const Receptance4& modal_at_reference, const ContactPoint& a, const ContactPoint& b);
+Receptance6 wheel_modal_cross(const Receptance4& modal_at_reference, const ContactPoint& a,
+                              const ContactPoint& b);
 
 /// Rail between contacts a and b of the same rail in the local frame, from the 4x4 transfer
 /// between their positions along the rail; zero for different sides.

@@ -12,7 +12,8 @@ namespace rollnoise::noise {
 
 ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, const RailLine& rail,
                                             const std::vector<ContactPoint>& contacts,
-                                            const std::vector<double>& frequencies, const CrossCoupling& cross) {
+                                            const std::vector<double>& frequencies,
+                                            const CrossCoupling& cross) {
   ContactSetStructures s;
   s.frequency = frequencies;
   s.contacts = contacts;
@@ -40,7 +41,8 @@ Eigen::MatrixXd independent_sources(const std::vector<bool>& excited) {
 Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& A, const Eigen::MatrixXd& rho) {
   const Eigen::Index m = A.rows();
   if (A.cols() != m || m != 4 * rho.rows())
-    throw InputError("sources", "noise loop: one roughness amplitude per contact and source is needed");
+    throw InputError("sources",
+                     "noise loop: one roughness amplitude per contact and source is needed");
   // Diagonal equilibration D A D, D_i = |A_ii|^{-1/2} (as loop.cpp), then full-pivoting LU.
   Eigen::VectorXd d(m);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -50,11 +52,14 @@ Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& A, const Eigen
   const Eigen::MatrixXcd D = d.cast<cdouble>().asDiagonal();
   const Eigen::MatrixXcd As = D * A * D;
   Eigen::MatrixXcd rhs = Eigen::MatrixXcd::Zero(m, rho.cols());
-  for (Eigen::Index a = 0; a < rho.rows(); ++a) rhs.row(4 * a) = -d(4 * a) * rho.row(a).cast<cdouble>();
+  for (Eigen::Index a = 0; a < rho.rows(); ++a)
+    rhs.row(4 * a) = -d(4 * a) * rho.row(a).cast<cdouble>();
   const Eigen::FullPivLU<Eigen::MatrixXcd> lu(As);
   if (!As.allFinite() || !lu.isInvertible()) {
     std::ostringstream s;
-    s << "noise loop with several contacts: the total receptance matrix is singular or not finite:\n" << A;
+    s << "noise loop with several contacts: the total receptance matrix is singular or not "
+         "finite:\n"
+      << A;
     throw NumericalError(s.str());
   }
   return D * lu.solve(rhs);
@@ -67,9 +72,11 @@ ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& s,
   if (contact.size() != n)
     throw InputError("contacts", "noise loop: one contact receptance series per contact is needed");
   for (const auto& c : contact)
-    if (c.size() != nf) throw InputError("frequency", "noise loop: one contact receptance per frequency is needed");
+    if (c.size() != nf)
+      throw InputError("frequency", "noise loop: one contact receptance per frequency is needed");
   if (static_cast<std::size_t>(rho.rows()) != n)
-    throw InputError("sources", "noise loop: one roughness amplitude per contact and source is needed");
+    throw InputError("sources",
+                     "noise loop: one roughness amplitude per contact and source is needed");
   ContactSetLoopResult r;
   r.frequency = s.frequency;
   r.rho = rho;
@@ -117,7 +124,8 @@ double power_add(double level_sum, double level) {  // 10 log10(10^(a/10) + 10^(
 }
 }  // namespace
 
-BandLevels contact_band_levels(const ContactSetLoopResult& result, int a, const std::vector<double>& centres,
+BandLevels contact_band_levels(const ContactSetLoopResult& result, int a,
+                               const std::vector<double>& centres,
                                const std::vector<std::vector<double>>& roughness_levels) {
   if (static_cast<int>(roughness_levels.size()) != result.sources())
     throw InputError("roughness", "one roughness level spectrum per source is needed");
@@ -136,12 +144,15 @@ BandLevels contact_band_levels(const ContactSetLoopResult& result, int a, const 
     for (std::size_t j = 0; j < b.centre.size(); ++j) {
       const double rho = std::abs(result.rho(a, e));
       if (rho != 0.0)
-        sum.roughness_level[j] = power_add(sum.roughness_level[j], b.roughness_level[j] + 20.0 * std::log10(rho));
-      for (int i = 0; i < 4; ++i) sum.force_level[j][i] = power_add(sum.force_level[j][i], b.force_level[j][i]);
+        sum.roughness_level[j] =
+            power_add(sum.roughness_level[j], b.roughness_level[j] + 20.0 * std::log10(rho));
+      for (int i = 0; i < 4; ++i)
+        sum.force_level[j][i] = power_add(sum.force_level[j][i], b.force_level[j][i]);
       if (j < b.velocity_level.size())
         for (int p = 0; p < 2; ++p)
           for (int i = 0; i < 4; ++i)
-            sum.velocity_level[j][p][i] = power_add(sum.velocity_level[j][p][i], b.velocity_level[j][p][i]);
+            sum.velocity_level[j][p][i] =
+                power_add(sum.velocity_level[j][p][i], b.velocity_level[j][p][i]);
     }
   }
   return sum;

@@ -28,7 +28,7 @@
 // spectra add over the sources (Bendat & Piersol, Random Data, 2010, Ch. 7: the output spectrum
 // of a linear system under uncorrelated inputs is the sum of |H_e|^2 S_e):
 //
-//   S_X(f) = sum_e |H_X,e(f)|^2 S_e(f),   L_X(b) = 10 log10 sum_e 10^{L_X,e(b)/10}              (M4)
+//   S_X(f) = sum_e |H_X,e(f)|^2 S_e(f),   L_X(b) = 10 log10 sum_e 10^{L_X,e(b)/10} (M4)
 //
 // with L_X,e the band level (B1) of bands.hpp of X under source e alone.
 #pragma once
@@ -53,7 +53,8 @@ struct ContactSetStructures {
 
 ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, const RailLine& rail,
                                             const std::vector<ContactPoint>& contacts,
-                                            const std::vector<double>& frequencies, const CrossCoupling& cross = {});
+                                            const std::vector<double>& frequencies,
+                                            const CrossCoupling& cross = {});
 
 /// rho of (M4) with one unit source per contact flagged `excited` (the others: zero rows).
 Eigen::MatrixXd independent_sources(const std::vector<bool>& excited);
@@ -61,9 +62,10 @@ Eigen::MatrixXd independent_sources(const std::vector<bool>& excited);
 /// The loop's solution: per frequency, the forces and velocities of every contact (rows 4a .. 4a +
 /// 3 for contact a) under each source (columns), per unit roughness of the source.
 struct ContactSetLoopResult {
-  std::vector<double> frequency;                ///< Hz
-  std::vector<Eigen::MatrixXcd> force;          ///< 4N x E: (Fz, Fx, Fy, Mz) of each contact, contact frame
-  std::vector<Eigen::MatrixXcd> wheel_velocity; ///< 4N x E: (z, x, y, rot z), each contact's local frame
+  std::vector<double> frequency;        ///< Hz
+  std::vector<Eigen::MatrixXcd> force;  ///< 4N x E: (Fz, Fx, Fy, Mz) of each contact, contact frame
+  std::vector<Eigen::MatrixXcd>
+      wheel_velocity;  ///< 4N x E: (z, x, y, rot z), each contact's local frame
   std::vector<Eigen::MatrixXcd> rail_velocity;  ///< 4N x E
   Eigen::MatrixXd rho;                          ///< the sources' amplitudes at the contacts (N x E)
   int contacts() const { return force.empty() ? 0 : static_cast<int>(force.front().rows() / 4); }
@@ -77,7 +79,8 @@ ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& structur
                                             const Eigen::MatrixXd& sources, bool velocities = true);
 
 /// (M3) at one frequency: F (4N x E) from the assembled total receptance and rho.
-Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& total, const Eigen::MatrixXd& sources);
+Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& total,
+                                          const Eigen::MatrixXd& sources);
 
 /// Contact a under source e as a single-contact LoopResult (for bands.hpp).
 LoopResult contact_response(const ContactSetLoopResult& result, int contact, int source);
@@ -85,7 +88,8 @@ LoopResult contact_response(const ContactSetLoopResult& result, int contact, int
 /// Band levels (M4) of contact a: the power sum over the sources of (B1) with each source's own
 /// effective roughness levels (`roughness_levels[e]`, dB re 1 um in the bands `centres`). Its
 /// roughness_level is the power sum of the sources that drive contact a directly (rho_ae != 0).
-BandLevels contact_band_levels(const ContactSetLoopResult& result, int contact, const std::vector<double>& centres,
+BandLevels contact_band_levels(const ContactSetLoopResult& result, int contact,
+                               const std::vector<double>& centres,
                                const std::vector<std::vector<double>>& roughness_levels);
 
 }  // namespace rollnoise::noise

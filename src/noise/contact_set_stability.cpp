@@ -31,8 +31,8 @@ Eigen::VectorXd equilibration(const Eigen::MatrixXcd& A) {  // D_i = |A_ii|^{-1/
   return d;
 }
 
-// The wheel's mode k at contact c in its frame: T^T L(0, shift, 0) (phi_x, phi_y, phi_z, 0, 0, phi_rz)
-// (the vector form of the rank-one modal term of loop.hpp's wheel_receptance6).
+// The wheel's mode k at contact c in its frame: T^T L(0, shift, 0) (phi_x, phi_y, phi_z, 0, 0,
+// phi_rz) (the vector form of the rank-one modal term of loop.hpp's wheel_receptance6).
 Eigen::Vector4d contact_shape(const dynamics::WheelMode& mode, const ContactPoint& c) {
   Eigen::Matrix<double, 6, 1> phi = Eigen::Matrix<double, 6, 1>::Zero();
   for (int i = 0; i < 4; ++i) phi(kSixOfFour[i]) = mode.shape(i);
@@ -51,14 +51,18 @@ Eigen::MatrixXcd ContactSetLaplaceLoop::matrix(cdouble s) const {
   return a;
 }
 
-ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel, const RailLine& rail,
-                                               const std::vector<SquealContact>& contacts, double speed,
-                                               bool normal_coupling, const CrossCoupling& cross) {
+ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel,
+                                               const RailLine& rail,
+                                               const std::vector<SquealContact>& contacts,
+                                               double speed, bool normal_coupling,
+                                               const CrossCoupling& cross) {
   const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
-  if (n == 0) throw InputError("contacts", "squeal with several contacts needs at least one contact");
+  if (n == 0)
+    throw InputError("contacts", "squeal with several contacts needs at least one contact");
   std::vector<ContactPoint> points;
   for (const SquealContact& c : contacts) {
-    if (!c.transfer) throw InputError("contacts", "squeal: every contact needs its contact transfer");
+    if (!c.transfer)
+      throw InputError("contacts", "squeal: every contact needs its contact transfer");
     points.push_back(c.point);
   }
   validate_contacts(points);
@@ -72,7 +76,9 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
   for (std::size_t w = 0; w < loop.wheels.size(); ++w)
     for (std::size_t k = 0; k < wheel.modes().size(); ++k) {
       const dynamics::WheelMode& wm = wheel.modes()[k];
-      ContactSetMode m{wm.frequency, wm.damping_ratio, wm.modal_mass, Eigen::VectorXd::Zero(4 * n), wm.label, k,
+      ContactSetMode m{wm.frequency,       wm.damping_ratio,
+                       wm.modal_mass,      Eigen::VectorXd::Zero(4 * n),
+                       wm.label,           k,
                        static_cast<int>(w)};
       for (Eigen::Index a = 0; a < n; ++a)
         if (std::make_pair(points[a].wheelset, points[a].side) == loop.wheels[w])
@@ -81,20 +87,23 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
     }
   // The rigid wheelsets' flexibility in the contact frames (constant: alpha = C / s^2).
   const dynamics::RigidWheelset ws = wheel.wheelset();
-  const Eigen::MatrixXcd C = contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
-    if (a != b && !cross.wheelset) return Receptance6::Zero();
-    return rigid_flexibility6(ws, points[a], points[b]).cast<cdouble>();
-  });
+  const Eigen::MatrixXcd C =
+      contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
+        if (a != b && !cross.wheelset) return Receptance6::Zero();
+        return rigid_flexibility6(ws, points[a], points[b]).cast<cdouble>();
+      });
   loop.rest = [=, &rail](cdouble s) -> Eigen::MatrixXcd {
     Eigen::MatrixXcd A = C / (s * s);
     A += contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
       if (points[a].side != points[b].side || (a != b && !cross.rail)) return Receptance6::Zero();
-      return rail_cross(rail.transfer_laplace(s, points[a].rail_x, points[b].rail_x), points[a], points[b]);
+      return rail_cross(rail.transfer_laplace(s, points[a].rail_x, points[b].rail_x), points[a],
+                        points[b]);
     });
     for (Eigen::Index a = 0; a < n; ++a) {
       const ContactTransfer& t = *contacts[a].transfer;
       const Eigen::Vector3cd g = normal_coupling ? t.load(s) : Eigen::Vector3cd::Zero();
-      A.block<4, 4>(4 * a, 4 * a) += contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, t.creep(s), g);
+      A.block<4, 4>(4 * a, 4 * a) +=
+          contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, t.creep(s), g);
     }
     return A;
   };
@@ -125,7 +134,8 @@ class ModalForm {
     const Eigen::VectorXd d = equilibration(R);
     const Eigen::MatrixXcd Rs = d.cast<cdouble>().asDiagonal() * R * d.cast<cdouble>().asDiagonal();
     const Eigen::FullPivLU<Eigen::MatrixXcd> lu(Rs);
-    if (!lu.isInvertible() || !Rs.allFinite()) throw NumericalError("squeal: the loop without the wheel modes is singular");
+    if (!lu.isInvertible() || !Rs.allFinite())
+      throw NumericalError("squeal: the loop without the wheel modes is singular");
     if (det_R) *det_R = lu.determinant() / (d.prod() * d.prod());
     const Eigen::MatrixXcd P = (d.asDiagonal() * Psi_).cast<cdouble>();
     Eigen::MatrixXcd Q = P.transpose() * lu.solve(P);
@@ -149,7 +159,8 @@ class ModalForm {
     const Eigen::MatrixXcd O = own(s), Q = coupling(s, &det_R);
     const cdouble H_l = det_R *
                         (Eigen::MatrixXcd(O + (lambda + dl) * Q).partialPivLu().determinant() -
-                         Eigen::MatrixXcd(O + (lambda - dl) * Q).partialPivLu().determinant()) / (2.0 * dl);
+                         Eigen::MatrixXcd(O + (lambda - dl) * Q).partialPivLu().determinant()) /
+                        (2.0 * dl);
     return -H_l / (((*this)(s + h, lambda) - (*this)(s - h, lambda)) / (2.0 * h));
   }
   Eigen::MatrixXcd modal_matrix(cdouble s) const { return own(s) + coupling(s); }
@@ -161,10 +172,12 @@ class ModalForm {
 };
 
 // First-order splitting of a c-fold uncoupled root (stability.cpp's split_cluster).
-std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::size_t>& k, cdouble s0, double lambda1) {
+std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::size_t>& k,
+                                   cdouble s0, double lambda1) {
   const std::size_t c = k.size();
   const Eigen::MatrixXcd Qf = H.coupling(s0);
-  const Eigen::MatrixXcd slope = (H.own(s0 * (1.0 + 1e-7)) - H.own(s0 * (1.0 - 1e-7))) / (2e-7 * s0);
+  const Eigen::MatrixXcd slope =
+      (H.own(s0 * (1.0 + 1e-7)) - H.own(s0 * (1.0 - 1e-7))) / (2e-7 * s0);
   Eigen::MatrixXcd N(c, c);
   for (std::size_t i = 0; i < c; ++i)
     for (std::size_t j = 0; j < c; ++j) N(i, j) = Qf(k[i], k[j]) / slope(k[i], k[i]);
@@ -178,7 +191,8 @@ std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::si
       if (used[i]) continue;
       const Eigen::VectorXcd v = es.eigenvectors().col(i);
       for (std::size_t j = 0; j < c; ++j)
-        if (!taken[j] && std::abs(v(j)) / v.norm() > best) best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
+        if (!taken[j] && std::abs(v(j)) / v.norm() > best)
+          best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
     }
     used[bi] = taken[bj] = true;
     start[bj] = s0 - lambda1 * es.eigenvalues()(bi);
@@ -191,7 +205,8 @@ std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::si
 // deflation): the same root, but a near-double root of H (the same mode of two weakly coupled
 // wheels, e.g. sin partners that hardly touch the contact) becomes simple, where plain Newton
 // converged too slowly to reach the tolerance.
-std::optional<cdouble> newton(const ModalForm& H, cdouble s, double lambda, const StabilityOptions& o, int& count,
+std::optional<cdouble> newton(const ModalForm& H, cdouble s, double lambda,
+                              const StabilityOptions& o, int& count,
                               const std::vector<cdouble>& others = {}) {
   auto G = [&](cdouble z) {
     cdouble v = H(z, lambda);
@@ -223,8 +238,9 @@ std::vector<cdouble> others_of(const std::vector<cdouble>& s, std::size_t i) {
 }
 
 // Euler-Newton continuation of the branches s (at lambda) to lambda = 1; returns lambda reached.
-double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lambda, double base_trust, cdouble s0,
-                         const StabilityOptions& o, std::vector<int>& iterations, int& steps) {
+double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lambda,
+                         double base_trust, cdouble s0, const StabilityOptions& o,
+                         std::vector<int>& iterations, int& steps) {
   const std::size_t c = s.size();
   double step = o.max_step;
   std::vector<cdouble> slope(c);
@@ -244,7 +260,8 @@ double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lam
     for (std::size_t i = 0; i < c && accepted; ++i) {
       double trust = base_trust;
       for (std::size_t j = 0; j < c; ++j)
-        if (j != i) trust = std::min(trust, std::max(0.5 * std::abs(pred[i] - pred[j]), 1e-7 * std::abs(s0)));
+        if (j != i)
+          trust = std::min(trust, std::max(0.5 * std::abs(pred[i] - pred[j]), 1e-7 * std::abs(s0)));
       std::optional<cdouble> r;
       try {
         r = newton(H, pred[i], target, o, iterations[i], others_of(pred, i));
@@ -257,7 +274,8 @@ double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lam
       // A branch that does not move (a mode that hardly touches any contact, e.g. a sin partner
       // with a small spin creep coefficient, next to the same mode of the other wheel: a
       // near-double root that Newton cannot resolve to the tolerance) keeps its prediction.
-      if (!accepted && std::abs(pred[i] - s[i]) <= 1e-9 * std::abs(s0)) accepted = true, next[i] = pred[i];
+      if (!accepted && std::abs(pred[i] - s[i]) <= 1e-9 * std::abs(s0))
+        accepted = true, next[i] = pred[i];
     }
     if (accepted) {
       lambda = target, s = next, have_slope = false, ++steps;
@@ -271,8 +289,8 @@ double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lam
 }
 
 // The root's report: stability.hpp's fields, and each wheel's share of the null vector.
-ContactSetRoot report(const ContactSetLaplaceLoop& loop, const ModalForm& H, std::size_t mode, cdouble s0, cdouble s,
-                      bool converged) {
+ContactSetRoot report(const ContactSetLaplaceLoop& loop, const ModalForm& H, std::size_t mode,
+                      cdouble s0, cdouble s, bool converged) {
   ContactSetRoot out;
   ModeRoot& r = out.root;
   const ContactSetMode& m = loop.modes[mode];
@@ -290,17 +308,19 @@ ContactSetRoot report(const ContactSetLaplaceLoop& loop, const ModalForm& H, std
     r.residual = std::abs(M.partialPivLu().determinant()) / bound;
     const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(M, Eigen::ComputeFullV);
     const Eigen::VectorXcd q = svd.matrixV().col(M.cols() - 1);
-    for (std::size_t j = 0; j < loop.modes.size(); ++j) out.wheel_share[loop.modes[j].wheel] += std::norm(q(j));
+    for (std::size_t j = 0; j < loop.modes.size(); ++j)
+      out.wheel_share[loop.modes[j].wheel] += std::norm(q(j));
     const Eigen::MatrixXcd A = loop.matrix(s);
     const Eigen::VectorXd d = equilibration(A);
-    const Eigen::JacobiSVD<Eigen::MatrixXcd> sa(d.cast<cdouble>().asDiagonal() * A * d.cast<cdouble>().asDiagonal());
+    const Eigen::JacobiSVD<Eigen::MatrixXcd> sa(d.cast<cdouble>().asDiagonal() * A *
+                                                d.cast<cdouble>().asDiagonal());
     r.singular_ratio = sa.singularValues()(A.rows() - 1) / sa.singularValues()(0);
   } catch (const NumericalError&) {
     r.residual = r.singular_ratio = std::nan("");
     r.converged = false;
   }
-  out.dominant_wheel = static_cast<int>(std::max_element(out.wheel_share.begin(), out.wheel_share.end()) -
-                                        out.wheel_share.begin());
+  out.dominant_wheel = static_cast<int>(
+      std::max_element(out.wheel_share.begin(), out.wheel_share.end()) - out.wheel_share.begin());
   return out;
 }
 
@@ -308,7 +328,8 @@ ContactSetRoot report(const ContactSetLaplaceLoop& loop, const ModalForm& H, std
 
 namespace {
 
-std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& loop, const StabilityOptions& o) {
+std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& loop,
+                                                 const StabilityOptions& o) {
   const ModalForm H(loop);
   std::vector<ContactSetRoot> out;
   std::vector<bool> done(loop.modes.size(), false);
@@ -336,12 +357,14 @@ std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& lo
       const std::vector<cdouble> start = s;  // first order in lambda1: kept where Newton fails
       for (std::size_t i = 0; i < c && c > 1; ++i) {
         const auto r = newton(H, start[i], lambda1, o, iterations[i], others_of(start, i));
-        if (r && std::abs(*r - start[i]) <= 0.5 * std::abs(start[i] - s0) + 1e-9 * std::abs(s0)) s[i] = *r;
+        if (r && std::abs(*r - start[i]) <= 0.5 * std::abs(start[i] - s0) + 1e-9 * std::abs(s0))
+          s[i] = *r;
       }
     } catch (const NumericalError&) {
       ok = false;
     }
-    const double reached = ok ? continue_branches(H, s, lambda1, base_trust, s0, o, iterations, steps) : 0.0;
+    const double reached =
+        ok ? continue_branches(H, s, lambda1, base_trust, s0, o, iterations, steps) : 0.0;
     for (std::size_t i = 0; i < c; ++i) {
       ContactSetRoot r = report(loop, H, cluster[i], s0, s[i], ok && reached >= 1.0);
       r.root.iterations = iterations[i];
@@ -373,7 +396,8 @@ std::vector<int> contact_groups(const ContactSetLaplaceLoop& loop, Eigen::Index 
 
 }  // namespace
 
-std::vector<ContactSetRoot> contact_set_mode_roots(const ContactSetLaplaceLoop& loop, const StabilityOptions& o) {
+std::vector<ContactSetRoot> contact_set_mode_roots(const ContactSetLaplaceLoop& loop,
+                                                   const StabilityOptions& o) {
   if (loop.modes.empty()) return {};
   const Eigen::Index n = loop.modes.front().shape.size() / 4;
   if (loop.contact_wheel.size() != static_cast<std::size_t>(n))
@@ -407,7 +431,9 @@ std::vector<ContactSetRoot> contact_set_mode_roots(const ContactSetLaplaceLoop& 
       out.push_back(r);
     }
   }
-  std::sort(out.begin(), out.end(), [](const ContactSetRoot& a, const ContactSetRoot& b) { return a.root.mode < b.root.mode; });
+  std::sort(out.begin(), out.end(), [](const ContactSetRoot& a, const ContactSetRoot& b) {
+    return a.root.mode < b.root.mode;
+  });
   return out;
 }
 

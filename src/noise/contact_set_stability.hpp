@@ -23,14 +23,14 @@
 //
 //   H(s; lambda) = det R(s) det( diag(m_j D_j(s)) + lambda Psi^T R(s)^{-1} Psi )              (S7)
 //
-// (rows scaled by 1/(m_j omega_j^2)), whose roots at lambda = 1 are those of (S6); at lambda = 0 they
-// are the uncoupled modes of BOTH wheels, continued together by the same Euler-Newton homotopy as
-// stability.hpp (one analytic family: paths do not merge; modes with one uncoupled root, the sin/
-// cos partners and the same mode of the two wheels, form a cluster started from the first-order
-// splitting). Which wheel a root belongs to: the null vector q of the modal matrix of (S7) at the
-// root (the modal amplitudes of the free vibration) gives each wheel's share
-// sum_{j in wheel} |q_j|^2 / |q|^2; the root is the wheel's with the largest share (a root of two
-// wheels alike, e.g. on tangent track, has shares near 1/2 each).
+// (rows scaled by 1/(m_j omega_j^2)), whose roots at lambda = 1 are those of (S6); at lambda = 0
+// they are the uncoupled modes of BOTH wheels, continued together by the same Euler-Newton homotopy
+// as stability.hpp (one analytic family: paths do not merge; modes with one uncoupled root, the
+// sin/ cos partners and the same mode of the two wheels, form a cluster started from the
+// first-order splitting). Which wheel a root belongs to: the null vector q of the modal matrix of
+// (S7) at the root (the modal amplitudes of the free vibration) gives each wheel's share sum_{j in
+// wheel} |q_j|^2 / |q|^2; the root is the wheel's with the largest share (a root of two wheels
+// alike, e.g. on tangent track, has shares near 1/2 each).
 #pragma once
 
 #include <Eigen/Core>
@@ -75,14 +75,16 @@ struct SquealContact {
 
 /// The loop (S6) of a set of contacts: every wheel that has a contact gets the modes of `wheel`;
 /// `normal_coupling` switches g (C3) on; `cross` selects the cross terms as in the noise loop.
-ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel, const RailLine& rail,
-                                               const std::vector<SquealContact>& contacts, double speed,
-                                               bool normal_coupling, const CrossCoupling& cross = {});
+ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel,
+                                               const RailLine& rail,
+                                               const std::vector<SquealContact>& contacts,
+                                               double speed, bool normal_coupling,
+                                               const CrossCoupling& cross = {});
 
 /// A root of (S6) continued from one wheel's mode.
 struct ContactSetRoot {
-  ModeRoot root;                    ///< as stability.hpp (root.mode indexes ContactSetLaplaceLoop::modes)
-  int wheel = 0;                    ///< the wheel of the mode it continues
+  ModeRoot root;  ///< as stability.hpp (root.mode indexes ContactSetLaplaceLoop::modes)
+  int wheel = 0;  ///< the wheel of the mode it continues
   std::vector<double> wheel_share;  ///< per wheel, sum of |q_j|^2 over its modes / |q|^2
   int dominant_wheel = 0;           ///< the wheel with the largest share
 };

@@ -1,11 +1,12 @@
 // Squeal with several contacts (noise/contact_set_stability.hpp, docs/squeal.md Sec. 9).
+#include "noise/contact_set_stability.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
-#include "noise/contact_set_stability.hpp"
 #include "noise/contact_transfer.hpp"
 #include "noise/stability.hpp"
 #include "noise_fixture.hpp"
@@ -26,7 +27,8 @@ rn::ContactPoint point(int side, double shift, double offset, double angle) {
 }
 
 // stability.hpp's single-contact loop (S1) for one contact, as pipeline/squeal assembles it.
-rn::LaplaceLoop single_loop(const rn::ContactPoint& c, const rd::RailModel& rail, const rn::ContactTransfer& t) {
+rn::LaplaceLoop single_loop(const rn::ContactPoint& c, const rd::RailModel& rail,
+                            const rn::ContactTransfer& t) {
   rn::LaplaceLoop loop;
   loop.modes = rn::contact_frame_modes(wheel(), c.position);
   const Eigen::Matrix4d C = rn::rigid_flexibility(wheel().wheelset(), c.position);
@@ -41,7 +43,8 @@ rn::LaplaceLoop single_loop(const rn::ContactPoint& c, const rd::RailModel& rail
 // A wheelset in a curve: the outer wheel (side +1) near the flange root, the inner (side -1) on its
 // tread; Kalker's constant creep coefficients; band 300 Hz - 2.5 kHz.
 struct Wheelset {
-  rn::ConstantTransfer kalker = rn::ConstantTransfer::kalker(kA, kB, material().shear_modulus(), material().nu);
+  rn::ConstantTransfer kalker =
+      rn::ConstantTransfer::kalker(kA, kB, material().shear_modulus(), material().nu);
   std::vector<rn::ContactPoint> points{point(1, -8e-3, -6e-3, 0.35), point(-1, 2e-3, 3e-3, 0.03)};
   rn::RailLine rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous};
   std::vector<rn::SquealContact> contacts() const {
@@ -64,14 +67,15 @@ struct Wheelset {
 // its own wheel (1e-8 relative in s) and lies entirely on that wheel (share 1 to 1e-8).
 TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
   const Wheelset w;
-  const rn::ContactSetLaplaceLoop loop =
-      rn::contact_set_laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false, rn::CrossCoupling::none());
+  const rn::ContactSetLaplaceLoop loop = rn::contact_set_laplace_loop(
+      wheel(), w.rail, w.contacts(), kSpeed, false, rn::CrossCoupling::none());
   ASSERT_EQ(loop.wheels.size(), 2u);
   const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
   const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   int compared = 0;
   for (int side = 0; side < 2; ++side) {
-    const std::vector<rn::ModeRoot> ref = rn::mode_roots(single_loop(w.points[side], rail, w.kalker), w.options());
+    const std::vector<rn::ModeRoot> ref =
+        rn::mode_roots(single_loop(w.points[side], rail, w.kalker), w.options());
     for (const rn::ModeRoot& r : ref) {
       ASSERT_TRUE(r.converged) << r.label;
       const rn::ContactSetRoot* match = nullptr;
@@ -89,13 +93,14 @@ TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
   EXPECT_GT(compared, 10);
 }
 
-// Passivity extended to a wheelset: constant (Kalker) friction, normal coupling off, both wheels and
-// a flange patch coupled through the rigid wheelset, the flexible wheel and each rail: every root
-// decays (Re s < 0; no tolerance) and converged; each root's wheel shares add to 1.
+// Passivity extended to a wheelset: constant (Kalker) friction, normal coupling off, both wheels
+// and a flange patch coupled through the rigid wheelset, the flexible wheel and each rail: every
+// root decays (Re s < 0; no tolerance) and converged; each root's wheel shares add to 1.
 TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive) {
   Wheelset w;
   w.points.push_back(point(1, -30e-3, -25e-3, 1.2));  // the flange patch of the outer wheel
-  const rn::ContactSetLaplaceLoop loop = rn::contact_set_laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false);
+  const rn::ContactSetLaplaceLoop loop =
+      rn::contact_set_laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false);
   const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
   ASSERT_GT(roots.size(), 10u);
   for (const rn::ContactSetRoot& r : roots) {
@@ -103,8 +108,8 @@ TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive)
     EXPECT_LT(r.root.s.real(), 0.0) << r.root.label << " wheel " << r.wheel;
     EXPECT_LT(r.root.singular_ratio, 1e-8) << r.root.label;
     EXPECT_NEAR(r.wheel_share[0] + r.wheel_share[1], 1.0, 1e-12);
-    std::printf("wheel %d %-14s %8.2f Hz  zeta %.3e  share outer %.3f\n", r.wheel, r.root.label.c_str(),
-                r.root.frequency, r.root.damping_ratio, r.wheel_share[0]);
+    std::printf("wheel %d %-14s %8.2f Hz  zeta %.3e  share outer %.3f\n", r.wheel,
+                r.root.label.c_str(), r.root.frequency, r.root.damping_ratio, r.wheel_share[0]);
   }
 }
 
@@ -125,17 +130,20 @@ TEST(ContactSetSqueal, NegativeCreepDampingAtTheInnerWheelDestabilisesTheInnerWh
   const rn::ConstantTransfer inner(falling);
   std::vector<rn::SquealContact> contacts = w.contacts();
   contacts[1].transfer = &inner;
-  const rn::ContactSetLaplaceLoop loop = rn::contact_set_laplace_loop(wheel(), w.rail, contacts, kSpeed, false);
+  const rn::ContactSetLaplaceLoop loop =
+      rn::contact_set_laplace_loop(wheel(), w.rail, contacts, kSpeed, false);
   const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
   int unstable = 0, unconverged = 0;
   for (const rn::ContactSetRoot& r : roots) {
     if (!r.root.converged) ++unconverged;
     if (!r.root.converged)
-      std::printf("unconverged: wheel %d %-14s s0 %g%+gi  s %g%+gi steps %d it %d\n", r.wheel, r.root.label.c_str(), r.root.s0.real(), r.root.s0.imag(), r.root.s.real(), r.root.s.imag(), r.root.steps, r.root.iterations);
+      std::printf("unconverged: wheel %d %-14s s0 %g%+gi  s %g%+gi steps %d it %d\n", r.wheel,
+                  r.root.label.c_str(), r.root.s0.real(), r.root.s0.imag(), r.root.s.real(),
+                  r.root.s.imag(), r.root.steps, r.root.iterations);
     if (!r.root.unstable || !r.root.converged) continue;
     ++unstable;
-    std::printf("unstable: wheel %d %-14s %8.2f Hz  zeta %.3e  share inner %.3f\n", r.wheel, r.root.label.c_str(),
-                r.root.frequency, r.root.damping_ratio, r.wheel_share[1]);
+    std::printf("unstable: wheel %d %-14s %8.2f Hz  zeta %.3e  share inner %.3f\n", r.wheel,
+                r.root.label.c_str(), r.root.frequency, r.root.damping_ratio, r.wheel_share[1]);
     EXPECT_EQ(r.dominant_wheel, 1) << r.root.label;
     EXPECT_GT(r.wheel_share[1], 0.9) << r.root.label;
     EXPECT_LT(r.root.singular_ratio, 1e-8) << r.root.label;
