@@ -47,6 +47,9 @@ const std::map<std::string, std::string> kPseudoKeys = {
     {"excitation", "library guard: creepage and normal-load histories of different lengths"},
     {"receptance", "library guard: one wheel and one rail receptance per frequency"},
     {"roughness", "library guard: one roughness level per band"},
+    {"contacts", "library guard: the contact set of the loop with several contacts (noise/contact_set.hpp; no "
+                 "case keys yet, contacts[i].side etc. name the entry)"},
+    {"sources", "library guard: one roughness amplitude per contact and source (noise/contact_set_loop.hpp)"},
     {"rail_material", "library guard: the waveguide rail's steel (dynamics::RailMaterial; no case key "
                       "yet)"},
     {"rail_support", "library guard: the waveguide rail's support (dynamics::FootSupport)"},

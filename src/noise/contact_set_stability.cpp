@@ -1,0 +1,440 @@
+#include "noise/contact_set_stability.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/errors.hpp"
+
+namespace rollnoise::noise {
+namespace {
+
+cdouble modal_denominator(const ContactSetMode& m, cdouble s) {  // m_k D_k(s)
+  const double w = dynamics::angular(m.frequency);
+  return m.modal_mass * (w * w + 2.0 * m.damping_ratio * w * s + s * s);
+}
+
+cdouble uncoupled_root(const ContactSetMode& m) {
+  const double w = dynamics::angular(m.frequency), z = m.damping_ratio;
+  return {-z * w, w * std::sqrt(1.0 - z * z)};
+}
+
+Eigen::VectorXd equilibration(const Eigen::MatrixXcd& A) {  // D_i = |A_ii|^{-1/2}
+  Eigen::VectorXd d(A.rows());
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    const double m = std::abs(A(i, i));
+    d(i) = m > 0.0 && std::isfinite(m) ? 1.0 / std::sqrt(m) : 1.0;
+  }
+  return d;
+}
+
+// The wheel's mode k at contact c in its frame: T^T L(0, shift, 0) (phi_x, phi_y, phi_z, 0, 0,
+// phi_rz) (the vector form of the rank-one modal term of loop.hpp's wheel_receptance6).
+Eigen::Vector4d contact_shape(const dynamics::WheelMode& mode, const ContactPoint& c) {
+  Eigen::Matrix<double, 6, 1> phi = Eigen::Matrix<double, 6, 1>::Zero();
+  for (int i = 0; i < 4; ++i) phi(kSixOfFour[i]) = mode.shape(i);
+  // the lever arm (L2) on the shape: u' = u + th x d, d = (0, shift, 0)
+  const Eigen::Vector3d th = phi.tail<3>(), d(0.0, c.position.wheel_shift_y, 0.0);
+  phi.head<3>() += th.cross(d);
+  return contact_frame(c.position.contact_angle).transpose() * phi;
+}
+
+}  // namespace
+
+Eigen::MatrixXcd ContactSetLaplaceLoop::matrix(cdouble s) const {
+  Eigen::MatrixXcd a = rest(s);
+  for (const ContactSetMode& m : modes)
+    a += (m.shape * m.shape.transpose()).cast<cdouble>() / modal_denominator(m, s);
+  return a;
+}
+
+ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel,
+                                               const RailLine& rail,
+                                               const std::vector<SquealContact>& contacts,
+                                               double speed, bool normal_coupling,
+                                               const CrossCoupling& cross) {
+  const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
+  if (n == 0)
+    throw InputError("contacts", "squeal with several contacts needs at least one contact");
+  std::vector<ContactPoint> points;
+  for (const SquealContact& c : contacts) {
+    if (!c.transfer)
+      throw InputError("contacts", "squeal: every contact needs its contact transfer");
+    points.push_back(c.point);
+  }
+  validate_contacts(points);
+  ContactSetLaplaceLoop loop;
+  for (const ContactPoint& p : points) {
+    const std::pair<int, int> w{p.wheelset, p.side};
+    auto it = std::find(loop.wheels.begin(), loop.wheels.end(), w);
+    loop.contact_wheel.push_back(static_cast<int>(it - loop.wheels.begin()));
+    if (it == loop.wheels.end()) loop.wheels.push_back(w);
+  }
+  for (std::size_t w = 0; w < loop.wheels.size(); ++w)
+    for (std::size_t k = 0; k < wheel.modes().size(); ++k) {
+      const dynamics::WheelMode& wm = wheel.modes()[k];
+      ContactSetMode m{wm.frequency,       wm.damping_ratio,
+                       wm.modal_mass,      Eigen::VectorXd::Zero(4 * n),
+                       wm.label,           k,
+                       static_cast<int>(w)};
+      for (Eigen::Index a = 0; a < n; ++a)
+        if (std::make_pair(points[a].wheelset, points[a].side) == loop.wheels[w])
+          m.shape.segment<4>(4 * a) = contact_shape(wm, points[a]);
+      loop.modes.push_back(m);
+    }
+  // The rigid wheelsets' flexibility in the contact frames (constant: alpha = C / s^2).
+  const dynamics::RigidWheelset ws = wheel.wheelset();
+  const Eigen::MatrixXcd C =
+      contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
+        if (a != b && !cross.wheelset) return Receptance6::Zero();
+        return rigid_flexibility6(ws, points[a], points[b]).cast<cdouble>();
+      });
+  loop.rest = [=, &rail](cdouble s) -> Eigen::MatrixXcd {
+    Eigen::MatrixXcd A = C / (s * s);
+    A += contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
+      if (points[a].side != points[b].side || (a != b && !cross.rail)) return Receptance6::Zero();
+      return rail_cross(rail.transfer_laplace(s, points[a].rail_x, points[b].rail_x), points[a],
+                        points[b]);
+    });
+    for (Eigen::Index a = 0; a < n; ++a) {
+      const ContactTransfer& t = *contacts[a].transfer;
+      const Eigen::Vector3cd g = normal_coupling ? t.load(s) : Eigen::Vector3cd::Zero();
+      A.block<4, 4>(4 * a, 4 * a) +=
+          contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, t.creep(s), g);
+    }
+    return A;
+  };
+  return loop;
+}
+
+// ---------------------------------------------------------------------------------------------
+// (S7): the modal form over all modes and its continuation (stability.cpp's route 2 in 4N)
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+class ModalForm {
+ public:
+  explicit ModalForm(const ContactSetLaplaceLoop& loop) : loop_(loop) {
+    const std::size_t m = loop.modes.size();
+    scale_.resize(m);
+    Psi_.resize(m ? loop.modes[0].shape.size() : 0, m);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double w = dynamics::angular(loop.modes[j].frequency);
+      scale_(j) = loop.modes[j].modal_mass * w * w;
+      Psi_.col(j) = loop.modes[j].shape;
+    }
+  }
+  // diag(1/(m_j omega_j^2)) Psi^T R^{-1} Psi and det R (R equilibrated).
+  Eigen::MatrixXcd coupling(cdouble s, cdouble* det_R = nullptr) const {
+    const Eigen::MatrixXcd R = loop_.rest(s);
+    const Eigen::VectorXd d = equilibration(R);
+    const Eigen::MatrixXcd Rs = d.cast<cdouble>().asDiagonal() * R * d.cast<cdouble>().asDiagonal();
+    const Eigen::FullPivLU<Eigen::MatrixXcd> lu(Rs);
+    if (!lu.isInvertible() || !Rs.allFinite())
+      throw NumericalError("squeal: the loop without the wheel modes is singular");
+    if (det_R) *det_R = lu.determinant() / (d.prod() * d.prod());
+    const Eigen::MatrixXcd P = (d.asDiagonal() * Psi_).cast<cdouble>();
+    Eigen::MatrixXcd Q = P.transpose() * lu.solve(P);
+    for (Eigen::Index j = 0; j < Q.rows(); ++j) Q.row(j) /= scale_(j);
+    return Q;
+  }
+  Eigen::MatrixXcd own(cdouble s) const {  // diag(D_j(s) / omega_j^2)
+    const std::size_t m = loop_.modes.size();
+    Eigen::MatrixXcd D = Eigen::MatrixXcd::Zero(m, m);
+    for (std::size_t j = 0; j < m; ++j) D(j, j) = modal_denominator(loop_.modes[j], s) / scale_(j);
+    return D;
+  }
+  cdouble operator()(cdouble s, double lambda) const {
+    cdouble det_R;
+    const Eigen::MatrixXcd Q = coupling(s, &det_R);
+    return det_R * Eigen::MatrixXcd(own(s) + lambda * Q).partialPivLu().determinant();
+  }
+  cdouble tangent(cdouble s, double lambda) const {  // ds/dlambda = -H_lambda / H_s
+    const double h = 1e-6 * std::abs(s), dl = 1e-5;
+    cdouble det_R;
+    const Eigen::MatrixXcd O = own(s), Q = coupling(s, &det_R);
+    const cdouble H_l = det_R *
+                        (Eigen::MatrixXcd(O + (lambda + dl) * Q).partialPivLu().determinant() -
+                         Eigen::MatrixXcd(O + (lambda - dl) * Q).partialPivLu().determinant()) /
+                        (2.0 * dl);
+    return -H_l / (((*this)(s + h, lambda) - (*this)(s - h, lambda)) / (2.0 * h));
+  }
+  Eigen::MatrixXcd modal_matrix(cdouble s) const { return own(s) + coupling(s); }
+
+ private:
+  const ContactSetLaplaceLoop& loop_;
+  Eigen::VectorXd scale_;
+  Eigen::MatrixXd Psi_;
+};
+
+// First-order splitting of a c-fold uncoupled root (stability.cpp's split_cluster).
+std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::size_t>& k,
+                                   cdouble s0, double lambda1) {
+  const std::size_t c = k.size();
+  const Eigen::MatrixXcd Qf = H.coupling(s0);
+  const Eigen::MatrixXcd slope =
+      (H.own(s0 * (1.0 + 1e-7)) - H.own(s0 * (1.0 - 1e-7))) / (2e-7 * s0);
+  Eigen::MatrixXcd N(c, c);
+  for (std::size_t i = 0; i < c; ++i)
+    for (std::size_t j = 0; j < c; ++j) N(i, j) = Qf(k[i], k[j]) / slope(k[i], k[i]);
+  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(N);
+  std::vector<cdouble> start(c, s0);
+  std::vector<bool> taken(c, false), used(c, false);
+  for (std::size_t round = 0; round < c; ++round) {
+    double best = -1.0;
+    std::size_t bi = 0, bj = 0;
+    for (std::size_t i = 0; i < c; ++i) {
+      if (used[i]) continue;
+      const Eigen::VectorXcd v = es.eigenvectors().col(i);
+      for (std::size_t j = 0; j < c; ++j)
+        if (!taken[j] && std::abs(v(j)) / v.norm() > best)
+          best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
+    }
+    used[bi] = taken[bj] = true;
+    start[bj] = s0 - lambda1 * es.eigenvalues()(bi);
+  }
+  return start;
+}
+
+// Newton at fixed lambda: central-difference derivative, then secant updates, on H deflated by the
+// other branches of the cluster, H(s) / prod_j (s - s_j) (Aberth 1973; the Weierstrass-Aberth
+// deflation): the same root, but a near-double root of H (the same mode of two weakly coupled
+// wheels, e.g. sin partners that hardly touch the contact) becomes simple, where plain Newton
+// converged too slowly to reach the tolerance.
+std::optional<cdouble> newton(const ModalForm& H, cdouble s, double lambda,
+                              const StabilityOptions& o, int& count,
+                              const std::vector<cdouble>& others = {}) {
+  auto G = [&](cdouble z) {
+    cdouble v = H(z, lambda);
+    for (cdouble sj : others) v /= (z - sj);
+    return v;
+  };
+  const double h = 1e-6 * std::abs(s);
+  cdouble g = G(s);
+  cdouble dg = (G(s + h) - G(s - h)) / (2.0 * h);
+  for (int it = 0; it < o.max_iterations; ++it) {
+    const cdouble ds = -g / dg;
+    ++count;
+    if (!std::isfinite(ds.real()) || !std::isfinite(ds.imag())) return std::nullopt;
+    s += ds;
+    if (std::abs(ds) <= o.tolerance * std::abs(s)) return s;
+    const cdouble g_new = G(s);
+    dg = (g_new - g) / ds;
+    g = g_new;
+  }
+  return std::nullopt;
+}
+
+// The other branches of a cluster, for the deflation of branch i.
+std::vector<cdouble> others_of(const std::vector<cdouble>& s, std::size_t i) {
+  std::vector<cdouble> o;
+  for (std::size_t j = 0; j < s.size(); ++j)
+    if (j != i) o.push_back(s[j]);
+  return o;
+}
+
+// Euler-Newton continuation of the branches s (at lambda) to lambda = 1; returns lambda reached.
+double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lambda,
+                         double base_trust, cdouble s0, const StabilityOptions& o,
+                         std::vector<int>& iterations, int& steps) {
+  const std::size_t c = s.size();
+  double step = o.max_step;
+  std::vector<cdouble> slope(c);
+  bool have_slope = false;
+  while (lambda < 1.0) {
+    const double target = std::min(1.0, lambda + step);
+    try {
+      if (!have_slope)
+        for (std::size_t i = 0; i < c; ++i) slope[i] = H.tangent(s[i], lambda);
+      have_slope = true;
+    } catch (const NumericalError&) {
+      return lambda;
+    }
+    bool accepted = true;
+    std::vector<cdouble> next(c), pred(c);
+    for (std::size_t i = 0; i < c; ++i) pred[i] = s[i] + (target - lambda) * slope[i];
+    for (std::size_t i = 0; i < c && accepted; ++i) {
+      double trust = base_trust;
+      for (std::size_t j = 0; j < c; ++j)
+        if (j != i)
+          trust = std::min(trust, std::max(0.5 * std::abs(pred[i] - pred[j]), 1e-7 * std::abs(s0)));
+      std::optional<cdouble> r;
+      try {
+        r = newton(H, pred[i], target, o, iterations[i], others_of(pred, i));
+      } catch (const NumericalError&) {
+        r.reset();
+      }
+      accepted = r && std::abs(*r - pred[i]) <= trust &&
+                 std::abs(*r - pred[i]) <= 0.5 * std::abs(pred[i] - s[i]) + 1e-9 * std::abs(s0);
+      if (accepted) next[i] = *r;
+      // A branch that does not move (a mode that hardly touches any contact, e.g. a sin partner
+      // with a small spin creep coefficient, next to the same mode of the other wheel: a
+      // near-double root that Newton cannot resolve to the tolerance) keeps its prediction.
+      if (!accepted && std::abs(pred[i] - s[i]) <= 1e-9 * std::abs(s0))
+        accepted = true, next[i] = pred[i];
+    }
+    if (accepted) {
+      lambda = target, s = next, have_slope = false, ++steps;
+      step = std::min(2.0 * step, o.max_step);
+      continue;
+    }
+    step *= 0.5;
+    if (step < o.min_step) break;
+  }
+  return lambda;
+}
+
+// The root's report: stability.hpp's fields, and each wheel's share of the null vector.
+ContactSetRoot report(const ContactSetLaplaceLoop& loop, const ModalForm& H, std::size_t mode,
+                      cdouble s0, cdouble s, bool converged) {
+  ContactSetRoot out;
+  ModeRoot& r = out.root;
+  const ContactSetMode& m = loop.modes[mode];
+  r.mode = mode, r.label = m.label, r.natural_frequency = m.frequency, r.s0 = s0, r.s = s;
+  r.converged = converged;
+  r.frequency = s.imag() / (2.0 * M_PI);
+  r.damping_ratio = -s.real() / std::abs(s);
+  r.unstable = s.real() > 0.0;
+  out.wheel = m.wheel;
+  out.wheel_share.assign(loop.wheels.size(), 0.0);
+  try {
+    const Eigen::MatrixXcd M = H.modal_matrix(s);
+    double bound = 1.0;
+    for (Eigen::Index i = 0; i < M.rows(); ++i) bound *= M.row(i).norm();
+    r.residual = std::abs(M.partialPivLu().determinant()) / bound;
+    const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(M, Eigen::ComputeFullV);
+    const Eigen::VectorXcd q = svd.matrixV().col(M.cols() - 1);
+    for (std::size_t j = 0; j < loop.modes.size(); ++j)
+      out.wheel_share[loop.modes[j].wheel] += std::norm(q(j));
+    const Eigen::MatrixXcd A = loop.matrix(s);
+    const Eigen::VectorXd d = equilibration(A);
+    const Eigen::JacobiSVD<Eigen::MatrixXcd> sa(d.cast<cdouble>().asDiagonal() * A *
+                                                d.cast<cdouble>().asDiagonal());
+    r.singular_ratio = sa.singularValues()(A.rows() - 1) / sa.singularValues()(0);
+  } catch (const NumericalError&) {
+    r.residual = r.singular_ratio = std::nan("");
+    r.converged = false;
+  }
+  out.dominant_wheel = static_cast<int>(
+      std::max_element(out.wheel_share.begin(), out.wheel_share.end()) - out.wheel_share.begin());
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& loop,
+                                                 const StabilityOptions& o) {
+  const ModalForm H(loop);
+  std::vector<ContactSetRoot> out;
+  std::vector<bool> done(loop.modes.size(), false);
+  for (std::size_t k = 0; k < loop.modes.size(); ++k) {
+    const ContactSetMode& mk = loop.modes[k];
+    if (done[k] || !(mk.frequency >= o.band_min && mk.frequency <= o.band_max)) continue;
+    const cdouble s0 = uncoupled_root(mk);
+    std::vector<std::size_t> cluster{k};  // modes with the same uncoupled root (all wheels)
+    double nearest = 1e300;
+    for (std::size_t j = 0; j < loop.modes.size(); ++j) {
+      const double d = std::abs(uncoupled_root(loop.modes[j]) - s0);
+      if (j != k && d <= 1e-9 * std::abs(s0)) cluster.push_back(j);
+      if (d > 1e-9 * std::abs(s0)) nearest = std::min(nearest, d);
+    }
+    for (std::size_t j : cluster) done[j] = true;
+    const double base_trust = std::clamp(0.5 * nearest, 1e-3 * std::abs(s0), 5e-2 * std::abs(s0));
+    const std::size_t c = cluster.size();
+    const double lambda1 = c > 1 ? 1e-3 : 0.0;
+    std::vector<cdouble> s(c, s0);
+    std::vector<int> iterations(c, 0);
+    int steps = 0;
+    bool ok = true;
+    try {
+      if (c > 1) s = split_cluster(H, cluster, s0, lambda1);
+      const std::vector<cdouble> start = s;  // first order in lambda1: kept where Newton fails
+      for (std::size_t i = 0; i < c && c > 1; ++i) {
+        const auto r = newton(H, start[i], lambda1, o, iterations[i], others_of(start, i));
+        if (r && std::abs(*r - start[i]) <= 0.5 * std::abs(start[i] - s0) + 1e-9 * std::abs(s0))
+          s[i] = *r;
+      }
+    } catch (const NumericalError&) {
+      ok = false;
+    }
+    const double reached =
+        ok ? continue_branches(H, s, lambda1, base_trust, s0, o, iterations, steps) : 0.0;
+    for (std::size_t i = 0; i < c; ++i) {
+      ContactSetRoot r = report(loop, H, cluster[i], s0, s[i], ok && reached >= 1.0);
+      r.root.iterations = iterations[i];
+      r.root.steps = steps;
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
+// The groups of contacts that the structures couple (union of the nonzero off-diagonal blocks of
+// rest at a test point on the axis): e.g. the two wheelsets of a bogie when the rails' transfer is
+// off. Their characteristic equations are independent factors of (S6), whose root paths may cross
+// (no longer one analytic family), so each group is continued alone.
+std::vector<int> contact_groups(const ContactSetLaplaceLoop& loop, Eigen::Index n) {
+  const Eigen::MatrixXcd R = loop.rest(cdouble(0.0, 2.0 * M_PI * 997.0));
+  std::vector<int> g(n);
+  for (Eigen::Index a = 0; a < n; ++a) g[a] = static_cast<int>(a);
+  auto root = [&](int a) {
+    while (g[a] != a) a = g[a] = g[g[a]];
+    return a;
+  };
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index b = 0; b < n; ++b)
+      if (a != b && (R.block(4 * a, 4 * b, 4, 4).cwiseAbs().maxCoeff() > 0.0)) g[root(a)] = root(b);
+  for (Eigen::Index a = 0; a < n; ++a) g[a] = root(static_cast<int>(a));
+  return g;
+}
+
+}  // namespace
+
+std::vector<ContactSetRoot> contact_set_mode_roots(const ContactSetLaplaceLoop& loop,
+                                                   const StabilityOptions& o) {
+  if (loop.modes.empty()) return {};
+  const Eigen::Index n = loop.modes.front().shape.size() / 4;
+  if (loop.contact_wheel.size() != static_cast<std::size_t>(n))
+    throw InputError("contacts", "squeal: the loop needs the wheel of each contact");
+  const std::vector<int> group = contact_groups(loop, n);
+  std::vector<ContactSetRoot> out;
+  for (Eigen::Index leader = 0; leader < n; ++leader) {
+    if (group[leader] != leader) continue;
+    std::vector<Eigen::Index> rows;  // the group's rows of (S6)
+    for (Eigen::Index a = 0; a < n; ++a)
+      if (group[a] == leader)
+        for (int i = 0; i < 4; ++i) rows.push_back(4 * a + i);
+    ContactSetLaplaceLoop sub;
+    sub.wheels = loop.wheels;
+    std::vector<std::size_t> index;  // sub mode -> loop mode
+    std::vector<bool> in_group(loop.wheels.size(), false);
+    for (Eigen::Index a = 0; a < n; ++a)
+      if (group[a] == leader) in_group[loop.contact_wheel[a]] = true;
+    for (std::size_t k = 0; k < loop.modes.size(); ++k) {
+      if (!in_group[loop.modes[k].wheel]) continue;  // a wheel of another group
+      ContactSetMode m = loop.modes[k];
+      m.shape = Eigen::VectorXd(rows.size());
+      for (std::size_t i = 0; i < rows.size(); ++i) m.shape(i) = loop.modes[k].shape(rows[i]);
+      sub.modes.push_back(m);
+      index.push_back(k);
+    }
+    const auto rest = loop.rest;
+    sub.rest = [rest, rows](cdouble s) -> Eigen::MatrixXcd { return rest(s)(rows, rows); };
+    for (ContactSetRoot r : connected_mode_roots(sub, o)) {
+      r.root.mode = index[r.root.mode];
+      out.push_back(r);
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const ContactSetRoot& a, const ContactSetRoot& b) {
+    return a.root.mode < b.root.mode;
+  });
+  return out;
+}
+
+}  // namespace rollnoise::noise
