@@ -44,14 +44,10 @@ const std::map<std::string, std::string> kPseudoKeys = {
     {"tread_position", "argument: the contact's lateral position s on the wheel's running surface"},
     {"frequency", "a frequency argument of a numerics function; the case's frequencies are checked "
                   "against frequency.* and excitation.* where they are read"},
-    {"excitation", "library guard: creepage and normal-load histories of different lengths"},
-    {"receptance", "library guard: one wheel and one rail receptance per frequency"},
-    {"roughness", "library guard: one roughness level per band"},
     {"rail_material", "library guard: the waveguide rail's steel (dynamics::RailMaterial; no case key "
                       "yet)"},
     {"rail_support", "library guard: the waveguide rail's support (dynamics::FootSupport)"},
     {"rail_section", "library guard: the waveguide rail's section mesh (a flat foot, a head, edges)"},
-    {"creep", "library guard: no creep-coefficient model given"},
     {"normal_stiffness", "argument of the contact receptance (derived from the Hertzian contact)"},
     {"a", "argument of Kalker's coefficients / the contact receptance (contact.a or the patch)"},
     {"b", "argument of Kalker's coefficients (contact.b or the patch)"},
