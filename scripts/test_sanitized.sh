@@ -34,10 +34,12 @@
 #   FallingFrictionModel.SweepRoutes* (69 s) and .ConstantFrictionLimits* (53 s),
 #   FallingFrictionSqueal.* (63 s, a bisection of squeal runs); the same functions run sanitized in
 #   the other FallingFriction*, LaplaceCoefficients.* and SquealFallingFriction.* tests.
+#   SquealKalker.* (5 s in Release: a squeal run and route 1 on curve_300m); the same code paths
+#   run sanitized in SquealRoutes.* and SquealPassivity.*.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \

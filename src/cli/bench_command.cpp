@@ -1,6 +1,6 @@
 // rollnoise bench: run time against error under grid refinement for a Hertzian case (issue 7).
 // The study itself (what is measured on each grid, the errors, the half-step phase lead, the
-// length of the transient runs) is nss/grid_study.hpp; the observed orders of convergence are
+// length of the transient runs) is pipeline/grid_study.hpp; the observed orders of convergence are
 // linalg/convergence.hpp. This file reads the options, runs the grids, prints the tables and
 // writes them to HDF5 (/bench/*, default CASENAME.h5) and as CSV (postprocess/plot_bench.py draws it).
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "io/output_files.hpp"
 #include "linalg/convergence.hpp"
 #include "noise/kalker_linear.hpp"
-#include "nss/grid_study.hpp"
+#include "pipeline/grid_study.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -27,8 +27,8 @@ using Quantity = io::BenchColumn;
 
 }  // namespace
 
-nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::ContactCase& base) {
-  nss::GridStudyCase c;
+pipeline::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::ContactCase& base) {
+  pipeline::GridStudyCase c;
   c.material = base.material;
   c.normal_force = base.normal_force;
   c.a = base.a, c.b = base.b;
@@ -42,8 +42,8 @@ nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::Cont
 
 namespace {
 
-void print_header(const std::string& name, const nss::GridStudyCase& c, const nss::GridStudySettings& s,
-                  const nss::GridStudyExcitation& e) {
+void print_header(const std::string& name, const pipeline::GridStudyCase& c, const pipeline::GridStudySettings& s,
+                  const pipeline::GridStudyExcitation& e) {
   const contact::Creepage& m = c.steady.creepage;
   std::printf(
       "%s: grid refinement, mean creepage (%g, %g, %g rad/m); transient: variation "
@@ -53,20 +53,20 @@ void print_header(const std::string& name, const nss::GridStudyCase& c, const ns
       s.transient_frequency, e.duration * 1e3, s.settle_lengths, s.fit_periods);
 }
 
-std::vector<nss::GridMeasurement> measure_grids(const nss::GridStudyCase& c, const nss::GridStudySettings& s,
-                                                const nss::GridStudyExcitation& e, const std::vector<int>& grids,
+std::vector<pipeline::GridMeasurement> measure_grids(const pipeline::GridStudyCase& c, const pipeline::GridStudySettings& s,
+                                                const pipeline::GridStudyExcitation& e, const std::vector<int>& grids,
                                                 bool quiet) {
-  std::vector<nss::GridMeasurement> res;
+  std::vector<pipeline::GridMeasurement> res;
   Progress progress("bench", long(grids.size()), quiet, "grids");
   for (int nx : grids) {
-    res.push_back(nss::measure_grid(c, s, e, nx));
+    res.push_back(pipeline::measure_grid(c, s, e, nx));
     progress.update(long(res.size()));
   }
   progress.finish();
   return res;
 }
 
-std::vector<Quantity> quantities(const nss::GridStudyErrors& err) {
+std::vector<Quantity> quantities(const pipeline::GridStudyErrors& err) {
   std::vector<Quantity> q = {{"steady forces (Fx, Fy)", "err_force_rel", "err F", &err.force},
                              {"steady Mz", "err_mz_rel", "err Mz", &err.mz}};
   const char* fname[] = {"100Hz", "1kHz", "5kHz"};
@@ -86,12 +86,12 @@ std::vector<Quantity> quantities(const nss::GridStudyErrors& err) {
   return q;
 }
 
-void print_grids(const std::vector<nss::GridMeasurement>& res, const nss::GridStudyErrors& err,
-                 const nss::GridStudySettings& s, const io::ContactCase& base, double c11_table) {
+void print_grids(const std::vector<pipeline::GridMeasurement>& res, const pipeline::GridStudyErrors& err,
+                 const pipeline::GridStudySettings& s, const io::ContactCase& base, double c11_table) {
   std::printf("%5s %5s %8s %7s %10s %10s %10s %6s %8s %9s\n", "nx", "ny", "dx [mm]", "contact",
               "steady [s]", "creep [s]", "trans. [s]", "steps", "C11", "err C11");
   for (size_t i = 0; i < res.size(); ++i) {
-    const nss::GridMeasurement& r = res[i];
+    const pipeline::GridMeasurement& r = res[i];
     std::printf("%5d %5d %8.4f %7d %10.3f %10.3f %10.3f %6ld %8.4f %9.2e\n", r.nx, r.ny, r.dx * 1e3,
                 r.contact, r.t_steady, r.t_creep, r.t_transient, r.steps, r.c11, err.c11_table[i]);
   }
@@ -103,8 +103,8 @@ void print_grids(const std::vector<nss::GridMeasurement>& res, const nss::GridSt
       base.a / base.b, base.material.nu);
 }
 
-void print_errors(const std::vector<nss::GridMeasurement>& res, const nss::GridStudyErrors& err,
-                  const std::vector<Quantity>& quantities, const nss::GridStudySettings& s) {
+void print_errors(const std::vector<pipeline::GridMeasurement>& res, const pipeline::GridStudyErrors& err,
+                  const std::vector<Quantity>& quantities, const pipeline::GridStudySettings& s) {
   std::printf("%5s", "nx");
   for (const auto& q : quantities)
     if (!q.header.empty()) std::printf(" %10s", q.header.c_str());
@@ -122,10 +122,10 @@ void print_errors(const std::vector<nss::GridMeasurement>& res, const nss::GridS
       s.transient_frequency, err.window_error);
 }
 
-void print_orders(const std::vector<nss::GridMeasurement>& res, const nss::GridStudyErrors& err,
+void print_orders(const std::vector<pipeline::GridMeasurement>& res, const pipeline::GridStudyErrors& err,
                   const std::vector<Quantity>& quantities) {
   if (res.size() < 3) return;
-  const nss::GridMeasurement& ref = res.back();
+  const pipeline::GridMeasurement& ref = res.back();
   std::printf("observed order of convergence, fitting err = C (dx^p - dx_%d^p) to grids %d..%d:\n", ref.nx,
               res[0].nx, res[res.size() - 2].nx);
   const std::string own = "own error " + std::to_string(ref.nx) + "x" + std::to_string(ref.ny);
@@ -136,9 +136,9 @@ void print_orders(const std::vector<nss::GridMeasurement>& res, const nss::GridS
   }
 }
 
-void write_table(std::ostream& out, const std::string& case_file, const std::vector<nss::GridMeasurement>& res,
-                 const nss::GridStudyErrors& err, const std::vector<Quantity>& quantities,
-                 const nss::GridStudySettings& s, double c11_table) {
+void write_table(std::ostream& out, const std::string& case_file, const std::vector<pipeline::GridMeasurement>& res,
+                 const pipeline::GridStudyErrors& err, const std::vector<Quantity>& quantities,
+                 const pipeline::GridStudySettings& s, double c11_table) {
   out << "# rollnoise bench " << case_file << ": errors relative to the finest grid (nx = " << res.back().nx
       << "); err_C11_kalker against Kalker's table (" << c11_table
       << "); err_f: largest of f11, f22, f23; err_transient: complex amplitudes of Fx, Fy at "
@@ -151,7 +151,7 @@ void write_table(std::ostream& out, const std::string& case_file, const std::vec
   out << ",err_transient_vs_linear_rel\n";
   out.precision(8);
   for (size_t i = 0; i < res.size(); ++i) {
-    const nss::GridMeasurement& r = res[i];
+    const pipeline::GridMeasurement& r = res[i];
     out << r.nx << "," << r.ny << "," << r.dx << "," << r.contact << "," << r.t_steady << "," << r.t_creep
         << "," << r.t_transient << "," << r.t_normal + r.t_kalker << "," << r.steps << "," << r.force(0)
         << "," << r.force(1) << "," << r.force(2) << "," << r.c11 << "," << err.c11_table[i];
@@ -161,9 +161,9 @@ void write_table(std::ostream& out, const std::string& case_file, const std::vec
 }
 
 // The table as CSV, written atomically (io/output_files.hpp).
-void write_csv(const std::string& csv, const std::string& case_file, const std::vector<nss::GridMeasurement>& res,
-               const nss::GridStudyErrors& err, const std::vector<Quantity>& quantities,
-               const nss::GridStudySettings& s, double c11_table) {
+void write_csv(const std::string& csv, const std::string& case_file, const std::vector<pipeline::GridMeasurement>& res,
+               const pipeline::GridStudyErrors& err, const std::vector<Quantity>& quantities,
+               const pipeline::GridStudySettings& s, double c11_table) {
   io::write_text_file(csv, "--csv", [&](std::ostream& out) {
     write_table(out, case_file, res, err, quantities, s, c11_table);
   }).commit();
@@ -175,10 +175,10 @@ void write_csv(const std::string& csv, const std::string& case_file, const std::
 
 // ---- The creepage-sampling study (rolling.creepage_sampling, docs/accuracy.md): per grid the time
 // of a sweep of settings.sweep_count frequencies and the errors of f11, f22, f23 at the accuracy
-// frequencies against the grid-converged f, for every sampling (nss::sampling_accuracy). ----
+// frequencies against the grid-converged f, for every sampling (pipeline::sampling_accuracy). ----
 
-constexpr int kSamplings = static_cast<int>(nss::kStudySamplings.size());
-const char* sampling_label(int sm) { return contact::sampling_name(nss::kStudySamplings[sm]); }
+constexpr int kSamplings = static_cast<int>(pipeline::kStudySamplings.size());
+const char* sampling_label(int sm) { return contact::sampling_name(pipeline::kStudySamplings[sm]); }
 
 std::string frequency_label(double f) {
   char text[32];
@@ -187,7 +187,7 @@ std::string frequency_label(double f) {
 }
 
 // The error columns of the sampling study (pointers into `a`).
-std::vector<Quantity> sampling_columns(const nss::SamplingAccuracy& a, const nss::GridStudySettings& s) {
+std::vector<Quantity> sampling_columns(const pipeline::SamplingAccuracy& a, const pipeline::GridStudySettings& s) {
   const char* entry[3] = {"f11", "f22", "f23"};
   std::vector<Quantity> q;
   for (int sm = 0; sm < kSamplings; ++sm)
@@ -202,8 +202,8 @@ std::vector<Quantity> sampling_columns(const nss::SamplingAccuracy& a, const nss
   return q;
 }
 
-void print_sampling_accuracy(const std::vector<nss::GridMeasurement>& res, const nss::SamplingAccuracy& a,
-                             const std::vector<Quantity>& columns, const nss::GridStudySettings& s) {
+void print_sampling_accuracy(const std::vector<pipeline::GridMeasurement>& res, const pipeline::SamplingAccuracy& a,
+                             const std::vector<Quantity>& columns, const pipeline::GridStudySettings& s) {
   std::printf("creepage sampling: errors of f against the grid-converged f (Richardson on the three finest grids of "
               "the second-order sampling with the smaller estimated error):\n");
   for (size_t i = 0; i < s.accuracy_frequencies.size(); ++i) {
@@ -241,21 +241,21 @@ int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const io::ContactCase base = io::read_contact_case(reader);
   if (base.geometry != "hertz") reader.fail("contact.geometry", "bench needs a Hertzian case");
-  const nss::GridStudyCase study = bench_study_case(reader, base);
-  nss::check_study_grids(study, grids);  // before any solve
-  const nss::GridStudySettings settings;
-  const nss::GridStudyExcitation excitation = nss::grid_study_excitation(study, settings);
+  const pipeline::GridStudyCase study = bench_study_case(reader, base);
+  pipeline::check_study_grids(study, grids);  // before any solve
+  const pipeline::GridStudySettings settings;
+  const pipeline::GridStudyExcitation excitation = pipeline::grid_study_excitation(study, settings);
 
   print_header(reader.name(), study, settings, excitation);
-  const std::vector<nss::GridMeasurement> res = measure_grids(study, settings, excitation, grids, o.quiet);
+  const std::vector<pipeline::GridMeasurement> res = measure_grids(study, settings, excitation, grids, o.quiet);
   const double c11_table = noise::kalker_coefficients(base.a / base.b, base.material.nu).C11;
-  const nss::GridStudyErrors err = nss::grid_study_errors(res, settings, base.speed, c11_table, study.sampling);
+  const pipeline::GridStudyErrors err = pipeline::grid_study_errors(res, settings, base.speed, c11_table, study.sampling);
   const std::vector<Quantity> table = quantities(err);
 
   print_grids(res, err, settings, base, c11_table);
   print_errors(res, err, table, settings);
   print_orders(res, err, table);
-  const nss::SamplingAccuracy sampling = nss::sampling_accuracy(res, settings);
+  const pipeline::SamplingAccuracy sampling = pipeline::sampling_accuracy(res, settings);
   const std::vector<Quantity> sampling_table = sampling_columns(sampling, settings);
   print_sampling_accuracy(res, sampling, sampling_table, settings);
   std::vector<Quantity> csv_columns = table;

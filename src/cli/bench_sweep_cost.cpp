@@ -18,11 +18,11 @@
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "io/contact_case.hpp"
-#include "nss/grid_study.hpp"
+#include "pipeline/grid_study.hpp"
 
 namespace rollnoise::cli {
 
-nss::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::ContactCase& base);
+pipeline::GridStudyCase bench_study_case(const io::CaseReader& reader, const io::ContactCase& base);
 
 namespace {
 
@@ -40,11 +40,11 @@ double vm_hwm_mb() {
   return NAN;
 }
 
-SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
+SweepCost measure(const pipeline::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
   using Clock = std::chrono::steady_clock;
   auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   SweepCost out;
-  const contact::Grid g = nss::study_grid(c, nx, &out.ny);
+  const contact::Grid g = pipeline::study_grid(c, nx, &out.ny);
   const contact::HertzContact hz = contact::hertz_from_semi_axes(c.a, c.b, c.normal_force, c.material);
   auto t = Clock::now();
   const contact::ContactPatch patch =
@@ -72,7 +72,7 @@ SweepCost measure(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver,
 }
 
 // measure() in a child process; the result comes back through a pipe.
-SweepCost measure_in_child(const nss::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
+SweepCost measure_in_child(const pipeline::GridStudyCase& c, int nx, nss::LinearSolver solver, int threads) {
   int fd[2];
   SweepCost res;
   if (pipe(fd) != 0) return res;
@@ -102,7 +102,7 @@ int run_sweep_cost(const CommonOptions& o, const std::vector<int>& grids) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const io::ContactCase base = io::read_contact_case(reader);
   if (base.geometry != "hertz") reader.fail("contact.geometry", "bench needs a Hertzian case");
-  const nss::GridStudyCase study = bench_study_case(reader, base);
+  const pipeline::GridStudyCase study = bench_study_case(reader, base);
   const contact::Creepage& mc = study.steady.creepage;
   std::printf(
       "%s: cost of the 1000-frequency sweep (f and g, 10 Hz - 10 kHz, model set-up included) at the mean "

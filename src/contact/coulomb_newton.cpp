@@ -12,12 +12,21 @@
 namespace rollnoise::contact {
 namespace {
 
-// R(p) = p - Pi(p) and the per-element Coulomb solutions (with dPi/db).
-struct FixedPointResidual {
-  Eigen::VectorXd R;
-  std::vector<ElementTraction> local;
-  double norm = 0.0;  // max_I |R_I|
-};
+// q with each element's traction brought back onto its Coulomb bound |q_a| <= bound_a.
+Eigen::VectorXd project_on_bounds(Eigen::VectorXd q, const std::vector<double>& bound) {
+  for (int a = 0; a < static_cast<int>(bound.size()); ++a) {
+    const double len = std::hypot(q(2 * a), q(2 * a + 1));
+    if (len > bound[a]) q.segment<2>(2 * a) *= bound[a] / len;
+  }
+  return q;
+}
+
+// max_I |R_I| relative to the tractions present (creepage 1e-8 gives tractions ~1e-5 mu pn).
+double relative_residual(const std::vector<ElementTraction>& local, double norm) {
+  double p_max = 0.0;
+  for (const ElementTraction& e : local) p_max = std::max(p_max, std::hypot(e.px, e.py));
+  return p_max > 0.0 ? norm / p_max : norm;
+}
 
 // GMRES iterations allowed without a preconditioner (restarted every 150) before J is factorised.
 // An iteration costs one FFT product, O(N log N), plus the orthogonalisation; the factorisation
@@ -149,11 +158,113 @@ Eigen::VectorXd CoulombNewton::precondition(const Eigen::VectorXd& v) const {
   return lu_float_.solve(v.cast<float>()).cast<double>();
 }
 
+// R(p) = p - Pi(p) and the per-element Coulomb solutions (with dPi/db).
+struct CoulombNewton::FixedPointResidual {
+  Eigen::VectorXd R;
+  std::vector<ElementTraction> local;
+  double norm = 0.0;  // max_I |R_I|
+};
+
+CoulombNewton::FixedPointResidual CoulombNewton::residual(const Eigen::VectorXd& q, const Eigen::VectorXd& w,
+                                                          const std::vector<double>& bound) const {
+  const int m = static_cast<int>(elements_.size()), n = 2 * m;
+  FixedPointResidual r;
+  Eigen::VectorXd s;
+  apply_S(q, s);
+  s += w;
+  r.R.resize(n);
+  r.local.resize(m);
+  for (int a = 0; a < m; ++a) {
+    const double bx = s(2 * a) - d1_ * q(2 * a), by = s(2 * a + 1) - d2_ * q(2 * a + 1);
+    r.local[a] = falling_.active() ? solve_coulomb_element(bx, by, d1_, d2_, bound[a], falling_)
+                                   : solve_coulomb_element(bx, by, d1_, d2_, bound[a]);
+    r.R(2 * a) = q(2 * a) - r.local[a].px;
+    r.R(2 * a + 1) = q(2 * a + 1) - r.local[a].py;
+    const double len = std::hypot(r.R(2 * a), r.R(2 * a + 1));
+    if (!(len <= r.norm)) r.norm = len;  // keeps a NaN (std::max would drop it)
+  }
+  return r;
+}
+
+Eigen::VectorXd CoulombNewton::newton_direction(const FixedPointResidual& r, double relative_residual,
+                                                const std::string& solver) {
+  const int m = static_cast<int>(elements_.size()), n = 2 * m;
+  Eigen::VectorXd Sv;
+  // Jacobian action J v = v - dPi/db (S v - D v), element by element
+  auto jacobian = [&](const Eigen::VectorXd& v) {
+    apply_S(v, Sv);
+    Eigen::VectorXd Jv(n);
+    for (int a = 0; a < m; ++a) {
+      const double* G = r.local[a].dp_db;
+      const double bx = Sv(2 * a) - d1_ * v(2 * a), by = Sv(2 * a + 1) - d2_ * v(2 * a + 1);
+      Jv(2 * a) = v(2 * a) - (G[0] * bx + G[1] * by);
+      Jv(2 * a + 1) = v(2 * a + 1) - (G[2] * bx + G[3] * by);
+    }
+    return Jv;
+  };
+  // Newton step J dp = -R: GMRES with the current preconditioner (none before the first
+  // factorisation); on failure new factors (double precision once float factors have failed).
+  // Forcing term of the inexact Newton method (Dembo, Eisenstat & Steihaug 1982): the linear
+  // residual relative to |R|. With factors GMRES is cheap and 1e-2 |R| keeps Newton quadratic;
+  // without, reaching 1e-13 costs more GMRES iterations than the extra Newton steps that the
+  // floor 1e-3 (linear convergence by 1e-3 per step once the slip set is fixed) costs.
+  const double forcing = std::min(1e-2, std::max(have_lu_ ? 1e-13 : 1e-3, relative_residual * 1e-2));
+  // GMRES(restart) from dp = 0 until converged or `budget` iterations are spent.
+  auto gmres = [&](Eigen::VectorXd& dp, int restart, int budget) {
+    dp.setZero(n);
+    for (int spent = 0; spent < budget;) {
+      const auto res = linalg::gmres(
+          jacobian, [&](const Eigen::VectorXd& v) { return precondition(v); }, -r.R, dp, forcing,
+          std::min(restart, budget - spent));
+      linear_iterations_ += res.iterations;
+      spent += std::max(res.iterations, 1);
+      if (res.converged) return true;
+    }
+    return false;
+  };
+  Eigen::VectorXd dp;
+  bool solved = have_lu_ ? gmres(dp, 30, 30) : gmres(dp, 150, unpreconditioned_budget(n));
+  if (!solved) {  // new factors of the current J; double precision if float ones fail
+    factorise(r.local);
+    solved = gmres(dp, 30, 30);
+    if (!solved && !double_factors_) {
+      double_factors_ = true;
+      factorise(r.local);
+      solved = gmres(dp, 60, 60);
+    }
+    if (!solved) {
+      std::ostringstream msg;
+      msg << solver << ": the Newton system is too ill-conditioned for GMRES with LU factors";
+      throw NumericalError(msg.str());
+    }
+  }
+  return dp;
+}
+
+TangentialSolution CoulombNewton::on_grid(const std::vector<ElementTraction>& local, int scale_exponent) const {
+  // Output on the grid: tractions Pi(p) (exactly on the Coulomb bound in slip) and slip velocities.
+  const Grid& g = grid_;
+  TangentialSolution sol;
+  sol.px.assign(g.size(), 0.0);
+  sol.py.assign(g.size(), 0.0);
+  sol.sx.assign(g.size(), 0.0);
+  sol.sy.assign(g.size(), 0.0);
+  sol.state.assign(g.size(), static_cast<std::int8_t>(ElementState::exterior));
+  for (int a = 0; a < static_cast<int>(elements_.size()); ++a) {
+    if (bound_[a] == 0.0) continue;  // out of contact at this load (set_bounds): p = 0
+    const int k = elements_[a];
+    const ElementTraction& e = local[a];
+    sol.px[k] = std::ldexp(e.px, -scale_exponent), sol.py[k] = std::ldexp(e.py, -scale_exponent);
+    if (e.slip) sol.sx[k] = std::ldexp(e.sx, -scale_exponent), sol.sy[k] = std::ldexp(e.sy, -scale_exponent);
+    sol.state[k] = static_cast<std::int8_t>(e.slip ? ElementState::slip : ElementState::adhesion);
+  }
+  return sol;
+}
+
 TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField& rhs_y,
                                         const GridField& px, const GridField& py,
                                         const TangentialSolverSettings& settings,
                                         const std::string& solver) {
-  const Grid& g = grid_;
   const int m = static_cast<int>(elements_.size()), n = 2 * m;
   Eigen::VectorXd w(n), p(n);
   for (int a = 0; a < m; ++a) {
@@ -175,147 +286,53 @@ TangentialSolution CoulombNewton::solve(const GridField& rhs_x, const GridField&
     for (double& b : scaled_bound) b *= sigma;
   }
   const std::vector<double>& bound = scale_exponent != 0 ? scaled_bound : bound_;
-  auto project = [&](Eigen::VectorXd q) {
-    for (int a = 0; a < m; ++a) {
-      const double len = std::hypot(q(2 * a), q(2 * a + 1));
-      if (len > bound[a]) q.segment<2>(2 * a) *= bound[a] / len;
-    }
-    return q;
-  };
-  p = project(p);
-  auto residual = [&](const Eigen::VectorXd& q) {
-    FixedPointResidual r;
-    Eigen::VectorXd s;
-    apply_S(q, s);
-    s += w;
-    r.R.resize(n);
-    r.local.resize(m);
-    for (int a = 0; a < m; ++a) {
-      const double bx = s(2 * a) - d1_ * q(2 * a), by = s(2 * a + 1) - d2_ * q(2 * a + 1);
-      r.local[a] = falling_.active() ? solve_coulomb_element(bx, by, d1_, d2_, bound[a], falling_)
-                                     : solve_coulomb_element(bx, by, d1_, d2_, bound[a]);
-      r.R(2 * a) = q(2 * a) - r.local[a].px;
-      r.R(2 * a + 1) = q(2 * a + 1) - r.local[a].py;
-      const double len = std::hypot(r.R(2 * a), r.R(2 * a + 1));
-      if (!(len <= r.norm)) r.norm = len;  // keeps a NaN (std::max would drop it)
-    }
-    return r;
-  };
-  auto relative = [&](const FixedPointResidual& r) {
-    // relative to the tractions present (creepage 1e-8 gives tractions ~1e-5 mu pn)
-    double p_max = 0.0;
-    for (int a = 0; a < m; ++a)
-      p_max = std::max(p_max, std::hypot(r.local[a].px, r.local[a].py));
-    return p_max > 0.0 ? r.norm / p_max : r.norm;
-  };
+  p = project_on_bounds(p, bound);
 
-  TangentialSolution sol;
   const int factorisations_before = factorisations_, linear_before = linear_iterations_;
-  FixedPointResidual r = residual(p);
-  sol.residual = relative(r);
-  bool converged = r.norm == 0.0 || sol.residual <= settings.tolerance;
-  Eigen::VectorXd Sv;
-  for (int it = 1; it <= settings.max_iterations && !converged && std::isfinite(sol.residual);
-       ++it) {
-    // Jacobian action J v = v - dPi/db (S v - D v), element by element
-    auto jacobian = [&](const Eigen::VectorXd& v) {
-      apply_S(v, Sv);
-      Eigen::VectorXd Jv(n);
-      for (int a = 0; a < m; ++a) {
-        const double* G = r.local[a].dp_db;
-        const double bx = Sv(2 * a) - d1_ * v(2 * a), by = Sv(2 * a + 1) - d2_ * v(2 * a + 1);
-        Jv(2 * a) = v(2 * a) - (G[0] * bx + G[1] * by);
-        Jv(2 * a + 1) = v(2 * a + 1) - (G[2] * bx + G[3] * by);
-      }
-      return Jv;
-    };
-    // Newton step J dp = -R: GMRES with the current preconditioner (none before the first
-    // factorisation); on failure new factors (double precision once float factors have failed).
-    // Forcing term of the inexact Newton method (Dembo, Eisenstat & Steihaug 1982): the linear
-    // residual relative to |R|. With factors GMRES is cheap and 1e-2 |R| keeps Newton quadratic;
-    // without, reaching 1e-13 costs more GMRES iterations than the extra Newton steps that the
-    // floor 1e-3 (linear convergence by 1e-3 per step once the slip set is fixed) costs.
-    const double forcing =
-        std::min(1e-2, std::max(have_lu_ ? 1e-13 : 1e-3, sol.residual * 1e-2));
-    // GMRES(restart) from dp = 0 until converged or `budget` iterations are spent.
-    auto gmres = [&](Eigen::VectorXd& dp, int restart, int budget) {
-      dp.setZero(n);
-      for (int spent = 0; spent < budget;) {
-        const auto res = linalg::gmres(
-            jacobian, [&](const Eigen::VectorXd& v) { return precondition(v); }, -r.R, dp,
-            forcing, std::min(restart, budget - spent));
-        linear_iterations_ += res.iterations;
-        spent += std::max(res.iterations, 1);
-        if (res.converged) return true;
-      }
-      return false;
-    };
-    Eigen::VectorXd dp;
-    bool solved = have_lu_ ? gmres(dp, 30, 30) : gmres(dp, 150, unpreconditioned_budget(n));
-    if (!solved) {  // new factors of the current J; double precision if float ones fail
-      factorise(r.local);
-      solved = gmres(dp, 30, 30);
-      if (!solved && !double_factors_) {
-        double_factors_ = true;
-        factorise(r.local);
-        solved = gmres(dp, 60, 60);
-      }
-      if (!solved) {
-        std::ostringstream msg;
-        msg << solver << ": the Newton system is too ill-conditioned for GMRES with LU factors";
-        throw NumericalError(msg.str());
-      }
-    }
+  FixedPointResidual r = residual(p, w, bound);
+  int iterations = 0;
+  double rel = relative_residual(r.local, r.norm);
+  bool converged = r.norm == 0.0 || rel <= settings.tolerance;
+  for (int it = 1; it <= settings.max_iterations && !converged && std::isfinite(rel); ++it) {
+    const Eigen::VectorXd dp = newton_direction(r, rel, solver);
     // projected Newton point, accepted if it reduces |R|_2, else backtracking
     const double r2 = r.R.norm();
-    Eigen::VectorXd next = project(p + dp);
-    FixedPointResidual trial = residual(next);
+    Eigen::VectorXd next = project_on_bounds(p + dp, bound);
+    FixedPointResidual trial = residual(next, w, bound);
     double t = 1.0;
     for (int k = 0; k < 30 && !(trial.R.norm() <= (1.0 - 1e-4 * t) * r2); ++k) {
       t *= 0.5;
-      next = project(p + t * dp);
-      trial = residual(next);
+      next = project_on_bounds(p + t * dp, bound);
+      trial = residual(next, w, bound);
     }
     if (falling_.active() && !(trial.R.norm() <= (1.0 - 1e-4 * t) * r2)) {
       // No descent along the Newton direction: with falling friction the solution need not be
       // unique or exist (docs/falling_friction.md, Sec. 3); report instead of iterating on.
       std::ostringstream msg;
-      msg << solver << " (semismooth Newton): the line search stalled at relative residual "
-          << relative(r) << " after " << it
+      msg << solver << " (semismooth Newton): the line search stalled at relative residual " << rel << " after "
+          << it
           << " iterations with falling friction; the falling branch may be too steep for a unique"
              " solution: lower friction.decay or raise friction.kinetic_ratio";
       throw NumericalError(msg.str());
     }
     p = std::move(next);
     r = std::move(trial);
-    sol.iterations = it;
-    sol.residual = relative(r);
-    if (!std::isfinite(sol.residual)) break;
-    converged = r.norm == 0.0 || sol.residual <= settings.tolerance;
+    iterations = it;
+    rel = relative_residual(r.local, r.norm);
+    if (!std::isfinite(rel)) break;
+    converged = r.norm == 0.0 || rel <= settings.tolerance;
   }
-  sol.factorisations = factorisations_ - factorisations_before;
-  sol.linear_iterations = linear_iterations_ - linear_before;
   if (!converged) {
     std::ostringstream msg;
-    msg << solver << " (semismooth Newton) did not converge: relative residual " << sol.residual
-        << " after " << sol.iterations << " iterations (tolerance " << settings.tolerance << ")";
+    msg << solver << " (semismooth Newton) did not converge: relative residual " << rel << " after " << iterations
+        << " iterations (tolerance " << settings.tolerance << ")";
     throw NumericalError(msg.str());
   }
-
-  // Output on the grid: tractions Pi(p) (exactly on the Coulomb bound in slip) and slip velocities.
-  sol.px.assign(g.size(), 0.0);
-  sol.py.assign(g.size(), 0.0);
-  sol.sx.assign(g.size(), 0.0);
-  sol.sy.assign(g.size(), 0.0);
-  sol.state.assign(g.size(), static_cast<std::int8_t>(ElementState::exterior));
-  for (int a = 0; a < m; ++a) {
-    if (bound_[a] == 0.0) continue;  // out of contact at this load (set_bounds): p = 0
-    const int k = elements_[a];
-    const ElementTraction& e = r.local[a];
-    sol.px[k] = std::ldexp(e.px, -scale_exponent), sol.py[k] = std::ldexp(e.py, -scale_exponent);
-    if (e.slip) sol.sx[k] = std::ldexp(e.sx, -scale_exponent), sol.sy[k] = std::ldexp(e.sy, -scale_exponent);
-    sol.state[k] = static_cast<std::int8_t>(e.slip ? ElementState::slip : ElementState::adhesion);
-  }
+  TangentialSolution sol = on_grid(r.local, scale_exponent);
+  sol.iterations = iterations;
+  sol.residual = rel;
+  sol.factorisations = factorisations_ - factorisations_before;
+  sol.linear_iterations = linear_iterations_ - linear_before;
   return sol;
 }
 

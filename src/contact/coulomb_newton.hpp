@@ -82,6 +82,14 @@ class CoulombNewton {
   /// Assemble J = I - dPi/db (S - D) densely and factorise it (float, or double if needed).
   void factorise(const std::vector<ElementTraction>& local);
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;
+  /// The steps of solve: R(q) = q - Pi(q) with the element solutions, for the right-hand side w and
+  /// the bounds (both as scaled for the solve); the Newton direction J dp = -R (GMRES, factors
+  /// renewed on failure); the tractions and slip on the grid, unscaled by 2^-scale_exponent.
+  struct FixedPointResidual;
+  FixedPointResidual residual(const Eigen::VectorXd& q, const Eigen::VectorXd& w,
+                              const std::vector<double>& bound) const;
+  Eigen::VectorXd newton_direction(const FixedPointResidual& r, double relative_residual, const std::string& solver);
+  TangentialSolution on_grid(const std::vector<ElementTraction>& local, int scale_exponent) const;
 
   Grid grid_;
   SlipOperator S_;

@@ -33,7 +33,7 @@ namespace rollnoise::contact {
 /// a one-step difference centred at t_k - dt/2 (t_k = k dt), while
 ///   contact  takes the creepage at t_k (CONTACT's convention, Kalker 1990 Sec. 5.3): the discrete
 ///            response leads the continuous one by half a step, a phase error w dt/2, first order
-///            in dx (nss::half_step_phase_correction);
+///            in dx (pipeline::half_step_phase_correction);
 ///   midstep  takes it at t_k - dt/2, where the difference is centred: the lead vanishes and f
 ///            converges at second order at rolling-noise frequencies (docs/accuracy.md);
 ///   average  takes its mean over the step, xi_k = (1/dt) int_{t_{k-1}}^{t_k} xi(t) dt

@@ -14,6 +14,42 @@ int NormalSolution::contact_elements() const {
 
 double NormalSolution::max_pressure() const { return *std::max_element(pn.begin(), pn.end()); }
 
+namespace {
+
+// Start: uniform pressure over the whole potential contact area, or the given start scaled to the
+// force. The method is globally convergent (convex problem), so the start only affects the
+// iteration count.
+std::vector<double> start_pressure(int n, double area, double normal_force, const GridField* start) {
+  std::vector<double> p(n, normal_force / (area * n));
+  if (start && static_cast<int>(start->size()) == n) {
+    double total = 0.0;
+    for (double v : *start) total += std::max(v, 0.0) * area;
+    if (total > 0.0)
+      for (int k = 0; k < n; ++k) p[k] = std::max((*start)[k], 0.0) * normal_force / total;
+  }
+  return p;
+}
+
+// The converged solution's gap, approach and force: e = h + A p - delta, delta = mean of h + A p
+// over the contact.
+void set_gap_and_force(const HalfSpaceOperator& op, const GridField& h, double area, NormalSolution& sol) {
+  const std::vector<double>& p = sol.pn;
+  const int n = static_cast<int>(p.size());
+  std::vector<double> u(n);
+  op.apply(p.data(), u.data());
+  double s = 0.0;
+  int m = 0;
+  for (int k = 0; k < n; ++k)
+    if (p[k] > 0.0) s += u[k] + h[k], ++m;
+  sol.approach = s / m;
+  sol.gap.resize(n);
+  for (int k = 0; k < n; ++k) sol.gap[k] = p[k] > 0.0 ? 0.0 : u[k] + h[k] - sol.approach;
+  sol.force = 0.0;
+  for (double v : p) sol.force += v * area;
+}
+
+}  // namespace
+
 NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const GridField& h,
                             double normal_force, const NormalSolverSettings& settings,
                             const GridField* start) {
@@ -21,16 +57,7 @@ NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const
   const double area = grid.element_area();
   NormalSolution sol;
   std::vector<double>& p = sol.pn;
-  // Start: uniform pressure over the whole potential contact area, or the given start scaled to
-  // the force. The method is globally convergent (convex problem), so the start only affects the
-  // iteration count.
-  p.assign(n, normal_force / (area * n));
-  if (start && static_cast<int>(start->size()) == n) {
-    double total = 0.0;
-    for (double v : *start) total += std::max(v, 0.0) * area;
-    if (total > 0.0)
-      for (int k = 0; k < n; ++k) p[k] = std::max((*start)[k], 0.0) * normal_force / total;
-  }
+  p = start_pressure(n, area, normal_force, start);
 
   std::vector<double> u(n), g(n), t(n, 0.0), r(n), p_old(n);
   double G_old = 1.0, g_mean = 0.0;
@@ -95,17 +122,7 @@ NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const
     sol.iterations = it;
     if (!std::isfinite(sol.residual)) break;
     if (sol.residual < settings.tolerance) {
-      // final gap and approach: e = h + A p - delta, delta = mean of h + A p over the contact
-      op.apply(p.data(), u.data());
-      double s = 0.0;
-      int m = 0;
-      for (int k = 0; k < n; ++k)
-        if (p[k] > 0.0) s += u[k] + h[k], ++m;
-      sol.approach = s / m;
-      sol.gap.resize(n);
-      for (int k = 0; k < n; ++k) sol.gap[k] = p[k] > 0.0 ? 0.0 : u[k] + h[k] - sol.approach;
-      sol.force = 0.0;
-      for (double v : p) sol.force += v * area;
+      set_gap_and_force(op, h, area, sol);
       return sol;
     }
   }

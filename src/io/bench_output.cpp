@@ -4,7 +4,7 @@
 
 namespace rollnoise::io {
 
-void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::GridMeasurement>& grids,
+void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<pipeline::GridMeasurement>& grids,
                  const std::vector<BenchColumn>& errors, double c11_table) {
   write_case(w, r);
   const std::size_t n = grids.size();
@@ -35,11 +35,11 @@ void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::Grid
   w.attribute("/bench", "reference", "errors relative to the finest grid (the last), C11 also against Kalker's table");
 }
 
-void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
-                          const nss::SamplingAccuracy& a, const std::vector<double>& frequencies) {
+void write_bench_sampling(Hdf5Writer& w, const std::vector<pipeline::GridMeasurement>& grids,
+                          const pipeline::SamplingAccuracy& a, const std::vector<double>& frequencies) {
   const std::size_t n = grids.size(), nf = frequencies.size();
-  for (size_t sm = 0; sm < nss::kStudySamplings.size(); ++sm) {
-    const std::string name = contact::sampling_name(nss::kStudySamplings[sm]);
+  for (size_t sm = 0; sm < pipeline::kStudySamplings.size(); ++sm) {
+    const std::string name = contact::sampling_name(pipeline::kStudySamplings[sm]);
     std::vector<double> t;
     for (const auto& g : grids) t.push_back(g.sampling[sm].seconds);
     w.write("/bench/time_sweep_" + name, t, {n},
@@ -57,7 +57,7 @@ void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>
           "f_jk as /creep/f: f11..f22 in N, f13, f23, f31, f32 in N m, f33 in N m^2 (Richardson on the three "
           "finest grids of the sampling named by reference_sampling)");
   std::vector<std::string> ref;
-  for (int r : a.reference) ref.push_back(contact::sampling_name(nss::kStudySamplings[r]));
+  for (int r : a.reference) ref.push_back(contact::sampling_name(pipeline::kStudySamplings[r]));
   std::string refs;
   for (size_t i = 0; i < ref.size(); ++i) refs += (i ? "," : "") + ref[i];
   w.attribute("/bench/sampling/converged_f", "reference_sampling", refs);

@@ -7,7 +7,7 @@
 
 #include "io/case_reader.hpp"
 #include "io/hdf5_writer.hpp"
-#include "nss/grid_study.hpp"
+#include "pipeline/grid_study.hpp"
 
 namespace rollnoise::io {
 
@@ -19,14 +19,14 @@ struct BenchColumn {
   const std::vector<double>* err;
 };
 
-void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<nss::GridMeasurement>& grids,
+void write_bench(Hdf5Writer& w, const CaseReader& r, const std::vector<pipeline::GridMeasurement>& grids,
                  const std::vector<BenchColumn>& errors, double c11_table);
 
-/// The creepage-sampling study (nss::sampling_accuracy): /bench/time_sweep_contact,
+/// The creepage-sampling study (pipeline::sampling_accuracy): /bench/time_sweep_contact,
 /// /bench/time_sweep_midstep, /bench/time_sweep_average (s per grid) and /bench/sampling/{frequency,
 /// converged_f (attribute reference_sampling), converged_f_error, order}; its errors are
 /// BenchColumns of write_bench.
-void write_bench_sampling(Hdf5Writer& w, const std::vector<nss::GridMeasurement>& grids,
-                          const nss::SamplingAccuracy& a, const std::vector<double>& frequencies);
+void write_bench_sampling(Hdf5Writer& w, const std::vector<pipeline::GridMeasurement>& grids,
+                          const pipeline::SamplingAccuracy& a, const std::vector<double>& frequencies);
 
 }  // namespace rollnoise::io

@@ -134,20 +134,31 @@ std::optional<ProfileKind> kind_from_extension(const std::string& path) {
   return std::nullopt;
 }
 
-}  // namespace
-
-Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind> kind) {
-  const std::vector<std::string> lines = read_lines(path);
-  bool any = false;
-  for (const auto& l : lines) any = any || !trim(l).empty();
-  if (!any) fail(path, 1, "the profile file is empty");
-
-  // key = value settings of the header and spline blocks, with the line they came from.
+// A SIMPACK profile file as read: the key = value settings of the header and spline blocks (with
+// the line each came from) and the points of the point block (with their lines).
+struct SimpackFile {
   std::map<std::string, std::pair<std::string, int>> setting;
   std::vector<double> y, z;
   std::vector<int> where;
-  bool in_points = false, seen_begin = false, seen_end = false;
   int begin_line = 0;
+  // the setting `key` as a number, `fallback` without it
+  double number(const std::string& path, const std::string& key, double fallback) const {
+    const auto it = setting.find(key);
+    if (it == setting.end()) return fallback;
+    double v = 0.0;
+    if (!parse_number(it->second.first, v) || !std::isfinite(v))
+      fail(path, it->second.second, "'" + key + "' = '" + it->second.first + "' is not a number");
+    return v;
+  }
+  int line_of(const std::string& key) const {
+    const auto it = setting.find(key);
+    return it == setting.end() ? 0 : it->second.second;
+  }
+};
+
+SimpackFile parse_simpack_blocks(const std::string& path, const std::vector<std::string>& lines) {
+  SimpackFile f;
+  bool in_points = false, seen_begin = false, seen_end = false;
   std::string block;  // header / spline
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int ln = static_cast<int>(i) + 1;
@@ -169,15 +180,15 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
       }
       double yy = 0.0, zz = 0.0;
       parse_point(path, ln, split_fields(t), 2, 3, yy, zz);
-      y.push_back(yy);
-      z.push_back(zz);
-      where.push_back(ln);
+      f.y.push_back(yy);
+      f.z.push_back(zz);
+      f.where.push_back(ln);
       continue;
     }
     if (tl == "point.begin") {
       if (seen_begin) fail(path, ln, "a second point.begin block");
       in_points = seen_begin = true;
-      begin_line = ln;
+      f.begin_line = ln;
       continue;
     }
     if (tl.size() > 6 && tl.compare(tl.size() - 6, 6, ".begin") == 0) {
@@ -196,7 +207,7 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
         const auto close = value.find('\'', 1);
         value = value.substr(1, close == std::string::npos ? std::string::npos : close - 1);
       }
-      setting[(block.empty() ? "" : block + ".") + key] = {value, ln};
+      f.setting[(block.empty() ? "" : block + ".") + key] = {value, ln};
     }
   }
   if (!seen_begin)
@@ -204,59 +215,51 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
          "no point block: the file has no 'point.begin' ... 'point.end' section");
   if (!seen_end)
     fail(path, static_cast<int>(lines.size()),
-         "the point block opened at line " + std::to_string(begin_line) +
-             " has no closing 'point.end'");
+         "the point block opened at line " + std::to_string(f.begin_line) + " has no closing 'point.end'");
+  return f;
+}
 
-  auto number = [&](const std::string& key, double fallback) {
-    const auto it = setting.find(key);
-    if (it == setting.end()) return fallback;
-    double v = 0.0;
-    if (!parse_number(it->second.first, v) || !std::isfinite(v))
-      fail(path, it->second.second, "'" + key + "' = '" + it->second.first + "' is not a number");
-    return v;
-  };
-
-  // Kind: header.type (0 rail, 1 wheel), else the extension, else the caller's.
+// Kind: header.type (0 rail, 1 wheel), else the extension, else the caller's.
+ProfileKind simpack_kind(const std::string& path, const SimpackFile& f, std::optional<ProfileKind> kind) {
   std::optional<ProfileKind> file_kind;
-  if (setting.count("header.type")) {
-    const double t = number("header.type", -1.0);
+  if (f.setting.count("header.type")) {
+    const double t = f.number(path, "header.type", -1.0);
     if (t == 0.0)
       file_kind = ProfileKind::Rail;
     else if (t == 1.0)
       file_kind = ProfileKind::Wheel;
     else
-      fail(path, setting["header.type"].second,
-           "header type = " + setting["header.type"].first + " (expected 0 rail or 1 wheel)");
+      fail(path, f.line_of("header.type"),
+           "header type = " + f.setting.at("header.type").first + " (expected 0 rail or 1 wheel)");
   }
   if (!file_kind) file_kind = kind_from_extension(path);
   if (!file_kind) file_kind = kind;
   if (!file_kind)
-    fail(path, 1,
-         "cannot tell a wheel from a rail profile: no header type, extension or caller hint");
+    fail(path, 1, "cannot tell a wheel from a rail profile: no header type, extension or caller hint");
   if (kind && *kind != *file_kind)
-    fail(path, setting.count("header.type") ? setting["header.type"].second : 1,
+    fail(path, f.setting.count("header.type") ? f.line_of("header.type") : 1,
          std::string("the file is a ") + to_string(*file_kind) + " profile, a " + to_string(*kind) +
              " profile was expected");
+  return *file_kind;
+}
 
-  finish_points(path, begin_line, y, z, where, "point");
-
-  // Processing flags in SIMPACK's numbered order: 2 shift, 3 rotate, 4 bounds, 5 mirror,
-  // 6 inversion (data order only: the points are sorted again below), 7 units.
-  const double shift_y = number("spline.shift.y", 0.0), shift_z = number("spline.shift.z", 0.0);
-  const double units = number("spline.units.len.f", 1000.0);  // lengths unit per metre
-  const double units_ang = number("spline.units.ang.f", 1.0);
-  const double rotate = number("spline.rotate", 0.0) / units_ang;
-  const double bymin = number("spline.bound.y.min", 1.0), bymax = number("spline.bound.y.max", 0.0);
-  const double bzmin = number("spline.bound.z.min", 1.0), bzmax = number("spline.bound.z.max", 0.0);
-  const bool mirror_y = number("spline.mirror.y", 0.0) != 0.0;
-  const bool mirror_z = number("spline.mirror.z", 0.0) != 0.0;
-  if (!(units > 0.0))
-    fail(path, setting["spline.units.len.f"].second, "units.len.f must be positive");
+// The points after SIMPACK's processing flags in their numbered order: 2 shift, 3 rotate, 4
+// bounds, 5 mirror, 6 inversion (data order only: the points are sorted again by finish_points), 7
+// units; in metres, with their lines.
+void apply_processing_flags(const std::string& path, const SimpackFile& f, std::vector<double>& py,
+                            std::vector<double>& pz, std::vector<int>& pl) {
+  const double shift_y = f.number(path, "spline.shift.y", 0.0), shift_z = f.number(path, "spline.shift.z", 0.0);
+  const double units = f.number(path, "spline.units.len.f", 1000.0);  // lengths unit per metre
+  const double units_ang = f.number(path, "spline.units.ang.f", 1.0);
+  const double rotate = f.number(path, "spline.rotate", 0.0) / units_ang;
+  const double bymin = f.number(path, "spline.bound.y.min", 1.0), bymax = f.number(path, "spline.bound.y.max", 0.0);
+  const double bzmin = f.number(path, "spline.bound.z.min", 1.0), bzmax = f.number(path, "spline.bound.z.max", 0.0);
+  const bool mirror_y = f.number(path, "spline.mirror.y", 0.0) != 0.0;
+  const bool mirror_z = f.number(path, "spline.mirror.z", 0.0) != 0.0;
+  if (!(units > 0.0)) fail(path, f.line_of("spline.units.len.f"), "units.len.f must be positive");
   const double c = std::cos(rotate), s = std::sin(rotate);
-  std::vector<double> py, pz;
-  std::vector<int> pl;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    double yy = y[i] + shift_y, zz = z[i] + shift_z;
+  for (std::size_t i = 0; i < f.y.size(); ++i) {
+    double yy = f.y[i] + shift_y, zz = f.z[i] + shift_z;
     const double yr = c * yy - s * zz, zr = s * yy + c * zz;
     yy = yr;
     zz = zr;
@@ -266,17 +269,31 @@ Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind>
     if (mirror_z) zz = -zz;
     py.push_back(yy / units);
     pz.push_back(zz / units);
-    pl.push_back(where[i]);
+    pl.push_back(f.where[i]);
   }
-  finish_points(path, begin_line, py, pz, pl, "after the file's processing flags, point");
+}
 
-  const std::string comment =
-      lower(setting.count("spline.comment") ? setting["spline.comment"].first : "");
+}  // namespace
+
+Profile read_simpack_profile(const std::string& path, std::optional<ProfileKind> kind) {
+  const std::vector<std::string> lines = read_lines(path);
+  bool any = false;
+  for (const auto& l : lines) any = any || !trim(l).empty();
+  if (!any) fail(path, 1, "the profile file is empty");
+  SimpackFile f = parse_simpack_blocks(path, lines);
+  const ProfileKind file_kind = simpack_kind(path, f, kind);
+  finish_points(path, f.begin_line, f.y, f.z, f.where, "point");
+  std::vector<double> py, pz;
+  std::vector<int> pl;
+  apply_processing_flags(path, f, py, pz, pl);
+  finish_points(path, f.begin_line, py, pz, pl, "after the file's processing flags, point");
+
+  const std::string comment = lower(f.setting.count("spline.comment") ? f.setting.at("spline.comment").first : "");
   const bool canted = comment.find("already canted") != std::string::npos ||
                       (comment.find("canted") != std::string::npos &&
                        comment.find("not canted") == std::string::npos &&
                        comment.find("uncanted") == std::string::npos);
-  return Profile(std::move(py), std::move(pz), *file_kind, path, canted);
+  return Profile(std::move(py), std::move(pz), file_kind, path, canted);
 }
 
 Profile read_csv_profile(const std::string& path, ProfileKind kind) {

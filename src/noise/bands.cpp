@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -96,8 +97,7 @@ std::vector<double> covered_centres(const std::vector<double>& f, int min_points
 
 double band_mean(const std::vector<double>& f, const std::vector<double>& values, double centre) {
   check_increasing(f);
-  if (values.size() != f.size())
-    throw InputError("frequency", "band mean: one value per frequency is needed");
+  ROLLNOISE_ASSERT(values.size() == f.size(), "band mean: one value per frequency is needed");
   return weighted_mean(f, values, centre, nullptr);
 }
 
@@ -107,10 +107,8 @@ std::vector<double> transfer_band_levels(const std::vector<double>& f,
                                          const std::vector<double>& roughness_levels,
                                          double reference) {
   check_increasing(f);
-  if (H.size() != f.size())
-    throw InputError("frequency", "band levels: one transfer value per frequency is needed");
-  if (roughness_levels.size() != centres.size())
-    throw InputError("roughness", "band levels: one roughness level per band is needed");
+  ROLLNOISE_ASSERT(H.size() == f.size(), "band levels: one transfer value per frequency is needed");
+  ROLLNOISE_ASSERT(roughness_levels.size() == centres.size(), "band levels: one roughness level per band is needed");
   std::vector<double> h2(H.size());
   for (std::size_t k = 0; k < H.size(); ++k) h2[k] = std::norm(H[k]);
   std::vector<double> out;

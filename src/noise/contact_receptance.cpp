@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -83,7 +84,7 @@ Receptance4 contact_receptance_laplace(cdouble s, double normal_stiffness, doubl
 std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
                                              double normal_stiffness, double speed,
                                              const CreepFunction& creep) {
-  if (!creep) throw InputError("creep", "contact receptance: no creep-coefficient model given");
+  ROLLNOISE_ASSERT(static_cast<bool>(creep), "contact receptance: no creep-coefficient model given");
   std::vector<Receptance4> out;
   out.reserve(frequencies.size());
   for (double f : frequencies)
@@ -102,10 +103,8 @@ std::vector<Receptance4> contact_receptances(const std::vector<double>& frequenc
                                              double normal_stiffness, double speed,
                                              const std::vector<Eigen::Matrix3cd>& creep,
                                              const std::vector<LoadCoefficients>& load) {
-  if (creep.size() != frequencies.size() || load.size() != frequencies.size())
-    throw InputError(
-        "creep",
-        "contact receptance: one creep matrix and one load vector per frequency are needed");
+  ROLLNOISE_ASSERT(creep.size() == frequencies.size() && load.size() == frequencies.size(),
+                   "contact receptance: one creep matrix and one load vector per frequency are needed");
   std::vector<Receptance4> out;
   out.reserve(frequencies.size());
   for (std::size_t k = 0; k < frequencies.size(); ++k)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "linalg/markov_series.hpp"
 #include "noise/kalker_linear.hpp"
@@ -29,6 +30,10 @@ std::vector<LoadCoefficients> ContactTransfer::load(const std::vector<double>& f
 
 ConstantTransfer ConstantTransfer::kalker(double a, double b, double shear_modulus, double nu) {
   return ConstantTransfer(kalker_creep_matrix(a, b, shear_modulus, nu));
+}
+
+ConstantTransfer ConstantTransfer::kalker(double a, double b, const contact::Material& material) {
+  return ConstantTransfer(kalker_creep_matrix(a, b, material));
 }
 
 namespace {
@@ -70,7 +75,8 @@ MarkovContact::MarkovContact(std::vector<Eigen::Matrix3d> creep, std::vector<Eig
 }
 
 void MarkovContact::set_guard() {
-  if (!(dt_ > 0.0)) throw InputError("rolling.speed", "squeal: the contact model's time step must be positive");
+  // the model's time step dx/V: the grid and the speed are checked when the case is read
+  ROLLNOISE_ASSERT(dt_ > 0.0, "squeal: the contact model's time step must be positive");
   if (h_.empty()) {
     min_sigma_ = -1e300;  // exact everywhere (an evaluator without a series): nothing to guard
     return;

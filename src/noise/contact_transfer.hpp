@@ -22,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "contact/material.hpp"
 #include "noise/contact_receptance.hpp"
 
 namespace rollnoise::nss {
@@ -52,6 +53,8 @@ class ConstantTransfer final : public ContactTransfer {
   /// Kalker's creep coefficients from the semi-axes a, b (m), shear modulus G (Pa) and Poisson's
   /// ratio nu (kalker_creep_matrix: the one place Kalker's matrix is built from them).
   static ConstantTransfer kalker(double a, double b, double shear_modulus, double nu);
+  /// The same from the patch's semi-axes and the bodies' material.
+  static ConstantTransfer kalker(double a, double b, const contact::Material& material);
   using ContactTransfer::creep;
   using ContactTransfer::load;
   Eigen::Matrix3cd creep(cdouble) const override { return f_.cast<cdouble>(); }

@@ -115,4 +115,8 @@ Eigen::Matrix3d kalker_creep_matrix(double a, double b, double G, double nu) {
   return f;
 }
 
+Eigen::Matrix3d kalker_creep_matrix(double a, double b, const contact::Material& material) {
+  return kalker_creep_matrix(a, b, material.shear_modulus(), material.nu);
+}
+
 }  // namespace rollnoise::noise

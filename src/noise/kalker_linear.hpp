@@ -32,6 +32,8 @@
 
 #include <Eigen/Core>
 
+#include "contact/material.hpp"
+
 namespace rollnoise::noise {
 
 /// Kalker's dimensionless creep coefficients.
@@ -56,5 +58,9 @@ KalkerCoefficients kalker_coefficients(double a_over_b, double nu);
 /// The creep matrix f (F = -f xi) for semi-axes a (rolling direction), b (lateral), the combined
 /// shear modulus G and Poisson's ratio nu. Units: f11, f22 (N), f23, f32 (N m), f33 (N m^2).
 Eigen::Matrix3d kalker_creep_matrix(double a, double b, double shear_modulus, double nu);
+
+/// The same for a patch of semi-axes a, b between two bodies of `material` (its combined shear
+/// modulus and Poisson's ratio): the one place a case's patch and material give Kalker's matrix.
+Eigen::Matrix3d kalker_creep_matrix(double a, double b, const contact::Material& material);
 
 }  // namespace rollnoise::noise

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -144,8 +145,8 @@ StructuralReceptances structural_receptances(const std::vector<double>& frequenc
                                              const std::vector<Receptance4>& wheel,
                                              const std::vector<Receptance4>& rail,
                                              double contact_angle) {
-  if (wheel.size() != frequencies.size() || rail.size() != frequencies.size())
-    throw InputError("receptance", "one wheel and one rail receptance per frequency are needed");
+  ROLLNOISE_ASSERT(wheel.size() == frequencies.size() && rail.size() == frequencies.size(),
+                   "one wheel and one rail receptance per frequency are needed");
   StructuralReceptances s;
   s.frequency = frequencies;
   s.position.contact_angle = contact_angle;
@@ -191,8 +192,7 @@ Vector4c solve_contact_forces(const Receptance4& wheel, const Receptance4& rail,
 LoopResult solve_loop(const StructuralReceptances& s, const std::vector<Receptance4>& contact,
                       const LoopOptions& options) {
   const std::size_t n = s.frequency.size();
-  if (contact.size() != n)
-    throw InputError("frequency", "noise loop: one contact receptance per frequency is needed");
+  ROLLNOISE_ASSERT(contact.size() == n, "noise loop: one contact receptance per frequency is needed");
   const Eigen::Matrix<cdouble, 6, 4> T = contact_frame(s.position.contact_angle).cast<cdouble>();
   LoopResult r;
   r.frequency = s.frequency;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -10,10 +11,8 @@ namespace {
 // alpha_c of one contact per frequency; g = 0 when `coupling` is off or the contact has none.
 std::vector<Receptance4> receptances(const StructuralReceptances& s, const LoopVariantsInput& in,
                                      const ContactCoefficients& c, bool coupling) {
-  if (c.creep.size() != s.frequency.size() ||
-      (!c.load.empty() && c.load.size() != s.frequency.size()))
-    throw InputError("frequency",
-                     "noise loop: one creep matrix (and load vector) per frequency is needed");
+  ROLLNOISE_ASSERT(c.creep.size() == s.frequency.size() && (c.load.empty() || c.load.size() == s.frequency.size()),
+                   "noise loop: one creep matrix (and load vector) per frequency is needed");
   if (coupling && !c.load.empty())
     return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep, c.load);
   return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep);
@@ -45,8 +44,7 @@ LoopVariants solve_loop_variants(const StructuralReceptances& s, const LoopVaria
 
 std::vector<std::array<double, 4>> force_level_difference(const BandLevels& a,
                                                           const BandLevels& b) {
-  if (a.centre != b.centre)
-    throw InputError("noise.band_min", "level difference of different bands");
+  ROLLNOISE_ASSERT(a.centre == b.centre, "level difference of different bands");
   std::vector<std::array<double, 4>> d(a.centre.size());
   for (std::size_t i = 0; i < d.size(); ++i)
     for (int j = 0; j < 4; ++j) d[i][j] = a.force_level[i][j] - b.force_level[i][j];

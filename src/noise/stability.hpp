@@ -48,9 +48,14 @@
 // Route 1 (coupled_eigenvalues): the rational (state-space) models of the rail and of the contact
 // coupled with the wheel's modal state space; the eigenvalues of the whole (a descriptor system,
 // real QZ). See the function.
+//
+// Files: laplace_loop.cpp (the loop at complex s), mode_roots.cpp (route 2),
+// coupled_eigenvalues.cpp (route 1); the contact at complex s is contact_receptance_laplace with a
+// ContactTransfer.
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -72,6 +77,18 @@ struct LoopMode {
   std::string label;
   std::size_t index = 0;  ///< position in the wheel's mode table
 };
+
+/// m_k D_k(s) = m_k (omega_k^2 + 2 zeta_k omega_k s + s^2): the mode's dynamic stiffness at s.
+inline cdouble modal_denominator(const LoopMode& m, cdouble s) {
+  const double w = dynamics::angular(m.frequency);
+  return m.modal_mass * (w * w + 2.0 * m.damping_ratio * w * s + s * s);
+}
+
+/// The uncoupled mode's root s0 = -zeta omega + i omega sqrt(1 - zeta^2) (1/s), D_k(s0) = 0.
+inline cdouble uncoupled_root(const LoopMode& m) {
+  const double w = dynamics::angular(m.frequency), z = m.damping_ratio;
+  return {-z * w, w * std::sqrt(1.0 - z * z)};
+}
 
 /// (S1) split for route 2: A(s) = rest(s) + sum_k psi_k psi_k^T / (m_k D_k(s)).
 struct LaplaceLoop {

@@ -222,8 +222,7 @@ std::vector<Eigen::Vector3d> LinearContactModel::time_response(const std::vector
                                                                const std::vector<double>& dN) const {
   // K0 pi_k = K1 pi_{k-1} - Pi' W xi_k + rN0 N~_k + rN1 N~_{k-1} (the reduced form of M0 Q_k =
   // M1 Q_{k-1} + W xi_k + (A bN N~_k - A0 bN N~_{k-1})/dt, G2), F_k = dx dy U' (Pi pi_k + bN N~_k).
-  if (dN.size() != xi.size())
-    throw InputError("excitation", "time_response: the normal-load and creepage histories differ in length");
+  ROLLNOISE_ASSERT(dN.size() == xi.size(), "time_response: the normal-load and creepage histories differ in length");
   if (falling_) return time_response_dense(xi, dN);
   const StepSolver& red = step();
   std::vector<Eigen::Vector3d> F;

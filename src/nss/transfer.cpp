@@ -35,7 +35,7 @@ void LinearContactModel::apply_sampling(std::vector<CreepMatrix>& f, const std::
   // displacement difference (A p_k - A0 p_{k-1})/dt of paper Eq. 2 is centred. For xi(t) = xi^
   // e^{i w t}: xi_k = (xi^ e^{-i w dt/2}) e^{i w t_k}, the same recursion with the input amplitude
   // xi^ e^{-i w dt/2}, so F^ = -f_contact xi^ e^{-i w dt/2}, i.e. f_midstep = f_contact e^{-i w dt/2}
-  // (w dt/2 = pi f dx/V: nss::half_step_phase_correction). The outputs F_k stay at t_k. Checked:
+  // (w dt/2 = pi f dx/V: pipeline::half_step_phase_correction). The outputs F_k stay at t_k. Checked:
   // the midstep f converges at second order at 1-5 kHz, f_contact at first (tests/nss).
   // Average takes xi_k = (1/dt) int_{t_k - dt}^{t_k} xi^ e^{i w t} dt
   //   = xi^ e^{i w t_k} (1 - e^{-i w dt})/(i w dt) = xi^ e^{i w t_k} e^{-i w dt/2} sin(w dt/2)/(w dt/2),

@@ -82,11 +82,9 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
     if (model.markov_parameters().empty()) check_contact_stability(model, r);
     r.coupled = nc.normal_coupling && model.has_normal_load_input();
     transfer = std::make_unique<noise::NssTransfer>(r.stage.model, r.coupled);
-  } else {  // Kalker's constant f: one Markov parameter h_0 = -f (any time step), g = 0
-    const ContactCase& cc = r.contact;
-    transfer = std::make_unique<noise::MarkovContact>(
-        std::vector<Eigen::Matrix3d>{-noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu)},
-        std::vector<Eigen::Vector3d>{}, 1.0);
+  } else {  // Kalker's constant f, g = 0: it holds at every s (no series, no guard)
+    transfer = std::make_unique<noise::ConstantTransfer>(
+        noise::ConstantTransfer::kalker(r.contact.a, r.contact.b, r.contact.material));
   }
   const noise::ContactTransfer& contact = *transfer;
   r.min_sigma = contact.min_sigma();
@@ -177,8 +175,7 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
     linalg::StateSpace& m = out.contact.model;
     m.A.resize(0, 0), m.B.resize(0, 4), m.C.resize(3, 0);
     m.D = Eigen::MatrixXd::Zero(3, 4);
-    const ContactCase& cc = r.contact;
-    m.D.leftCols(3) = -noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu);
+    m.D.leftCols(3) = -noise::kalker_creep_matrix(r.contact.a, r.contact.b, r.contact.material);
   }
   out.seconds_fit = seconds_since(t0);
 

@@ -44,9 +44,6 @@ const std::map<std::string, std::string> kPseudoKeys = {
     {"tread_position", "argument: the contact's lateral position s on the wheel's running surface"},
     {"frequency", "a frequency argument of a numerics function; the case's frequencies are checked "
                   "against frequency.* and excitation.* where they are read"},
-    {"excitation", "library guard: creepage and normal-load histories of different lengths"},
-    {"receptance", "library guard: one wheel and one rail receptance per frequency"},
-    {"roughness", "library guard: one roughness level per band"},
     {"contacts", "library guard: the contact set of the loop with several contacts (noise/contact_set.hpp; no "
                  "case keys yet, contacts[i].side etc. name the entry)"},
     {"sources", "library guard: one roughness amplitude per contact and source (noise/contact_set_loop.hpp)"},
@@ -54,7 +51,6 @@ const std::map<std::string, std::string> kPseudoKeys = {
                       "yet)"},
     {"rail_support", "library guard: the waveguide rail's support (dynamics::FootSupport)"},
     {"rail_section", "library guard: the waveguide rail's section mesh (a flat foot, a head, edges)"},
-    {"creep", "library guard: no creep-coefficient model given"},
     {"normal_stiffness", "argument of the contact receptance (derived from the Hertzian contact)"},
     {"a", "argument of Kalker's coefficients / the contact receptance (contact.a or the patch)"},
     {"b", "argument of Kalker's coefficients (contact.b or the patch)"},

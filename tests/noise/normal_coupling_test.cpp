@@ -104,8 +104,10 @@ TEST(ContactReceptance, ZeroLoadCoefficientsReproduceTheUncoupledReceptance) {
     EXPECT_LT((zero_g[k] - expected).norm(), 1e-13 * expected.norm());
     EXPECT_EQ(zero_g[k].col(0).tail<3>().norm() + zero_g[k].row(0).tail<3>().norm(), 0.0);
   }
+#ifndef NDEBUG  // an internal contract (ROLLNOISE_ASSERT), checked in builds without NDEBUG
   EXPECT_THROW(rn::contact_receptances(freq, kH, kSpeed, f, std::vector<rn::LoadCoefficients>(2)),
-               rollnoise::InputError);
+               std::logic_error);
+#endif
 }
 
 // The loop with the coupling: the computed wheel and rail motions satisfy the creep law with the

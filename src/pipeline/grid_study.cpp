@@ -1,4 +1,4 @@
-#include "nss/grid_study.hpp"
+#include "pipeline/grid_study.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +14,15 @@
 #include "linalg/harmonic_fit.hpp"
 #include "nss/extrapolation.hpp"
 
-namespace rollnoise::nss {
+namespace rollnoise::pipeline {
+
+// the model layer this harness drives
+using nss::CreepMatrix;
+using nss::LinearContactModel;
+using nss::LinearSolver;
+using nss::richardson;
+using nss::RichardsonResult;
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -302,4 +310,4 @@ SamplingAccuracy sampling_accuracy(const std::vector<GridMeasurement>& grids, co
   return a;
 }
 
-}  // namespace rollnoise::nss
+}  // namespace rollnoise::pipeline

@@ -1,5 +1,5 @@
 // Observed orders of convergence of the linear model and the unsteady solver under grid
-// refinement (nss/grid_study.hpp, as `rollnoise bench` measures them), on the paper's Hertzian case
+// refinement (pipeline/grid_study.hpp, as `rollnoise bench` measures them), on the paper's Hertzian case
 // (a = 7.18 mm, b = 5.29 mm, N = 98.1 kN, V = 50 km/h, mean creepages of Sec. 3.2) on coarse grids
 // nx = 10, 14, 20, 28, 40 (the last the reference; about 2 s).
 //
@@ -7,7 +7,7 @@
 // per time step, dt = dx/V, so space and time are refined together. The displacement difference
 // (A p_k - A0 p_{k-1})/dt of paper Eq. 2 is a one-step difference centred at t_k - dt/2 while the
 // creepage is taken at t_k: the discrete response leads the converged one by half a step, a phase
-// error w dt/2 = pi f dx/V, FIRST order in dx (nss::half_step_phase_correction). At 1 kHz it
+// error w dt/2 = pi f dx/V, FIRST order in dx (pipeline::half_step_phase_correction). At 1 kHz it
 // dominates the errors of f_jk and of the transient response (10.9 deg on 20x15), so both converge
 // at first order. Once that lead is removed, what is left of the one-step difference is the
 // truncation error of a difference centred at t_k - dt/2, O((w dt)^2): SECOND order. At 5 kHz
@@ -23,32 +23,32 @@
 #include <vector>
 
 #include "linalg/convergence.hpp"
-#include "nss/grid_study.hpp"
+#include "pipeline/grid_study.hpp"
 
 using namespace rollnoise;
 
 namespace {
 
 struct Study {
-  std::vector<nss::GridMeasurement> grids;
-  nss::GridStudyErrors errors;
+  std::vector<pipeline::GridMeasurement> grids;
+  pipeline::GridStudyErrors errors;
 };
 
 const Study& paper_study() {
   static const Study s = [] {
-    nss::GridStudyCase c;
+    pipeline::GridStudyCase c;
     c.material = {210e9, 0.28};
     c.normal_force = 98100;
     c.a = 7.18e-3, c.b = 5.29e-3;
     c.scale = 34.0 / 30.0;
     c.steady = {0.3, 13.8888888888889, {0.001, 0.001, -0.053}, 0.0};
     c.sampling = contact::CreepageSampling::contact;  // the transient runs and f of the assertions below
-    const nss::GridStudySettings settings;
-    const auto e = nss::grid_study_excitation(c, settings);
+    const pipeline::GridStudySettings settings;
+    const auto e = pipeline::grid_study_excitation(c, settings);
     Study st;
-    for (int nx : {10, 14, 20, 28, 40}) st.grids.push_back(nss::measure_grid(c, settings, e, nx));
+    for (int nx : {10, 14, 20, 28, 40}) st.grids.push_back(pipeline::measure_grid(c, settings, e, nx));
     // C11's table value does not enter the errors asserted here
-    st.errors = nss::grid_study_errors(st.grids, settings, c.steady.speed, 1.0, c.sampling);
+    st.errors = pipeline::grid_study_errors(st.grids, settings, c.steady.speed, 1.0, c.sampling);
     return st;
   }();
   return s;
@@ -97,7 +97,7 @@ namespace {
 
 // Largest relative error of f11, f22 (and f23) of one sampling's sweeps against the finest grid, at
 // the accuracy frequency i (1 kHz: 0, 5 kHz: 1).
-std::vector<double> sampling_errors(const std::vector<nss::GridMeasurement>& grids, int sampling, size_t i,
+std::vector<double> sampling_errors(const std::vector<pipeline::GridMeasurement>& grids, int sampling, size_t i,
                                     bool with_f23) {
   const auto& ref = grids.back().sampling[sampling].f[i];
   std::vector<double> e;

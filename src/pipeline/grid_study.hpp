@@ -49,7 +49,7 @@
 #include "contact/tangential_solver.hpp"
 #include "nss/linear_model.hpp"
 
-namespace rollnoise::nss {
+namespace rollnoise::pipeline {
 
 /// The Hertzian case under study.
 struct GridStudyCase {
@@ -95,7 +95,7 @@ inline constexpr std::array<contact::CreepageSampling, 3> kStudySamplings = {
 /// One creepage sampling's sweep on one grid (the sampling study, measure_sampling_sweeps below).
 struct SamplingSweep {
   double seconds = 0.0;        ///< linear model set-up + sweep of sweep_count frequencies (s)
-  std::vector<CreepMatrix> f;  ///< at the accuracy frequencies (NaN above Nyquist)
+  std::vector<nss::CreepMatrix> f;  ///< at the accuracy frequencies (NaN above Nyquist)
 };
 
 struct GridMeasurement {
@@ -105,7 +105,7 @@ struct GridMeasurement {
   /// transient run
   double t_normal = 0.0, t_steady = 0.0, t_creep = 0.0, t_kalker = 0.0, t_transient = 0.0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< steady (Fx, Fy, Mz)
-  std::vector<CreepMatrix> f;  ///< at the study frequencies (NaN above Nyquist)
+  std::vector<nss::CreepMatrix> f;  ///< at the study frequencies (NaN above Nyquist)
   double c11 = 0.0;            ///< -Fx / (G a b xi_x) at xi_x = 1e-6
   long steps = 0;              ///< of the transient run (0: 1 kHz above Nyquist)
   /// complex amplitudes X of (Fx, Fy) at the transient frequency, F(t) ~ mean + Re(X e^{i w t}) (N)
@@ -165,7 +165,7 @@ struct SamplingAccuracy {
   /// per accuracy frequency: the converged f (Richardson) and its estimated error (Roache's index,
   /// absolute, per entry), the order used for f11, f22, f23, and the sampling it was extrapolated
   /// from (an index into kStudySamplings)
-  std::vector<CreepMatrix> converged;
+  std::vector<nss::CreepMatrix> converged;
   std::vector<Eigen::Matrix3d> converged_error;
   std::vector<Eigen::Vector3d> order;
   std::vector<int> reference;
@@ -197,4 +197,4 @@ GridStudyErrors grid_study_errors(const std::vector<GridMeasurement>& grids,
                                   const GridStudySettings& s, double speed, double c11_table,
                                   contact::CreepageSampling sampling);
 
-}  // namespace rollnoise::nss
+}  // namespace rollnoise::pipeline
