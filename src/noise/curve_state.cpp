@@ -15,7 +15,7 @@ Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeom
                           double load) {
   const contact::HertzContact hz = geometry::hertz_estimate(c, load, in.material, in.grid);
   const Eigen::Matrix3d f =
-      kalker_creep_matrix(hz.a, hz.b, in.material.shear_modulus(), in.material.nu);
+      kalker_creep_matrix(hz.a, hz.b, in.material);
   return {f(0, 0), f(1, 1)};
 }
 

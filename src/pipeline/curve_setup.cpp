@@ -43,7 +43,7 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
 }
 
 noise::BogieCurvingInput bogie_curving_input(const ContactCase& c, const NoiseCase& nc) {
-  const Eigen::Matrix3d fk = noise::kalker_creep_matrix(c.a, c.b, c.material.shear_modulus(), c.material.nu);
+  const Eigen::Matrix3d fk = noise::kalker_creep_matrix(c.a, c.b, c.material);
   noise::BogieCurvingInput in;
   in.radius = nc.curve_radius;
   in.speed = c.speed;

@@ -21,7 +21,7 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n) {
   noise::ContactCoefficients k = noise::constant_coefficients(
-      noise::kalker_creep_matrix(c.a, c.b, c.material.shear_modulus(), c.material.nu).cast<std::complex<double>>(),
+      noise::kalker_creep_matrix(c.a, c.b, c.material).cast<std::complex<double>>(),
       noise::LoadCoefficients::Zero(), n);
   k.load.clear();
   return k;
@@ -212,7 +212,7 @@ ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::v
   } else {
     r.contact_receptance = noise::contact_receptances(
         freq, kN, cc.speed,
-        noise::steady_creep(noise::kalker_creep_matrix(cc.a, cc.b, cc.material.shear_modulus(), cc.material.nu)));
+        noise::steady_creep(noise::kalker_creep_matrix(cc.a, cc.b, cc.material)));
   }
   r.structures = noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
   return r;
