@@ -85,6 +85,8 @@ int run_command(int argc, char** argv) {
   add_common(noise_cmd);
   auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
   add_common(receptance);
+  auto* modes_cmd = app.add_subcommand("modes", "the wheel's axisymmetric FE modes and shapes along the tread");
+  add_common(modes_cmd);
   auto* squeal = app.add_subcommand("squeal", "stability of the wheel-rail-contact loop: coupled wheel-mode eigenvalues");
   add_common(squeal);
   std::string squeal_route = "both";
@@ -168,6 +170,7 @@ int run_command(int argc, char** argv) {
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
+    if (modes_cmd->parsed()) return cli::run_modes(common);
     if (bench->parsed() && !sweep_cost_grids.empty()) return cli::run_sweep_cost(common, sweep_cost_grids);
     if (squeal->parsed()) return cli::run_squeal(common, squeal_route);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);
