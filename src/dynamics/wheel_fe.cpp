@@ -40,7 +40,8 @@ void sample_tread(const WheelSection& sec, double spacing, WheelFeModes& w) {
       r_of_s[p.y()] = p.x();
     }
   }
-  for (auto [s, r] : r_of_s) w.tread_s.push_back(s), w.tread_r.push_back(r);
+  for (auto [s, r] : r_of_s)  // a segment's end and the next one's start: one sample
+    if (w.tread_s.empty() || s - w.tread_s.back() > 1e-9) w.tread_s.push_back(s), w.tread_r.push_back(r);
 }
 
 // The mid-line of the section from the bore to the rim: at each radius, the middle of the section's
@@ -89,6 +90,13 @@ const char* family_name(ModeFamily f) {
   }
 }
 
+ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape) {
+  // the direction with the largest mean square on the tread ("dominant at the rim")
+  const Eigen::Vector3d ms = tread_shape.colwise().squaredNorm().transpose();
+  const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
+  return c == 0 ? ModeFamily::kRadial : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
+}
+
 WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options) {
   check_options(section, options);
   WheelFeModes w;
@@ -116,11 +124,8 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
       for (std::size_t i = 0; i < w.tread_s.size(); ++i)
         m.tread_shape.row(i) =
             fem::displacement_at(w.mesh, modes.shapes.col(j), tread_points[i]).transpose();
-      // Family: the direction with the largest mean square on the tread ("dominant at the rim").
-      const Eigen::Vector3d ms = m.tread_shape.colwise().squaredNorm().transpose();
-      const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
-      m.family = c == 0 ? ModeFamily::kRadial
-                        : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
+      m.family = tread_family(m.tread_shape);
+      const int c = m.family == ModeFamily::kRadial ? 0 : (m.family == ModeFamily::kAxial ? 2 : 1);
       m.nodal_circles = sign_changes(w.mesh, modes.shapes.col(j), line, c);
       m.dofs = modes.shapes.col(j);
       w.modes.push_back(std::move(m));

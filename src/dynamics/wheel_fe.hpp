@@ -38,6 +38,9 @@ struct WheelFeOptions {
 
 enum class ModeFamily { kAxial, kRadial, kCircumferential };
 const char* family_name(ModeFamily f);
+/// The family of a mode from its tread shape (rows (U_r, U_theta, U_z)): the direction with the
+/// largest mean square on the tread.
+ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape);
 
 /// One mode of order n, mass-normalised (phi^T M phi = 1 with M over the whole wheel): modal mass
 /// 1 kg for the shapes as given.
@@ -45,7 +48,9 @@ struct WheelFeMode {
   double frequency = 0.0;  ///< Hz
   int n = 0;               ///< nodal diameters
   ModeFamily family = ModeFamily::kAxial;
-  int nodal_circles = 0;
+  int nodal_circles = 0;  ///< -1: unknown (an imported mode)
+  /// > 0: this mode's own damping ratio (an imported mode); 0: the case's by family.
+  double damping_ratio = 0.0;
   /// (U_r, U_theta, U_z) (m per sqrt(kg)) at the tread samples, one row per sample: the motion is
   /// u_r = U_r cos n theta, u_theta = U_theta sin n theta, u_z = U_z cos n theta.
   Eigen::MatrixX3d tread_shape;

@@ -41,6 +41,10 @@ double WheelModalDamping::ratio(int n, ModeFamily family) const {
   return family == ModeFamily::kAxial ? axial : (family == ModeFamily::kRadial ? radial : circumferential);
 }
 
+double WheelModalDamping::ratio(const WheelFeMode& m) const {
+  return m.damping_ratio > 0.0 ? m.damping_ratio : ratio(m.n, m.family);
+}
+
 double tread_radius_at(const WheelFeModes& w, double s) {
   const auto& t = w.tread_s;
   if (t.size() < 2 || s < t.front() - 1e-9 || s > t.back() + 1e-9)
@@ -76,7 +80,7 @@ Receptance4 fe_cross_receptance(const WheelFeModes& w, const WheelFeContactOptio
     const Eigen::Matrix4d participation =
         sa.cos_set * sb.cos_set.transpose() + sa.sin_set * sb.sin_set.transpose();
     h += participation.cast<cdouble>() *
-         modal_response(kTwoPi * m.frequency, o.damping.ratio(m.n, m.family), m.n, o.spin_speed, omega);
+         modal_response(kTwoPi * m.frequency, o.damping.ratio(m), m.n, o.spin_speed, omega);
   }
   return h;
 }
@@ -88,7 +92,7 @@ std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, const
     if (m.n < o.n_min) continue;
     const ContactShapes c = contact_shapes(w, m, {s, 0.0});
     WheelMode entry;
-    entry.damping_ratio = o.damping.ratio(m.n, m.family);
+    entry.damping_ratio = o.damping.ratio(m);
     entry.modal_mass = 1.0;
     const std::string label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) + " " +
                               std::to_string(m.nodal_circles) + " circles";

@@ -52,6 +52,8 @@ struct WheelModalDamping {
   double radial = 1e-4;           ///< n >= 2, radial family
   double circumferential = 1e-4;  ///< n >= 2, circumferential family
   double ratio(int n, ModeFamily family) const;
+  /// The mode's own ratio when it has one (an imported mode), else ratio(n, family).
+  double ratio(const WheelFeMode& mode) const;
 };
 
 /// How the FE modes enter a contact receptance.

@@ -170,9 +170,13 @@ const std::vector<KeySpec>& case_schema() {
       {"wheel.modes", T::String, "\"models/wheel/wheel_920mm_modes.csv\"", "-", "wheel modes file"},
       // the FE wheel (docs/models.md Sec. 3.4; dynamics/wheel_fe.hpp)
       {"wheel.model", T::String, "\"table\"", "-",
-       "the wheel's flexible modes: \"table\" (wheel.modes at one contact point) or \"fe\" (the "
-       "axisymmetric FE modes of wheel.section, shapes at the contact's position on the tread)",
-       {"table", "fe"}},
+       "the wheel's flexible modes: \"table\" (wheel.modes at one contact point), \"fe\" (the "
+       "axisymmetric FE modes of wheel.section) or \"shapes\" (a user's FE modes along the tread, "
+       "wheel.shapes); fe and shapes take the shapes at the contact's position on the tread",
+       {"table", "fe", "shapes"}},
+      {"wheel.shapes", T::String, "", "-",
+       "model = \"shapes\": mode shapes along the tread (CSV mode, n, frequency_Hz, damping_ratio, s_mm, "
+       "r_mm, u_r, u_theta, u_z; mass-normalised; docs/interface.md)", {}, 0, "required with wheel.model = \"shapes\""},
       {"wheel.section", T::String, "\"models/wheel/wheel_920mm_section.csv\"", "-",
        "model = \"fe\": the wheel's cross-section outline (CSV r_mm, z_mm, segment)"},
       {"wheel.bore", T::String, "\"clamped\"", "-",

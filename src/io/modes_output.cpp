@@ -13,7 +13,7 @@ void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m, const dyn
     family.push_back(dynamics::family_name(mode.family));
     circles.push_back(mode.nodal_circles);
     modal_mass.push_back(1.0);  // mass-normalised shapes
-    zeta.push_back(damping.ratio(mode.n, mode.family));
+    zeta.push_back(damping.ratio(mode));
     for (std::size_t i = 0; i < samples; ++i)
       for (int c = 0; c < 3; ++c) tread.push_back(mode.tread_shape(i, c));
     section.insert(section.end(), mode.dofs.data(), mode.dofs.data() + mode.dofs.size());

@@ -5,22 +5,65 @@
 #include <mutex>
 
 #include "core/errors.hpp"
+#include "io/tread_shapes_file.hpp"
 #include "io/wheel_section_file.hpp"
 
 namespace rollnoise::io {
 
+namespace {
+
+// Keys that only one model uses: an error with another.
+void check_unused_keys(const CaseReader& r, const std::string& model, InputProblems& problems) {
+  const auto refuse = [&](const char* key, const char* used_with) {
+    problems.check([&] {
+      if (r.has(key)) r.fail(key, std::string("only used with wheel.model = ") + used_with);
+    });
+  };
+  if (model != "fe")
+    for (const char* key : {"wheel.section", "wheel.bore", "wheel.youngs_modulus", "wheel.poisson_ratio", "wheel.density",
+                            "wheel.mesh_size", "wheel.n_max", "wheel.f_max"})
+      refuse(key, "\"fe\"");
+  if (model == "table")
+    for (const char* key : {"wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial", "wheel.damping_radial",
+                            "wheel.damping_circumferential", "wheel.rotation"})
+      refuse(key, "\"fe\" or \"shapes\"");
+  if (model != "shapes") refuse("wheel.shapes", "\"shapes\"");
+}
+
+void read_damping_and_rotation(const CaseReader& r, InputProblems& problems, WheelFeCase& c) {
+  auto& d = c.contact.damping;
+  problems.check([&] { d.n0 = r.real("wheel.damping_n0"); });
+  problems.check([&] { d.n1 = r.real("wheel.damping_n1"); });
+  problems.check([&] { d.axial = r.real("wheel.damping_axial"); });
+  problems.check([&] { d.radial = r.real("wheel.damping_radial"); });
+  problems.check([&] { d.circumferential = r.real("wheel.damping_circumferential"); });
+  for (const char* key : {"wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial", "wheel.damping_radial",
+                          "wheel.damping_circumferential"})
+    problems.check([&] {
+      if (r.real(key) >= 1.0) r.fail(key, "a modal damping ratio must be below 1");
+    });
+  problems.check([&] { c.rotation_split = r.string("wheel.rotation") == "split"; });
+  problems.check([&] { c.rolling_speed = r.real("rolling.speed"); });
+}
+
+}  // namespace
+
 std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems& problems) {
-  if (r.string("wheel.model") != "fe") {
-    for (const char* key : {"wheel.section", "wheel.bore", "wheel.youngs_modulus", "wheel.poisson_ratio",
-                            "wheel.density", "wheel.mesh_size", "wheel.n_max", "wheel.f_max",
-                            "wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial",
-                            "wheel.damping_radial", "wheel.damping_circumferential", "wheel.rotation"})
-      problems.check([&] {
-        if (r.has(key)) r.fail(key, "only used with wheel.model = \"fe\"");
-      });
-    return std::nullopt;
-  }
+  std::string model = "table";
+  problems.check([&] { model = r.string("wheel.model"); });
+  check_unused_keys(r, model, problems);
+  if (model == "table") return std::nullopt;
   WheelFeCase c;
+  read_damping_and_rotation(r, problems, c);
+  if (model == "shapes") {
+    problems.check([&] {
+      if (!r.has("wheel.shapes")) r.fail("wheel.shapes", "required with wheel.model = \"shapes\"");
+      c.section_file = resolve_model_file(r, "wheel.shapes");
+      c.imported = std::make_shared<const dynamics::WheelFeModes>(read_tread_shapes(c.section_file));
+    });
+    c.id = "imported wheel shapes " + c.section_file;
+    return c;
+  }
   problems.check([&] {
     c.section_file = resolve_model_file(r, "wheel.section");
     c.section = read_wheel_section(c.section_file);
@@ -40,19 +83,6 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
   });
   problems.check([&] { c.options.n_max = static_cast<int>(r.integer("wheel.n_max")); });
   problems.check([&] { c.options.f_max = r.real("wheel.f_max"); });
-  auto& d = c.contact.damping;
-  problems.check([&] { d.n0 = r.real("wheel.damping_n0"); });
-  problems.check([&] { d.n1 = r.real("wheel.damping_n1"); });
-  problems.check([&] { d.axial = r.real("wheel.damping_axial"); });
-  problems.check([&] { d.radial = r.real("wheel.damping_radial"); });
-  problems.check([&] { d.circumferential = r.real("wheel.damping_circumferential"); });
-  for (const char* key : {"wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial", "wheel.damping_radial",
-                          "wheel.damping_circumferential"})
-    problems.check([&] {
-      if (r.real(key) >= 1.0) r.fail(key, "a modal damping ratio must be below 1");
-    });
-  problems.check([&] { c.rotation_split = r.string("wheel.rotation") == "split"; });
-  problems.check([&] { c.rolling_speed = r.real("rolling.speed"); });
   char text[200];
   std::snprintf(text, sizeof text, ", E %.17g, nu %.17g, rho %.17g, h %.17g, n_max %d, f_max %.17g", m.youngs_modulus,
                 m.poisson_ratio, m.density, c.options.mesh_size, c.options.n_max, c.options.f_max);
@@ -61,6 +91,7 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
 }
 
 std::shared_ptr<const dynamics::WheelFeModes> wheel_fe_modes_once(const WheelFeCase& c) {
+  if (c.imported) return c.imported;
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const dynamics::WheelFeModes>> computed;
   std::lock_guard<std::mutex> lock(mutex);

@@ -23,9 +23,12 @@ struct WheelFeCase {
   double rolling_speed = 0.0;  ///< V (m/s), for Omega = V / r0
   /// What the modes depend on (file as resolved, material, mesh, range): equal ids, equal modes.
   std::string id;
+  /// wheel.model = "shapes": the user's modes as read (no section, no FE solve).
+  std::shared_ptr<const dynamics::WheelFeModes> imported;
 };
 
-/// The [wheel] FE keys; nullopt when wheel.model = "table". Problems are recorded in `problems`.
+/// The [wheel] FE keys (model = "fe") or the imported shapes (model = "shapes"); nullopt when
+/// wheel.model = "table". Problems are recorded in `problems`.
 std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems& problems);
 
 /// The modes of the case's wheel, computed at the first call for an id and shared afterwards.

@@ -67,6 +67,11 @@ TEST(WheelFeCase, BadValuesNameTheirKey) {
       {"wheel.rotation=\"spin\"", "wheel.rotation"},
       {"wheel.section=\"no_such_section.csv\"", "wheel.section"},
   };
+  // model = "shapes" needs its file; its keys are refused with another model.
+  EXPECT_NE(read_error({"wheel.model=\"shapes\""}).find("wheel.shapes"), std::string::npos);
+  EXPECT_NE(read_error({fe, "wheel.shapes=\"s.csv\""}).find("wheel.shapes"), std::string::npos);
+  EXPECT_NE(read_error({"wheel.model=\"shapes\"", "wheel.shapes=\"s.csv\"", "wheel.mesh_size=0.01"}).find("wheel.mesh_size"),
+            std::string::npos);
   for (const auto& [override_kv, key] : cases) {
     const std::string message = read_error({fe, override_kv});
     EXPECT_NE(message.find(key), std::string::npos) << override_kv << ": " << message;
