@@ -66,6 +66,15 @@ Eigen::Matrix3d modal_static_compliance(const WheelFeModes& w, int n, double s, 
   return c;
 }
 
+// The default wheel's modes n <= n_max up to f_max on a mesh of size h (m).
+WheelFeModes coarse_wheel(int n_max, double f_max, double h) {
+  WheelFeOptions o;
+  o.n_max = n_max;
+  o.f_max = f_max;
+  o.mesh_size = h;
+  return wheel_fe_modes(default_section(), o);
+}
+
 bool passive(const Receptance4& h) {
   const Eigen::Matrix4cd d = (h - h.adjoint()) / cdouble(0, 2);
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix4cd>(d).eigenvalues().maxCoeff() <= 1e-12 * h.norm();
@@ -103,11 +112,7 @@ TEST(WheelFeContact, StaticModalSumEqualsDirectStaticSolve) {
 // (s = -30 mm, gamma = 0.6) to round-off, with and without the +-n Omega split; passivity of the
 // point receptances ((H - H^H)/2i <= 0) at 200 Hz .. 4 kHz.
 TEST(WheelFeContact, CrossReceptanceIsReciprocalAndPointReceptancePassive) {
-  WheelFeOptions o;
-  o.n_max = 6;
-  o.f_max = 4000.0;
-  o.mesh_size = 0.02;
-  const auto w = wheel_fe_modes(default_section(), o);
+  const auto w = coarse_wheel(6, 4000.0, 0.02);
   const TreadContact a{0.0, 0.02}, b{-0.03, 0.6};
   for (double spin : {0.0, 42.0}) {
     WheelFeContactOptions co;
@@ -125,11 +130,7 @@ TEST(WheelFeContact, CrossReceptanceIsReciprocalAndPointReceptancePassive) {
 // noise/loop.hpp restricted to (z, x, y, rot z) (rotations about y absent); and at gamma = 0 it
 // equals the WheelModel built from contact_mode_table (the same modes, the same point).
 TEST(WheelFeContact, TiltedFrameIsTheRotatedReceptanceAndTableAgrees) {
-  WheelFeOptions o;
-  o.n_max = 4;
-  o.f_max = 3000.0;
-  o.mesh_size = 0.02;
-  const auto w = wheel_fe_modes(default_section(), o);
+  const auto w = coarse_wheel(4, 3000.0, 0.02);
   const double s = -0.02, g = 0.5, f = 1300.0;
   const Receptance4 h0 = fe_cross_receptance(w, {}, {s, 0.0}, {s, 0.0}, f);
   Eigen::Matrix4d T = Eigen::Matrix4d::Zero();  // columns: n, x, t_y, spin in (z, x, y, rot z)
@@ -151,11 +152,7 @@ TEST(WheelFeContact, TiltedFrameIsTheRotatedReceptanceAndTableAgrees) {
 // with half its participation (shape / sqrt 2): the table's participation summed over the two waves
 // equals the unsplit one, and the peaks sit at the split frequencies.
 TEST(WheelFeContact, RotationSplitsEachPairByNOmega) {
-  WheelFeOptions o;
-  o.n_max = 3;
-  o.f_max = 1500.0;
-  o.mesh_size = 0.03;
-  const auto w = wheel_fe_modes(default_section(), o);
+  const auto w = coarse_wheel(3, 1500.0, 0.03);
   WheelFeContactOptions split;
   split.spin_speed = 42.0;
   const auto still = contact_mode_table(w, 0.0), turning = contact_mode_table(w, 0.0, split);
