@@ -16,14 +16,16 @@
 namespace rollnoise::cli {
 
 int run_modes(const CommonOptions& o, const std::string& csv) {
-  const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides).with("wheel.model=\"fe\"");
+  const io::CaseReader reader =
+      io::CaseReader::from_file(o.case_file, o.overrides).with("wheel.model=\"fe\"");
   const std::string out = output_path(o, reader.name());
   io::InputProblems problems;
   const auto fe = io::read_wheel_fe_case(reader, problems);
   problems.throw_if_any();
   const auto t0 = std::chrono::steady_clock::now();
   const auto modes = io::within_case(reader, [&] { return io::wheel_fe_modes_once(*fe); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   io::Hdf5Writer w(out);
   io::write_wheel_modes(w, *modes, fe->contact.damping);
@@ -32,11 +34,13 @@ int run_modes(const CommonOptions& o, const std::string& csv) {
   w.commit();
   if (table) table->commit();
 
-  std::printf("%s: %zu modes of the wheel (%.1f kg) for n = 0..%d up to %.6g Hz; %zu triangles (mesh %.3g mm), %zu "
-              "DOFs per n, %zu tread points; %.2f s\n",
-              reader.name().c_str(), modes->modes.size(), modes->mass, fe->options.n_max, fe->options.f_max,
-              modes->mesh.triangles.size(), 1e3 * fe->options.mesh_size, 3 * modes->mesh.nodes.size(),
-              modes->tread_s.size(), seconds);
+  std::printf(
+      "%s: %zu modes of the wheel (%.1f kg) for n = 0..%d up to %.6g Hz; %zu triangles (mesh %.3g "
+      "mm), %zu "
+      "DOFs per n, %zu tread points; %.2f s\n",
+      reader.name().c_str(), modes->modes.size(), modes->mass, fe->options.n_max, fe->options.f_max,
+      modes->mesh.triangles.size(), 1e3 * fe->options.mesh_size, 3 * modes->mesh.nodes.size(),
+      modes->tread_s.size(), seconds);
   std::map<std::pair<std::string, int>, std::string> rows;  // (family, circles) -> frequencies by n
   for (const auto& m : modes->modes) {
     char cell[40];

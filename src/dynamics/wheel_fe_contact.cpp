@@ -20,17 +20,21 @@ Eigen::Vector4d to_contact_frame(double ux, double uy, double uz, double rot_z, 
 
 // R(omega) of a mode of unit modal mass (split by +-n Omega, see the header).
 cdouble modal_response(double omega_k, double zeta, int n, double spin, double omega) {
-  const auto r = [&](double wk) { return 1.0 / cdouble(wk * wk - omega * omega, 2 * zeta * wk * omega); };
+  const auto r = [&](double wk) {
+    return 1.0 / cdouble(wk * wk - omega * omega, 2 * zeta * wk * omega);
+  };
   if (n == 0 || spin == 0.0) return r(omega_k);
   return 0.5 * (r(omega_k + n * spin) + r(omega_k - n * spin));
 }
 
 void check_spin(const WheelFeModes& w, const WheelFeContactOptions& o) {
-  if (!(o.spin_speed >= 0.0)) throw InputError("wheel.rotation", "the spin speed must be >= 0 rad/s");
+  if (!(o.spin_speed >= 0.0))
+    throw InputError("wheel.rotation", "the spin speed must be >= 0 rad/s");
   for (const auto& m : w.modes)
     if (m.n >= std::max(o.n_min, 1) && kTwoPi * m.frequency - m.n * o.spin_speed <= 0.0)
-      throw InputError("wheel.rotation", "n Omega exceeds the natural frequency of mode n = " +
-                                             std::to_string(m.n) + " (" + std::to_string(m.frequency) + " Hz)");
+      throw InputError("wheel.rotation",
+                       "n Omega exceeds the natural frequency of mode n = " + std::to_string(m.n) +
+                           " (" + std::to_string(m.frequency) + " Hz)");
 }
 
 }  // namespace
@@ -38,7 +42,8 @@ void check_spin(const WheelFeModes& w, const WheelFeContactOptions& o) {
 double WheelModalDamping::ratio(int n, ModeFamily family) const {
   if (n == 0) return n0;
   if (n == 1) return n1;
-  return family == ModeFamily::kAxial ? axial : (family == ModeFamily::kRadial ? radial : circumferential);
+  return family == ModeFamily::kAxial ? axial
+                                      : (family == ModeFamily::kRadial ? radial : circumferential);
 }
 
 double WheelModalDamping::ratio(const WheelFeMode& m) const {
@@ -48,16 +53,19 @@ double WheelModalDamping::ratio(const WheelFeMode& m) const {
 double tread_radius_at(const WheelFeModes& w, double s) {
   const auto& t = w.tread_s;
   if (t.size() < 2 || s < t.front() - 1e-9 || s > t.back() + 1e-9)
-    throw InputError("tread_position",
-                     "contact position s = " + std::to_string(s) + " m is outside the wheel's running surface");
+    throw InputError("tread_position", "contact position s = " + std::to_string(s) +
+                                           " m is outside the wheel's running surface");
   const auto it = std::upper_bound(t.begin(), t.end(), s);
-  const std::size_t i1 = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - t.begin(), 1), t.size() - 1);
+  const std::size_t i1 =
+      std::min<std::size_t>(std::max<std::ptrdiff_t>(it - t.begin(), 1), t.size() - 1);
   const double x = std::clamp((s - t[i1 - 1]) / (t[i1] - t[i1 - 1]), 0.0, 1.0);
   return (1 - x) * w.tread_r[i1 - 1] + x * w.tread_r[i1];
 }
 
-ContactShapes contact_shapes(const WheelFeModes& w, const WheelFeMode& mode, const TreadContact& c) {
-  const Eigen::Vector3d u = tread_shape_at(w, mode, c.s);  // (U_r, U_theta, U_z); throws off the tread
+ContactShapes contact_shapes(const WheelFeModes& w, const WheelFeMode& mode,
+                             const TreadContact& c) {
+  const Eigen::Vector3d u =
+      tread_shape_at(w, mode, c.s);  // (U_r, U_theta, U_z); throws off the tread
   const double r = tread_radius_at(w, c.s), g = c.contact_angle;
   ContactShapes out;
   if (mode.n == 0) {
@@ -69,8 +77,8 @@ ContactShapes contact_shapes(const WheelFeModes& w, const WheelFeMode& mode, con
   return out;
 }
 
-Receptance4 fe_cross_receptance(const WheelFeModes& w, const WheelFeContactOptions& o, const TreadContact& a,
-                                const TreadContact& b, double frequency) {
+Receptance4 fe_cross_receptance(const WheelFeModes& w, const WheelFeContactOptions& o,
+                                const TreadContact& a, const TreadContact& b, double frequency) {
   check_spin(w, o);
   const double omega = kTwoPi * frequency;
   Receptance4 h = Receptance4::Zero();
@@ -85,7 +93,8 @@ Receptance4 fe_cross_receptance(const WheelFeModes& w, const WheelFeContactOptio
   return h;
 }
 
-std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, const WheelFeContactOptions& o) {
+std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s,
+                                          const WheelFeContactOptions& o) {
   check_spin(w, o);
   std::vector<WheelMode> table;
   for (const auto& m : w.modes) {
@@ -94,13 +103,14 @@ std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, const
     WheelMode entry;
     entry.damping_ratio = o.damping.ratio(m);
     entry.modal_mass = 1.0;
-    const std::string label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) + " " +
-                              std::to_string(m.nodal_circles) + " circles";
+    const std::string label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) +
+                              " " + std::to_string(m.nodal_circles) + " circles";
     const bool split = m.n >= 1 && o.spin_speed > 0.0;
     const double df = split ? m.n * o.spin_speed / kTwoPi : 0.0;
     const double scale = split ? std::sqrt(0.5) : 1.0;
     for (int set = 0; set < (m.n == 0 ? 1 : 2); ++set) {
-      const Eigen::Vector4d psi = set == 0 ? c.cos_set : c.sin_set;  // (z, x, y, rot z) at gamma = 0
+      const Eigen::Vector4d psi =
+          set == 0 ? c.cos_set : c.sin_set;  // (z, x, y, rot z) at gamma = 0
       const std::string name = label + (set == 0 ? "" : " sin");
       for (int wave = 0; wave < (split ? 2 : 1); ++wave) {
         entry.frequency = m.frequency + (split ? (wave == 0 ? -df : df) : 0.0);

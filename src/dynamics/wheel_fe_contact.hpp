@@ -1,7 +1,7 @@
 // The FE wheel (wheel_fe.hpp) at its contacts: the mode shapes at a contact's actual position s on
 // the tread resolved into that contact's frame, the point and cross receptances of contacts on the
-// same wheel, modal damping by family, the +-n Omega split of a rotating wheel, and the contact-point
-// mode table of WheelModel (wheel.hpp) (docs/models.md Sec. 3.4).
+// same wheel, modal damping by family, the +-n Omega split of a rotating wheel, and the
+// contact-point mode table of WheelModel (wheel.hpp) (docs/models.md Sec. 3.4).
 //
 // Frame. A contact at the bottom of the wheel (theta = 0) at lateral position s on the tread (m,
 // the section's z, positive towards the field side = +y for a wheel at +y). The wheel's cylindrical
@@ -26,8 +26,8 @@
 // pair's participation:
 //   R_k -> (R(omega_k + n Omega) + R(omega_k - n Omega)) / 2   (Coriolis terms neglected).
 // The exact fixed-frame response also carries an antisymmetric coupling i/2 (psi_c psi_s^T - psi_s
-// psi_c^T)(R_+ - R_-) between the cos-set and sin-set components (rotation breaks reciprocity); it is
-// omitted here, so the split receptance stays symmetric (documented in docs/models.md Sec. 3.4).
+// psi_c^T)(R_+ - R_-) between the cos-set and sin-set components (rotation breaks reciprocity); it
+// is omitted here, so the split receptance stays symmetric (documented in docs/models.md Sec. 3.4).
 #pragma once
 
 #include <Eigen/Core>

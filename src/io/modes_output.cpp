@@ -2,7 +2,8 @@
 
 namespace rollnoise::io {
 
-void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m, const dynamics::WheelModalDamping& damping) {
+void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m,
+                       const dynamics::WheelModalDamping& damping) {
   const std::size_t count = m.modes.size(), samples = m.tread_s.size(), nodes = m.mesh.nodes.size();
   std::vector<double> frequency, modal_mass, zeta, tread, section;
   std::vector<int> n, circles, triangles;
@@ -25,8 +26,10 @@ void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m, const dyn
   w.write("/modes/modal_mass", modal_mass, {count}, "kg");
   w.write("/modes/damping", zeta, {count}, "-");
   w.attribute("/modes", "convention",
-              "u_r = U_r cos n theta, u_theta = U_theta sin n theta, u_z = U_z cos n theta; shapes normalised to "
-              "phi^T M phi = 1 over the whole wheel (modal mass 1 kg); z lateral from the taping line, positive "
+              "u_r = U_r cos n theta, u_theta = U_theta sin n theta, u_z = U_z cos n theta; shapes "
+              "normalised to "
+              "phi^T M phi = 1 over the whole wheel (modal mass 1 kg); z lateral from the taping "
+              "line, positive "
               "towards the field side (the profile coordinate s); docs/models.md Sec. 3.4");
   w.write("/modes/tread/s", m.tread_s, {samples}, "m");
   w.write("/modes/tread/r", m.tread_r, {samples}, "m");
@@ -35,7 +38,8 @@ void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m, const dyn
   for (const auto& p : m.mesh.nodes) xy.push_back(p.x()), xy.push_back(p.y());
   for (const auto& t : m.mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
   w.write("/modes/mesh/nodes", xy, {nodes, 2}, "m (r, z)");
-  w.write("/modes/mesh/triangles", triangles, {m.mesh.triangles.size(), 6}, "- (node indices: corners, then mid-sides)");
+  w.write("/modes/mesh/triangles", triangles, {m.mesh.triangles.size(), 6},
+          "- (node indices: corners, then mid-sides)");
   w.write("/modes/mesh/shape", section, {count, nodes, 3}, "m kg^-1/2 (U_r, U_theta, U_z)");
   w.write("/modes/mass", m.mass, "kg");
 }

@@ -34,13 +34,16 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
 /// The modes of the case's wheel, computed at the first call for an id and shared afterwards.
 std::shared_ptr<const dynamics::WheelFeModes> wheel_fe_modes_once(const WheelFeCase& c);
 
-/// The contact options of the case: Omega = V / r0 (r0 the tread radius at s = 0) when the split is on.
-dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c, const dynamics::WheelFeModes& w);
+/// The contact options of the case: Omega = V / r0 (r0 the tread radius at s = 0) when the split is
+/// on.
+dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
+                                                const dynamics::WheelFeModes& w);
 
 /// The wheel model of the case's FE wheel: the rigid wheelset plus the FE modes with n >= 2 (modes
 /// once per wheel) at the reference point s = 0 that follow the contact across the tread
 /// (WheelModel::modes_at), damping and the +-n Omega split (Omega = V / r(0)) as the case says;
 /// `id` receives what the model depends on besides the wheelset.
-dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset, std::string* id);
+dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
+                                    std::string* id);
 
 }  // namespace rollnoise::io

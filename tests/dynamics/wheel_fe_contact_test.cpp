@@ -22,7 +22,8 @@ using namespace rollnoise::dynamics;
 namespace {
 
 WheelSection default_section() {
-  return io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv");
+  return io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) +
+                                "/models/wheel/wheel_920mm_section.csv");
 }
 
 // The static compliance of order n at tread position s by a direct solve K_n u = f (bore clamped):
@@ -41,11 +42,13 @@ Eigen::Matrix3d direct_static_compliance(const WheelSection& section, const Whee
   std::vector<Eigen::Triplet<double>> t;
   for (int c = 0; c < km.stiffness.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(km.stiffness, c); it; ++it)
-      if (index[it.row()] >= 0 && index[it.col()] >= 0) t.emplace_back(index[it.row()], index[it.col()], it.value());
+      if (index[it.row()] >= 0 && index[it.col()] >= 0)
+        t.emplace_back(index[it.row()], index[it.col()], it.value());
   Eigen::SparseMatrix<double> k(nfree, nfree);
   k.setFromTriplets(t.begin(), t.end());
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(k);
-  const fem::MeshPoint p = fem::locate(w.mesh, {tread_radius_at(w, s), s}, 1e-4);  // s: a tread sample
+  const fem::MeshPoint p =
+      fem::locate(w.mesh, {tread_radius_at(w, s), s}, 1e-4);  // s: a tread sample
   const auto N = fem::triangle6_shape(p.xi, p.eta);
   const auto& tri = w.mesh.triangles[p.triangle];
   Eigen::Matrix<double, Eigen::Dynamic, 3> f = Eigen::MatrixXd::Zero(nfree, 3);
@@ -77,17 +80,18 @@ WheelFeModes coarse_wheel(int n_max, double f_max, double h) {
 
 bool passive(const Receptance4& h) {
   const Eigen::Matrix4cd d = (h - h.adjoint()) / cdouble(0, 2);
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix4cd>(d).eigenvalues().maxCoeff() <= 1e-12 * h.norm();
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix4cd>(d).eigenvalues().maxCoeff() <=
+         1e-12 * h.norm();
 }
 
 }  // namespace
 
 // Static flexible part: with every mode of order n (a coarse 60 mm mesh, all modes by the dense
 // solver) the modal sum sum U U^T / omega^2 at a tread sample equals the direct static solve
-// K_n^{-1} of the same mesh to 1e-8 (the spectral identity K^{-1} = Phi Omega^-2 Phi^T, which checks
-// the mass normalisation with c_n, the tread sampling and the bore clamp). Truncated at 6 kHz, the
-// modal sum misses the point load's local flexibility (printed): that residual is not added to the
-// receptance (docs/models.md Sec. 3.4).
+// K_n^{-1} of the same mesh to 1e-8 (the spectral identity K^{-1} = Phi Omega^-2 Phi^T, which
+// checks the mass normalisation with c_n, the tread sampling and the bore clamp). Truncated at 6
+// kHz, the modal sum misses the point load's local flexibility (printed): that residual is not
+// added to the receptance (docs/models.md Sec. 3.4).
 TEST(WheelFeContact, StaticModalSumEqualsDirectStaticSolve) {
   const auto section = default_section();
   WheelFeOptions o;
@@ -95,16 +99,19 @@ TEST(WheelFeContact, StaticModalSumEqualsDirectStaticSolve) {
   o.f_max = std::numeric_limits<double>::infinity();  // all modes (the dense solver)
   o.mesh_size = 0.06;
   const auto w = wheel_fe_modes(section, o);
-  std::cout << w.mesh.triangles.size() << " triangles, " << 3 * w.mesh.nodes.size() << " DOFs per n\n";
+  std::cout << w.mesh.triangles.size() << " triangles, " << 3 * w.mesh.nodes.size()
+            << " DOFs per n\n";
   for (int n : {0, 1})
-    for (double s : {w.tread_s[w.tread_s.size() / 2], w.tread_s[10]}) {  // samples: no interpolation
+    for (double s :
+         {w.tread_s[w.tread_s.size() / 2], w.tread_s[10]}) {  // samples: no interpolation
       const Eigen::Matrix3d direct = direct_static_compliance(section, w, o.material, n, s);
       const Eigen::Matrix3d modal = modal_static_compliance(w, n, s, 1e300);
       EXPECT_LT((direct - modal).norm(), 1e-8 * direct.norm()) << "n = " << n << ", s = " << s;
       const Eigen::Matrix3d truncated = modal_static_compliance(w, n, s, 6000.0);
       std::cout << "n = " << n << ", s = " << s * 1e3 << " mm: static C_zz " << direct(2, 2)
-                << " m/N, modes <= 6 kHz give " << truncated(2, 2) / direct(2, 2) * 100 << " %, C_rr "
-                << direct(0, 0) << " m/N, " << truncated(0, 0) / direct(0, 0) * 100 << " %\n";
+                << " m/N, modes <= 6 kHz give " << truncated(2, 2) / direct(2, 2) * 100
+                << " %, C_rr " << direct(0, 0) << " m/N, " << truncated(0, 0) / direct(0, 0) * 100
+                << " %\n";
     }
 }
 
@@ -118,7 +125,8 @@ TEST(WheelFeContact, CrossReceptanceIsReciprocalAndPointReceptancePassive) {
     WheelFeContactOptions co;
     co.spin_speed = spin;
     for (double f : {200.0, 950.0, 2000.0, 4000.0}) {
-      const Receptance4 hab = fe_cross_receptance(w, co, a, b, f), hba = fe_cross_receptance(w, co, b, a, f);
+      const Receptance4 hab = fe_cross_receptance(w, co, a, b, f),
+                        hba = fe_cross_receptance(w, co, b, a, f);
       EXPECT_LT((hab - hba.transpose()).norm(), 1e-12 * hab.norm()) << f << " Hz";
       EXPECT_TRUE(passive(fe_cross_receptance(w, co, a, a, f))) << f << " Hz";
       EXPECT_TRUE(passive(fe_cross_receptance(w, co, b, b, f))) << f << " Hz";
@@ -164,6 +172,7 @@ TEST(WheelFeContact, RotationSplitsEachPairByNOmega) {
     EXPECT_NEAR(turning[2 * i + 1].frequency, still[i].frequency + df, 1e-9);
     const Eigen::Matrix4d sum = turning[2 * i].shape * turning[2 * i].shape.transpose() +
                                 turning[2 * i + 1].shape * turning[2 * i + 1].shape.transpose();
-    EXPECT_LT((sum - still[i].shape * still[i].shape.transpose()).norm(), 1e-14 * sum.norm() + 1e-30);
+    EXPECT_LT((sum - still[i].shape * still[i].shape.transpose()).norm(),
+              1e-14 * sum.norm() + 1e-30);
   }
 }

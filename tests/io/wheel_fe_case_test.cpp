@@ -28,14 +28,15 @@ std::string read_error(const std::vector<std::string>& overrides) {
 
 }  // namespace
 
-// The defaults: the table wheel; with model = "fe" the shipped 920 mm section, steel, 8 mm, n <= 10,
-// 6 kHz, Thompson's damping (1e-3, 1e-2, 1e-4) and the rotation split on.
+// The defaults: the table wheel; with model = "fe" the shipped 920 mm section, steel, 8 mm, n <=
+// 10, 6 kHz, Thompson's damping (1e-3, 1e-2, 1e-4) and the rotation split on.
 TEST(WheelFeCase, DefaultsAreTableAndSteelSolidWheelValues) {
   io::InputProblems problems;
   EXPECT_FALSE(io::read_wheel_fe_case(io::CaseReader::from_string("", "w.toml"), problems));
-  const auto c = io::read_wheel_fe_case(io::CaseReader::from_string("[wheel]\nmodel = \"fe\"\n",
-                                                                     std::string(ROLLNOISE_SOURCE_DIR) + "/cases/w.toml"),
-                                        problems);
+  const auto c = io::read_wheel_fe_case(
+      io::CaseReader::from_string("[wheel]\nmodel = \"fe\"\n",
+                                  std::string(ROLLNOISE_SOURCE_DIR) + "/cases/w.toml"),
+      problems);
   ASSERT_TRUE(problems.empty());
   ASSERT_TRUE(c);
   EXPECT_NE(c->section_file.find("wheel_920mm_section.csv"), std::string::npos);
@@ -70,7 +71,8 @@ TEST(WheelFeCase, BadValuesNameTheirKey) {
   // model = "shapes" needs its file; its keys are refused with another model.
   EXPECT_NE(read_error({"wheel.model=\"shapes\""}).find("wheel.shapes"), std::string::npos);
   EXPECT_NE(read_error({fe, "wheel.shapes=\"s.csv\""}).find("wheel.shapes"), std::string::npos);
-  EXPECT_NE(read_error({"wheel.model=\"shapes\"", "wheel.shapes=\"s.csv\"", "wheel.mesh_size=0.01"}).find("wheel.mesh_size"),
+  EXPECT_NE(read_error({"wheel.model=\"shapes\"", "wheel.shapes=\"s.csv\"", "wheel.mesh_size=0.01"})
+                .find("wheel.mesh_size"),
             std::string::npos);
   for (const auto& [override_kv, key] : cases) {
     const std::string message = read_error({fe, override_kv});
