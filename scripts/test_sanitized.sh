@@ -39,7 +39,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -43,6 +43,8 @@ int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);
 int run_receptance(const CommonOptions& o);
+/// rollnoise modes (modes_command.cpp): the FE wheel's modes; `csv` may be empty.
+int run_modes(const CommonOptions& o, const std::string& csv);
 /// rollnoise statespace (statespace_command.cpp); `csv_prefix` may be empty.
 int run_statespace(const CommonOptions& o, const std::string& csv_prefix);
 /// rollnoise squeal (squeal_command.cpp); `route` is "1", "2" or "both".

@@ -85,6 +85,10 @@ int run_command(int argc, char** argv) {
   add_common(noise_cmd);
   auto* receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
   add_common(receptance);
+  auto* modes_cmd = app.add_subcommand("modes", "the wheel's axisymmetric FE modes and shapes along the tread");
+  add_common(modes_cmd);
+  std::string modes_csv;
+  modes_cmd->add_option("--csv", modes_csv, "also write the tread shapes as CSV (the wheel.shapes import format)");
   auto* squeal = app.add_subcommand("squeal", "stability of the wheel-rail-contact loop: coupled wheel-mode eigenvalues");
   add_common(squeal);
   std::string squeal_route = "both";
@@ -159,7 +163,10 @@ int run_command(int argc, char** argv) {
     if (collect->parsed()) return cli::run_collect(study_options);
     if (contact_input->parsed()) return cli::run_contact_input(common, contact_input_steady);
     // the output files, before any computation
-    cli::check_run_files(common, creep->parsed() ? creep_csv : bench->parsed() ? bench_csv : "");
+    cli::check_run_files(common, creep->parsed()       ? creep_csv
+                                 : bench->parsed()     ? bench_csv
+                                 : modes_cmd->parsed() ? modes_csv
+                                                       : "");
     if (steady->parsed()) return cli::run_steady(common, sweeps);
     if (transient->parsed()) return cli::run_transient(common);
     creep_extrapolation.on = creep_extrapolation.on || creep_grids->count() > 0;
@@ -168,6 +175,7 @@ int run_command(int argc, char** argv) {
     if (validate->parsed()) return cli::run_validate(common);
     if (noise_cmd->parsed()) return cli::run_noise(common);
     if (receptance->parsed()) return cli::run_receptance(common);
+    if (modes_cmd->parsed()) return cli::run_modes(common, modes_csv);
     if (bench->parsed() && !sweep_cost_grids.empty()) return cli::run_sweep_cost(common, sweep_cost_grids);
     if (squeal->parsed()) return cli::run_squeal(common, squeal_route);
     if (bench->parsed()) return cli::run_bench(common, bench_grids, bench_csv);

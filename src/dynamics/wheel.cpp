@@ -91,10 +91,26 @@ WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> mod
     validate_mode(modes_[n], "wheel.modes[" + std::to_string(n) + "]");
 }
 
-Receptance4 WheelModel::modal_receptance(double frequency) const {
+WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes, ModesAlongTread along_tread)
+    : WheelModel(wheelset, std::move(modes)) {
+  along_tread_ = std::move(along_tread);
+}
+
+std::vector<WheelMode> WheelModel::modes_at(double shift_y) const {
+  if (!along_tread_ || shift_y == 0.0) return modes_;
+  std::vector<WheelMode> at = along_tread_(shift_y);
+  if (at.size() != modes_.size())
+    throw NumericalError("the wheel's mode table along the tread changed its size");
+  for (WheelMode& m : at) m.shape(1) += shift_y * m.shape(3);  // undone by the loop's lever arm
+  return at;
+}
+
+namespace {
+
+Receptance4 modal_sum(const std::vector<WheelMode>& modes, double frequency) {
   const double omega = angular(frequency);
   Receptance4 H = Receptance4::Zero();
-  for (const WheelMode& m : modes_) {
+  for (const WheelMode& m : modes) {
     const double wn = angular(m.frequency);
     // 1 / (m_n (omega_n^2 - omega^2 + 2 i zeta omega_n omega))
     const cdouble q =
@@ -102,6 +118,14 @@ Receptance4 WheelModel::modal_receptance(double frequency) const {
     H += (m.shape * m.shape.transpose()).cast<cdouble>() * q;
   }
   return H;
+}
+
+}  // namespace
+
+Receptance4 WheelModel::modal_receptance(double frequency) const { return modal_sum(modes_, frequency); }
+
+Receptance4 WheelModel::modal_receptance(double frequency, double shift_y) const {
+  return modal_sum(modes_at(shift_y), frequency);
 }
 
 Receptance4 WheelModel::receptance(double frequency) const {

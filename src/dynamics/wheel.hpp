@@ -27,6 +27,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -77,12 +78,29 @@ class WheelModel {
   /// The modal sum alone.
   Receptance4 modal_receptance(double frequency) const;
 
+  /// A wheel whose mode shapes are known along the tread (the FE wheel, wheel_fe_contact.hpp):
+  /// `along_tread(shift_y)` gives the table at the contact shifted by shift_y (m) from the reference
+  /// point (same modes, same order as `modes`, the shapes at the shifted point).
+  using ModesAlongTread = std::function<std::vector<WheelMode>(double shift_y)>;
+  WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes, ModesAlongTread along_tread);
+  bool follows_contact() const { return static_cast<bool>(along_tread_); }
+
+  /// The table for a contact shifted by shift_y, in the form the loop expects (noise/loop.hpp moves
+  /// the modal part from the reference point by the lever arm (0, shift_y, 0), u_x -> u_x - shift_y
+  /// rot_z): for a wheel that follows the contact the shapes at the contact itself with
+  /// phi_x + shift_y phi_rz, so that the lever arm gives back the shape at the contact; otherwise
+  /// `modes()` (the reference-point table moved as a rigid rim).
+  std::vector<WheelMode> modes_at(double shift_y) const;
+  /// The modal sum of modes_at(shift_y).
+  Receptance4 modal_receptance(double frequency, double shift_y) const;
+
   const RigidWheelset& wheelset() const { return wheelset_; }
   const std::vector<WheelMode>& modes() const { return modes_; }
 
  private:
   RigidWheelset wheelset_;
   std::vector<WheelMode> modes_;
+  ModesAlongTread along_tread_;
 };
 
 }  // namespace rollnoise::dynamics

@@ -14,17 +14,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 void check_options(const WheelSection& s, const WheelFeOptions& o) {
   if (s.bore_segments.empty())
-    throw InputError("wheel_fe", "the wheel section has no bore segment");
+    throw InputError("wheel.section", "the wheel section has no bore segment");
   if (s.tread_segments.empty())
-    throw InputError("wheel_fe", "the wheel section has no tread segment");
-  if (!(o.mesh_size > 0)) throw InputError("wheel_fe", "wheel.mesh_size must be > 0 m");
-  if (o.n_max < 0 || o.n_max > 50) throw InputError("wheel_fe", "wheel.n_max must lie in [0, 50]");
-  if (!(o.f_max > 0)) throw InputError("wheel_fe", "wheel.f_max must be > 0 Hz");
+    throw InputError("wheel.section", "the wheel section has no tread segment");
+  if (!(o.mesh_size > 0)) throw InputError("wheel.mesh_size", "wheel.mesh_size must be > 0 m");
+  if (o.n_max < 0 || o.n_max > 50) throw InputError("wheel.n_max", "wheel.n_max must lie in [0, 50]");
+  if (!(o.f_max > 0)) throw InputError("wheel.f_max", "wheel.f_max must be > 0 Hz");
   const auto& m = o.material;
-  if (!(m.youngs_modulus > 0)) throw InputError("wheel_fe", "wheel.youngs_modulus must be > 0 Pa");
+  if (!(m.youngs_modulus > 0)) throw InputError("wheel.youngs_modulus", "wheel.youngs_modulus must be > 0 Pa");
   if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
-    throw InputError("wheel_fe", "wheel.poisson_ratio must lie in (-1, 0.5)");
-  if (!(m.density > 0)) throw InputError("wheel_fe", "wheel.density must be > 0 kg/m^3");
+    throw InputError("wheel.poisson_ratio", "wheel.poisson_ratio must lie in (-1, 0.5)");
+  if (!(m.density > 0)) throw InputError("wheel.density", "wheel.density must be > 0 kg/m^3");
 }
 
 // Tread samples: points of the running-surface segments every `spacing` in s (the segments are
@@ -40,7 +40,8 @@ void sample_tread(const WheelSection& sec, double spacing, WheelFeModes& w) {
       r_of_s[p.y()] = p.x();
     }
   }
-  for (auto [s, r] : r_of_s) w.tread_s.push_back(s), w.tread_r.push_back(r);
+  for (auto [s, r] : r_of_s)  // a segment's end and the next one's start: one sample
+    if (w.tread_s.empty() || s - w.tread_s.back() > 1e-9) w.tread_s.push_back(s), w.tread_r.push_back(r);
 }
 
 // The mid-line of the section from the bore to the rim: at each radius, the middle of the section's
@@ -89,6 +90,13 @@ const char* family_name(ModeFamily f) {
   }
 }
 
+ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape) {
+  // the direction with the largest mean square on the tread ("dominant at the rim")
+  const Eigen::Vector3d ms = tread_shape.colwise().squaredNorm().transpose();
+  const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
+  return c == 0 ? ModeFamily::kRadial : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
+}
+
 WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options) {
   check_options(section, options);
   WheelFeModes w;
@@ -116,12 +124,10 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
       for (std::size_t i = 0; i < w.tread_s.size(); ++i)
         m.tread_shape.row(i) =
             fem::displacement_at(w.mesh, modes.shapes.col(j), tread_points[i]).transpose();
-      // Family: the direction with the largest mean square on the tread ("dominant at the rim").
-      const Eigen::Vector3d ms = m.tread_shape.colwise().squaredNorm().transpose();
-      const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
-      m.family = c == 0 ? ModeFamily::kRadial
-                        : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
+      m.family = tread_family(m.tread_shape);
+      const int c = m.family == ModeFamily::kRadial ? 0 : (m.family == ModeFamily::kAxial ? 2 : 1);
       m.nodal_circles = sign_changes(w.mesh, modes.shapes.col(j), line, c);
+      m.dofs = modes.shapes.col(j);
       w.modes.push_back(std::move(m));
     }
   }
@@ -143,36 +149,3 @@ Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, d
 
 }  // namespace rollnoise::dynamics
 
-namespace rollnoise::dynamics {
-
-std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, int n_min,
-                                          const WheelModalDamping& damping) {
-  // Radius of the tread at s (linear between samples).
-  const auto it = std::upper_bound(w.tread_s.begin(), w.tread_s.end(), s);
-  const std::size_t i1 = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - w.tread_s.begin(), 1),
-                                               w.tread_s.size() - 1);
-  const double x =
-      std::clamp((s - w.tread_s[i1 - 1]) / (w.tread_s[i1] - w.tread_s[i1 - 1]), 0.0, 1.0);
-  const double r = (1 - x) * w.tread_r[i1 - 1] + x * w.tread_r[i1];
-  std::vector<WheelMode> table;
-  for (const auto& m : w.modes) {
-    if (m.n < n_min) continue;
-    const Eigen::Vector3d u = tread_shape_at(w, m, s);  // throws off the tread
-    WheelMode cos_partner;
-    cos_partner.frequency = m.frequency;
-    cos_partner.damping_ratio = m.n == 0 ? damping.n0 : (m.n == 1 ? damping.n1 : damping.higher);
-    cos_partner.modal_mass = 1.0;
-    cos_partner.label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) + " " +
-                        std::to_string(m.nodal_circles) + " circles";
-    cos_partner.shape << -u(0), 0.0, u(2), 0.0;
-    table.push_back(cos_partner);
-    if (m.n == 0) continue;
-    WheelMode sin_partner = cos_partner;
-    sin_partner.label += " sin";
-    sin_partner.shape << 0.0, -u(1), 0.0, m.n * u(2) / r;
-    table.push_back(sin_partner);
-  }
-  return table;
-}
-
-}  // namespace rollnoise::dynamics

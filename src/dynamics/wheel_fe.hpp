@@ -38,6 +38,9 @@ struct WheelFeOptions {
 
 enum class ModeFamily { kAxial, kRadial, kCircumferential };
 const char* family_name(ModeFamily f);
+/// The family of a mode from its tread shape (rows (U_r, U_theta, U_z)): the direction with the
+/// largest mean square on the tread.
+ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape);
 
 /// One mode of order n, mass-normalised (phi^T M phi = 1 with M over the whole wheel): modal mass
 /// 1 kg for the shapes as given.
@@ -45,10 +48,15 @@ struct WheelFeMode {
   double frequency = 0.0;  ///< Hz
   int n = 0;               ///< nodal diameters
   ModeFamily family = ModeFamily::kAxial;
-  int nodal_circles = 0;
+  int nodal_circles = 0;  ///< -1: unknown (an imported mode)
+  /// > 0: this mode's own damping ratio (an imported mode); 0: the case's by family.
+  double damping_ratio = 0.0;
   /// (U_r, U_theta, U_z) (m per sqrt(kg)) at the tread samples, one row per sample: the motion is
   /// u_r = U_r cos n theta, u_theta = U_theta sin n theta, u_z = U_z cos n theta.
   Eigen::MatrixX3d tread_shape;
+  /// The whole section's shape: (U_r, U_theta, U_z) of node i at 3 i + 0, 1, 2 (mesh of
+  /// WheelFeModes), mass-normalised.
+  Eigen::VectorXd dofs;
 };
 
 struct WheelFeModes {
@@ -68,24 +76,4 @@ Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, d
 
 }  // namespace rollnoise::dynamics
 
-namespace rollnoise::dynamics {
-
-/// Modal damping ratios by number of nodal diameters: Thompson's typical values for solid wheels
-/// (Railway Noise and Vibration, 2009, Ch. 5), those of the mode table (docs/models.md Sec. 3.2).
-struct WheelModalDamping {
-  double n0 = 1e-3;      ///< n = 0
-  double n1 = 1e-2;      ///< n = 1 (axle coupling)
-  double higher = 1e-4;  ///< n >= 2
-};
-
-/// The FE modes with n >= n_min as the contact-point mode table of WheelModel (wheel.hpp): the
-/// contact at the bottom of the wheel (theta = 0, radial direction -z), at lateral position s on
-/// the tread (m, positive towards the field side = +y for a wheel at +y). Each mode gives its cos
-/// partner, phi = (z, x, y, rot z) = (-U_r, 0, U_z, 0), and for n >= 1 its sin partner (the set
-/// turned by pi/2n: u_theta = -U_theta cos n theta), phi = (0, -U_theta, 0, n U_z / r) with the
-/// rotation about z taken as du_y/dx = (1/r) du_z/dtheta as in the table (Sec. 3.2). Modal mass
-/// 1 kg (mass-normalised shapes). n_min = 2 leaves n = 0, 1 to the rigid wheelset (Sec. 3.4).
-std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s, int n_min,
-                                          const WheelModalDamping& damping = {});
-
-}  // namespace rollnoise::dynamics
+#include "dynamics/wheel_fe_contact.hpp"

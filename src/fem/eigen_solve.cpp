@@ -61,7 +61,8 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& k, const 
   // Shift below zero: K - sigma M is positive definite even with rigid-body modes.
   const double sigma = -std::pow(2 * 3.14159265358979323846 * 10.0, 2);
   for (int nev = std::min(24, n);; nev = std::min(2 * nev, n)) {
-    if (nev > n / 2 || n < 60) {  // dense: cheaper than Lanczos with most of the spectrum
+    // dense: cheaper than Lanczos with most of the spectrum, and for all modes (omega_max infinite)
+    if (nev > n / 2 || n < 60 || !std::isfinite(lambda_max)) {
       const Eigen::MatrixXd kd = k, md = m;
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(kd, md);
       if (dense.info() != Eigen::Success)

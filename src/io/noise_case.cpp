@@ -8,6 +8,7 @@
 #include "io/frequency_axis.hpp"
 #include "io/roughness_file.hpp"
 #include "io/track_file.hpp"
+#include "io/wheel_fe_case.hpp"
 #include "io/wheel_file.hpp"
 
 
@@ -104,7 +105,13 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
     track_id = "track " + file + ", " + support + ", " + pos;
   });
   problems.check([&] {
-    const std::string wheelset = resolve_model_file(r, "wheel.wheelset"), modes = resolve_model_file(r, "wheel.modes");
+    const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
+    if (const auto fe = read_wheel_fe_case(r, problems)) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
+      c.wheel = std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &wheel_id));
+      wheel_id = "wheel " + wheelset + ", " + wheel_id;
+      return;
+    }
+    const std::string modes = resolve_model_file(r, "wheel.modes");
     c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
     wheel_id = "wheel " + wheelset + ", " + modes;
   });

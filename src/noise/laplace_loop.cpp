@@ -25,8 +25,9 @@ Receptance4 LaplaceLoop::matrix(cdouble s) const {
 std::vector<LoopMode> contact_frame_modes(const dynamics::WheelModel& wheel,
                                           const ContactPosition& p) {
   std::vector<LoopMode> out;
-  for (std::size_t n = 0; n < wheel.modes().size(); ++n) {
-    const dynamics::WheelMode& w = wheel.modes()[n];
+  const std::vector<dynamics::WheelMode> table = wheel.modes_at(p.wheel_shift_y);  // the FE wheel follows the contact
+  for (std::size_t n = 0; n < table.size(); ++n) {
+    const dynamics::WheelMode& w = table[n];
     // psi psi^T = T^T L embed(phi phi^T) L^T T (the wheel's modal part in wheel_receptance6 and
     // to_contact_frame, for one mode); psi from the rank-one matrix.
     Receptance6 r = embed((w.shape * w.shape.transpose()).cast<cdouble>());

@@ -100,7 +100,7 @@ Receptance6 rail_receptance6(const Receptance4& at_centre_line, double offset_y)
 }  // namespace
 
 Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y) {
-  return wheel_receptance6(wheel, frequency, wheel.modal_receptance(frequency), shift_y);
+  return wheel_receptance6(wheel, frequency, wheel.modal_receptance(frequency, shift_y), shift_y);
 }
 
 Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y) {
@@ -126,7 +126,11 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, 
   s.frequency = spectra.frequency;
   s.position = position;
   for (std::size_t k = 0; k < spectra.frequency.size(); ++k) {
-    s.wheel.push_back(wheel_receptance6(wheel, spectra.frequency[k], spectra.wheel_modal[k], position.wheel_shift_y));
+    // a wheel that follows the contact (the FE wheel) has its modal part at the contact's position
+    const Receptance4 modal = wheel.follows_contact()
+                                  ? wheel.modal_receptance(spectra.frequency[k], position.wheel_shift_y)
+                                  : spectra.wheel_modal[k];
+    s.wheel.push_back(wheel_receptance6(wheel, spectra.frequency[k], modal, position.wheel_shift_y));
     s.rail.push_back(rail_receptance6(spectra.rail[k], position.rail_offset_y));
     s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
     s.rail_contact.push_back(to_contact_frame(s.rail.back(), position.contact_angle));

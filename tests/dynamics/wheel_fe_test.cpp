@@ -113,7 +113,7 @@ TEST(WheelFe, ContactTableCarriesTreadShapeAndGivesReciprocalPassiveReceptance) 
   o.f_max = 4000.0;
   o.mesh_size = 0.016;
   const auto w = wheel_fe_modes(default_section(), o);
-  const auto table = contact_mode_table(w, -0.02, 2);
+  const auto table = contact_mode_table(w, -0.02);
   const WheelFeMode* m = find(w, 3, ModeFamily::kAxial, 0);
   ASSERT_NE(m, nullptr);
   const Eigen::Vector3d u = tread_shape_at(w, *m, -0.02);

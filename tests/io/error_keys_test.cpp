@@ -39,8 +39,6 @@ const std::map<std::string, std::string> kPseudoKeys = {
     {"contact.curvature", "the curvatures A, B of a profile contact: derived from the profiles, no key"},
     {"mesh_size", "argument of fem::mesh_polygon: the element size of a cross-section mesh"},
     {"outline", "argument of fem::mesh_polygon: the cross-section outline (a section file's points)"},
-    {"wheel_fe", "library guard: the options of dynamics::wheel_fe_modes (the FE wheel has no case keys "
-                 "yet; the message names the option)"},
     {"tread_position", "argument: the contact's lateral position s on the wheel's running surface"},
     {"frequency", "a frequency argument of a numerics function; the case's frequencies are checked "
                   "against frequency.* and excitation.* where they are read"},

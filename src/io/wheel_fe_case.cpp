@@ -1,0 +1,134 @@
+#include "io/wheel_fe_case.hpp"
+
+#include <cstdio>
+#include <map>
+#include <mutex>
+
+#include "core/errors.hpp"
+#include "io/tread_shapes_file.hpp"
+#include "io/wheel_section_file.hpp"
+
+namespace rollnoise::io {
+
+namespace {
+
+// Keys that only one model uses: an error with another.
+void check_unused_keys(const CaseReader& r, const std::string& model, InputProblems& problems) {
+  const auto refuse = [&](const char* key, const char* used_with) {
+    problems.check([&] {
+      if (r.has(key)) r.fail(key, std::string("only used with wheel.model = ") + used_with);
+    });
+  };
+  if (model != "fe")
+    for (const char* key :
+         {"wheel.section", "wheel.bore", "wheel.youngs_modulus", "wheel.poisson_ratio",
+          "wheel.density", "wheel.mesh_size", "wheel.n_max", "wheel.f_max"})
+      refuse(key, "\"fe\"");
+  if (model == "table")
+    for (const char* key :
+         {"wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial", "wheel.damping_radial",
+          "wheel.damping_circumferential", "wheel.rotation"})
+      refuse(key, "\"fe\" or \"shapes\"");
+  if (model != "shapes") refuse("wheel.shapes", "\"shapes\"");
+}
+
+void read_damping_and_rotation(const CaseReader& r, InputProblems& problems, WheelFeCase& c) {
+  auto& d = c.contact.damping;
+  problems.check([&] { d.n0 = r.real("wheel.damping_n0"); });
+  problems.check([&] { d.n1 = r.real("wheel.damping_n1"); });
+  problems.check([&] { d.axial = r.real("wheel.damping_axial"); });
+  problems.check([&] { d.radial = r.real("wheel.damping_radial"); });
+  problems.check([&] { d.circumferential = r.real("wheel.damping_circumferential"); });
+  for (const char* key : {"wheel.damping_n0", "wheel.damping_n1", "wheel.damping_axial",
+                          "wheel.damping_radial", "wheel.damping_circumferential"})
+    problems.check([&] {
+      if (r.real(key) >= 1.0) r.fail(key, "a modal damping ratio must be below 1");
+    });
+  problems.check([&] { c.rotation_split = r.string("wheel.rotation") == "split"; });
+  problems.check([&] { c.rolling_speed = r.real("rolling.speed"); });
+}
+
+}  // namespace
+
+std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems& problems) {
+  std::string model = "table";
+  problems.check([&] { model = r.string("wheel.model"); });
+  check_unused_keys(r, model, problems);
+  if (model == "table") return std::nullopt;
+  WheelFeCase c;
+  read_damping_and_rotation(r, problems, c);
+  if (model == "shapes") {
+    problems.check([&] {
+      if (!r.has("wheel.shapes")) r.fail("wheel.shapes", "required with wheel.model = \"shapes\"");
+      c.section_file = resolve_model_file(r, "wheel.shapes");
+      c.imported =
+          std::make_shared<const dynamics::WheelFeModes>(read_tread_shapes(c.section_file));
+    });
+    c.id = "imported wheel shapes " + c.section_file;
+    return c;
+  }
+  problems.check([&] {
+    c.section_file = resolve_model_file(r, "wheel.section");
+    c.section = read_wheel_section(c.section_file);
+  });
+  // the bore: "clamped" is the only value (the schema's allowed list rejects any other)
+  problems.check([&] { r.string("wheel.bore"); });
+  auto& m = c.options.material;
+  problems.check([&] { m.youngs_modulus = r.real("wheel.youngs_modulus"); });
+  problems.check([&] {
+    m.poisson_ratio = r.real("wheel.poisson_ratio");
+    if (!(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
+      r.fail("wheel.poisson_ratio", "must lie in (-1, 0.5)");
+  });
+  problems.check([&] { m.density = r.real("wheel.density"); });
+  problems.check([&] {
+    c.options.mesh_size = r.real("wheel.mesh_size");
+    if (c.options.mesh_size > 0.1)
+      r.fail("wheel.mesh_size", "above 0.1 m leaves a wheel section unresolved");
+  });
+  problems.check([&] { c.options.n_max = static_cast<int>(r.integer("wheel.n_max")); });
+  problems.check([&] { c.options.f_max = r.real("wheel.f_max"); });
+  char text[200];
+  std::snprintf(text, sizeof text, ", E %.17g, nu %.17g, rho %.17g, h %.17g, n_max %d, f_max %.17g",
+                m.youngs_modulus, m.poisson_ratio, m.density, c.options.mesh_size, c.options.n_max,
+                c.options.f_max);
+  c.id = "fe wheel " + c.section_file + text;
+  return c;
+}
+
+std::shared_ptr<const dynamics::WheelFeModes> wheel_fe_modes_once(const WheelFeCase& c) {
+  if (c.imported) return c.imported;
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const dynamics::WheelFeModes>> computed;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = computed[c.id];
+  if (!slot)
+    slot = std::make_shared<const dynamics::WheelFeModes>(
+        dynamics::wheel_fe_modes(c.section, c.options));
+  return slot;
+}
+
+dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
+                                                const dynamics::WheelFeModes& w) {
+  dynamics::WheelFeContactOptions o = c.contact;
+  o.spin_speed = c.rotation_split ? c.rolling_speed / dynamics::tread_radius_at(w, 0.0) : 0.0;
+  return o;
+}
+
+dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
+                                    std::string* id) {
+  const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_fe_modes_once(c);
+  const dynamics::WheelFeContactOptions o = contact_options(c, *modes);
+  if (id) {
+    const auto& d = o.damping;
+    char text[200];
+    std::snprintf(text, sizeof text, "; zeta %.17g %.17g %.17g %.17g %.17g; Omega %.17g", d.n0,
+                  d.n1, d.axial, d.radial, d.circumferential, o.spin_speed);
+    *id = c.id + text;
+  }
+  return dynamics::WheelModel(
+      wheelset, dynamics::contact_mode_table(*modes, 0.0, o),
+      [modes, o](double shift_y) { return dynamics::contact_mode_table(*modes, shift_y, o); });
+}
+
+}  // namespace rollnoise::io
