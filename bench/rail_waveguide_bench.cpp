@@ -14,10 +14,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "fem/mesh.hpp"
+#include "noise/loop.hpp"
 
 using namespace rollnoise;
 
@@ -103,3 +105,47 @@ BENCHMARK(RailWaveguideMeshConvergence)
     ->Iterations(1);
 
 }  // namespace
+
+// RailWaveguideEccentricContact/f: at f (Hz), the diagonal of the 4x4 rail receptance in the
+// 300 m curve's contact frame (gauge corner (-33.5, 166.5) mm, gamma = 0.52 rad), dB re 1 m/N
+// (rad/(N m) for the spin): `ecc_*` the waveguide loaded by the 10 mm patch at the contact itself,
+// `moved_*` the waveguide's crown receptance moved rigidly to the contact and rotated as the loop
+// does (noise::move_point, to_contact_frame), `beam_*` the Timoshenko beam moved the same way.
+void RailWaveguideEccentricContact(benchmark::State& state) {
+  const double f = static_cast<double>(state.range(0)), gamma = 0.52, offset = -0.0335;
+  const dynamics::RailWaveguide full = supported_uic60(0.03);
+  const Eigen::MatrixXd L = crown_patch(full);
+  const Eigen::MatrixXd G =
+      full.patch_loads(Eigen::Vector2d(offset, 0.1665), 0.01,
+                       Eigen::Vector2d(-std::sin(gamma), std::cos(gamma)), dynamics::kUic60HeadBottom);
+  Eigen::MatrixXd both(L.rows(), 8);
+  both << L, G;
+  const dynamics::RailWaveguide rail = full.reduced(dynamics::RailReduction{}, both);
+  const dynamics::RailModel beam(dynamics::uic60_ballasted(), dynamics::TrackSupport::kContinuous, 0.0);
+  dynamics::Receptance4 ecc, moved, moved_beam;
+  auto to_contact = [&](const dynamics::Receptance4& r) {
+    return noise::to_contact_frame(noise::move_point(noise::embed(r), Eigen::Vector3d(0.0, offset, 0.0)),
+                                   gamma);
+  };
+  for (auto _ : state) {
+    const dynamics::RailWaves w = rail.waves(2.0 * M_PI * f);
+    ecc = rail.contact_receptance(w, G, G, 0.0);
+    moved = to_contact(rail.contact_receptance(w, L, L, 0.0));
+    moved_beam = to_contact(beam.receptance(f));
+  }
+  auto db = [](std::complex<double> z) { return 20.0 * std::log10(std::abs(z)); };
+  const char* names[4] = {"n", "x", "t", "spin"};
+  for (int i = 0; i < 4; ++i) {
+    state.counters[std::string("ecc_") + names[i]] = db(ecc(i, i));
+    state.counters[std::string("moved_") + names[i]] = db(moved(i, i));
+    state.counters[std::string("beam_") + names[i]] = db(moved_beam(i, i));
+  }
+  state.counters["ecc_nt_dB"] = db(ecc(dynamics::kZ, dynamics::kY));
+  state.counters["moved_nt_dB"] = db(moved(dynamics::kZ, dynamics::kY));
+}
+BENCHMARK(RailWaveguideEccentricContact)
+    ->Arg(500)
+    ->Arg(2000)
+    ->Arg(5000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
