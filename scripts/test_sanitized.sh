@@ -34,6 +34,10 @@
 #   FallingFrictionModel.SweepRoutes* (69 s) and .ConstantFrictionLimits* (53 s),
 #   FallingFrictionSqueal.* (63 s, a bisection of squeal runs); the same functions run sanitized in
 #   the other FallingFriction*, LaplaceCoefficients.* and SquealFallingFriction.* tests.
+#   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
+#   RailWaveguideReduced.*, WaveguideRailModel.*: dense eigenproblems of n = 621 (zgeev, the Ritz
+#   basis' generalised symmetric ones); RailWaveguidePatch.* and the smoke test's waveguide
+#   receptance run them sanitized.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
