@@ -27,10 +27,10 @@ namespace {
 
 dynamics::RailWaveguide supported_uic60(double h) {
   const dynamics::TrackParameters t = dynamics::uic60_ballasted();
-  return dynamics::RailWaveguide(
-      fem::mesh_polygon(dynamics::uic60_outline(), h), dynamics::RailMaterial{},
-      dynamics::FootSupport{t.vertical_support, t.lateral_support, t.longitudinal_support,
-                            t.sleeper_spacing});
+  return dynamics::RailWaveguide(fem::mesh_polygon(dynamics::uic60_outline(), h),
+                                 dynamics::RailMaterial{},
+                                 dynamics::FootSupport{t.vertical_support, t.lateral_support,
+                                                       t.longitudinal_support, t.sleeper_spacing});
 }
 
 Eigen::MatrixXd crown_patch(const dynamics::RailWaveguide& rail) {
@@ -57,7 +57,8 @@ void RailWaveguideReducedPerFrequency(benchmark::State& state) {
   const Eigen::MatrixXd L = crown_patch(full);
   const auto start = std::chrono::steady_clock::now();
   const dynamics::RailWaveguide rail = full.reduced(dynamics::RailReduction{}, L);
-  const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double setup =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (auto _ : state) {
     const dynamics::RailWaves w = rail.waves(2.0 * M_PI * 1000.0);
     benchmark::DoNotOptimize(rail.contact_receptance(w, L, L, 0.0));
@@ -77,8 +78,8 @@ void RailWaveguideMeshConvergence(benchmark::State& state) {
   const double gamma = 0.52;
   const Eigen::Vector2d normal(-std::sin(gamma), std::cos(gamma));
   const Eigen::MatrixXd L = crown_patch(full);
-  const Eigen::MatrixXd G = full.patch_loads(Eigen::Vector2d(-0.0335, 0.1665), 0.01, normal,
-                                             dynamics::kUic60HeadBottom);
+  const Eigen::MatrixXd G =
+      full.patch_loads(Eigen::Vector2d(-0.0335, 0.1665), 0.01, normal, dynamics::kUic60HeadBottom);
   Eigen::MatrixXd both(L.rows(), 8);
   both << L, G;
   const dynamics::RailWaveguide rail = full.reduced(dynamics::RailReduction{}, both);
@@ -115,17 +116,18 @@ void RailWaveguideEccentricContact(benchmark::State& state) {
   const double f = static_cast<double>(state.range(0)), gamma = 0.52, offset = -0.0335;
   const dynamics::RailWaveguide full = supported_uic60(0.03);
   const Eigen::MatrixXd L = crown_patch(full);
-  const Eigen::MatrixXd G =
-      full.patch_loads(Eigen::Vector2d(offset, 0.1665), 0.01,
-                       Eigen::Vector2d(-std::sin(gamma), std::cos(gamma)), dynamics::kUic60HeadBottom);
+  const Eigen::MatrixXd G = full.patch_loads(Eigen::Vector2d(offset, 0.1665), 0.01,
+                                             Eigen::Vector2d(-std::sin(gamma), std::cos(gamma)),
+                                             dynamics::kUic60HeadBottom);
   Eigen::MatrixXd both(L.rows(), 8);
   both << L, G;
   const dynamics::RailWaveguide rail = full.reduced(dynamics::RailReduction{}, both);
-  const dynamics::RailModel beam(dynamics::uic60_ballasted(), dynamics::TrackSupport::kContinuous, 0.0);
+  const dynamics::RailModel beam(dynamics::uic60_ballasted(), dynamics::TrackSupport::kContinuous,
+                                 0.0);
   dynamics::Receptance4 ecc, moved, moved_beam;
   auto to_contact = [&](const dynamics::Receptance4& r) {
-    return noise::to_contact_frame(noise::move_point(noise::embed(r), Eigen::Vector3d(0.0, offset, 0.0)),
-                                   gamma);
+    return noise::to_contact_frame(
+        noise::move_point(noise::embed(r), Eigen::Vector3d(0.0, offset, 0.0)), gamma);
   };
   for (auto _ : state) {
     const dynamics::RailWaves w = rail.waves(2.0 * M_PI * f);

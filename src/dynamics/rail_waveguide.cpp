@@ -232,8 +232,8 @@ RailWaveguide RailWaveguide::reduced(const RailReduction& reduction,
   // In the rotated variables the load is T^* f = f_s - i f_x and K(k) is real: the static
   // responses to the u_x part and to the (u_y, u_z) part of each load span the response.
   Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
-  for (int i = 0; i < n; ++i) split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) =
-                                  loads.row(i);
+  for (int i = 0; i < n; ++i)
+    split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
   const double lambda_max = std::pow(2.0 * M_PI * reduction.max_frequency, 2);
   const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
   std::vector<Eigen::VectorXd> vectors;
@@ -297,8 +297,8 @@ RailWaves RailWaveguide::waves(cdouble omega) const {
   // solved as the standard problem B^{-1} A z = -lambda z (B block-triangular, K2's blocks SPD).
   const int m = coordinates(), mx = axial_, ms = m - mx;
   const cdouble damp(1.0, material_.loss_factor);
-  const Eigen::MatrixXcd A0 = damp * k0_.cast<cdouble>() - omega * omega * m_.cast<cdouble>() +
-                              support_stiffness(omega);
+  const Eigen::MatrixXcd A0 =
+      damp * k0_.cast<cdouble>() - omega * omega * m_.cast<cdouble>() + support_stiffness(omega);
   const Eigen::MatrixXd K1c = k1_.topRightCorner(mx, ms);
   const Eigen::LLT<Eigen::MatrixXd> K2x(k2_.topLeftCorner(mx, mx)),
       K2s(k2_.bottomRightCorner(ms, ms));
@@ -438,8 +438,7 @@ Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
       second += p.weight * p.position * p.position.transpose();
     }
   }
-  if (head.empty())
-    throw InputError("rail_section", "no triangle of the rail head above it");
+  if (head.empty()) throw InputError("rail_section", "no triangle of the rail head above it");
   const Eigen::Vector2d rh = first / area;
   const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
   const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA

@@ -168,7 +168,7 @@ class RailWaveguide {
   std::optional<FootSupport> support_;
   // Eq. (W1) in the generalised coordinates (q_x, q_s): the first `axial_` are u'_x.
   Eigen::MatrixXd k0_, k1_, k2_, m_;
-  Eigen::MatrixXd foot_[3];  // V^T (Int_foot N^T N ds / (L b)) V per direction x, y, z
+  Eigen::MatrixXd foot_[3];            // V^T (Int_foot N^T N ds / (L b)) V per direction x, y, z
   Eigen::MatrixXd basis_x_, basis_s_;  // V_x (nodes x axial_), V_s (2 nodes x rest)
   int axial_ = 0;
 

@@ -24,8 +24,8 @@ namespace rollnoise::dynamics {
 struct WaveguideRailOptions {
   /// The section outline (y, z) (m), z up from the foot's bottom; empty: uic60_outline().
   std::vector<Eigen::Vector2d> outline;
-  double mesh_size = 0.03;         ///< target element size h (m)
-  double patch_half_width = 0.01;  ///< load patch radius around the crown (m)
+  double mesh_size = 0.03;                ///< target element size h (m)
+  double patch_half_width = 0.01;         ///< load patch radius around the crown (m)
   double head_bottom = kUic60HeadBottom;  ///< z of the head's underside (m), for the spin
   double poisson_ratio = 0.3;             ///< nu (-); E, rho, eta from the track's rail
   RailReduction reduction;

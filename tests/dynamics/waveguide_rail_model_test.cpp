@@ -26,8 +26,7 @@ double db(cd z) {
 
 rd::RailWaveguide supported_uic60(double h) {
   const rd::TrackParameters t = rd::uic60_ballasted();
-  return rd::RailWaveguide(rf::mesh_polygon(rd::uic60_outline(), h),
-                           rd::rail_material(t, 0.3),
+  return rd::RailWaveguide(rf::mesh_polygon(rd::uic60_outline(), h), rd::rail_material(t, 0.3),
                            rd::FootSupport{t.vertical_support, t.lateral_support,
                                            t.longitudinal_support, t.sleeper_spacing});
 }
@@ -36,8 +35,7 @@ rd::RailWaveguide supported_uic60(double h) {
 Eigen::MatrixXd gauge_patch(const rd::RailWaveguide& rail) {
   const double gamma = 0.52;
   return rail.patch_loads(Eigen::Vector2d(-0.0335, 0.1665), 0.01,
-                          Eigen::Vector2d(-std::sin(gamma), std::cos(gamma)),
-                          rd::kUic60HeadBottom);
+                          Eigen::Vector2d(-std::sin(gamma), std::cos(gamma)), rd::kUic60HeadBottom);
 }
 
 Eigen::MatrixXd crown_patch(const rd::RailWaveguide& rail) {
@@ -110,6 +108,6 @@ TEST(WaveguideRailModel, ReciprocalPassiveAndContinuedToComplexFrequency) {
     const rd::Receptance4 D = rail.receptance_laplace(cd(-0.01 * w * 0.02, w));
     EXPECT_NEAR(db(D(rd::kZ, rd::kZ)), db(R(rd::kZ, rd::kZ)), 0.5);
   }
-  EXPECT_NEAR(db(rail.receptance(200.0)(rd::kZ, rd::kZ)), db(beam.receptance(200.0)(rd::kZ, rd::kZ)),
-              1.5);
+  EXPECT_NEAR(db(rail.receptance(200.0)(rd::kZ, rd::kZ)),
+              db(beam.receptance(200.0)(rd::kZ, rd::kZ)), 1.5);
 }
