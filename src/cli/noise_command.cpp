@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "io/noise_case.hpp"
 #include "io/noise_output.hpp"
+#include "io/rail_waves_output.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
 namespace rollnoise::cli {
@@ -127,6 +128,7 @@ int run_receptance(const CommonOptions& o) {
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_receptance(w, reader, r);
+  io::write_rail_waves(w, *in.noise.rail);  // track.model = "waveguide" only
   w.commit();
   std::printf("%s: receptances at %zu frequencies (%s contact model)\nwrote %s\n", reader.name().c_str(), freq.size(),
               in.noise.use_nss ? "NSS" : "Kalker", out.c_str());

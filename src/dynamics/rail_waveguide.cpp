@@ -95,77 +95,188 @@ RailWaveguide::RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial
     if (!(support_->sleeper_spacing > 0.0))
       throw InputError("rail_support", "sleeper spacing must be > 0");
   }
-  assemble();
+  const int nn = static_cast<int>(mesh_.nodes.size());
+  apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn));
 }
 
-void RailWaveguide::assemble() {
-  const int nn = static_cast<int>(mesh_.nodes.size()), n = 3 * nn;
-  k0_ = k1_ = k2_ = m_ = Eigen::MatrixXd::Zero(n, n);
-  const Matrix6 D = elasticity(material_);
+namespace {
+
+// Eq. (W1) in physical nodal components (u'_x, u_y, u_z per node) and the foot integral.
+struct FullMatrices {
+  Eigen::MatrixXd k0, k1, k2, m;
+  Eigen::MatrixXd foot;  // Int_foot N^T N ds / (L b), nodes x nodes (zero without support)
+};
+
+FullMatrices assemble_full(const fem::QuadraticTriangleMesh& mesh, const RailMaterial& material,
+                           const std::optional<FootSupport>& support) {
+  const int nn = static_cast<int>(mesh.nodes.size()), n = 3 * nn;
+  FullMatrices f;
+  f.k0 = f.k1 = f.k2 = f.m = Eigen::MatrixXd::Zero(n, n);
+  const Matrix6 D = elasticity(material);
   Strain18 B1, B2;
-  for (int t = 0; t < static_cast<int>(mesh_.triangles.size()); ++t) {
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     Eigen::Matrix<double, 18, 18> e0 = Eigen::Matrix<double, 18, 18>::Zero(), e1 = e0, e2 = e0,
                                   em = e0;
-    for (const SectionPoint& p : section_points(mesh_, t)) {
+    for (const SectionPoint& p : section_points(mesh, t)) {
       strain_operators(p, B1, B2);
       const Strain18 DB1 = D * B1, DB2 = D * B2;
       e0 += p.weight * B1.transpose() * DB1;
       e1 += p.weight * (B1.transpose() * DB2 + B2.transpose() * DB1);
       e2 += p.weight * B2.transpose() * DB2;
-      const Matrix6 NN = p.weight * material_.density * p.shape * p.shape.transpose();
+      const Matrix6 NN = p.weight * material.density * p.shape * p.shape.transpose();
       for (int a = 0; a < 6; ++a)
         for (int b = 0; b < 6; ++b)
           for (int d = 0; d < 3; ++d) em(3 * a + d, 3 * b + d) += NN(a, b);
     }
-    const auto& tri = mesh_.triangles[t];
+    const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 18; ++a)
       for (int b = 0; b < 18; ++b) {
         const int i = 3 * tri[a / 3] + a % 3, j = 3 * tri[b / 3] + b % 3;
-        k0_(i, j) += e0(a, b);
-        k1_(i, j) += e1(a, b);
-        k2_(i, j) += e2(a, b);
-        m_(i, j) += em(a, b);
+        f.k0(i, j) += e0(a, b);
+        f.k1(i, j) += e1(a, b);
+        f.k2(i, j) += e2(a, b);
+        f.m(i, j) += em(a, b);
       }
   }
-  is_axial_ = Eigen::VectorXi::Zero(n);
-  for (int i = 0; i < nn; ++i) is_axial_(dof(i, 0)) = 1;
-
   // Foot: the boundary edges along the lowest z; Int N^T N ds / (L b) (3-point Gauss, exact).
-  foot_ = Eigen::MatrixXd::Zero(nn, nn);
-  if (!support_) return;
-  double zmin = mesh_.nodes[0].y(), zmax = zmin;
-  for (const auto& p : mesh_.nodes) zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
+  f.foot = Eigen::MatrixXd::Zero(nn, nn);
+  if (!support) return f;
+  double zmin = mesh.nodes[0].y(), zmax = zmin;
+  for (const auto& p : mesh.nodes) zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
   const double tol = 1e-6 * (zmax - zmin);
   double width = 0.0;
   const double g = std::sqrt(0.6), gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}, gx[3] = {-g, 0.0, g};
-  for (const auto& e : mesh_.boundary_edges) {
+  for (const auto& e : mesh.boundary_edges) {
     bool on_foot = true;
-    for (int v : e) on_foot = on_foot && std::abs(mesh_.nodes[v].y() - zmin) < tol;
+    for (int v : e) on_foot = on_foot && std::abs(mesh.nodes[v].y() - zmin) < tol;
     if (!on_foot) continue;
-    const double len = (mesh_.nodes[e[2]] - mesh_.nodes[e[0]]).norm();
+    const double len = (mesh.nodes[e[2]] - mesh.nodes[e[0]]).norm();
     width += len;
     for (int q = 0; q < 3; ++q) {
       const Eigen::Vector3d N = line3_shape(gx[q]);
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) foot_(e[a], e[b]) += gw[q] * 0.5 * len * N(a) * N(b);
+        for (int b = 0; b < 3; ++b) f.foot(e[a], e[b]) += gw[q] * 0.5 * len * N(a) * N(b);
     }
   }
   if (!(width > 0.0)) throw InputError("rail_section", "the rail section has no flat foot");
-  foot_ /= support_->sleeper_spacing * width;
+  f.foot /= support->sleeper_spacing * width;
+  return f;
+}
+
+// The physical dofs in the generalised order: all u'_x (node order), then (u_y, u_z) per node.
+Eigen::VectorXi axial_first(int nn) {
+  Eigen::VectorXi p(3 * nn);
+  for (int i = 0; i < nn; ++i)
+    p(i) = RailWaveguide::dof(i, 0), p(nn + 2 * i) = RailWaveguide::dof(i, 1),
+    p(nn + 2 * i + 1) = RailWaveguide::dof(i, 2);
+  return p;
+}
+
+// An orthonormal basis of the span of `columns` (each normalised first; rank-revealing QR).
+Eigen::MatrixXd orthonormal_span(Eigen::MatrixXd columns) {
+  for (int j = 0; j < columns.cols(); ++j) {
+    const double norm = columns.col(j).norm();
+    if (norm > 0.0) columns.col(j) /= norm;
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(columns);
+  qr.setThreshold(1e-9);
+  const int rank = static_cast<int>(qr.rank());
+  return Eigen::MatrixXd(qr.householderQ()) * Eigen::MatrixXd::Identity(columns.rows(), rank);
+}
+
+}  // namespace
+
+void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs) {
+  const FullMatrices f = assemble_full(mesh_, material_, support_);
+  const int nn = static_cast<int>(mesh_.nodes.size()), mx = static_cast<int>(vx.cols()),
+            m = mx + static_cast<int>(vs.cols());
+  const Eigen::VectorXi p = axial_first(nn);
+  Eigen::MatrixXd V = Eigen::MatrixXd::Zero(3 * nn, m);  // in the axial-first order
+  V.topLeftCorner(nn, mx) = vx;
+  V.bottomRightCorner(2 * nn, m - mx) = vs;
+  auto project = [&](const Eigen::MatrixXd& k) -> Eigen::MatrixXd {
+    return V.transpose() * k(p, p) * V;
+  };
+  k0_ = project(f.k0);
+  k1_ = project(f.k1);
+  k2_ = project(f.k2);
+  m_ = project(f.m);
+  for (int d = 0; d < 3; ++d) {
+    Eigen::MatrixXd foot = Eigen::MatrixXd::Zero(3 * nn, 3 * nn);
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b) foot(dof(a, d), dof(b, d)) = f.foot(a, b);
+    foot_[d] = project(foot);
+  }
+  basis_x_ = vx;
+  basis_s_ = vs;
+  axial_ = mx;
+}
+
+RailWaveguide RailWaveguide::reduced(const RailReduction& reduction,
+                                     const Eigen::MatrixXd& loads) const {
+  if (loads.rows() != dofs())
+    throw InputError("rail_reduction", "loads need one row per nodal degree of freedom");
+  if (reduction.wavenumbers.empty() || !(reduction.max_frequency > 0.0))
+    throw InputError("rail_reduction", "at least one wavenumber and a positive cut-off frequency");
+  const FullMatrices f = assemble_full(mesh_, material_, support_);
+  const int nn = static_cast<int>(mesh_.nodes.size()), n = 3 * nn;
+  Eigen::MatrixXd ks = Eigen::MatrixXd::Zero(n, n);  // the support's static stiffness
+  if (support_) {
+    const double K[3] = {support_->longitudinal.dynamic_stiffness(0.0).real(),
+                         support_->lateral.dynamic_stiffness(0.0).real(),
+                         support_->vertical.dynamic_stiffness(0.0).real()};
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b)
+        for (int d = 0; d < 3; ++d) ks(dof(a, d), dof(b, d)) = K[d] * f.foot(a, b);
+  }
+  // In the rotated variables the load is T^* f = f_s - i f_x and K(k) is real: the static
+  // responses to the u_x part and to the (u_y, u_z) part of each load span the response.
+  Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
+  for (int i = 0; i < n; ++i)
+    split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
+  const double lambda_max = std::pow(2.0 * M_PI * reduction.max_frequency, 2);
+  const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
+  std::vector<Eigen::VectorXd> vectors;
+  for (double k : reduction.wavenumbers) {
+    const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, f.m);
+    if (es.info() != Eigen::Success)
+      throw NumericalError("rail waveguide: cross-section eigensolver failed (reduction)");
+    for (int j = 0; j < es.eigenvalues().size() && es.eigenvalues()(j) <= lambda_max; ++j)
+      vectors.push_back(es.eigenvectors().col(j));
+    const Eigen::LDLT<Eigen::MatrixXd> static_solve(K + shift * f.m);
+    const Eigen::MatrixXd u = static_solve.solve(split);
+    for (int j = 0; j < u.cols(); ++j) vectors.push_back(u.col(j));
+  }
+  const Eigen::VectorXi p = axial_first(nn);
+  Eigen::MatrixXd cx(nn, vectors.size()), cs(2 * nn, vectors.size());
+  for (std::size_t j = 0; j < vectors.size(); ++j) {
+    const Eigen::VectorXd v = vectors[j](p);
+    cx.col(j) = v.head(nn);
+    cs.col(j) = v.tail(2 * nn);
+  }
+  RailWaveguide r = *this;
+  r.apply_basis(orthonormal_span(cx), orthonormal_span(cs));
+  return r;
 }
 
 Eigen::MatrixXcd RailWaveguide::support_stiffness(cdouble omega) const {
-  const int nn = static_cast<int>(mesh_.nodes.size());
-  Eigen::MatrixXcd ks = Eigen::MatrixXcd::Zero(3 * nn, 3 * nn);
+  Eigen::MatrixXcd ks = Eigen::MatrixXcd::Zero(coordinates(), coordinates());
   if (!support_) return ks;
   const cdouble K[3] = {support_->longitudinal.dynamic_stiffness(omega),
                         support_->lateral.dynamic_stiffness(omega),
                         support_->vertical.dynamic_stiffness(omega)};
-  for (int a = 0; a < nn; ++a)
-    for (int b = 0; b < nn; ++b)
-      if (foot_(a, b) != 0.0)
-        for (int d = 0; d < 3; ++d) ks(dof(a, d), dof(b, d)) = K[d] * foot_(a, b);
+  for (int d = 0; d < 3; ++d) ks += K[d] * foot_[d].cast<cdouble>();
   return ks;
+}
+
+Eigen::MatrixXd RailWaveguide::project(const Eigen::MatrixXd& f) const {
+  const int nn = static_cast<int>(mesh_.nodes.size());
+  const Eigen::MatrixXd g = f(axial_first(nn), Eigen::all);
+  Eigen::MatrixXd q(coordinates(), f.cols());
+  q.topRows(axial_) = basis_x_.transpose() * g.topRows(nn);
+  q.bottomRows(coordinates() - axial_) = basis_s_.transpose() * g.bottomRows(2 * nn);
+  return q;
 }
 
 Eigen::VectorXd RailWaveguide::dispersion(double k, int count) const {
@@ -179,43 +290,43 @@ Eigen::VectorXd RailWaveguide::dispersion(double k, int count) const {
   return f;
 }
 
-RailWaves RailWaveguide::waves(double omega) const {
-  // Eq. (W5): K0, K2, M and the support couple no u'_x with (u_y, u_z), K1 only those; with
-  // phi = (k v, u_s) the quadratic problem becomes the linear pencil in lambda = k^2
-  //   [Ax C; 0 As] z + lambda [Bx 0; C^T Bs] z = 0,  z = (v, u_s),
+RailWaves RailWaveguide::waves(cdouble omega) const {
+  // Eq. (W5): K0, K2, M and the support couple no q_x with q_s, K1 only those; with
+  // phi = (k v, q_s) the quadratic problem becomes the linear pencil in lambda = k^2
+  //   [Ax C; 0 As] z + lambda [Bx 0; C^T Bs] z = 0,  z = (v, q_s),
   // solved as the standard problem B^{-1} A z = -lambda z (B block-triangular, K2's blocks SPD).
-  const int n = dofs(), nn = n / 3;
+  const int m = coordinates(), mx = axial_, ms = m - mx;
   const cdouble damp(1.0, material_.loss_factor);
   const Eigen::MatrixXcd A0 =
-      (damp * k0_ - omega * omega * m_).cast<cdouble>() + support_stiffness(cdouble(omega));
-  Eigen::VectorXi ax(nn), tr(2 * nn);
-  for (int i = 0; i < nn; ++i) ax(i) = dof(i, 0), tr(2 * i) = dof(i, 1), tr(2 * i + 1) = dof(i, 2);
-  const Eigen::MatrixXd K1c = k1_(ax, tr);
-  const Eigen::LLT<Eigen::MatrixXd> K2x(k2_(ax, ax)), K2s(k2_(tr, tr));
+      damp * k0_.cast<cdouble>() - omega * omega * m_.cast<cdouble>() + support_stiffness(omega);
+  const Eigen::MatrixXd K1c = k1_.topRightCorner(mx, ms);
+  const Eigen::LLT<Eigen::MatrixXd> K2x(k2_.topLeftCorner(mx, mx)),
+      K2s(k2_.bottomRightCorner(ms, ms));
   auto solve = [](const Eigen::LLT<Eigen::MatrixXd>& llt, const Eigen::MatrixXcd& r) {
     Eigen::MatrixXcd x(r.rows(), r.cols());
     x.real() = llt.solve(r.real());
     x.imag() = llt.solve(r.imag());
     return x;
   };
-  Eigen::MatrixXcd A(n, n);  // rows, columns ordered (v, u_s)
-  A << A0(ax, ax), damp * K1c.cast<cdouble>(), Eigen::MatrixXcd::Zero(2 * nn, nn), A0(tr, tr);
-  Eigen::MatrixXcd Y(n, n);
-  Y.topRows(nn) = solve(K2x, A.topRows(nn)) / damp;
-  Y.bottomRows(2 * nn) = solve(K2s, A.bottomRows(2 * nn) / damp - K1c.transpose() * Y.topRows(nn));
+  Eigen::MatrixXcd A(m, m);  // rows, columns ordered (v, q_s)
+  A << A0.topLeftCorner(mx, mx), damp * K1c.cast<cdouble>(), Eigen::MatrixXcd::Zero(ms, mx),
+      A0.bottomRightCorner(ms, ms);
+  Eigen::MatrixXcd Y(m, m);
+  Y.topRows(mx) = solve(K2x, A.topRows(mx)) / damp;
+  Y.bottomRows(ms) = solve(K2s, A.bottomRows(ms) / damp - K1c.transpose() * Y.topRows(mx));
   Eigen::VectorXcd mu;
   Eigen::MatrixXcd Z;
   eigen_decomposition(std::move(Y), mu, Z);
 
   RailWaves w;
   w.omega = omega;
-  w.wavenumbers.resize(n);
-  w.shapes.resize(n, n);
-  for (int j = 0; j < n; ++j) {
+  w.wavenumbers.resize(m);
+  w.shapes.resize(m, m);
+  for (int j = 0; j < m; ++j) {
     const cdouble root = std::sqrt(-mu(j));
     w.wavenumbers(j) = root.imag() > 0.0 ? -root : root;
-    w.shapes.col(j)(ax) = w.wavenumbers(j) * Z.col(j).head(nn);
-    w.shapes.col(j)(tr) = Z.col(j).tail(2 * nn);
+    w.shapes.col(j).head(mx) = w.wavenumbers(j) * Z.col(j).head(mx);
+    w.shapes.col(j).tail(ms) = Z.col(j).tail(ms);
   }
   // Q'(k_j) phi_j for all j by real matrix products; d_j = phi_j^T Q'(k_j) phi_j.
   auto times = [](const Eigen::MatrixXd& a, const Eigen::MatrixXcd& b) {
@@ -226,17 +337,17 @@ RailWaves RailWaveguide::waves(double omega) const {
   };
   const Eigen::MatrixXcd K2Phi = times(k2_, w.shapes), K1Phi = times(k1_, w.shapes);
   const Eigen::MatrixXcd MPhi = times(m_, w.shapes);
-  w.norms.resize(n);
-  for (int j = 0; j < n; ++j) {
+  w.norms.resize(m);
+  for (int j = 0; j < m; ++j) {
     const cdouble k = w.wavenumbers(j);
     const Eigen::VectorXcd dq = damp * (2.0 * k * K2Phi.col(j) + K1Phi.col(j));
     w.norms(j) = w.shapes.col(j).transpose() * dq;
-    // An undamped propagating root travels towards +x if its group velocity is positive; else
-    // its partner -k, P phi does (Q'(-k) P phi = -P Q'(k) phi, so d changes sign).
-    if (std::abs(k.imag()) <= 1e-7 * std::abs(k) &&
+    // An undamped propagating root (real omega) travels towards +x if its group velocity is
+    // positive; else its partner -k, P phi does (Q'(-k) P phi = -P Q'(k) phi, so d changes sign).
+    if (omega.imag() == 0.0 && std::abs(k.imag()) <= 1e-7 * std::abs(k) &&
         w.shapes.col(j).dot(dq).real() / w.shapes.col(j).dot(MPhi.col(j)).real() < 0.0) {
       w.wavenumbers(j) = -k;
-      w.shapes.col(j)(ax) *= -1.0;
+      w.shapes.col(j).head(mx) *= -1.0;
       w.norms(j) = -w.norms(j);
     }
   }
@@ -248,9 +359,9 @@ Eigen::MatrixXcd RailWaveguide::transfer(const RailWaves& w, const Eigen::Matrix
   // H = R^T T P^s G'(|x|) P^s T^* F (Eq. W4), s = [x < 0]; T = i, P = -1 on u_x.
   const cdouble I(0.0, 1.0);
   const double sign = x < 0.0 ? -1.0 : 1.0;
-  Eigen::MatrixXcd r = response.cast<cdouble>(), f = load.cast<cdouble>();
-  for (int i = 0; i < dofs(); ++i)
-    if (is_axial_(i)) r.row(i) *= I * sign, f.row(i) *= -I * sign;
+  Eigen::MatrixXcd r = project(response).cast<cdouble>(), f = project(load).cast<cdouble>();
+  r.topRows(axial_) *= I * sign;
+  f.topRows(axial_) *= -I * sign;
   const Eigen::MatrixXcd Y = w.shapes.transpose() * r, Z = w.shapes.transpose() * f;
   Eigen::VectorXcd weight(w.wavenumbers.size());
   for (int j = 0; j < weight.size(); ++j)
@@ -260,13 +371,55 @@ Eigen::MatrixXcd RailWaveguide::transfer(const RailWaves& w, const Eigen::Matrix
 
 Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& normal,
                                              double head_bottom) const {
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(static_cast<int>(mesh_.nodes.size()));
+  weights(node) = 1.0;
+  return nodal_loads(weights, normal, head_bottom);
+}
+
+Eigen::MatrixXd RailWaveguide::patch_loads(const Eigen::Vector2d& point, double half_width,
+                                           const Eigen::Vector2d& normal,
+                                           double head_bottom) const {
+  // The part of each straight boundary edge r(xi) = c + xi d, xi in [-1, 1], inside the disc
+  // |r - point| <= a: |d|^2 xi^2 + 2 d.(c - point) xi + |c - point|^2 - a^2 <= 0; Int N ds over
+  // it by 3-point Gauss (exact for the quadratic N).
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(static_cast<int>(mesh_.nodes.size()));
+  double length = 0.0;
+  const double g = std::sqrt(0.6), gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}, gx[3] = {-g, 0.0, g};
+  for (const auto& e : mesh_.boundary_edges) {
+    const Eigen::Vector2d c = 0.5 * (mesh_.nodes[e[0]] + mesh_.nodes[e[2]]),
+                          d = 0.5 * (mesh_.nodes[e[2]] - mesh_.nodes[e[0]]);
+    const double qa = d.squaredNorm(), qb = d.dot(c - point),
+                 qc = (c - point).squaredNorm() - half_width * half_width;
+    const double disc = qb * qb - qa * qc;
+    if (disc <= 0.0) continue;
+    const double lo = std::max(-1.0, (-qb - std::sqrt(disc)) / qa),
+                 hi = std::min(1.0, (-qb + std::sqrt(disc)) / qa);
+    if (!(hi > lo)) continue;
+    const double jac = d.norm() * 0.5 * (hi - lo);
+    for (int q = 0; q < 3; ++q) {
+      const Eigen::Vector3d N = line3_shape(0.5 * (lo + hi) + 0.5 * (hi - lo) * gx[q]);
+      for (int a = 0; a < 3; ++a) weights(e[a]) += gw[q] * jac * N(a);
+    }
+    length += jac * 2.0;
+  }
+  if (!(length > 0.0))
+    throw InputError("rail_contact", "the load patch does not reach the rail's outline");
+  return nodal_loads(weights / length, normal, head_bottom);
+}
+
+Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
+                                           const Eigen::Vector2d& normal,
+                                           double head_bottom) const {
   const Eigen::Vector2d n = normal.normalized(), t(n.y(), -n.x());
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(dofs(), 4);
-  L(dof(node, 1), kZ) = n.x();
-  L(dof(node, 2), kZ) = n.y();
-  L(dof(node, 0), kX) = 1.0;
-  L(dof(node, 1), kY) = t.x();
-  L(dof(node, 2), kY) = t.y();
+  for (int node = 0; node < weights.size(); ++node) {
+    if (weights(node) == 0.0) continue;
+    L(dof(node, 1), kZ) = weights(node) * n.x();
+    L(dof(node, 2), kZ) = weights(node) * n.y();
+    L(dof(node, 0), kX) = weights(node);
+    L(dof(node, 1), kY) = weights(node) * t.x();
+    L(dof(node, 2), kY) = weights(node) * t.y();
+  }
   // psi_n = -t . b, b the gradient of the plane u_x = a + b . (r - r_h) fitted over the head
   // (least squares over the triangles whose centroid lies at z >= head_bottom):
   // b = I_h^{-1} Int_head (r - r_h) u_x dA, I_h = Int_head (r - r_h)(r - r_h)^T dA.
@@ -285,8 +438,7 @@ Eigen::MatrixXd RailWaveguide::contact_loads(int node, const Eigen::Vector2d& no
       second += p.weight * p.position * p.position.transpose();
     }
   }
-  if (head.empty())
-    throw InputError("rail_section", "no triangle of the rail head above it");
+  if (head.empty()) throw InputError("rail_section", "no triangle of the rail head above it");
   const Eigen::Vector2d rh = first / area;
   const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
   const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA

@@ -50,10 +50,22 @@
 // (Gry 1996, Eqs. 23-25; Nilsson et al. 2009, Eq. 20), and in physical variables
 // G(x) = T G'(x) T^*, T = diag(i on u_x, 1 elsewhere). Reciprocal by construction:
 // G(-x) = G(x)^T.
+//
+// Reduced model (the cost of Eq. W5 grows as n^3): the section's displacement is restricted to
+// a Ritz basis, u'_x = V_x q_x, u_s = V_s q_s, spanned by the free cross-section modes of the
+// undamped rail at a few real wavenumbers (Eq. W2, the modes below a cut-off frequency) and the
+// static responses to the contact loads, each split into its u'_x and u_s parts and
+// orthonormalised per block (Droz, Laine & Inquiete, Compos. Struct. 113, 2014: the waveguide FE
+// reduced on cross-section modes; Duhamel, Mace & Brennan, JSV 294, 2006, for the wave
+// expansion). The block-diagonal basis keeps the u'_x / u_s structure, so Eqs. (W3)-(W5) hold
+// unchanged for the projected matrices V^T K_i V, V^T M V, V^T Ks V; loads and responses are
+// projected as V^T f. The basis adds the static responses so that the near field at the load
+// (the evanescent waves of high order, dropped with the high modes) keeps its flexibility.
 #pragma once
 
 #include <Eigen/Core>
 #include <optional>
+#include <vector>
 
 #include "dynamics/receptance.hpp"
 #include "dynamics/track.hpp"
@@ -75,12 +87,22 @@ struct FootSupport {
   double sleeper_spacing = 0.6;  ///< L (m)
 };
 
-/// The n waves of one frequency that travel or decay towards +x (Eq. W3).
+/// The waves of one frequency that travel or decay towards +x (Eq. W3), one per generalised
+/// coordinate (n of them for the full model, m for a reduced one).
 struct RailWaves {
   cdouble omega;
   Eigen::VectorXcd wavenumbers;  ///< k_j (rad/m)
-  Eigen::MatrixXcd shapes;       ///< phi_j in the rotated variables (u'_x = -i u_x), columns
-  Eigen::VectorXcd norms;        ///< d_j of Eq. (W4)
+  /// phi_j in the rotated generalised coordinates (q_x, q_s), columns (for the full model the
+  /// nodal u'_x = -i u_x, then the (u_y, u_z) of each node).
+  Eigen::MatrixXcd shapes;
+  Eigen::VectorXcd norms;  ///< d_j of Eq. (W4)
+};
+
+/// The Ritz basis of the reduced model (see the header comment).
+struct RailReduction {
+  /// Real wavenumbers (rad/m) at which the free cross-section modes are taken.
+  std::vector<double> wavenumbers{0.0, 10.0, 25.0, 50.0, 100.0, 200.0, 400.0};
+  double max_frequency = 20000.0;  ///< modes with natural frequency up to this (Hz)
 };
 
 class RailWaveguide {
@@ -89,7 +111,14 @@ class RailWaveguide {
   RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial& material,
                 std::optional<FootSupport> support);
 
-  int dofs() const { return static_cast<int>(m_.rows()); }
+  /// The model restricted to the Ritz basis of `reduction` enriched by the static responses to
+  /// `loads` (physical nodal components, dofs() rows; e.g. contact_loads()).
+  RailWaveguide reduced(const RailReduction& reduction, const Eigen::MatrixXd& loads) const;
+
+  /// Nodal degrees of freedom of the section mesh (3 per node).
+  int dofs() const { return 3 * static_cast<int>(mesh_.nodes.size()); }
+  /// Generalised coordinates of the eigenproblem (dofs() for the full model).
+  int coordinates() const { return static_cast<int>(m_.rows()); }
   /// Degree of freedom of `node` in direction 0 (x), 1 (y), 2 (z).
   static int dof(int node, int direction) { return 3 * node + direction; }
   const fem::QuadraticTriangleMesh& mesh() const { return mesh_; }
@@ -98,8 +127,9 @@ class RailWaveguide {
   /// Eq. (W2); a support enters with its static stiffness.
   Eigen::VectorXd dispersion(double k, int count) const;
 
-  /// Eq. (W3) at angular frequency omega (rad/s; real).
-  RailWaves waves(double omega) const;
+  /// Eq. (W3) at angular frequency omega (rad/s; real, or complex for the continuation
+  /// omega = -i s, the waves then those with Im k < 0).
+  RailWaves waves(cdouble omega) const;
 
   /// Eq. (W4): responses r_i = response.col(i) . u(x_r) per loads f_j = load.col(j) applied at
   /// x_l, x = x_r - x_l (m); `response` and `load` in physical nodal components (dofs() rows).
@@ -117,6 +147,12 @@ class RailWaveguide {
   /// receptance is reciprocal.
   Eigen::MatrixXd contact_loads(int node, const Eigen::Vector2d& normal, double head_bottom) const;
 
+  /// As contact_loads with the forces spread as a uniform traction over the part of the boundary
+  /// within `half_width` (m) of `point` (y, z) instead of a nodal point force (whose receptance
+  /// grows without bound as the mesh is refined: the point load on a solid).
+  Eigen::MatrixXd patch_loads(const Eigen::Vector2d& point, double half_width,
+                              const Eigen::Vector2d& normal, double head_bottom) const;
+
   /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
   /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads
   /// Int N ds / length. Used as a load and as the matching average of the response.
@@ -130,12 +166,18 @@ class RailWaveguide {
   fem::QuadraticTriangleMesh mesh_;
   RailMaterial material_;
   std::optional<FootSupport> support_;
-  Eigen::MatrixXd k0_, k1_, k2_, m_;  // Eq. (W1)
-  Eigen::MatrixXd foot_;              // Int_foot N^T N ds per direction, / (L b)
-  Eigen::VectorXi is_axial_;          // 1 on the u_x components
+  // Eq. (W1) in the generalised coordinates (q_x, q_s): the first `axial_` are u'_x.
+  Eigen::MatrixXd k0_, k1_, k2_, m_;
+  Eigen::MatrixXd foot_[3];            // V^T (Int_foot N^T N ds / (L b)) V per direction x, y, z
+  Eigen::MatrixXd basis_x_, basis_s_;  // V_x (nodes x axial_), V_s (2 nodes x rest)
+  int axial_ = 0;
 
   Eigen::MatrixXcd support_stiffness(cdouble omega) const;
-  void assemble();
+  /// V^T f: physical nodal loads (dofs() rows) to generalised ones.
+  Eigen::MatrixXd project(const Eigen::MatrixXd& f) const;
+  Eigen::MatrixXd nodal_loads(const Eigen::VectorXd& weights, const Eigen::Vector2d& normal,
+                              double head_bottom) const;
+  void apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs);
 };
 
 /// The bottom of the UIC60 head (z of the head's underside at its side, m) for contact_loads.

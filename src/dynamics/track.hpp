@@ -117,12 +117,13 @@ class RailModel {
   /// `contact_position`: distance of the contact from a sleeper along the rail (m); 0 is over a
   /// sleeper, L/2 mid-span. Ignored by the continuous model.
   RailModel(const TrackParameters& track, TrackSupport support, double contact_position);
+  virtual ~RailModel() = default;  // the waveguide rail derives (waveguide_rail_model.hpp)
 
-  Receptance4 receptance(double frequency) const;
+  virtual Receptance4 receptance(double frequency) const;
   /// The receptance at the Laplace variable s = sigma + i omega (1/s), i omega -> s: the closed
   /// forms continued to the complex frequency omega = -i s (docs/squeal.md Sec. 2);
   /// receptance_laplace(i omega) = receptance(omega / 2 pi) up to round-off.
-  Receptance4 receptance_laplace(cdouble s) const;
+  virtual Receptance4 receptance_laplace(cdouble s) const;
 
   const TrackParameters& track() const { return track_; }
 

@@ -194,6 +194,10 @@ const std::vector<KeySpec>& case_schema() {
        "track parameter file (relative to the case file, its parent folder or the source tree)"},
       {"track.support", T::String, "\"discrete\"", "-", "rail support model", {"discrete", "continuous"}},
       {"track.position", T::NonNegReal, "0.3", "m", "contact position from a sleeper (0.3 = mid-span)"},
+      {"track.model", T::String, "\"beam\"", "-",
+       "rail model: \"beam\" (Timoshenko beams, vertical and lateral) or \"waveguide\" (2.5D finite "
+       "elements of the UIC60 section: torsion, cross-section deformation; continuous support only)",
+       {"beam", "waveguide"}},
       {"wheel.wheelset", T::String, "\"models/wheel/wheelset_920mm.toml\"", "-", "rigid wheelset file"},
       {"wheel.modes", T::String, "\"models/wheel/wheel_920mm_modes.csv\"", "-", "wheel modes file"},
       // the FE wheel (docs/models.md Sec. 3.4; dynamics/wheel_fe.hpp)

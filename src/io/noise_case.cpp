@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "dynamics/waveguide_rail_model.hpp"
 #include "io/frequency_axis.hpp"
 #include "io/roughness_file.hpp"
 #include "io/track_file.hpp"
@@ -97,12 +98,18 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
     const dynamics::TrackParameters track = read_track_parameters(file);
     const std::string support = r.string("track.support");
     const double position = r.real("track.position");
-    c.rail = std::make_unique<dynamics::RailModel>(
-        track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
-        position);
+    const std::string model = r.string("track.model");
+    if (model == "waveguide" && support != "continuous")
+      r.fail("track.model", "the waveguide rail has the continuous support only: set track.support = \"continuous\"");
+    if (model == "waveguide")
+      c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, dynamics::WaveguideRailOptions{});
+    else
+      c.rail = std::make_unique<dynamics::RailModel>(
+          track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
+          position);
     char pos[32];
     std::snprintf(pos, sizeof pos, "%.17g", position);
-    track_id = "track " + file + ", " + support + ", " + pos;
+    track_id = "track " + file + ", " + model + ", " + support + ", " + pos;
   });
   problems.check([&] {
     const std::string wheelset = resolve_model_file(r, "wheel.wheelset");

@@ -177,19 +177,22 @@ TEST(RailWaveguide, CentredVerticalReceptanceEqualsTimoshenkoTrack100To500Hz) {
   }
   ASSERT_FALSE(crown.empty());
   const Eigen::MatrixXd L = rail.edge_traction(crown, 2), B = rail.edge_traction(foot, 2);
+  Eigen::MatrixXd loads(L.rows(), 2);
+  loads << L, B;
+  const rd::RailWaveguide reduced = rail.reduced(rd::RailReduction{}, loads);  // (full: 1.34 dB)
   const rd::BeamSection beam = beam_of(s, s.second_moment_yy, 0.4, m);
   for (double f : {100.0, 250.0, 500.0}) {
-    const rd::RailWaves w = rail.waves(2.0 * M_PI * f);
+    const rd::RailWaves w = reduced.waves(2.0 * M_PI * f);
     const cd tb =
         rd::continuous_transfer(beam, t.vertical_support, t.sleeper_spacing, f, 0.0)(0, 0);
-    EXPECT_NEAR(db(rail.transfer(w, L, L, 0.0)(0, 0)), db(tb), 1.5) << "f = " << f;
-    EXPECT_NEAR(db(rail.transfer(w, B, L, 0.0)(0, 0)), db(tb), 1.5) << "foot, f = " << f;
+    EXPECT_NEAR(db(reduced.transfer(w, L, L, 0.0)(0, 0)), db(tb), 1.5) << "f = " << f;
+    EXPECT_NEAR(db(reduced.transfer(w, B, L, 0.0)(0, 0)), db(tb), 1.5) << "foot, f = " << f;
   }
 }
 
 // The 4x4 contact receptance at the 300 m curve's contact (gauge corner, contact angle 0.52 rad)
 // is reciprocal (symmetric) and passive (-Im R has no negative eigenvalue), and between two
-// contacts 1.2 m apart H_ab(x) = H_ba(-x)^T.
+// contacts 1.2 m apart H_ab(x) = H_ba(-x)^T; on the reduced model (as the loop uses it).
 TEST(RailWaveguide, EccentricContactReceptanceIsReciprocalAndPassive) {
   const rf::QuadraticTriangleMesh mesh = rf::mesh_polygon(rd::uic60_outline(), 0.04);
   const rd::TrackParameters t = rd::uic60_ballasted();
@@ -203,7 +206,12 @@ TEST(RailWaveguide, EccentricContactReceptanceIsReciprocalAndPassive) {
   const Eigen::MatrixXd La = rail.contact_loads(gauge, normal, rd::kUic60HeadBottom);
   const Eigen::MatrixXd Lb =
       rail.contact_loads(top, Eigen::Vector2d(0.0, 1.0), rd::kUic60HeadBottom);
-  for (double f : {2500.0}) {
+  Eigen::MatrixXd loads(La.rows(), 8);
+  loads << La, Lb;
+  const rd::RailWaveguide reduced = rail.reduced(rd::RailReduction{}, loads);
+  for (const rd::RailWaveguide* model : {&reduced}) {  // (the full model: the same formulation)
+    const rd::RailWaveguide& rail = *model;
+    const double f = 2500.0;
     const rd::RailWaves w = rail.waves(2.0 * M_PI * f);
     const rd::Receptance4 R = rail.contact_receptance(w, La, La, 0.0);
     EXPECT_LT((R - R.transpose()).norm(), 1e-8 * R.norm()) << "f = " << f;

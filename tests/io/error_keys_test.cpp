@@ -49,6 +49,8 @@ const std::map<std::string, std::string> kPseudoKeys = {
                       "yet)"},
     {"rail_support", "library guard: the waveguide rail's support (dynamics::FootSupport)"},
     {"rail_section", "library guard: the waveguide rail's section mesh (a flat foot, a head, edges)"},
+    {"rail_reduction", "library guard: the waveguide rail's Ritz basis (dynamics::RailReduction)"},
+    {"rail_contact", "library guard: the waveguide rail's load patch misses the section outline"},
     {"normal_stiffness", "argument of the contact receptance (derived from the Hertzian contact)"},
     {"a", "argument of Kalker's coefficients / the contact receptance (contact.a or the patch)"},
     {"b", "argument of Kalker's coefficients (contact.b or the patch)"},
@@ -193,6 +195,8 @@ TEST(ErrorKeys, KeysNamedInMessagesBuiltAtRunTimeAreCaseKeys) {
   };
   const std::vector<Failure> failures = {
       {"noise " + curve + out + " --set friction.mu=10", curve, "friction.mu"},
+      {"receptance " + curve + out + " --set track.model=waveguide --set track.support=discrete", curve,
+       "track.model"},
       {"steady " + hertz + out + profiles + " --set contact.wheel_profile=" + (d / "loop_a").string(), hertz,
        "contact.wheel_profile"},
       {"steady " + hertz + out + profiles + " --set contact.rail_profile=" + (d / "profile_folder").string(), hertz,

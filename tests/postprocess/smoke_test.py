@@ -83,6 +83,9 @@ def main():
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
+    rollnoise(binary, work, "receptance", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "rail_waves.h5",
+              *COARSE, "--set", "frequency.count=4", "--set", "track.support=\"continuous\"",
+              "--set", "track.model=\"waveguide\"")
     with open(os.path.join(work, "study.toml"), "w") as f:  # 4 cases of the small study case
         f.write(f'base = "{os.path.join(ROOT, "tests/data/study/curve_small.toml")}"\noutput = "study"\n[axes]\n'
                 '"curve.radius" = [300.0, 600.0]\n"roughness.wheel" = ["cast-iron", "disc-braked"]\n')
@@ -103,6 +106,7 @@ def main():
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
+        ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
         ("plot_study.py", [j("study/study.h5"), "--x", "curve.radius", "--curves", "roughness.wheel", "-o",
                            j("study.png")], ["study.png"]),
         # runs `rollnoise squeal` itself: 2 x 2 runs on a coarse grid (~1 s)
@@ -119,7 +123,7 @@ def main():
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
-                                "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py",
+                                "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py",
                                 "plot_modes.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
