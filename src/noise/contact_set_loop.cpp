@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -127,8 +128,8 @@ double power_add(double level_sum, double level) {  // 10 log10(10^(a/10) + 10^(
 BandLevels contact_band_levels(const ContactSetLoopResult& result, int a,
                                const std::vector<double>& centres,
                                const std::vector<std::vector<double>>& roughness_levels) {
-  if (static_cast<int>(roughness_levels.size()) != result.sources())
-    throw InputError("roughness", "one roughness level spectrum per source is needed");
+  ROLLNOISE_ASSERT(static_cast<int>(roughness_levels.size()) == result.sources(),
+                   "one roughness level spectrum per source");
   BandLevels sum;
   const double minus_inf = -std::numeric_limits<double>::infinity();
   for (int e = 0; e < result.sources(); ++e) {
