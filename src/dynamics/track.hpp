@@ -95,6 +95,11 @@ class DiscretelySupportedRail {
   int supports_each_side() const { return n_; }
 
  private:
+  /// Eq. (2) for the free rail and the support stiffness K at one (real or complex) frequency.
+  /// `dense`: the dense LU instead of Levinson's recursion.
+  Eigen::Matrix2cd solve(const InfiniteBeam& free_rail, cdouble K, double x_r, double x_e,
+                         bool dense) const;
+
   BeamSection rail_;
   Support support_;
   double spacing_;
