@@ -26,12 +26,21 @@
 
 namespace rollnoise::linalg {
 
+namespace toeplitz_detail {
+// The complex product without the Annex G recovery of infinities (which blocks inlining and
+// vectorisation of the inner loops); the solution is checked by its residual anyway.
+inline std::complex<double> mul(std::complex<double> a, std::complex<double> b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+}  // namespace toeplitz_detail
+
 /// X = T^{-1} B for the symmetric Toeplitz T with first column `t` (m x m, m = t.size()).
 /// Returns false (X unspecified) when a Levinson pivot vanishes or the relative residual
 /// max_j ||T x_j - b_j|| / ||b_j|| exceeds `tolerance`.
 inline bool toeplitz_solve(const std::vector<std::complex<double>>& t, const Eigen::MatrixXcd& B,
                            Eigen::MatrixXcd& X, double tolerance = 1e-11) {
   using C = std::complex<double>;
+  using toeplitz_detail::mul;
   const int m = static_cast<int>(t.size());
   const int nrhs = static_cast<int>(B.cols());
   X.resize(m, nrhs);
@@ -47,17 +56,16 @@ inline bool toeplitz_solve(const std::vector<std::complex<double>>& t, const Eig
     if (!(std::abs(beta) > 1e-300) || !std::isfinite(std::abs(beta))) return false;
     for (int j = 0; j < nrhs; ++j) {
       C dot = 0.0;  // r(1:k)^T E x(1:k)
-      for (int i = 0; i < k; ++i) dot += r[i] * X(k - 1 - i, j);
+      for (int i = 0; i < k; ++i) dot += mul(r[i], X(k - 1 - i, j));
       const C mu = (B(k, j) / t0 - dot) / beta;
-      for (int i = 0; i < k; ++i) z[i] = X(i, j) + mu * y[k - 1 - i];
-      for (int i = 0; i < k; ++i) X(i, j) = z[i];
+      for (int i = 0; i < k; ++i) X(i, j) += mul(mu, y[k - 1 - i]);
       X(k, j) = mu;
     }
     if (k < m - 1) {
       C dot = 0.0;  // r(1:k)^T E y(1:k)
-      for (int i = 0; i < k; ++i) dot += r[i] * y[k - 1 - i];
+      for (int i = 0; i < k; ++i) dot += mul(r[i], y[k - 1 - i]);
       alpha = -(r[k] + dot) / beta;
-      for (int i = 0; i < k; ++i) z[i] = y[i] + alpha * y[k - 1 - i];
+      for (int i = 0; i < k; ++i) z[i] = y[i] + mul(alpha, y[k - 1 - i]);
       for (int i = 0; i < k; ++i) y[i] = z[i];
       y[k] = alpha;
     }
@@ -67,7 +75,7 @@ inline bool toeplitz_solve(const std::vector<std::complex<double>>& t, const Eig
     double res2 = 0.0;
     for (int i = 0; i < m; ++i) {
       C s = -B(i, j);
-      for (int l = 0; l < m; ++l) s += t[std::abs(i - l)] * X(l, j);
+      for (int l = 0; l < m; ++l) s += mul(t[std::abs(i - l)], X(l, j));
       res2 += std::norm(s);
     }
     const double b2 = B.col(j).squaredNorm();
