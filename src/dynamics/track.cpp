@@ -125,18 +125,15 @@ Eigen::Matrix2cd DiscretelySupportedRail::solve(const InfiniteBeam& free_rail, c
   const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
 
   // Toeplitz column of S = A + K^{-1} I: g_wF(d L), d = 0 .. 2N, plus the compliance on d = 0.
-  std::vector<cdouble> t(m);
-  for (int d = 0; d < m; ++d) t[d] = free_rail.transfer(d * spacing_)(0, 0);
+  const Eigen::MatrixX2cd column = free_rail.deflection_rows(0.0, spacing_, m);
+  std::vector<cdouble> t(column.col(0).data(), column.col(0).data() + m);
   t[0] += 1.0 / K;
 
   // B_e and B_r (rows: g_wF, g_wM of the free rail at x_n - x); B_r = B_e for the point receptance.
-  Eigen::MatrixXcd Be(m, 2), Br;
-  for (int i = 0; i < m; ++i) Be.row(i) = free_rail.transfer((n0 - n_ + i) * spacing_ - x_e).row(0);
-  if (x_r != x_e) {
-    Br.resize(m, 2);
-    for (int i = 0; i < m; ++i)
-      Br.row(i) = free_rail.transfer((n0 - n_ + i) * spacing_ - x_r).row(0);
-  }
+  const double x_first = (n0 - n_) * spacing_;
+  const Eigen::MatrixXcd Be = free_rail.deflection_rows(x_first - x_e, spacing_, m);
+  Eigen::MatrixXcd Br;
+  if (x_r != x_e) Br = free_rail.deflection_rows(x_first - x_r, spacing_, m);
   // X = S^{-1} B_e by Levinson's recursion, O(m^2) (linalg/toeplitz_solve.hpp), or by the dense
   // LU with pivoting where that recursion's residual check fails or `dense` is asked for.
   Eigen::MatrixXcd X;

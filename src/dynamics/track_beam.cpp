@@ -141,6 +141,49 @@ cdouble rod_receptance_complex(const BeamSection& b, cdouble omega, cdouble s, d
 }
 }  // namespace
 
+Eigen::MatrixX2cd InfiniteBeam::deflection_rows(double x0, double step, int count) const {
+  Eigen::MatrixX2cd rows(count, 2);
+  const cdouble I(0.0, 1.0);
+  // first index with x_n >= 0 (x_n = x0 + n step, step > 0)
+  int first = 0;
+  while (first < count && x0 + first * step < 0.0) ++first;
+  std::array<cdouble, 2> ratio, e;
+  for (int j = 0; j < 2; ++j) ratio[j] = std::exp(-I * k_[j] * step);
+  auto store = [&](int n, double x) {
+    cdouble w = 0.0, odd = 0.0;
+    for (int j = 0; j < 2; ++j) {
+      const cdouble k = k_[j];
+      const cdouble r = -I * e[j] * inv_dp_[j];
+      w += (d2_ * k * k + d0_) * r;
+      odd += g_ * k * r;
+    }
+    const double sgn = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+    rows(n, 0) = w;
+    rows(n, 1) = sgn * I * odd;  // W/M = +i g k, odd in x
+  };
+  // x >= 0: |x| grows with n
+  if (first < count) {
+    const double x = x0 + first * step;
+    for (int j = 0; j < 2; ++j) e[j] = std::exp(-I * k_[j] * x);
+    for (int n = first; n < count; ++n) {
+      if (n > first)
+        for (int j = 0; j < 2; ++j) e[j] *= ratio[j];
+      store(n, x0 + n * step);
+    }
+  }
+  // x < 0: |x| grows as n falls
+  if (first > 0) {
+    const double x = x0 + (first - 1) * step;
+    for (int j = 0; j < 2; ++j) e[j] = std::exp(-I * k_[j] * std::abs(x));
+    for (int n = first - 1; n >= 0; --n) {
+      if (n < first - 1)
+        for (int j = 0; j < 2; ++j) e[j] *= ratio[j];
+      store(n, x0 + n * step);
+    }
+  }
+  return rows;
+}
+
 cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) {
   return rod_receptance_complex(b, cdouble(omega, 0.0), s, x, nullptr);
 }
