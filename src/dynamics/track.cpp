@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "linalg/toeplitz_solve.hpp"
 
 namespace rollnoise::dynamics {
 namespace {
@@ -110,32 +111,39 @@ DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const 
 
 Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r, double x_e) const {
   const double omega = checked_omega(frequency);
-  const InfiniteBeam free_rail(rail_, omega, 0.0);
-  const cdouble K = support_.dynamic_stiffness(omega);
-  const int m = 2 * n_ + 1;
-  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
-
-  // Toeplitz column of A: g_wF(d L), d = 0 .. 2N.
-  std::vector<cdouble> g(m);
-  for (int d = 0; d < m; ++d) g[d] = free_rail.transfer(d * spacing_)(0, 0);
-
-  // S = A + K^{-1} I, B_e and B_r (rows: g_wF, g_wM of the free rail at x_n - x).
-  Eigen::MatrixXcd S(m, m);
-  Eigen::MatrixXcd Be(m, 2), Br(m, 2);
-  const cdouble compliance = 1.0 / K;
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < m; ++j) S(i, j) = g[std::abs(i - j)];
-    S(i, i) += compliance;
-    const double xn = (n0 - n_ + i) * spacing_;
-    Be.row(i) = free_rail.transfer(xn - x_e).row(0);
-    Br.row(i) = free_rail.transfer(xn - x_r).row(0);
-  }
-  const Eigen::MatrixXcd X = S.partialPivLu().solve(Be);
-  Eigen::Matrix2cd H = free_rail.transfer(x_r - x_e) - Br.transpose() * X;
+  const Eigen::Matrix2cd H =
+      solve(InfiniteBeam(rail_, omega, 0.0), support_.dynamic_stiffness(omega), x_r, x_e, false);
   if (!H.allFinite())
     throw NumericalError("DiscretelySupportedRail: non-finite receptance at f = " +
                          std::to_string(frequency) + " Hz");
   return H;
+}
+
+Eigen::Matrix2cd DiscretelySupportedRail::solve(const InfiniteBeam& free_rail, cdouble K,
+                                                double x_r, double x_e, bool dense) const {
+  const int m = 2 * n_ + 1;
+  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
+
+  // Toeplitz column of S = A + K^{-1} I: g_wF(d L), d = 0 .. 2N, plus the compliance on d = 0.
+  const Eigen::MatrixX2cd column = free_rail.deflection_rows(0.0, spacing_, m);
+  std::vector<cdouble> t(column.col(0).data(), column.col(0).data() + m);
+  t[0] += 1.0 / K;
+
+  // B_e and B_r (rows: g_wF, g_wM of the free rail at x_n - x); B_r = B_e for the point receptance.
+  const double x_first = (n0 - n_) * spacing_;
+  const Eigen::MatrixXcd Be = free_rail.deflection_rows(x_first - x_e, spacing_, m);
+  Eigen::MatrixXcd Br;
+  if (x_r != x_e) Br = free_rail.deflection_rows(x_first - x_r, spacing_, m);
+  // X = S^{-1} B_e by Levinson's recursion, O(m^2) (linalg/toeplitz_solve.hpp), or by the dense
+  // LU with pivoting where that recursion's residual check fails or `dense` is asked for.
+  Eigen::MatrixXcd X;
+  if (dense || !linalg::toeplitz_solve(t, Be, X)) {
+    Eigen::MatrixXcd S(m, m);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) S(i, j) = t[std::abs(i - j)];
+    X = S.partialPivLu().solve(Be);
+  }
+  return free_rail.transfer(x_r - x_e) - (x_r != x_e ? Br : Be).transpose() * X;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -204,22 +212,14 @@ cdouble Support::dynamic_stiffness(cdouble omega) const {
 }
 
 Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r, double x_e) const {
-  const InfiniteBeam free_rail(rail_, omega, 0.0, 0.0);
-  const cdouble K = support_.dynamic_stiffness(omega);
-  const int m = 2 * n_ + 1;
-  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);
-  std::vector<cdouble> g(m);
-  for (int d = 0; d < m; ++d) g[d] = free_rail.transfer(d * spacing_)(0, 0);
-  Eigen::MatrixXcd S(m, m), Be(m, 2), Br(m, 2);
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < m; ++j) S(i, j) = g[std::abs(i - j)];
-    S(i, i) += 1.0 / K;
-    const double xn = (n0 - n_ + i) * spacing_;
-    Be.row(i) = free_rail.transfer(xn - x_e).row(0);
-    Br.row(i) = free_rail.transfer(xn - x_r).row(0);
-  }
-  Eigen::Matrix2cd H = free_rail.transfer(x_r - x_e) - Br.transpose() * S.partialPivLu().solve(Be);
-  if (!H.allFinite()) throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
+  // For a decaying s (Im omega > 0) the continued roots have Im k > 0: the free rail's waves grow
+  // along the supported stretch and S is singular to round-off (condition 1e24-1e30 at 8 kHz and
+  // 5 % damping with N = 60). There the dense LU with pivoting is kept as it was (its result is
+  // not reliable either: docs/performance.md); elsewhere Levinson's O(m^2) solve.
+  const Eigen::Matrix2cd H = solve(InfiniteBeam(rail_, omega, 0.0, 0.0),
+                                   support_.dynamic_stiffness(omega), x_r, x_e, omega.imag() > 0.0);
+  if (!H.allFinite())
+    throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
   return H;
 }
 

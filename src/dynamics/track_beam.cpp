@@ -38,47 +38,12 @@ void BeamSection::validate(const std::string& prefix) const {
                      prefix + ".loss_factor must be >= 0, got " + std::to_string(loss_factor));
 }
 
+// One path for real and complex frequency: a real omega is the complex omega + 0i, on the sheet
+// Im k < 0 (no reference needed). The complex arithmetic of the zero imaginary parts adds exact
+// zeros only; the products may be contracted to fused multiply-adds differently from the former
+// real-valued code, so results can differ from it in the last bits (docs/performance.md).
 InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
-  const cdouble damping(1.0, b.loss_factor);
-  const cdouble EI = b.youngs_modulus * b.second_moment * damping;
-  const double mw2 = b.mass_per_length * omega * omega;  // m' omega^2
-  const cdouble q = s - mw2;                             // s - m' omega^2
-
-  // P(k) = a k^4 + bb k^2 + c and the numerators of the inverse dynamic-stiffness matrix.
-  cdouble a, bb, c;
-  if (b.timoshenko) {
-    const cdouble kGA = b.shear_coefficient * b.shear_modulus * b.area * damping;
-    const double rIw2 = b.mass_per_length * b.second_moment / b.area * omega * omega;
-    a = EI * kGA;
-    bb = q * EI - kGA * rIw2;
-    c = q * (kGA - rIw2);
-    d2_ = EI, d0_ = kGA - rIw2;  // W/F
-    e2_ = kGA, e0_ = q;          // Psi/M
-    g_ = kGA;                    // W/M = i g k, Psi/F = -i g k
-  } else {
-    a = EI, bb = 0.0, c = q;
-    d2_ = 0.0, d0_ = 1.0;
-    e2_ = 1.0, e0_ = 0.0;
-    g_ = 1.0;
-  }
-
-  // lambda = k^2 from a lambda^2 + bb lambda + c = 0, the cancellation-free form of the quadratic
-  // formula: q = -(bb + sign sqrt(bb^2 - 4ac))/2, lambda_1 = q/a, lambda_2 = c/q.
-  const cdouble disc = std::sqrt(bb * bb - 4.0 * a * c);
-  const cdouble qq = -0.5 * (std::real(std::conj(bb) * disc) >= 0.0 ? bb + disc : bb - disc);
-  if (std::abs(qq) == 0.0)
-    throw NumericalError(
-        "InfiniteBeam: dispersion relation degenerate (k = 0 double root) at omega = " +
-        std::to_string(omega) + " rad/s; add damping");
-  const std::array<cdouble, 2> lambda = {qq / a, c / qq};
-  const double sep = std::abs(lambda[0] - lambda[1]);
-  if (!(sep > 1e-13 * (std::abs(lambda[0]) + std::abs(lambda[1]))))
-    throw NumericalError("InfiniteBeam: double root of the dispersion relation at omega = " +
-                         std::to_string(omega) + " rad/s; add damping");
-  for (int j = 0; j < 2; ++j) {
-    k_[j] = decaying_root(lambda[j]);
-    inv_dp_[j] = 1.0 / (2.0 * a * k_[j] * (lambda[j] - lambda[1 - j]));
-  }
+  init_complex(b, cdouble(omega, 0.0), s, nullptr);
 }
 
 Eigen::Matrix2cd InfiniteBeam::transfer(double x) const {
@@ -102,20 +67,8 @@ Eigen::Matrix2cd InfiniteBeam::transfer(double x) const {
   return G;
 }
 
-cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) {
-  const cdouble EA = b.youngs_modulus * b.area * cdouble(1.0, b.loss_factor);
-  const cdouble k0 = decaying_root((b.mass_per_length * omega * omega - s) / EA);
-  if (std::abs(k0) == 0.0)
-    throw NumericalError("rod_receptance: k0 = 0 (static free rod); add a foundation or damping");
-  const cdouble I(0.0, 1.0);
-  return -I * std::exp(-I * k0 * std::abs(x)) / (2.0 * EA * k0);
-}
-
-
 // ---------------------------------------------------------------------------------------------
-// Complex frequency (docs/squeal.md Sec. 2). The same closed forms for a complex omega, written out
-// separately rather than templated over the real path: the real-frequency functions above keep
-// their code and so their bits (the compiler contracts multiply-adds per instantiation).
+// The closed forms at a complex omega (docs/squeal.md Sec. 2); the real frequency is omega + 0i.
 // ---------------------------------------------------------------------------------------------
 
 InfiniteBeam::InfiniteBeam(const BeamSection& b, cdouble omega, cdouble s, cdouble s_real) {
@@ -187,6 +140,53 @@ cdouble rod_receptance_complex(const BeamSection& b, cdouble omega, cdouble s, d
   return -I * std::exp(-I * k0 * std::abs(x)) / (2.0 * EA * k0);
 }
 }  // namespace
+
+Eigen::MatrixX2cd InfiniteBeam::deflection_rows(double x0, double step, int count) const {
+  Eigen::MatrixX2cd rows(count, 2);
+  const cdouble I(0.0, 1.0);
+  // first index with x_n >= 0 (x_n = x0 + n step, step > 0)
+  int first = 0;
+  while (first < count && x0 + first * step < 0.0) ++first;
+  std::array<cdouble, 2> ratio, e;
+  for (int j = 0; j < 2; ++j) ratio[j] = std::exp(-I * k_[j] * step);
+  auto store = [&](int n, double x) {
+    cdouble w = 0.0, odd = 0.0;
+    for (int j = 0; j < 2; ++j) {
+      const cdouble k = k_[j];
+      const cdouble r = -I * e[j] * inv_dp_[j];
+      w += (d2_ * k * k + d0_) * r;
+      odd += g_ * k * r;
+    }
+    const double sgn = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+    rows(n, 0) = w;
+    rows(n, 1) = sgn * I * odd;  // W/M = +i g k, odd in x
+  };
+  // x >= 0: |x| grows with n
+  if (first < count) {
+    const double x = x0 + first * step;
+    for (int j = 0; j < 2; ++j) e[j] = std::exp(-I * k_[j] * x);
+    for (int n = first; n < count; ++n) {
+      if (n > first)
+        for (int j = 0; j < 2; ++j) e[j] *= ratio[j];
+      store(n, x0 + n * step);
+    }
+  }
+  // x < 0: |x| grows as n falls
+  if (first > 0) {
+    const double x = x0 + (first - 1) * step;
+    for (int j = 0; j < 2; ++j) e[j] = std::exp(-I * k_[j] * std::abs(x));
+    for (int n = first - 1; n >= 0; --n) {
+      if (n < first - 1)
+        for (int j = 0; j < 2; ++j) e[j] *= ratio[j];
+      store(n, x0 + n * step);
+    }
+  }
+  return rows;
+}
+
+cdouble rod_receptance(const BeamSection& b, double omega, cdouble s, double x) {
+  return rod_receptance_complex(b, cdouble(omega, 0.0), s, x, nullptr);
+}
 
 cdouble rod_receptance(const BeamSection& b, cdouble omega, cdouble s, double x, cdouble s_real) {
   if (!(omega.imag() > 0.0)) return rod_receptance_complex(b, omega, s, x, nullptr);

@@ -78,6 +78,13 @@ class InfiniteBeam {
   /// rad/(N m)). Reciprocity: transfer(x)^T = transfer(-x).
   Eigen::Matrix2cd transfer(double x) const;
 
+  /// The first row of transfer(x), (w/F, w/M), at the equally spaced x_n = x0 + n step,
+  /// n = 0 .. count-1, as rows of a count x 2 matrix. The exponentials e^{-i k_j |x_n|} by the
+  /// recurrence e^{-i k (|x| + step)} = e^{-i k |x|} e^{-i k step} on each side of x = 0 (two
+  /// exponentials per side and root instead of one per point); equal to transfer() to a few
+  /// count x round-off (|e^{-i k step}| <= 1).
+  Eigen::MatrixX2cd deflection_rows(double x0, double step, int count) const;
+
   /// Point receptance w/F at the load.
   cdouble point_receptance() const { return transfer(0.0)(0, 0); }
 

@@ -88,12 +88,63 @@ struct ContactFrameCurve {
   }
 };
 
+// The wheelset axes of one pose in the track frame, R = Rz(ψ) Rx(φ): axle a = R e_y, down
+// d1 = R e_z, forward d2 = R e_x (d2z = 0), and the direction α = atan2(d2x, d1x) of the wheel's
+// silhouette, as cos α, sin α. Computed once per pose: point() then needs no trigonometry.
+struct PoseFrame {
+  double lateral, vertical;
+  double ax, ay, az, d1x, d1y, d1z, d2x, d2y;
+  double rho, cos_alpha = 1.0, sin_alpha = 0.0;
+
+  explicit PoseFrame(const WheelsetPose& pose) : lateral(pose.lateral), vertical(pose.vertical) {
+    const double cp = std::cos(pose.roll), sp = std::sin(pose.roll);
+    const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
+    ax = -sy * cp, ay = cy * cp, az = sp;
+    d1x = sy * sp, d1y = -cy * sp, d1z = cp;
+    d2x = cy, d2y = sy;
+    rho = std::hypot(d1x, d2x);
+    if (rho > 0.0) cos_alpha = d1x / rho, sin_alpha = d2x / rho;
+  }
+
+  // The point of the circle of radius r (slope dr/ds = rp) at axle coordinate xi. Circle s:
+  // c + r (cos θ d1 + sin θ d2). The surface normal of a body of revolution is ∝ e_r - r' a; seen
+  // along x the outline is where its x component vanishes:
+  //   cos θ d1x + sin θ d2x = r' ax,   i.e. ρ cos(θ - α) = r' ax,   θ = α ∓ q, cos q = r' ax / ρ.
+  // Of the two solutions the lower one (largest cos θ, as d1z > 0) is the wheel's bottom; as
+  // cos(α - q) - cos(α + q) = 2 sin α sin q with sin q >= 0, it is α - q when sin α >= 0. cos θ and
+  // sin θ follow from the angle-difference formulas (equal to cos, sin of the angles to round-off).
+  WheelPoint point(double xi, double r, double rp) const {
+    double ct = 1.0, st = 0.0;
+    if (rho > 0.0) {
+      const double cq = std::clamp(rp * ax / rho, -1.0, 1.0);
+      const double sq = std::sqrt(std::max(0.0, 1.0 - cq * cq));
+      if (sin_alpha >= 0.0)
+        ct = cos_alpha * cq + sin_alpha * sq, st = sin_alpha * cq - cos_alpha * sq;
+      else
+        ct = cos_alpha * cq - sin_alpha * sq, st = sin_alpha * cq + cos_alpha * sq;
+    }
+    WheelPoint p;
+    p.x = xi * ax + r * (ct * d1x + st * d2x);
+    p.y = lateral + xi * ay + r * (ct * d1y + st * d2y);
+    p.z = vertical + xi * az + r * (ct * d1z);
+    p.radius = r;
+    p.radial_y = ct * d1y + st * d2y;
+    p.radial_z = ct * d1z;
+    return p;
+  }
+};
+
 GapStrip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
   const double c = std::cos(cg.contact_angle), s = std::sin(cg.contact_angle);
   const WheelsetPose& pose = cg.local_pose;
   auto rail_point = [&](double y) { return std::make_pair(y, pair.rail_z(y)); };
+  const PoseFrame frame(pose);
+  auto wheel_at = [&](double sw) {
+    return frame.point(pair.wheel_offset() + sw,
+                       pair.wheelset().nominal_radius + pair.wheel().z(sw), pair.wheel().slope(sw));
+  };
   auto wheel_point = [&](double sw) {
-    const WheelPoint p = pair.wheel_point(sw, pose);
+    const WheelPoint p = wheel_at(sw);
     return std::make_pair(p.y, p.z);
   };
   const double ry_lo = pair.rail().y_min() + pair.rail_offset();
@@ -107,7 +158,7 @@ GapStrip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t
   if (!pr || !pw) return st;
   st.found = true;
   st.gap = rail.local(*pr).second - wheel.local(*pw).second;
-  const WheelPoint wp = pair.wheel_point(*pw, pose);
+  const WheelPoint wp = wheel_at(*pw);
   st.radius = wp.radius;
   st.lead = wp.x - cg.x;
   // dz_c/dy_c of the wheel at the strip, by central differences along the profile.
@@ -169,57 +220,46 @@ WheelRailPair::WheelRailPair(Profile wheel, Profile rail, const TrackParameters&
   }
   gauge_point_ = *yg;
   rail_offset_ = track_.gauge / 2 - gauge_point_;
-}
 
-WheelPoint WheelRailPair::wheel_point(double s, const WheelsetPose& pose) const {
-  const double xi = wheel_offset() + s;
-  const double r = wheelset_.nominal_radius + wheel_.z(s);
-  const double rp = wheel_.slope(s);  // dr/ds
-  const double cp = std::cos(pose.roll), sp = std::sin(pose.roll);
-  const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
-  // Wheelset axes in the track frame, R = Rz(ψ) Rx(φ): axle a = R e_y, down d1 = R e_z,
-  // forward d2 = R e_x.
-  const double ax = -sy * cp, ay = cy * cp, az = sp;
-  const double d1x = sy * sp, d1y = -cy * sp, d1z = cp;
-  const double d2x = cy, d2y = sy, d2z = 0.0;
-  // Circle s: c + r (cos θ d1 + sin θ d2). The surface normal of a body of revolution is
-  // ∝ e_r - r' a; seen along x the outline is where its x component vanishes:
-  //   cos θ d1x + sin θ d2x = r' ax,   i.e. ρ cos(θ - α) = r' ax, α = atan2(d2x, d1x).
-  // Of the two solutions the lower one (largest cos θ, as d1z > 0) is the wheel's bottom.
-  const double rho = std::hypot(d1x, d2x);
-  double theta = 0.0;
-  if (rho > 0.0) {
-    const double alpha = std::atan2(d2x, d1x);
-    const double q = std::acos(std::clamp(rp * ax / rho, -1.0, 1.0));
-    const double t1 = alpha - q, t2 = alpha + q;
-    theta = std::cos(t1) >= std::cos(t2) ? t1 : t2;
-  }
-  const double ct = std::cos(theta), st = std::sin(theta);
-  WheelPoint p;
-  p.x = xi * ax + r * (ct * d1x + st * d2x);
-  p.y = pose.lateral + xi * ay + r * (ct * d1y + st * d2y);
-  p.z = pose.vertical + xi * az + r * (ct * d1z + st * d2z);
-  p.radius = r;
-  p.radial_y = ct * d1y + st * d2y;
-  p.radial_z = ct * d1z + st * d2z;
-  return p;
-}
-
-double WheelRailPair::minimum_gap(const WheelsetPose& pose, double* s_at_minimum) const {
-  auto gap = [&](double s) {
-    const WheelPoint p = wheel_point(s, pose);
-    if (!rail_contains(p.y)) return std::numeric_limits<double>::infinity();
-    return rail_z(p.y) - p.z;
-  };
+  // The wheel's search table: n + 1 samples s_k = s_lo + (s_hi - s_lo) k / n, n = width / step.
+  auto table = std::make_shared<WheelTable>();
   const double s_lo = wheel_.y_min(), s_hi = wheel_.y_max();
-  double best = std::numeric_limits<double>::infinity(), s_best = 0.0;
   const int n = static_cast<int>((s_hi - s_lo) / kSampleStep);
   for (int k = 0; k <= n; ++k) {
     const double s = s_lo + (s_hi - s_lo) * k / n;
-    const double g = gap(s);
+    table->s.push_back(s);
+    table->radius.push_back(wheelset_.nominal_radius + wheel_.z(s));
+    table->slope.push_back(wheel_.slope(s));
+  }
+  wheel_table_ = std::move(table);
+}
+
+WheelPoint WheelRailPair::wheel_point(double s, const WheelsetPose& pose) const {
+  return PoseFrame(pose).point(wheel_offset() + s, wheelset_.nominal_radius + wheel_.z(s),
+                               wheel_.slope(s));
+}
+
+double WheelRailPair::minimum_gap(const WheelsetPose& pose, double* s_at_minimum) const {
+  const PoseFrame frame(pose);
+  const double offset = wheel_offset();
+  auto gap_of = [&](const WheelPoint& p) {
+    if (!rail_contains(p.y)) return std::numeric_limits<double>::infinity();
+    return rail_z(p.y) - p.z;
+  };
+  auto gap = [&](double s) {
+    return gap_of(frame.point(offset + s, wheelset_.nominal_radius + wheel_.z(s), wheel_.slope(s)));
+  };
+  // The scan over the tabulated wheel (no spline, no trigonometry per sample), then a golden
+  // section search between the neighbours of the best sample.
+  const WheelTable& table = *wheel_table_;
+  const double s_lo = wheel_.y_min(), s_hi = wheel_.y_max();
+  double best = std::numeric_limits<double>::infinity(), s_best = 0.0;
+  const int n = static_cast<int>(table.s.size()) - 1;
+  for (int k = 0; k <= n; ++k) {
+    const double g = gap_of(frame.point(offset + table.s[k], table.radius[k], table.slope[k]));
     if (g < best) {
       best = g;
-      s_best = s;
+      s_best = table.s[k];
     }
   }
   if (!std::isfinite(best))

@@ -26,6 +26,8 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "contact/grid.hpp"
 #include "contact/hertz.hpp"
@@ -109,6 +111,14 @@ class WheelRailPair {
   /// revolution: the point of the circle s where the surface normal is perpendicular to x).
   WheelPoint wheel_point(double s, const WheelsetPose& pose) const;
 
+  /// The wheel profile tabulated once at the search step (kSampleStep = 0.1 mm over
+  /// [y_min, y_max]): s_k, the radius r(s_k) and its slope r'(s_k). minimum_gap scans it for every
+  /// pose, so no spline is evaluated in its inner loop; copies of the pair share the table.
+  struct WheelTable {
+    std::vector<double> s, radius, slope;
+  };
+  const WheelTable& wheel_table() const { return *wheel_table_; }
+
   /// Minimum vertical distance rail - wheel (m, negative = penetration) of the right wheel for the
   /// pose, and the wheel profile coordinate s where it occurs.
   double minimum_gap(const WheelsetPose& pose, double* s_at_minimum = nullptr) const;
@@ -123,6 +133,7 @@ class WheelRailPair {
   WheelsetParameters wheelset_;
   double gauge_point_ = 0.0;
   double rail_offset_ = 0.0;
+  std::shared_ptr<const WheelTable> wheel_table_;
 };
 
 struct ContactOptions {

@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <string>
 
 #include "core/errors.hpp"
@@ -269,6 +271,60 @@ TEST(DiscreteTrack, ConvergesWithNumberOfSupports) {
   }
   EXPECT_LT(err_medium, 0.05);  // dB
   EXPECT_GT(err_coarse, 4.0 * err_medium);
+}
+
+// Eq. (2) written out with a dense LU of S = A + K^{-1} I, as the model was first solved: the
+// O(m^2) Levinson solve of the class must give the same receptance to round-off.
+Eigen::Matrix2cd dense_eq2(const rd::InfiniteBeam& free_rail, cd K, double L, int n, double x_r,
+                           double x_e) {
+  const int m = 2 * n + 1;
+  const long n0 = std::lround(0.5 * (x_r + x_e) / L);
+  Eigen::MatrixXcd S(m, m), Be(m, 2), Br(m, 2);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) S(i, j) = free_rail.transfer(std::abs(i - j) * L)(0, 0);
+    S(i, i) += 1.0 / K;
+    Be.row(i) = free_rail.transfer((n0 - n + i) * L - x_e).row(0);
+    Br.row(i) = free_rail.transfer((n0 - n + i) * L - x_r).row(0);
+  }
+  return free_rail.transfer(x_r - x_e) - Br.transpose() * S.partialPivLu().solve(Be);
+}
+
+TEST(DiscreteTrack, ToeplitzSolveEqualsDenseLuOfEq2ToRoundOff) {
+  const rd::TrackParameters t = rd::uic60_ballasted();
+  const int n = t.supports_each_side;
+  const double L = t.sleeper_spacing;
+  double worst = 0.0;
+  for (const bool vertical : {true, false}) {
+    const rd::BeamSection& b = vertical ? t.vertical : t.lateral;
+    const rd::Support& sup = vertical ? t.vertical_support : t.lateral_support;
+    const rd::DiscretelySupportedRail rail(b, sup, L, n);
+    // point receptances over a sleeper and mid-span, and the transfer over the wheelbase 2.5 m
+    const double positions[3][2] = {{0.0, 0.0}, {0.3, 0.3}, {0.3, 2.8}};
+    for (double f = 20.0; f < 8000.0; f *= 1.37) {
+      const double omega = 2.0 * M_PI * f;
+      for (const auto& p : positions) {
+        const Eigen::Matrix2cd ref =
+            dense_eq2(rd::InfiniteBeam(b, omega, 0.0), sup.dynamic_stiffness(omega), L, n, p[0], p[1]);
+        const double err = (rail.transfer(f, p[0], p[1]) - ref).norm() / ref.norm();
+        EXPECT_LT(err, 1e-10) << "f = " << f << " Hz, x = " << p[0] << ", " << p[1];
+        worst = std::max(worst, err);
+      }
+      // and at a complex frequency omega = -i s, s = sigma + i omega, of a growing mode (sigma =
+      // 0.05 omega). For a decaying one (Im omega > 0) the continued roots have Im k > 0, the
+      // waves grow along the 72 m of supported rail and S is singular to round-off (condition
+      // ~1e24-1e30 at 8 kHz, 5 % damping: partial- and full-pivoting LU differ by O(1)); the class
+      // keeps the dense LU there and this comparison would test nothing.
+      for (const double sigma : {0.05 * omega}) {
+        const cd w(omega, -sigma);
+        const Eigen::Matrix2cd ref =
+            dense_eq2(rd::InfiniteBeam(b, w, 0.0, 0.0), sup.dynamic_stiffness(w), L, n, 0.3, 0.3);
+        const double err = (rail.transfer_at(w, 0.3, 0.3) - ref).norm() / ref.norm();
+        EXPECT_LT(err, 1e-10) << "complex omega = " << w;
+        worst = std::max(worst, err);
+      }
+    }
+  }
+  std::printf("largest relative difference Levinson - dense LU: %.2e\n", worst);
 }
 
 // --- the 4x4 rail receptance
