@@ -182,8 +182,10 @@ Receptance4 RailModel::receptance(double frequency) const {
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / track_.sleeper_spacing;
   const cdouble rod = rod_receptance(track_.vertical, omega, s_x, 0.0);
-  const double h = track_.head_height;
+  return rail_receptance4(Hv, Hl, rod, track_.head_height);
+}
 
+Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
   Receptance4 R = Receptance4::Zero();
   R(kZ, kZ) = Hv(0, 0);
   R(kZ, kX) = -h * Hv(0, 1);

@@ -19,23 +19,6 @@ void apply_lever(M& m, const Eigen::Vector3d& d) {
   }
 }
 
-// RailModel::receptance's assembly (dynamics/track.cpp) for a transfer: vertical beam (w, psi)
-// per (F, M), lateral beam (w, psi) per (Fy, Mz), the rod in x and the head height h.
-Receptance4 rail_four(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
-                      double h) {
-  using namespace dynamics;
-  Receptance4 R = Receptance4::Zero();
-  R(kZ, kZ) = Hv(0, 0);
-  R(kZ, kX) = -h * Hv(0, 1);
-  R(kX, kZ) = -h * Hv(1, 0);
-  R(kX, kX) = rod + h * h * Hv(1, 1);
-  R(kY, kY) = Hl(0, 0);
-  R(kY, kRotZ) = Hl(0, 1);
-  R(kRotZ, kY) = Hl(1, 0);
-  R(kRotZ, kRotZ) = Hl(1, 1);
-  return R;
-}
-
 bool same_wheel(const ContactPoint& a, const ContactPoint& b) {
   return a.wheelset == b.wheelset && a.side == b.side;
 }
@@ -101,7 +84,7 @@ Receptance4 RailLine::transfer(double frequency, double x_r, double x_e) const {
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / L;
   const cdouble rod = dynamics::rod_receptance(track_.vertical, omega, s_x, x_r - x_e);
-  return rail_four(Hv, Hl, rod, track_.head_height);
+  return dynamics::rail_receptance4(Hv, Hl, rod, track_.head_height);
 }
 
 Receptance4 RailLine::transfer_laplace(cdouble s, double x_r, double x_e) const {
@@ -127,7 +110,7 @@ Receptance4 RailLine::transfer_laplace(cdouble s, double x_r, double x_e) const 
   const cdouble rod =
       dynamics::rod_receptance(track_.vertical, omega, lon.dynamic_stiffness(omega) / L, x_r - x_e,
                                lon.dynamic_stiffness(wr) / L);
-  return rail_four(Hv, Hl, rod, track_.head_height);
+  return dynamics::rail_receptance4(Hv, Hl, rod, track_.head_height);
 }
 
 // ---------------------------------------------------------------------------------------------
