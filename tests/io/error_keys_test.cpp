@@ -45,6 +45,8 @@ const std::map<std::string, std::string> kPseudoKeys = {
     {"contacts", "library guard: the contact set of the loop with several contacts (noise/contact_set.hpp; no "
                  "case keys yet, contacts[i].side etc. name the entry)"},
     {"sources", "library guard: one roughness amplitude per contact and source (noise/contact_set_loop.hpp)"},
+    {"roughness", "library guard: one roughness level spectrum per source (noise/contact_set_loop.hpp, "
+                  "contact_band_levels)"},
     {"rail_material", "library guard: the waveguide rail's steel (dynamics::RailMaterial; no case key "
                       "yet)"},
     {"rail_support", "library guard: the waveguide rail's support (dynamics::FootSupport)"},
