@@ -51,6 +51,8 @@ struct NoiseCase {
   /// and the rails (kBogie, docs/noise_loop.md Sec. 5.3) or each wheel's loop alone (kNone).
   enum class ContactCoupling { kBogie, kNone };
   ContactCoupling contact_coupling = ContactCoupling::kBogie;
+  /// noise.squeal_wheelsets: squeal also per wheelset of curve.wheels (pipeline/squeal_wheels.hpp).
+  bool squeal_wheelsets = false;
   /// The beam rail the loop with several contacts needs (RailLine): track, support and the
   /// leading axle's position along the rail (track.position); empty for the waveguide rail.
   std::optional<dynamics::TrackParameters> rail_track;

@@ -52,6 +52,7 @@ WheelSquealContact squeal_contact(const ContactCase& base, const NoiseCase& nc, 
 
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options) {
+  if (!nc.squeal_wheelsets) return {};
   const std::vector<noise::WheelContact> states = curve_wheels(r.curve, nc);
   if (states.empty()) return {};
   if (!nc.rail_track)
