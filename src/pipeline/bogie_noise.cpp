@@ -24,30 +24,33 @@ noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, co
                                        const std::vector<double>& frequency,
                                        const noise::CrossCoupling& cross) {
   if (!nc.rail_track)
-    throw InputError("noise.contact_coupling",
-                     "the wheels' contacts are coupled through the beam rail only (track.model = \"beam\"); "
-                     "set noise.contact_coupling = \"none\" for the waveguide rail");
+    throw InputError(
+        "noise.contact_coupling",
+        "the wheels' contacts are coupled through the beam rail only (track.model = \"beam\"); "
+        "set noise.contact_coupling = \"none\" for the waveguide rail");
   const noise::RailLine rail(*nc.rail_track, nc.rail_support);
   const noise::ContactSetStructures s =
       noise::contact_set_structures(*nc.wheel, rail, bogie_contacts(wheels, nc), frequency, cross);
   std::vector<std::vector<noise::Receptance4>> alpha;
   for (const WheelNoise& w : wheels) alpha.push_back(w.contact_receptance);
   // every wheel a tread contact with its own roughness (Sec. 5.2: uncorrelated sources)
-  return noise::solve_contact_set_loop(s, alpha,
-                                       noise::independent_sources(std::vector<bool>(wheels.size(), true)));
+  return noise::solve_contact_set_loop(
+      s, alpha, noise::independent_sources(std::vector<bool>(wheels.size(), true)));
 }
 
 std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
                                            const std::vector<WheelNoise>& wheels,
-                                           const NoiseCase& nc, const std::vector<double>& centres) {
+                                           const NoiseCase& nc,
+                                           const std::vector<double>& centres) {
   std::vector<std::vector<double>> levels;  // source e = wheel e, with its patch's contact filter
   for (const WheelNoise& w : wheels) {
     noise::ContactFilter filter;
     filter.model = nc.filter;
     filter.a = w.contact.a;
     filter.b = w.contact.b;
-    levels.push_back(noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, w.contact.speed, filter)
-                         .levels(centres));
+    levels.push_back(
+        noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, w.contact.speed, filter)
+            .levels(centres));
   }
   std::vector<noise::BandLevels> out;
   for (int a = 0; a < static_cast<int>(wheels.size()); ++a)

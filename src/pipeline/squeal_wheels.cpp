@@ -21,7 +21,8 @@ struct WheelSquealContact {
   double spectral_radius = -1.0;  ///< >= 1: the linearised contact alone is unstable (no transfer)
 };
 
-WheelSquealContact squeal_contact(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
+WheelSquealContact squeal_contact(const ContactCase& base, const NoiseCase& nc,
+                                  const noise::WheelContact& w,
                                   const std::vector<double>& in_band) {
   WheelSquealContact out;
   out.state = w;
@@ -57,7 +58,8 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
   if (states.empty()) return {};
   if (!nc.rail_track)
     throw InputError("noise.contact_coupling",
-                     "squeal per wheelset couples the contacts through the beam rail only (track.model = \"beam\")");
+                     "squeal per wheelset couples the contacts through the beam rail only "
+                     "(track.model = \"beam\")");
   std::vector<double> in_band;
   for (const auto& m : nc.wheel->modes())
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
@@ -70,13 +72,15 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<WheelSquealContact> wheels;
     for (const noise::WheelContact& w : states)
-      if (noise::is_leading(w.wheel) == leading) wheels.push_back(squeal_contact(r.contact, nc, w, in_band));
+      if (noise::is_leading(w.wheel) == leading)
+        wheels.push_back(squeal_contact(r.contact, nc, w, in_band));
     if (wheels.empty()) continue;
     WheelsetSqueal ws;
     for (const WheelSquealContact& w : wheels) {
       ws.wheels.push_back(w.state.wheel);
       if (w.spectral_radius >= 1.0)
-        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") + noise::wheel_name(w.state.wheel) +
+        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") +
+                      noise::wheel_name(w.state.wheel) +
                       ": the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " +
                       std::to_string(w.spectral_radius) + ")";
     }
@@ -124,8 +128,9 @@ std::vector<WheelRoot> wheel_roots(const std::vector<WheelsetSqueal>& s, noise::
   for (const WheelsetSqueal& ws : s)
     for (const WheelRoot& r : ws.roots)
       if (r.wheel == w) out.push_back(r);
-  std::sort(out.begin(), out.end(),
-            [](const WheelRoot& a, const WheelRoot& b) { return a.root.root.frequency < b.root.root.frequency; });
+  std::sort(out.begin(), out.end(), [](const WheelRoot& a, const WheelRoot& b) {
+    return a.root.root.frequency < b.root.root.frequency;
+  });
   return out;
 }
 

@@ -35,9 +35,10 @@ struct WheelsetSqueal {
 };
 
 /// Per wheelset of curve.wheels (leading, then trailing, those with a wheel in the list); empty
-/// without per-wheel states (Hertzian geometry) or with noise.squeal_wheelsets = "off". `r` the case's squeal run (its curve, contact);
-/// InputError naming noise.contact_coupling for the waveguide rail; an unstable
-/// contact alone is not an error here: its wheelset is skipped (WheelsetSqueal::skipped).
+/// without per-wheel states (Hertzian geometry) or with noise.squeal_wheelsets = "off". `r` the
+/// case's squeal run (its curve, contact); InputError naming noise.contact_coupling for the
+/// waveguide rail; an unstable contact alone is not an error here: its wheelset is skipped
+/// (WheelsetSqueal::skipped).
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options = {});
 

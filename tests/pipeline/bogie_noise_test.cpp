@@ -1,6 +1,8 @@
 // The loop with all the wheels of the bogie (pipeline/bogie_noise.hpp, docs/noise_loop.md Sec.
 // 5.3): without the cross terms every wheel is its single-contact loop; on tangent track without
 // cant deficiency the two sides of the coupled bogie give the same band levels.
+#include "pipeline/bogie_noise.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 
 #include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
-#include "pipeline/bogie_noise.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
 namespace {
@@ -17,7 +18,8 @@ namespace {
 using namespace rollnoise;
 
 io::NoiseInputs read_case(const std::string& name, const std::vector<std::string>& overrides) {
-  std::vector<std::string> o = {"noise.points_per_band=4", "noise.band_max=1000.0", "noise.compare=\"none\""};
+  std::vector<std::string> o = {"noise.points_per_band=4", "noise.band_max=1000.0",
+                                "noise.compare=\"none\""};
   o.insert(o.end(), overrides.begin(), overrides.end());
   return io::read_noise_inputs(
       io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/" + name, o));
@@ -32,14 +34,16 @@ double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
 // terms gives each wheel's forces and velocities of its loop alone to 1e-10 (relative, per
 // frequency) and its band levels to 1e-10 dB.
 TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
-  const io::NoiseInputs in = read_case("curve_300m.toml", {"track.support=\"continuous\"", "grid.nx=24",
-                                                           "noise.contact_coupling=\"none\""});
+  const io::NoiseInputs in =
+      read_case("curve_300m.toml",
+                {"track.support=\"continuous\"", "grid.nx=24", "noise.contact_coupling=\"none\""});
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_EQ(r.wheels.size(), 4u);
   ASSERT_FALSE(r.bogie);
   const noise::ContactSetLoopResult alone =
       pipeline::bogie_loop(r.wheels, in.noise, r.axis.frequency, noise::CrossCoupling::none());
-  const std::vector<noise::BandLevels> bands = pipeline::bogie_bands(alone, r.wheels, in.noise, r.axis.centres);
+  const std::vector<noise::BandLevels> bands =
+      pipeline::bogie_bands(alone, r.wheels, in.noise, r.axis.centres);
   double worst = 0.0, worst_db = 0.0;
   for (int a = 0; a < 4; ++a) {
     const noise::LoopResult& single = r.wheels[a].loop;
@@ -51,20 +55,22 @@ TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
     }
     for (std::size_t j = 0; j < bands[a].centre.size(); ++j)
       for (int i = 0; i < 4; ++i)
-        worst_db = std::max(worst_db, std::abs(bands[a].force_level[j][i] - r.wheels[a].bands.force_level[j][i]));
+        worst_db = std::max(
+            worst_db, std::abs(bands[a].force_level[j][i] - r.wheels[a].bands.force_level[j][i]));
   }
   EXPECT_LT(worst, 1e-10);
   EXPECT_LT(worst_db, 1e-10);
-  std::printf("  uncoupled bogie loop vs single-contact loops: %.1e relative, %.1e dB\n", worst, worst_db);
+  std::printf("  uncoupled bogie loop vs single-contact loops: %.1e relative, %.1e dB\n", worst,
+              worst_db);
 }
 
 // Tangent track, no cant deficiency, all four wheels coupled (rigid wheelset, both rails with
 // discrete support and the other axle at the wheelbase): outer and inner wheel of each axle have
 // mirrored contacts, so their band levels (forces and velocities) agree within 0.01 dB.
 TEST(BogieNoise, TangentTrackGivesEqualLevelsOnBothSides) {
-  const io::NoiseInputs in = read_case(
-      "tangent.toml",
-      {"curve.wheels=[\"leading_outer\", \"leading_inner\", \"trailing_outer\", \"trailing_inner\"]"});
+  const io::NoiseInputs in =
+      read_case("tangent.toml", {"curve.wheels=[\"leading_outer\", \"leading_inner\", "
+                                 "\"trailing_outer\", \"trailing_inner\"]"});
   ASSERT_EQ(in.noise.contact_coupling, pipeline::NoiseCase::ContactCoupling::kBogie);
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_EQ(r.wheels.size(), 4u);
@@ -78,16 +84,20 @@ TEST(BogieNoise, TangentTrackGivesEqualLevelsOnBothSides) {
       for (int i = 0; i < 4; ++i) {
         worst = std::max(worst, std::abs(outer.force_level[j][i] - inner.force_level[j][i]));
         for (int p = 0; p < 2; ++p)
-          worst = std::max(worst, std::abs(outer.velocity_level[j][p][i] - inner.velocity_level[j][p][i]));
+          worst = std::max(worst,
+                           std::abs(outer.velocity_level[j][p][i] - inner.velocity_level[j][p][i]));
       }
   }
   // the coupling changes the levels (so the check is not trivially of the single loops)
   for (std::size_t j = 0; j < r.bands.centre.size(); ++j)
-    coupling = std::max(coupling, std::abs(r.wheels[0].bands.force_level[j][0] - r.bands.force_level[j][0]));
+    coupling = std::max(coupling,
+                        std::abs(r.wheels[0].bands.force_level[j][0] - r.bands.force_level[j][0]));
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(coupling, 0.01);
-  std::printf("  tangent bogie: outer minus inner %.2e dB at most; coupled minus alone (Fz) up to %.2f dB\n", worst,
-              coupling);
+  std::printf(
+      "  tangent bogie: outer minus inner %.2e dB at most; coupled minus alone (Fz) up to %.2f "
+      "dB\n",
+      worst, coupling);
 }
 
 }  // namespace
