@@ -7,7 +7,9 @@ Writes PREFIX_bands.png (1/3-octave levels of Fz, Fx, Fy, Mz, one panel each: th
 model with the normal -> tangential coupling (solid), without it (dashed, /noise/uncoupled) and the
 comparison baseline (dotted, /noise/quasi_steady or /noise/kalker), with the effective roughness
 and, on the Fy panel, the mu-scaled normal force 20 log10|Fy_mean/N| + L_Fz) and PREFIX_transfer.png
-(narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants).
+(narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants), and with
+/noise/wheels (curve.wheels) PREFIX_wheels.png: each wheel's band levels of Fz, Fx, Fy, Mz (its
+attribute `loop` says whether the wheels were coupled, noise.contact_coupling).
 Files written before the coupling existed (only /noise/kalker) are plotted too. Band axes are
 labelled with the nominal band centres (..., 400, 500, 630, ..., 5000 Hz).
 """
@@ -22,6 +24,7 @@ import numpy as np  # noqa: E402
 import rollnoise_h5 as rh  # noqa: E402
 
 LABELS = ["Fz", "Fx", "Fy", "Mz"]
+WHEELS = ["leading_outer", "leading_inner", "trailing_outer", "trailing_inner"]
 BASELINES = [("/noise/quasi_steady", "quasi-steady f(0), g(0)"), ("/noise/kalker", "Kalker steady")]
 
 
@@ -51,6 +54,12 @@ def main():
         for path, name in BASELINES:
             if path + "/bands" in f:
                 variants.append((name, f[path + "/bands/force_level"][:], f[path + "/force"][:], ":"))
+        wheels, wheels_loop = [], ""
+        if "/noise/wheels" in f:
+            wheels_loop = rh.attribute(f["/noise/wheels"], "loop", "")
+            for name in WHEELS:
+                if f"/noise/wheels/{name}/bands/force_level" in f:
+                    wheels.append((name, f[f"/noise/wheels/{name}/bands/force_level"][:]))
     title = f"{args.file}: mean creepage ({creep[0]:.3g}, {creep[1]:.3g}, {creep[2]:.3g} rad/m)"
 
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
@@ -84,7 +93,32 @@ def main():
     axes[-1].set_xlabel("f [Hz]")
     fig.tight_layout()
     fig.savefig(prefix + "_transfer.png", dpi=120)
-    print("wrote", prefix + "_bands.png", prefix + "_transfer.png")
+    written = [prefix + "_bands.png", prefix + "_transfer.png"]
+    if wheels:
+        plot_wheels(wheels, wheels_loop, centre, args.file, prefix + "_wheels.png")
+        written.append(prefix + "_wheels.png")
+    print("wrote", *written)
+
+
+def plot_wheels(wheels, loop, centre, name, path):
+    """One panel per force component, one line per wheel of /noise/wheels."""
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
+    x = np.arange(len(centre))
+    styles = {"leading_outer": ("k", "-"), "leading_inner": ("tab:blue", "-"),
+              "trailing_outer": ("k", "--"), "trailing_inner": ("tab:blue", "--")}
+    for j, ax in enumerate(axes.flat):
+        for wheel, level in wheels:
+            c, ls = styles[wheel]
+            ax.plot(x, level[:, j], ls, color=c, marker="o", ms=3, label=wheel)
+        ax.set_title(LABELS[j], fontsize=10)
+        ax.set_ylabel("dB re 1 N m" if j == 3 else "dB re 1 N")
+        rh.set_band_axis(ax, centre, every=1 if len(centre) <= 20 else 2, label=j >= 2)
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=7)
+    coupled = "coupled" if loop.startswith("coupled") else "each wheel alone"
+    fig.suptitle(f"{name}: band levels of every wheel ({coupled})", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
 
 
 if __name__ == "__main__":

@@ -38,7 +38,9 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
 // vertical load, N, force on the wheel in the track frame; the levels summed over the bands.
 void print_wheels(const pipeline::NoiseResult& r) {
   if (r.wheels.empty()) return;
-  std::printf("  wheels (each wheel's patch in the loop alone; lateral force towards the outer rail; %.1f s):\n",
+  std::printf("  wheels (%s; lateral force towards the outer rail; %.1f s):\n",
+              r.bogie ? "the wheels' patches coupled in one loop through wheelset and rails"
+                      : "each wheel's patch in the loop alone",
               r.seconds_wheels);
   for (const pipeline::WheelNoise& wn : r.wheels) {
     const noise::WheelContact& w = wn.state;

@@ -8,9 +8,32 @@
 #include "cli/commands.hpp"
 #include "io/noise_case.hpp"
 #include "io/squeal_output.hpp"
+#include "io/squeal_wheels_output.hpp"
 #include "pipeline/squeal.hpp"
+#include "pipeline/squeal_wheels.hpp"
 
 namespace rollnoise::cli {
+
+namespace {
+
+// Per wheelset of curve.wheels: its unstable roots, each with the wheel it belongs to.
+void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
+  for (const pipeline::WheelsetSqueal& ws : s) {
+    int unstable = 0;
+    for (const auto& x : ws.roots) unstable += x.root.root.unstable ? 1 : 0;
+    std::printf("  wheelset %s (%zu contacts, %zu roots, %d unstable, %.1f s, %ld evaluations)\n",
+                noise::is_leading(ws.wheels.front()) ? "leading" : "trailing", ws.wheels.size(), ws.roots.size(),
+                unstable, ws.seconds, ws.evaluations);
+    if (!ws.skipped.empty()) std::printf("    left out: %s\n", ws.skipped.c_str());
+    for (const auto& x : ws.roots)
+      if (x.root.root.unstable || !x.root.root.converged)
+        std::printf("    %-14s %-24s %10.3f Hz zeta %12.4e share %.2f%s%s\n", noise::wheel_name(x.wheel),
+                    x.root.root.label.c_str(), x.root.root.frequency, x.root.root.damping_ratio, x.share,
+                    x.root.root.unstable ? " UNSTABLE" : "", x.root.root.converged ? "" : " (continuation failed)");
+  }
+}
+
+}  // namespace
 
 int run_squeal(const CommonOptions& o, const std::string& route) {
   const bool route1 = route != "2", route2 = route != "1";
@@ -32,11 +55,14 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
     for (const auto& x : r.roots) s.push_back(x.s);
     dev = pipeline::route1_deviation(r1, r, nc, s);
   }
+  std::vector<pipeline::WheelsetSqueal> wheelsets;  // curve.wheels, per wheelset (route 2)
+  if (route2) wheelsets = io::within_case(reader, [&] { return pipeline::squeal_wheelsets(r, nc); });
   if (!route2) r.roots = roots1, r.route = 1;
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_squeal(w, reader, nc, r);
   if (route1) io::write_squeal_route1(w, r1, roots1, route2 ? &agreement : nullptr);
+  io::write_squeal_wheels(w, wheelsets);
   w.commit();
 
   if (!o.quiet) {
@@ -69,6 +95,7 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
       std::printf("route agreement: frequency %.2e, damping ratio %.2e relative / %.2e absolute%s\n", agreement.frequency,
                   agreement.damping_relative, agreement.damping_absolute,
                   agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
+    print_wheelsets(wheelsets);
     std::printf("wrote %s\n", out.c_str());
     std::fprintf(stderr, "squeal: %d unstable of %zu modes%s\n", r.unstable_count(), r.roots.size(),
                  r.unstable_count() ? " (see /squeal/unstable)" : "");

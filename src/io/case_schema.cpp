@@ -247,6 +247,15 @@ const std::vector<KeySpec>& case_schema() {
        "normal -> tangential friction coupling F~t = -f xi~ + g Fz in the loop (NSS model's g; Kalker's "
        "theory has g = 0); \"on\" also solves the loop without it (/noise/uncoupled)",
        {"on", "off"}},
+      {"noise.contact_coupling", T::String, "\"bogie\"", "-",
+       "curve.wheels: \"bogie\" couples the wheels' contacts in one loop (rigid wheelset, each rail's "
+       "transfer receptance to the other axle; track.model = \"beam\"), \"none\" runs each wheel's loop "
+       "alone (docs/noise_loop.md Sec. 5.3)",
+       {"bogie", "none"}},
+      {"noise.squeal_wheelsets", T::String, "\"off\"", "-",
+       "squeal: \"on\" also finds the roots of each wheelset of curve.wheels with both its contacts "
+       "(/squeal/wheels; slow: minutes with profiles, docs/squeal.md Sec. 9.3)",
+       {"off", "on"}},
       {"noise.compare", T::String, "\"quasi-steady\"", "-",
        "comparison baseline: the quasi-steady contact of the same state (NSS f(0), g(0); "
        "/noise/quasi_steady), Kalker's full-adhesion coefficients (/noise/kalker) or none",

@@ -103,7 +103,12 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
       r.fail("track.model", "the waveguide rail has the continuous support only: set track.support = \"continuous\"");
     if (model == "waveguide")
       c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, dynamics::WaveguideRailOptions{});
-    else
+    else {
+      c.rail_track = track;
+      c.rail_support = support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous;
+      c.rail_position = position;
+    }
+    if (model != "waveguide")
       c.rail = std::make_unique<dynamics::RailModel>(
           track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
           position);
@@ -133,6 +138,11 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   });
   problems.check([&] { c.use_nss = r.string("noise.contact_model") == "nss"; });
   problems.check([&] { c.normal_coupling = r.string("noise.normal_coupling") == "on"; });
+  problems.check([&] { c.squeal_wheelsets = r.string("noise.squeal_wheelsets") == "on"; });
+  problems.check([&] {
+    c.contact_coupling = r.string("noise.contact_coupling") == "none" ? pipeline::NoiseCase::ContactCoupling::kNone
+                                                                      : pipeline::NoiseCase::ContactCoupling::kBogie;
+  });
   problems.check([&] {
     const std::string compare = r.string("noise.compare");
     c.compare = compare == "kalker" ? NoiseCase::Baseline::kKalker

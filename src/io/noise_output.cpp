@@ -131,10 +131,18 @@ void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
   if (r.wheels.empty()) return;
   for (const pipeline::WheelNoise& wn : r.wheels)
     write_wheel(w, std::string("/noise/wheels/") + noise::wheel_name(wn.state.wheel), wn);
-  w.attribute("/noise/wheels", "loop",
-              "each wheel's main patch runs the single-contact loop ALONE (its own patch, creepages and "
-              "receptances at its contact; the wheels are not coupled through the wheelset or the track); "
-              "leading_outer is the top-level /noise run");
+  if (r.bogie)
+    w.attribute("/noise/wheels", "loop",
+                "coupled (noise.contact_coupling = \"bogie\"): the wheels' main patches in one loop with several "
+                "contacts (docs/noise_loop.md Sec. 5.2-5.3: rigid wheelset between the two wheels of an axle, each "
+                "rail's transfer receptance between the two axles, each wheel's own contact receptance), one "
+                "uncorrelated roughness source per wheel, band levels the power sum over the sources; the "
+                "top-level /noise is the leading outer wheel's single-contact loop");
+  else
+    w.attribute("/noise/wheels", "loop",
+                "each wheel's main patch runs the single-contact loop ALONE (noise.contact_coupling = \"none\": "
+                "its own patch, creepages and receptances at its contact; the wheels are not coupled through the "
+                "wheelset or the track); leading_outer is the top-level /noise run");
   w.attribute("/noise/wheels", "frames",
               "contact and creepage in each wheel's own contact frame (y_c to its field side, mirrored for "
               "the inner wheels); force_track in the track frame with the lateral component towards the "

@@ -47,6 +47,17 @@ struct NoiseCase {
   bool use_nss = true;
   /// noise.normal_coupling: the contact's g (F~t = -f xi~ + g Fz) in the loop.
   bool normal_coupling = true;
+  /// noise.contact_coupling: the wheels of curve.wheels coupled in one loop through the wheelset
+  /// and the rails (kBogie, docs/noise_loop.md Sec. 5.3) or each wheel's loop alone (kNone).
+  enum class ContactCoupling { kBogie, kNone };
+  ContactCoupling contact_coupling = ContactCoupling::kBogie;
+  /// noise.squeal_wheelsets: squeal also per wheelset of curve.wheels (pipeline/squeal_wheels.hpp).
+  bool squeal_wheelsets = false;
+  /// The beam rail the loop with several contacts needs (RailLine): track, support and the
+  /// leading axle's position along the rail (track.position); empty for the waveguide rail.
+  std::optional<dynamics::TrackParameters> rail_track;
+  dynamics::TrackSupport rail_support = dynamics::TrackSupport::kDiscrete;
+  double rail_position = 0.3;
   /// noise.compare: the comparison baseline of the loop (docs/noise_loop.md Sec. 5.1).
   enum class Baseline { kNone, kQuasiSteady, kKalker };
   Baseline compare = Baseline::kQuasiSteady;

@@ -101,6 +101,11 @@ std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, c
       m.slip_elements = r.stage.model->slip_elements();
     }
     m.loop = r.variants.main;
+    const noise::ContactCoefficients model =
+        nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker_coefficients(r.contact, r.axis.frequency.size());
+    m.contact_receptance = main_contact_receptance(r.axis.frequency, r.stage.normal_stiffness, r.contact.speed, model,
+                                                   nc.normal_coupling);
+    m.position = r.curve.position;
     out.push_back(std::move(m));
   }
   return out;
@@ -113,6 +118,8 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
   const auto t1 = Clock::now();
   r.wheels = wheel_loops(r, nc, *r.spectra);
+  if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
+    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(bogie_loop(r.wheels, nc, r.axis.frequency));
   r.seconds_wheels = seconds_since(t1);
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
@@ -186,6 +193,11 @@ void add_bands(NoiseResult& r, const NoiseCase& nc) {
     r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
   }
   if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
+  if (r.bogie) {
+    const std::vector<noise::BandLevels> b = bogie_bands(*r.bogie, r.wheels, nc, centres);
+    for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
+    return;
+  }
   for (WheelNoise& w : r.wheels)
     w.bands = w.state.wheel == noise::WheelId::leading_outer ? r.bands : wheel_bands(w, nc, centres);
 }

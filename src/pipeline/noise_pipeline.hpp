@@ -31,6 +31,7 @@
 #include "pipeline/contact_case.hpp"
 #include "pipeline/curve_setup.hpp"
 #include "pipeline/noise_case.hpp"
+#include "pipeline/bogie_noise.hpp"
 #include "pipeline/wheel_noise.hpp"
 
 namespace rollnoise::pipeline {
@@ -83,6 +84,9 @@ struct NoiseResult {
   /// the leading outer wheel's is the main run above. Set by run_noise (not by run_noise_loop: a
   /// study writes the top-level results only).
   std::vector<WheelNoise> wheels;
+  /// noise.contact_coupling = "bogie": the loop with all the wheels' contacts (contact a = wheels[a],
+  /// one source each; pipeline/bogie_noise.hpp); then wheels[a].bands are its levels.
+  std::shared_ptr<const noise::ContactSetLoopResult> bogie;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
 };
 

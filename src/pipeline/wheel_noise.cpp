@@ -1,5 +1,6 @@
 #include "pipeline/wheel_noise.hpp"
 
+#include "noise/contact_receptance.hpp"
 #include "noise/loop_variants.hpp"
 #include "noise/roughness.hpp"
 #include "pipeline/noise_pipeline.hpp"
@@ -35,9 +36,21 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
   }
   const noise::StructuralReceptances structures =
       noise::structural_receptances(*nc.wheel, spectra, w.position());
-  out.loop = noise::solve_loop_variants(structures, in).main;
+  out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed, in.model,
+                                                   in.normal_coupling);
+  out.position = w.position();
+  out.loop = noise::solve_loop(structures, out.contact_receptance);
   out.contact = std::move(c);
   return out;
+}
+
+std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,
+                                                        double normal_stiffness, double speed,
+                                                        const noise::ContactCoefficients& model,
+                                                        bool normal_coupling) {
+  if (normal_coupling && !model.load.empty())
+    return noise::contact_receptances(frequency, normal_stiffness, speed, model.creep, model.load);
+  return noise::contact_receptances(frequency, normal_stiffness, speed, model.creep);
 }
 
 noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,

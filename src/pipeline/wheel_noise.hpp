@@ -13,6 +13,7 @@
 #include "contact/forces.hpp"
 #include "noise/bands.hpp"
 #include "noise/loop.hpp"
+#include "noise/loop_variants.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/noise_case.hpp"
@@ -26,7 +27,11 @@ struct WheelNoise {
   double normal_stiffness = 0.0;         ///< k_N (N/m)
   contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
   int adhesion_elements = 0, slip_elements = 0;
-  noise::LoopResult loop;   ///< the main variant (with g when normal_coupling)
+  noise::LoopResult loop;   ///< the main variant (with g when normal_coupling), the wheel alone
+  /// alpha_c of the main loop per frequency (contact frame) and the contact position it ran at:
+  /// what the loop with several contacts takes (pipeline/bogie_noise.hpp).
+  std::vector<noise::Receptance4> contact_receptance;
+  noise::ContactPosition position;
   noise::BandLevels bands;  ///< set by add_wheel_bands
 };
 
@@ -36,6 +41,13 @@ struct WheelNoise {
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
                        const noise::StructureSpectra& spectra,
                        const std::vector<double>& frequency);
+
+/// alpha_c of the main loop: with g when `normal_coupling` and the model has one (as
+/// noise::solve_loop_variants's main variant).
+std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,
+                                                        double normal_stiffness, double speed,
+                                                        const noise::ContactCoefficients& model,
+                                                        bool normal_coupling);
 
 /// The band levels of a wheel's loop (its contact filter's semi-axes, the case's roughness).
 noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,

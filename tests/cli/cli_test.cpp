@@ -372,7 +372,8 @@ TEST(NoiseCommand, WritesTheCurveContactState) {
 TEST(NoiseCommand, WritesEveryWheelsContactStateAndLevels) {
   const fs::path out = temp_dir() / "noise_wheels.h5";
   const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
-                           "--set track.support=continuous --set noise.compare=\"none\" -o " + out.string());
+                           "--set track.support=continuous --set noise.compare=\"none\" "
+                           "--set noise.contact_coupling=\"none\" -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);

@@ -71,6 +71,8 @@ TEST(SchemaDefaults, DefaultConstructedStructsHoldTheSchemaDefaults) {
                           "contact.angle",
                           "noise.contact_model",
                           "noise.normal_coupling",
+                          "noise.contact_coupling",
+                          "noise.squeal_wheelsets",
                           "noise.compare",
                           "noise.band_min",
                           "noise.band_max",
@@ -100,6 +102,8 @@ TEST(SchemaDefaults, DefaultConstructedStructsHoldTheSchemaDefaults) {
   EXPECT_EQ(n.contact_angle, n0.contact_angle) << "contact.angle";
   EXPECT_EQ(n.use_nss, n0.use_nss) << "noise.contact_model";
   EXPECT_EQ(n.normal_coupling, n0.normal_coupling) << "noise.normal_coupling";
+  EXPECT_EQ(n.contact_coupling, n0.contact_coupling) << "noise.contact_coupling";
+  EXPECT_EQ(n.squeal_wheelsets, n0.squeal_wheelsets) << "noise.squeal_wheelsets";
   EXPECT_EQ(n.compare, n0.compare) << "noise.compare";
   EXPECT_EQ(n.band_min, n0.band_min) << "noise.band_min";
   EXPECT_EQ(n.band_max, n0.band_max) << "noise.band_max";

@@ -1,0 +1,145 @@
+#include "pipeline/squeal_wheels.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "core/errors.hpp"
+#include "pipeline/bogie_noise.hpp"
+
+namespace rollnoise::pipeline {
+namespace {
+
+// One wheel's contact for the characteristic equation: its placed case, stage and transfer
+// (as run_squeal builds them for the leading outer wheel).
+struct WheelSquealContact {
+  noise::WheelContact state;
+  ContactCase contact;
+  ContactStage stage;
+  std::unique_ptr<noise::ContactTransfer> transfer;
+  bool coupled = false;
+  double spectral_radius = -1.0;  ///< >= 1: the linearised contact alone is unstable (no transfer)
+};
+
+WheelSquealContact squeal_contact(const ContactCase& base, const NoiseCase& nc,
+                                  const noise::WheelContact& w,
+                                  const std::vector<double>& in_band) {
+  WheelSquealContact out;
+  out.state = w;
+  out.contact = base;
+  place_contact_at(out.contact, w.contact, w.normal_force());
+  out.contact.creepage = {w.creepage(0), w.creepage(1), w.creepage(2)};
+  out.stage = contact_stage(out.contact, nc.use_nss);
+  out.contact.grid = out.stage.patch->grid;
+  if (nc.use_nss) {
+    check_nyquist(out.contact, in_band, "noise.band_max");
+    const nss::LinearContactModel& model = *out.stage.model;
+    // falling friction: the contact alone may be unstable (run_squeal's check); then its
+    // wheelset's roots are meaningless and the wheelset is left out (WheelsetSqueal::skipped)
+    if (model.markov_parameters().empty() && model.spectral_radius() >= 1.0) {
+      out.spectral_radius = model.spectral_radius();
+      return out;
+    }
+    out.coupled = nc.normal_coupling && model.has_normal_load_input();
+    out.transfer = std::make_unique<noise::NssTransfer>(out.stage.model, out.coupled);
+  } else {
+    out.transfer = std::make_unique<noise::ConstantTransfer>(
+        noise::ConstantTransfer::kalker(out.contact.a, out.contact.b, out.contact.material));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
+                                             const noise::StabilityOptions& options) {
+  if (!nc.squeal_wheelsets) return {};
+  const std::vector<noise::WheelContact> states = curve_wheels(r.curve, nc);
+  if (states.empty()) return {};
+  if (!nc.rail_track)
+    throw InputError("noise.contact_coupling",
+                     "squeal per wheelset couples the contacts through the beam rail only "
+                     "(track.model = \"beam\")");
+  std::vector<double> in_band;
+  for (const auto& m : nc.wheel->modes())
+    if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
+  const noise::RailLine rail(*nc.rail_track, nc.rail_support);
+  noise::StabilityOptions o = options;
+  o.band_min = nc.band_min;
+  o.band_max = nc.band_max;
+  std::vector<WheelsetSqueal> out;
+  for (bool leading : {true, false}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<WheelSquealContact> wheels;
+    for (const noise::WheelContact& w : states)
+      if (noise::is_leading(w.wheel) == leading)
+        wheels.push_back(squeal_contact(r.contact, nc, w, in_band));
+    if (wheels.empty()) continue;
+    WheelsetSqueal ws;
+    for (const WheelSquealContact& w : wheels) {
+      ws.wheels.push_back(w.state.wheel);
+      if (w.spectral_radius >= 1.0)
+        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") +
+                      noise::wheel_name(w.state.wheel) +
+                      ": the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " +
+                      std::to_string(w.spectral_radius) + ")";
+    }
+    if (!ws.skipped.empty()) {
+      out.push_back(std::move(ws));
+      continue;
+    }
+    std::vector<noise::SquealContact> contacts;
+    bool coupled = false;
+    for (const WheelSquealContact& w : wheels) {
+      noise::ContactPoint p;
+      p.wheelset = leading ? 0 : 1;
+      p.side = noise::is_outer(w.state.wheel) ? 1 : -1;
+      p.position = w.state.position();
+      p.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
+      contacts.push_back({p, w.transfer.get(), w.stage.normal_stiffness});
+      coupled = coupled || w.coupled;
+    }
+    noise::ContactSetLaplaceLoop loop =
+        noise::contact_set_laplace_loop(*nc.wheel, rail, contacts, r.contact.speed, coupled);
+    auto inner = loop.rest;
+    long* count = &ws.evaluations;
+    loop.rest = [inner, count](noise::cdouble s) {
+      ++*count;
+      return inner(s);
+    };
+    for (const noise::ContactSetRoot& root : noise::contact_set_mode_roots(loop, o)) {
+      // loop.wheels[i] = (wheelset, side): the wheel of this wheelset on that side
+      const int side = loop.wheels[root.dominant_wheel].second;
+      WheelRoot wr;
+      wr.root = root;
+      wr.share = root.wheel_share[root.dominant_wheel];
+      for (noise::WheelId w : ws.wheels)
+        if ((noise::is_outer(w) ? 1 : -1) == side) wr.wheel = w;
+      ws.roots.push_back(std::move(wr));
+    }
+    ws.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.push_back(std::move(ws));
+  }
+  return out;
+}
+
+std::vector<WheelRoot> wheel_roots(const std::vector<WheelsetSqueal>& s, noise::WheelId w) {
+  std::vector<WheelRoot> out;
+  for (const WheelsetSqueal& ws : s)
+    for (const WheelRoot& r : ws.roots)
+      if (r.wheel == w) out.push_back(r);
+  std::sort(out.begin(), out.end(), [](const WheelRoot& a, const WheelRoot& b) {
+    return a.root.root.frequency < b.root.root.frequency;
+  });
+  return out;
+}
+
+std::vector<WheelRoot> unstable_roots(const std::vector<WheelsetSqueal>& s) {
+  std::vector<WheelRoot> out;
+  for (const WheelsetSqueal& ws : s)
+    for (const WheelRoot& r : ws.roots)
+      if (r.root.root.unstable) out.push_back(r);
+  return out;
+}
+
+}  // namespace rollnoise::pipeline

@@ -1,0 +1,49 @@
+// Squeal per wheelset with all its contacts (docs/squeal.md Sec. 9.3): every wheel of curve.wheels
+// with its own contact state (patch, steady rolling, linear model as a ContactTransfer, k_N), the
+// two wheels of each wheelset in one characteristic equation (S6) through the rigid wheelset and
+// the rails (noise::contact_set_laplace_loop, one RailLine per case), the roots by continuation
+// from every wheel's modes (noise::contact_set_mode_roots); each root belongs to the wheel with
+// the largest modal share (dominant_wheel).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "noise/contact_set_stability.hpp"
+#include "noise/contact_transfer.hpp"
+#include "noise/wheel_contact.hpp"
+#include "pipeline/squeal.hpp"
+
+namespace rollnoise::pipeline {
+
+/// One root of a wheelset's loop, with the wheel it belongs to.
+struct WheelRoot {
+  noise::WheelId wheel = noise::WheelId::leading_outer;  ///< dominant wheel (largest share)
+  noise::ContactSetRoot root;
+  double share = 0.0;  ///< that wheel's modal share of the root (0..1)
+};
+
+struct WheelsetSqueal {
+  std::vector<noise::WheelId> wheels;  ///< of curve.wheels on this wheelset
+  std::vector<WheelRoot> roots;
+  /// Non-empty: the wheelset was left out, why (a wheel's linearised contact alone is unstable
+  /// under falling friction, docs/falling_friction.md Sec. 3).
+  std::string skipped;
+  long evaluations = 0;
+  double seconds = 0.0;
+};
+
+/// Per wheelset of curve.wheels (leading, then trailing, those with a wheel in the list); empty
+/// without per-wheel states (Hertzian geometry) or with noise.squeal_wheelsets = "off". `r` the
+/// case's squeal run (its curve, contact); InputError naming noise.contact_coupling for the
+/// waveguide rail; an unstable contact alone is not an error here: its wheelset is skipped
+/// (WheelsetSqueal::skipped).
+std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
+                                             const noise::StabilityOptions& options = {});
+
+/// The roots of one wheel over all wheelsets (in frequency order), and every unstable root.
+std::vector<WheelRoot> wheel_roots(const std::vector<WheelsetSqueal>& s, noise::WheelId w);
+std::vector<WheelRoot> unstable_roots(const std::vector<WheelsetSqueal>& s);
+
+}  // namespace rollnoise::pipeline
