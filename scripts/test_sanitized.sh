@@ -46,7 +46,7 @@ JOBS=${ROLLNOISE_JOBS:-$(nproc)}
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|CentredVerticalReceptance|EccentricContact)|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
