@@ -171,7 +171,7 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
     for (Eigen::Index b = a; b < n; ++b) {
       if (contacts[a].side != contacts[b].side || (a != b && !cross.rail)) continue;
       transfer[a * n + b] = rail.transfer(frequency, contacts[a].rail_x, contacts[b].rail_x);
-      transfer[b * n + a] = transfer[a * n + b].transpose();
+      if (b != a) transfer[b * n + a] = transfer[a * n + b].transpose();
     }
   for (Eigen::Index a = 0; a < n; ++a) {
     for (Eigen::Index b = 0; b < n; ++b) {
