@@ -36,9 +36,6 @@
 #   the other FallingFriction*, LaplaceCoefficients.* and SquealFallingFriction.* tests.
 #   SquealKalker.* (5 s in Release: a squeal run and route 1 on curve_300m); the same code paths
 #   run sanitized in SquealRoutes.* and SquealPassivity.*.
-set -euo pipefail
-cd "$(dirname "$0")/.."
-JOBS=${ROLLNOISE_JOBS:-$(nproc)}
 #   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
 #   RailWaveguideReduced.*, WaveguideRailModel.*: dense eigenproblems of n = 621 (zgeev, the Ritz
 #   basis' generalised symmetric ones); RailWaveguidePatch.* and the smoke test's waveguide
