@@ -1,6 +1,8 @@
 #include "noise/contact_set.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <string>
 
 #include "core/errors.hpp"
@@ -165,12 +167,21 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
   out.wheel6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
   out.rail6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
   // Rail transfers between positions on one rail, each pair once (reciprocity: H(b, a) = H(a,
-  // b)^T).
+  // b)^T). Both rails are the same track: a pair of positions met on the other rail (the inner
+  // wheels at the outer wheels' x) reuses that rail's result, the same bits.
   std::vector<Receptance4> transfer(static_cast<std::size_t>(n * n));
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> solved;
   for (Eigen::Index a = 0; a < n; ++a)
     for (Eigen::Index b = a; b < n; ++b) {
       if (contacts[a].side != contacts[b].side || (a != b && !cross.rail)) continue;
-      transfer[a * n + b] = rail.transfer(frequency, contacts[a].rail_x, contacts[b].rail_x);
+      const auto same_positions = [&](const std::pair<Eigen::Index, Eigen::Index>& p) {
+        return contacts[p.first].rail_x == contacts[a].rail_x && contacts[p.second].rail_x == contacts[b].rail_x;
+      };
+      const auto earlier = std::find_if(solved.begin(), solved.end(), same_positions);
+      transfer[a * n + b] = earlier != solved.end()
+                                ? transfer[earlier->first * n + earlier->second]
+                                : rail.transfer(frequency, contacts[a].rail_x, contacts[b].rail_x);
+      solved.emplace_back(a, b);
       if (b != a) transfer[b * n + a] = transfer[a * n + b].transpose();
     }
   for (Eigen::Index a = 0; a < n; ++a) {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/errors.hpp"
 
@@ -94,10 +96,15 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
       });
   loop.rest = [=, &rail](cdouble s) -> Eigen::MatrixXcd {
     Eigen::MatrixXcd A = C / (s * s);
+    // both rails are the same track: a pair of positions met before (on the other rail) reuses its
+    // transfer, the same bits
+    std::vector<std::pair<std::pair<double, double>, Receptance4>> met;
     A += contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
       if (points[a].side != points[b].side || (a != b && !cross.rail)) return Receptance6::Zero();
-      return rail_cross(rail.transfer_laplace(s, points[a].rail_x, points[b].rail_x), points[a],
-                        points[b]);
+      const std::pair<double, double> x{points[a].rail_x, points[b].rail_x};
+      auto it = std::find_if(met.begin(), met.end(), [&](const auto& m) { return m.first == x; });
+      if (it == met.end()) it = met.insert(met.end(), {x, rail.transfer_laplace(s, x.first, x.second)});
+      return rail_cross(it->second, points[a], points[b]);
     });
     for (Eigen::Index a = 0; a < n; ++a) {
       const ContactTransfer& t = *contacts[a].transfer;
