@@ -185,7 +185,8 @@ Receptance4 RailModel::receptance(double frequency) const {
   return rail_receptance4(Hv, Hl, rod, track_.head_height);
 }
 
-Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
+Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
+                             double h) {
   Receptance4 R = Receptance4::Zero();
   R(kZ, kZ) = Hv(0, 0);
   R(kZ, kX) = -h * Hv(0, 1);

@@ -121,7 +121,8 @@ enum class TrackSupport { kContinuous, kDiscrete };
 /// The rail's 4x4 receptance (z, x, y, rot z at the running surface; RailModel below) from the
 /// vertical beam's (w, psi) per (F, M), the lateral beam's (w, psi) per (Fy, Mz), the rod's
 /// receptance in x and the head height h: a point receptance or a transfer between two points.
-Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h);
+Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
+                             double h);
 
 /// The rail's receptance at the contact point as the noise loop uses it.
 ///

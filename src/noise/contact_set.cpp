@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "core/errors.hpp"
 
@@ -175,7 +175,8 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
     for (Eigen::Index b = a; b < n; ++b) {
       if (contacts[a].side != contacts[b].side || (a != b && !cross.rail)) continue;
       const auto same_positions = [&](const std::pair<Eigen::Index, Eigen::Index>& p) {
-        return contacts[p.first].rail_x == contacts[a].rail_x && contacts[p.second].rail_x == contacts[b].rail_x;
+        return contacts[p.first].rail_x == contacts[a].rail_x &&
+               contacts[p.second].rail_x == contacts[b].rail_x;
       };
       const auto earlier = std::find_if(solved.begin(), solved.end(), same_positions);
       transfer[a * n + b] = earlier != solved.end()

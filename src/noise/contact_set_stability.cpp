@@ -103,7 +103,8 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
       if (points[a].side != points[b].side || (a != b && !cross.rail)) return Receptance6::Zero();
       const std::pair<double, double> x{points[a].rail_x, points[b].rail_x};
       auto it = std::find_if(met.begin(), met.end(), [&](const auto& m) { return m.first == x; });
-      if (it == met.end()) it = met.insert(met.end(), {x, rail.transfer_laplace(s, x.first, x.second)});
+      if (it == met.end())
+        it = met.insert(met.end(), {x, rail.transfer_laplace(s, x.first, x.second)});
       return rail_cross(it->second, points[a], points[b]);
     });
     for (Eigen::Index a = 0; a < n; ++a) {
@@ -178,7 +179,7 @@ class ModalForm {
   Eigen::MatrixXd Psi_;
 };
 
-// First-order splitting of a c-fold uncoupled root (stability.cpp's split_cluster).
+// First-order splitting of a c-fold uncoupled root (route 2's splitting, stability.hpp).
 std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::size_t>& k,
                                    cdouble s0, double lambda1) {
   const std::size_t c = k.size();
@@ -188,23 +189,7 @@ std::vector<cdouble> split_cluster(const ModalForm& H, const std::vector<std::si
   Eigen::MatrixXcd N(c, c);
   for (std::size_t i = 0; i < c; ++i)
     for (std::size_t j = 0; j < c; ++j) N(i, j) = Qf(k[i], k[j]) / slope(k[i], k[i]);
-  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(N);
-  std::vector<cdouble> start(c, s0);
-  std::vector<bool> taken(c, false), used(c, false);
-  for (std::size_t round = 0; round < c; ++round) {
-    double best = -1.0;
-    std::size_t bi = 0, bj = 0;
-    for (std::size_t i = 0; i < c; ++i) {
-      if (used[i]) continue;
-      const Eigen::VectorXcd v = es.eigenvectors().col(i);
-      for (std::size_t j = 0; j < c; ++j)
-        if (!taken[j] && std::abs(v(j)) / v.norm() > best)
-          best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
-    }
-    used[bi] = taken[bj] = true;
-    start[bj] = s0 - lambda1 * es.eigenvalues()(bi);
-  }
-  return start;
+  return cluster_starts(N, s0, lambda1);
 }
 
 // Newton at fixed lambda: central-difference derivative, then secant updates, on H deflated by the

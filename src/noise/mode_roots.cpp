@@ -139,23 +139,7 @@ std::vector<cdouble> split_cluster(const ClusterFunction& H, cdouble s0, double 
   const Eigen::MatrixXcd own_slope =
       (H.own(s0 * (1.0 + 1e-7)) - H.own(s0 * (1.0 - 1e-7))) / (2e-7 * s0);
   for (std::size_t i = 0; i < c; ++i) N.row(i) /= own_slope(i, i);  // diag(m D')^{-1} Q
-  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(N);
-  std::vector<cdouble> start(c, s0);
-  std::vector<bool> taken(c, false), used(c, false);
-  for (std::size_t round = 0; round < c; ++round) {  // the most dominant (branch, mode) pair first
-    double best = -1.0;
-    std::size_t bi = 0, bj = 0;
-    for (std::size_t i = 0; i < c; ++i) {
-      if (used[i]) continue;
-      const Eigen::VectorXcd v = es.eigenvectors().col(i);
-      for (std::size_t j = 0; j < c; ++j)
-        if (!taken[j] && std::abs(v(j)) / v.norm() > best)
-          best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
-    }
-    used[bi] = taken[bj] = true;
-    start[bj] = s0 - lambda1 * es.eigenvalues()(bi);
-  }
-  return start;
+  return cluster_starts(N, s0, lambda1);
 }
 
 // Newton at fixed lambda: the derivative by a central difference at the start (H is analytic),
@@ -338,6 +322,27 @@ ModeRoot mode_root(const LaplaceLoop& loop, std::size_t k, const StabilityOption
   for (const ModeRoot& r : mode_roots(loop, one))
     if (r.mode == k) return r;
   throw NumericalError("squeal: mode not found");
+}
+
+std::vector<cdouble> cluster_starts(const Eigen::MatrixXcd& N, cdouble s0, double lambda1) {
+  const std::size_t c = static_cast<std::size_t>(N.rows());
+  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(N);
+  std::vector<cdouble> start(c, s0);
+  std::vector<bool> taken(c, false), used(c, false);
+  for (std::size_t round = 0; round < c; ++round) {  // the most dominant (branch, mode) pair first
+    double best = -1.0;
+    std::size_t bi = 0, bj = 0;
+    for (std::size_t i = 0; i < c; ++i) {
+      if (used[i]) continue;
+      const Eigen::VectorXcd v = es.eigenvectors().col(i);
+      for (std::size_t j = 0; j < c; ++j)
+        if (!taken[j] && std::abs(v(j)) / v.norm() > best)
+          best = std::abs(v(j)) / v.norm(), bi = i, bj = j;
+    }
+    used[bi] = taken[bj] = true;
+    start[bj] = s0 - lambda1 * es.eigenvalues()(bi);
+  }
+  return start;
 }
 
 }  // namespace rollnoise::noise

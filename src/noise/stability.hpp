@@ -90,6 +90,12 @@ inline cdouble uncoupled_root(const LoopMode& m) {
   return {-z * w, w * std::sqrt(1.0 - z * z)};
 }
 
+/// The starts of the c branches of a c-fold root s0 at lambda = lambda1 from the first-order
+/// splitting matrix N = diag(m D'(s0))^{-1} Psi^T B_K(s0)^{-1} Psi (route 2, mode_roots.cpp): the
+/// eigenvalues nu_i of N give s0 - lambda1 nu_i; branch i goes to the mode with the largest component
+/// of its eigenvector (assigned greedily, the most dominant pair first). In the order of N's rows.
+std::vector<cdouble> cluster_starts(const Eigen::MatrixXcd& N, cdouble s0, double lambda1);
+
 /// (S1) split for route 2: A(s) = rest(s) + sum_k psi_k psi_k^T / (m_k D_k(s)).
 struct LaplaceLoop {
   std::vector<LoopMode> modes;
