@@ -34,25 +34,32 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
                 1e-3 * st.loaded->force_track[2], st.loaded->angle_min, st.loaded->angle_max);
 }
 
-// One line per wheel of curve.wheels: axle position, contact on wheel and rail, angle, creepages,
-// vertical load, N, force on the wheel in the track frame; the levels summed over the bands.
+// One wheel's (or patch's) line: axle position, contact on wheel and rail, angle, creepages,
+// vertical load, N, force on the wheel in the track frame; the Fz levels summed over the bands.
+void print_wheel_line(const pipeline::WheelNoise& wn, const char* label) {
+  const noise::WheelContact& w = wn.state;
+  const auto f = w.force_track();
+  double total = 0.0;  // the power sum of the Fz band levels (dB re 1 N)
+  for (const auto& l : wn.bands.force_level) total += std::pow(10.0, 0.1 * l[0]);
+  std::printf("  %-14s u %5.2f mm psi %6.2f mrad | wheel s %6.1f mm rail %6.1f mm angle %.3f rad | xi (%.2e, %.2e, "
+              "%.3f rad/m) | Q %5.1f kN N %5.1f kN | F (%5.1f, %5.1f, %5.1f) kN | Fz %.1f dB re 1 N (all bands)\n",
+              label, 1e3 * w.lateral, 1e3 * w.yaw, 1e3 * w.contact.wheel_s, 1e3 * w.contact.rail_y,
+              w.contact.contact_angle, w.creepage(0), w.creepage(1), w.creepage(2), 1e-3 * w.vertical_load,
+              1e-3 * w.normal_force(), 1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2], 10.0 * std::log10(total));
+}
+
+// One line per wheel of curve.wheels, then one per second patch (noise.second_patch).
 void print_wheels(const pipeline::NoiseResult& r) {
   if (r.wheels.empty()) return;
   std::printf("  wheels (%s; lateral force towards the outer rail; %.1f s):\n",
               r.bogie ? "the wheels' patches coupled in one loop through wheelset and rails"
                       : "each wheel's patch in the loop alone",
               r.seconds_wheels);
-  for (const pipeline::WheelNoise& wn : r.wheels) {
-    const noise::WheelContact& w = wn.state;
-    const auto f = w.force_track();
-    double total = 0.0;  // the power sum of the Fz band levels (dB re 1 N)
-    for (const auto& l : wn.bands.force_level) total += std::pow(10.0, 0.1 * l[0]);
-    std::printf("  %-14s u %5.2f mm psi %6.2f mrad | wheel s %6.1f mm rail %6.1f mm angle %.3f rad | xi (%.2e, %.2e, "
-                "%.3f rad/m) | Q %5.1f kN N %5.1f kN | F (%5.1f, %5.1f, %5.1f) kN | Fz %.1f dB re 1 N (all bands)\n",
-                noise::wheel_name(w.wheel), 1e3 * w.lateral, 1e3 * w.yaw, 1e3 * w.contact.wheel_s,
-                1e3 * w.contact.rail_y, w.contact.contact_angle, w.creepage(0), w.creepage(1), w.creepage(2),
-                1e-3 * w.vertical_load, 1e-3 * w.normal_force(), 1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2],
-                10.0 * std::log10(total));
+  for (const pipeline::WheelNoise& wn : r.wheels) print_wheel_line(wn, noise::wheel_name(wn.state.wheel));
+  for (const pipeline::WheelNoise& p : r.patches) {
+    std::printf("  second patch of %s (the flange patch, coupled; docs/noise_loop.md Sec. 7.4):\n",
+                noise::wheel_name(p.state.wheel));
+    print_wheel_line(p, "  flange");
   }
 }
 

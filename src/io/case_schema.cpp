@@ -252,6 +252,16 @@ const std::vector<KeySpec>& case_schema() {
        "transfer receptance to the other axle; track.model = \"beam\"), \"none\" runs each wheel's loop "
        "alone (docs/noise_loop.md Sec. 5.3)",
        {"bogie", "none"}},
+      {"noise.second_patch", T::String, "\"off\"", "-",
+       "\"coupled\": the flange patch of a two-point contact (the leading outer wheel at its flange) "
+       "enters the bogie loop as a second contact of that wheel (noise.contact_coupling = \"bogie\"; "
+       "/noise/wheels/leading_outer/patches/1, docs/noise_loop.md Sec. 7.4); \"off\": one patch per wheel",
+       {"off", "coupled"}},
+      {"noise.second_patch_roughness", T::String, "\"none\"", "-",
+       "roughness of the second patch: \"none\" (excited only through the coupling to the tread "
+       "contacts) or \"own\" (its own uncorrelated source, the case's roughness spectra with its contact "
+       "filter)",
+       {"none", "own"}},
       {"noise.squeal_wheelsets", T::String, "\"off\"", "-",
        "squeal: \"on\" also finds the roots of each wheelset of curve.wheels with both its contacts "
        "(/squeal/wheels; slow: minutes with profiles, docs/squeal.md Sec. 9.3)",

@@ -139,6 +139,9 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.use_nss = r.string("noise.contact_model") == "nss"; });
   problems.check([&] { c.normal_coupling = r.string("noise.normal_coupling") == "on"; });
   problems.check([&] { c.squeal_wheelsets = r.string("noise.squeal_wheelsets") == "on"; });
+  problems.check([&] { c.second_patch = r.string("noise.second_patch") == "coupled"; });
+  problems.check(
+      [&] { c.second_patch_roughness = r.string("noise.second_patch_roughness") == "own"; });
   problems.check([&] {
     c.contact_coupling = r.string("noise.contact_coupling") == "none" ? pipeline::NoiseCase::ContactCoupling::kNone
                                                                       : pipeline::NoiseCase::ContactCoupling::kBogie;

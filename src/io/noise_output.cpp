@@ -125,12 +125,61 @@ void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelN
           "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
 }
 
+// The narrow-band response of contact a (same layout and units as /noise/force, wheel_velocity,
+// rail_velocity): with the bogie loop under the contact's own roughness source (left out for a
+// contact without one) and `force_by_source` under every source; else the wheel's loop alone.
+void write_narrow_band(Hdf5Writer& w, const std::string& group, const pipeline::NoiseResult& r, int a,
+                       const pipeline::WheelNoise& wn) {
+  const std::size_t nf = r.axis.frequency.size();
+  const std::string per = "per unit roughness of this contact's own source: ";
+  auto write_loop = [&](const noise::LoopResult& x) {
+    w.write(group + "/force", flatten4(x.force), {nf, 4},
+            per + "Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
+    w.write(group + "/wheel_velocity", flatten4(x.wheel_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
+    w.write(group + "/rail_velocity", flatten4(x.rail_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
+  };
+  if (!r.bogie) {
+    write_loop(wn.loop);
+    return;
+  }
+  const noise::ContactSetLoopResult& loop = *r.bogie;
+  const int sources = loop.sources();
+  for (int e = 0; e < sources; ++e)
+    if (loop.rho(a, e) != 0.0) write_loop(noise::contact_response(loop, a, e));
+  std::vector<std::complex<double>> f;
+  f.reserve(nf * static_cast<std::size_t>(sources) * 4);
+  for (const Eigen::MatrixXcd& F : loop.force)
+    for (int e = 0; e < sources; ++e)
+      for (int i = 0; i < 4; ++i) f.push_back(F(4 * a + i, e));
+  w.write(group + "/force_by_source", f, {nf, static_cast<std::size_t>(sources), 4},
+          "per unit roughness of each source (/noise/wheels/sources): Fz, Fx, Fy (N/m), Mz (N m/m); "
+          "contact frame, on the wheel; [frequency, source, component]");
+}
+
 }  // namespace
 
 void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
   if (r.wheels.empty()) return;
-  for (const pipeline::WheelNoise& wn : r.wheels)
-    write_wheel(w, std::string("/noise/wheels/") + noise::wheel_name(wn.state.wheel), wn);
+  std::vector<std::string> sources;  // the contacts with a roughness source, in the loop's order
+  int a = 0;
+  for (const pipeline::WheelNoise& wn : r.wheels) {
+    const std::string g = std::string("/noise/wheels/") + noise::wheel_name(wn.state.wheel);
+    write_wheel(w, g, wn);
+    write_narrow_band(w, g, r, a++, wn);
+    sources.push_back(noise::wheel_name(wn.state.wheel));
+  }
+  for (const pipeline::WheelNoise& p : r.patches) {  // one second patch per wheel (the flange)
+    const std::string name = std::string(noise::wheel_name(p.state.wheel)) + "/patches/1";
+    write_wheel(w, "/noise/wheels/" + name, p);
+    write_narrow_band(w, "/noise/wheels/" + name, r, a, p);
+    if (r.bogie && r.bogie->rho.row(a).cwiseAbs().maxCoeff() > 0.0) sources.push_back(name);
+    w.attribute("/noise/wheels/" + name, "patch",
+                "the flange patch of the two-point contact (noise.second_patch = \"coupled\", "
+                "docs/noise_loop.md Sec. 7.4): its own contact frame, position on the flank, contact "
+                "model at its own mean state; bands and force_by_source from the coupled loop");
+    ++a;
+  }
+  if (r.bogie) w.write("/noise/wheels/sources", sources, "-");
   if (r.bogie)
     w.attribute("/noise/wheels", "loop",
                 "coupled (noise.contact_coupling = \"bogie\"): the wheels' main patches in one loop with several "

@@ -19,6 +19,8 @@ Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeom
   return {f(0, 0), f(1, 1)};
 }
 
+}  // namespace
+
 // The wheel's input at the axle position (u, psi): profiles, material, grid, curve, friction.
 WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, double psi) {
   WheelContactInput w;
@@ -35,8 +37,6 @@ WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, d
   w.yaw = psi;
   return w;
 }
-
-}  // namespace
 
 std::string multibody_key(WheelId id, const std::string& what) {
   return std::string(is_leading(id) ? "wheelset." : "trailing_wheelset.") +

@@ -127,6 +127,10 @@ double cant_deficiency_load_transfer(double wheel_load, double cant_deficiency, 
 /// with friction mu up the flange (K6): |Y| (cos d + mu sin d) / (sin d - mu cos d) (N).
 double flange_vertical_load(double lateral_force, double flange_angle, double mu);
 
+/// The input of wheel `id`'s contact (wheel_contact) at the axle position (u, psi): the profiles,
+/// material, grid, curve and friction of `in`; no load or creepage set.
+WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, double psi);
+
 /// Steps 1-4 above. InputError naming the key for bad input; NumericalError from the estimate.
 CurveContactState curve_contact_state(const CurveStateInput& in);
 

@@ -1,59 +1,107 @@
 #include "pipeline/bogie_noise.hpp"
 
+#include <algorithm>
+
 #include "core/errors.hpp"
+#include "noise/flange_patch.hpp"
 #include "noise/roughness.hpp"
 
 namespace rollnoise::pipeline {
+namespace {
+
+noise::ContactPoint contact_point(const WheelNoise& w, const NoiseCase& nc) {
+  noise::ContactPoint c;
+  const bool leading = noise::is_leading(w.state.wheel);
+  c.wheelset = leading ? 0 : 1;
+  c.side = noise::is_outer(w.state.wheel) ? 1 : -1;
+  c.position = w.position;  // its own frame (mirrored for an inner wheel), as its loop alone
+  c.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
+  return c;
+}
+
+// The wheels, then the patches.
+std::vector<const WheelNoise*> all_contacts(const std::vector<WheelNoise>& wheels,
+                                            const std::vector<WheelNoise>& patches) {
+  std::vector<const WheelNoise*> out;
+  for (const WheelNoise& w : wheels) out.push_back(&w);
+  for (const WheelNoise& p : patches) out.push_back(&p);
+  return out;
+}
+
+}  // namespace
 
 std::vector<noise::ContactPoint> bogie_contacts(const std::vector<WheelNoise>& wheels,
-                                                const NoiseCase& nc) {
+                                                const NoiseCase& nc,
+                                                const std::vector<WheelNoise>& patches) {
   std::vector<noise::ContactPoint> out;
-  for (const WheelNoise& w : wheels) {
-    noise::ContactPoint c;
-    const bool leading = noise::is_leading(w.state.wheel);
-    c.wheelset = leading ? 0 : 1;
-    c.side = noise::is_outer(w.state.wheel) ? 1 : -1;
-    c.position = w.position;  // its own frame (mirrored for an inner wheel), as its loop alone
-    c.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
-    out.push_back(c);
-  }
+  for (const WheelNoise* w : all_contacts(wheels, patches)) out.push_back(contact_point(*w, nc));
+  return out;
+}
+
+std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCase& base,
+                                       const NoiseCase& nc, const std::vector<WheelNoise>& wheels,
+                                       const noise::StructureSpectra& spectra,
+                                       const std::vector<double>& frequency) {
+  if (!nc.second_patch) return {};
+  if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
+    throw InputError("noise.second_patch",
+                     "a second patch is a contact of the bogie loop: \"coupled\" needs "
+                     "noise.contact_coupling = \"bogie\"");
+  const bool leading_outer =
+      std::any_of(wheels.begin(), wheels.end(), [](const WheelNoise& w) {
+        return w.state.wheel == noise::WheelId::leading_outer;
+      });
+  if (!curve.state || !curve.state_input || !leading_outer) return {};
+  const std::optional<noise::WheelContact> flange =
+      noise::flange_patch_contact(*curve.state_input, *curve.state);
+  if (!flange) return {};
+  return {wheel_noise(base, nc, *flange, spectra, frequency)};
+}
+
+std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, const NoiseCase& nc) {
+  std::vector<bool> out(wheels, true);  // every tread contact its own source (Sec. 5.2)
+  out.insert(out.end(), patches, nc.second_patch_roughness);
   return out;
 }
 
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
-                                       const noise::CrossCoupling& cross) {
+                                       const noise::CrossCoupling& cross,
+                                       const std::vector<WheelNoise>& patches) {
   if (!nc.rail_track)
     throw InputError(
         "noise.contact_coupling",
         "the wheels' contacts are coupled through the beam rail only (track.model = \"beam\"); "
         "set noise.contact_coupling = \"none\" for the waveguide rail");
   const noise::RailLine rail(*nc.rail_track, nc.rail_support);
-  const noise::ContactSetStructures s =
-      noise::contact_set_structures(*nc.wheel, rail, bogie_contacts(wheels, nc), frequency, cross);
+  const noise::ContactSetStructures s = noise::contact_set_structures(
+      *nc.wheel, rail, bogie_contacts(wheels, nc, patches), frequency, cross);
   std::vector<std::vector<noise::Receptance4>> alpha;
-  for (const WheelNoise& w : wheels) alpha.push_back(w.contact_receptance);
-  // every wheel a tread contact with its own roughness (Sec. 5.2: uncorrelated sources)
+  for (const WheelNoise* w : all_contacts(wheels, patches)) alpha.push_back(w->contact_receptance);
   return noise::solve_contact_set_loop(
-      s, alpha, noise::independent_sources(std::vector<bool>(wheels.size(), true)));
+      s, alpha, noise::independent_sources(excited_contacts(wheels.size(), patches.size(), nc)));
 }
 
 std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
                                            const std::vector<WheelNoise>& wheels,
-                                           const NoiseCase& nc,
-                                           const std::vector<double>& centres) {
-  std::vector<std::vector<double>> levels;  // source e = wheel e, with its patch's contact filter
-  for (const WheelNoise& w : wheels) {
+                                           const NoiseCase& nc, const std::vector<double>& centres,
+                                           const std::vector<WheelNoise>& patches) {
+  const std::vector<const WheelNoise*> contacts = all_contacts(wheels, patches);
+  const std::vector<bool> excited = excited_contacts(wheels.size(), patches.size(), nc);
+  // source e = the e-th excited contact, with that patch's contact filter
+  std::vector<std::vector<double>> levels;
+  for (std::size_t a = 0; a < contacts.size(); ++a) {
+    if (!excited[a]) continue;
     noise::ContactFilter filter;
     filter.model = nc.filter;
-    filter.a = w.contact.a;
-    filter.b = w.contact.b;
-    levels.push_back(
-        noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, w.contact.speed, filter)
-            .levels(centres));
+    filter.a = contacts[a]->contact.a;
+    filter.b = contacts[a]->contact.b;
+    levels.push_back(noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness,
+                                             contacts[a]->contact.speed, filter)
+                         .levels(centres));
   }
   std::vector<noise::BandLevels> out;
-  for (int a = 0; a < static_cast<int>(wheels.size()); ++a)
+  for (int a = 0; a < static_cast<int>(contacts.size()); ++a)
     out.push_back(noise::contact_band_levels(loop, a, centres, levels));
   return out;
 }

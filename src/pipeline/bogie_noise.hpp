@@ -5,32 +5,55 @@
 // (noise::contact_set_structures: rigid wheelset, flexible wheel, each rail's transfer receptance),
 // each wheel's own contact receptance alpha_c (its k_N, f(w), g(w)), and one uncorrelated roughness
 // source per wheel (Sec. 5.2, M3-M4).
+//
+// A second patch of a wheel (noise.second_patch = "coupled": the flange patch of a two-point
+// contact, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.4) is one more ContactPoint of its
+// wheel (same wheelset, side and rail_x, its own position on the flank), with its own alpha_c (its
+// loop's k_N, f, g at its own mean state); it has a roughness source of its own only with
+// noise.second_patch_roughness = "own". Contacts: the wheels in their order, then the patches.
 #pragma once
 
 #include <vector>
 
 #include "noise/bands.hpp"
 #include "noise/contact_set_loop.hpp"
+#include "pipeline/curve_setup.hpp"
 #include "pipeline/noise_case.hpp"
 #include "pipeline/wheel_noise.hpp"
 
 namespace rollnoise::pipeline {
 
-/// The contact points of the wheels (in their order).
+/// The contact points of the wheels (in their order), then of the second patches.
 std::vector<noise::ContactPoint> bogie_contacts(const std::vector<WheelNoise>& wheels,
-                                                const NoiseCase& nc);
+                                                const NoiseCase& nc,
+                                                const std::vector<WheelNoise>& patches = {});
+
+/// The second patches (noise.second_patch = "coupled"): the flange patch of the leading outer
+/// wheel when its state is a two-point contact and the wheel is among `wheels`, with its loop
+/// alone (wheel_noise on the shared spectra); empty otherwise. InputError naming
+/// noise.second_patch with noise.contact_coupling = "none".
+std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCase& base,
+                                       const NoiseCase& nc, const std::vector<WheelNoise>& wheels,
+                                       const noise::StructureSpectra& spectra,
+                                       const std::vector<double>& frequency);
+
+/// Which contacts of bogie_contacts have a roughness source: every wheel; a second patch with
+/// noise.second_patch_roughness = "own".
+std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, const NoiseCase& nc);
 
 /// (M3) with the wheels' contacts and one source per wheel, at `frequency`; `cross` selects the
 /// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). InputError
 /// naming noise.contact_coupling for the waveguide rail (it has no transfer between two points).
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
-                                       const noise::CrossCoupling& cross = {});
+                                       const noise::CrossCoupling& cross = {},
+                                       const std::vector<WheelNoise>& patches = {});
 
-/// Band levels (M4) of every wheel: each source with its own wheel's contact filter (a, b) on the
-/// case's roughness spectra.
+/// Band levels (M4) of every contact (the wheels, then the patches): each source with its own
+/// contact's filter (a, b) on the case's roughness spectra.
 std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
                                            const std::vector<WheelNoise>& wheels,
-                                           const NoiseCase& nc, const std::vector<double>& centres);
+                                           const NoiseCase& nc, const std::vector<double>& centres,
+                                           const std::vector<WheelNoise>& patches = {});
 
 }  // namespace rollnoise::pipeline

@@ -51,6 +51,12 @@ struct NoiseCase {
   /// and the rails (kBogie, docs/noise_loop.md Sec. 5.3) or each wheel's loop alone (kNone).
   enum class ContactCoupling { kBogie, kNone };
   ContactCoupling contact_coupling = ContactCoupling::kBogie;
+  /// noise.second_patch = "coupled": the flange patch of a two-point contact enters the bogie loop
+  /// as a second contact of its wheel (docs/noise_loop.md Sec. 7.4); "off" (false): left out.
+  bool second_patch = false;
+  /// noise.second_patch_roughness = "own": the second patch has its own roughness source; "none"
+  /// (false): it is excited through the coupling only.
+  bool second_patch_roughness = false;
   /// noise.squeal_wheelsets: squeal also per wheelset of curve.wheels (pipeline/squeal_wheels.hpp).
   bool squeal_wheelsets = false;
   /// The beam rail the loop with several contacts needs (RailLine): track, support and the

@@ -118,8 +118,10 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
   const auto t1 = Clock::now();
   r.wheels = wheel_loops(r, nc, *r.spectra);
+  r.patches = second_patches(r.curve, r.contact, nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
-    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(bogie_loop(r.wheels, nc, r.axis.frequency));
+    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
+        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
   r.seconds_wheels = seconds_since(t1);
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
@@ -194,8 +196,9 @@ void add_bands(NoiseResult& r, const NoiseCase& nc) {
   }
   if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
   if (r.bogie) {
-    const std::vector<noise::BandLevels> b = bogie_bands(*r.bogie, r.wheels, nc, centres);
+    const std::vector<noise::BandLevels> b = bogie_bands(*r.bogie, r.wheels, nc, centres, r.patches);
     for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
+    for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].bands = b[r.wheels.size() + k];
     return;
   }
   for (WheelNoise& w : r.wheels)

@@ -87,6 +87,10 @@ struct NoiseResult {
   /// noise.contact_coupling = "bogie": the loop with all the wheels' contacts (contact a = wheels[a],
   /// one source each; pipeline/bogie_noise.hpp); then wheels[a].bands are its levels.
   std::shared_ptr<const noise::ContactSetLoopResult> bogie;
+  /// noise.second_patch = "coupled": the second patch of a wheel (the flange patch of a two-point
+  /// contact; pipeline/bogie_noise.hpp), its loop alone, and with `bogie` its coupled levels
+  /// (contact wheels.size() + k of the bogie loop).
+  std::vector<WheelNoise> patches;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
 };
 

@@ -73,6 +73,8 @@ TEST(SchemaDefaults, DefaultConstructedStructsHoldTheSchemaDefaults) {
                           "noise.normal_coupling",
                           "noise.contact_coupling",
                           "noise.squeal_wheelsets",
+                          "noise.second_patch",
+                          "noise.second_patch_roughness",
                           "noise.compare",
                           "noise.band_min",
                           "noise.band_max",
@@ -104,6 +106,8 @@ TEST(SchemaDefaults, DefaultConstructedStructsHoldTheSchemaDefaults) {
   EXPECT_EQ(n.normal_coupling, n0.normal_coupling) << "noise.normal_coupling";
   EXPECT_EQ(n.contact_coupling, n0.contact_coupling) << "noise.contact_coupling";
   EXPECT_EQ(n.squeal_wheelsets, n0.squeal_wheelsets) << "noise.squeal_wheelsets";
+  EXPECT_EQ(n.second_patch, n0.second_patch) << "noise.second_patch";
+  EXPECT_EQ(n.second_patch_roughness, n0.second_patch_roughness) << "noise.second_patch_roughness";
   EXPECT_EQ(n.compare, n0.compare) << "noise.compare";
   EXPECT_EQ(n.band_min, n0.band_min) << "noise.band_min";
   EXPECT_EQ(n.band_max, n0.band_max) << "noise.band_max";

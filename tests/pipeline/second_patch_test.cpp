@@ -1,0 +1,156 @@
+// The flange patch of a two-point contact as a second contact of the flanging wheel
+// (pipeline/bogie_noise.hpp, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.4), on the 300 m
+// curve's leading wheelset (the leading outer wheel at its flange, a two-point state).
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "io/case_reader.hpp"
+#include "io/noise_case.hpp"
+#include "pipeline/bogie_noise.hpp"
+#include "pipeline/noise_pipeline.hpp"
+
+namespace {
+
+using namespace rollnoise;
+using cd = std::complex<double>;
+
+// The leading wheelset of the 300 m curve with the flange patch coupled: 8 points per band up to
+// 1 kHz, 24 elements in x (cheap), continuous support (the point receptance is the same at every
+// rail position).
+io::NoiseInputs leading_wheelset_with_flange_patch() {
+  const std::vector<std::string> o = {
+      "noise.points_per_band=4",       "noise.band_max=1000.0",
+      "noise.compare=\"none\"",        "grid.nx=24",
+      "track.support=\"continuous\"",  "noise.second_patch=\"coupled\"",
+      "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
+  return io::read_noise_inputs(io::CaseReader::from_file(
+      std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o));
+}
+
+double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
+  return (a - b).norm() / std::max(b.norm(), 1e-300);
+}
+
+// Smallest eigenvalue of the dissipation matrix -(A - A^H)/2i after equilibration, relative to the
+// largest (>= 0 for a passive receptance A).
+double relative_min_dissipation(const Eigen::MatrixXcd& A) {
+  Eigen::VectorXd d(A.rows());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
+  const Eigen::MatrixXcd D = d.cast<cd>().asDiagonal();
+  const Eigen::MatrixXcd Q = D * (-(A - A.adjoint()) / cd(0.0, 2.0)) * D;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(Q);
+  const double scale = es.eigenvalues().cwiseAbs().maxCoeff();
+  return scale > 0 ? es.eigenvalues().minCoeff() / scale : 0.0;
+}
+
+class SecondPatch : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    in_ = new io::NoiseInputs(leading_wheelset_with_flange_patch());
+    r_ = new pipeline::NoiseResult(pipeline::run_noise(in_->contact, in_->noise));
+  }
+  static void TearDownTestSuite() {
+    delete r_;
+    delete in_;
+  }
+  static io::NoiseInputs* in_;
+  static pipeline::NoiseResult* r_;
+};
+io::NoiseInputs* SecondPatch::in_ = nullptr;
+pipeline::NoiseResult* SecondPatch::r_ = nullptr;
+
+// The 300 m state is a two-point contact: the flange patch is found on the flank (angle within
+// 0.1 rad of the estimate's flange angle, nearer the flange than the tread patch on wheel and
+// rail), lowered under the estimate's flange vertical load Q_f (1e-8 relative, (V1)), and its
+// normal pushes the wheel mostly laterally (|F_lat| from N > the vertical share N cos delta).
+TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
+  ASSERT_TRUE(r_->curve.state && r_->curve.state->two_point);
+  ASSERT_EQ(r_->patches.size(), 1u);
+  const noise::CurveContactState& s = *r_->curve.state;
+  const noise::WheelContact& p = r_->patches[0].state;
+  const noise::WheelContact& tread = r_->wheels[0].state;
+  EXPECT_EQ(p.wheel, noise::WheelId::leading_outer);
+  EXPECT_GE(p.contact.contact_angle, s.flange_angle - 0.1);
+  EXPECT_LT(p.contact.wheel_s, tread.contact.wheel_s);  // towards the flange (field side > 0)
+  EXPECT_LT(p.contact.rail_y, tread.contact.rail_y);    // on the gauge face
+  EXPECT_NEAR(p.loaded->vertical_load, s.flange_vertical_load, 1e-8 * s.flange_vertical_load);
+  EXPECT_GT(p.normal_force() * std::sin(p.contact.contact_angle),
+            p.normal_force() * std::cos(p.contact.contact_angle));
+  std::printf("  flange patch: angle %.3f rad, wheel s %.1f mm, rail %.1f mm, Q_f %.2f kN, N %.2f kN, "
+              "k_N %.3e N/m (tread: angle %.3f rad, k_N %.3e N/m)\n",
+              p.contact.contact_angle, 1e3 * p.contact.wheel_s, 1e3 * p.contact.rail_y,
+              1e-3 * p.vertical_load, 1e-3 * p.normal_force(), r_->patches[0].normal_stiffness,
+              tread.contact.contact_angle, r_->wheels[0].normal_stiffness);
+}
+
+// With every cross term off, the loop with the second patch splits into single-contact loops:
+// each wheel's forces and velocities equal its loop alone to 1e-10 (relative, per frequency), and
+// the second patch, without a roughness source of its own, carries no force at all.
+TEST_F(SecondPatch, WithoutCouplingTheTreadContactsAreTheirSingleLoopsAndThePatchIsAtRest) {
+  const noise::ContactSetLoopResult alone = pipeline::bogie_loop(
+      r_->wheels, in_->noise, r_->axis.frequency, noise::CrossCoupling::none(), r_->patches);
+  ASSERT_EQ(alone.contacts(), 3);
+  ASSERT_EQ(alone.sources(), 2);
+  double worst = 0.0, patch = 0.0;
+  for (int a = 0; a < 2; ++a) {
+    const noise::LoopResult& single = r_->wheels[a].loop;
+    const noise::LoopResult set = noise::contact_response(alone, a, a);
+    for (std::size_t k = 0; k < single.frequency.size(); ++k) {
+      worst = std::max(worst, relative_difference(set.force[k], single.force[k]));
+      worst = std::max(worst, relative_difference(set.wheel_velocity[k], single.wheel_velocity[k]));
+      worst = std::max(worst, relative_difference(set.rail_velocity[k], single.rail_velocity[k]));
+    }
+  }
+  for (const Eigen::MatrixXcd& F : alone.force) patch = std::max(patch, F.middleRows(8, 4).norm());
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_EQ(patch, 0.0);
+  std::printf("  uncoupled loop with the flange patch vs single-contact loops: %.1e relative\n",
+              worst);
+}
+
+// Coupled, the flange patch is driven through the wheel and the rail: its force is not zero, and
+// the tread contact's levels move (the coupling does something).
+TEST_F(SecondPatch, CoupledPatchIsDrivenThroughTheStructures) {
+  ASSERT_TRUE(r_->bogie);
+  ASSERT_EQ(r_->bogie->contacts(), 3);
+  double patch = 0.0;
+  for (const Eigen::MatrixXcd& F : r_->bogie->force) patch = std::max(patch, F.middleRows(8, 4).norm());
+  EXPECT_GT(patch, 0.0);
+  const std::vector<noise::BandLevels> off =
+      pipeline::bogie_bands(pipeline::bogie_loop(r_->wheels, in_->noise, r_->axis.frequency),
+                            r_->wheels, in_->noise, r_->axis.centres);
+  double moved = 0.0;
+  for (std::size_t j = 0; j < off[0].centre.size(); ++j)
+    for (int i = 0; i < 4; ++i)
+      moved = std::max(moved, std::abs(r_->wheels[0].bands.force_level[j][i] - off[0].force_level[j][i]));
+  EXPECT_GT(moved, 0.01);
+  std::printf("  flange patch coupled vs off: the tread contact's force levels move by up to %.2f dB\n",
+              moved);
+}
+
+// The structures between the three contacts (two treads and the flange patch, all cross terms,
+// the shipped track with discrete support): wheel and rail receptances symmetric (reciprocity,
+// M1) to 1e-12 relative and passive (dissipation >= -1e-10 of its largest eigenvalue).
+TEST_F(SecondPatch, AssembledReceptanceWithTwoPatchesIsSymmetricAndPassive) {
+  const pipeline::NoiseCase& nc = in_->noise;
+  const std::vector<noise::ContactPoint> cs = pipeline::bogie_contacts(r_->wheels, nc, r_->patches);
+  ASSERT_EQ(cs.size(), 3u);
+  const noise::RailLine rail(*nc.rail_track, dynamics::TrackSupport::kDiscrete);
+  for (double f : {80.0, 340.0, 1010.0, 2460.0, 4200.0}) {
+    const noise::ContactSetReceptance r = noise::contact_set_receptance(*nc.wheel, rail, cs, f);
+    EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-12 * r.wheel.norm()) << f;
+    EXPECT_LE((r.rail - r.rail.transpose()).norm(), 1e-12 * r.rail.norm()) << f;
+    EXPECT_GT(r.wheel.block(0, 8, 4, 4).norm(), 0.0);  // tread and flange of one wheel
+    EXPECT_GT(r.rail.block(0, 8, 4, 4).norm(), 0.0);   // on one rail
+    EXPECT_GE(relative_min_dissipation(r.wheel), -1e-10) << f;
+    EXPECT_GE(relative_min_dissipation(r.rail), -1e-10) << f;
+    EXPECT_GE(relative_min_dissipation(r.wheel + r.rail), -1e-10) << f;
+  }
+}
+
+}  // namespace
