@@ -139,7 +139,13 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.use_nss = r.string("noise.contact_model") == "nss"; });
   problems.check([&] { c.normal_coupling = r.string("noise.normal_coupling") == "on"; });
   problems.check([&] { c.squeal_wheelsets = r.string("noise.squeal_wheelsets") == "on"; });
-  problems.check([&] { c.second_patch = r.string("noise.second_patch") == "coupled"; });
+  problems.check([&] {
+    c.second_patch = r.string("noise.second_patch") == "coupled";
+    if (c.second_patch && r.string("noise.contact_coupling") == "none")
+      r.fail("noise.second_patch",
+             "a second patch is a contact of the bogie loop: \"coupled\" needs "
+             "noise.contact_coupling = \"bogie\"");
+  });
   problems.check(
       [&] { c.second_patch_roughness = r.string("noise.second_patch_roughness") == "own"; });
   problems.check([&] {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "io/case_reader.hpp"
+#include "core/errors.hpp"
 #include "io/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/noise_pipeline.hpp"
@@ -150,6 +151,19 @@ TEST_F(SecondPatch, AssembledReceptanceWithTwoPatchesIsSymmetricAndPassive) {
     EXPECT_GE(relative_min_dissipation(r.wheel), -1e-10) << f;
     EXPECT_GE(relative_min_dissipation(r.rail), -1e-10) << f;
     EXPECT_GE(relative_min_dissipation(r.wheel + r.rail), -1e-10) << f;
+  }
+}
+
+// A second patch without the bogie loop is an input error naming noise.second_patch (at reading,
+// before any work).
+TEST(SecondPatchInput, CoupledPatchWithoutTheBogieLoopNamesTheKey) {
+  try {
+    io::read_noise_inputs(io::CaseReader::from_file(
+        std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_flange_300m.toml",
+        {"noise.contact_coupling=\"none\""}));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "noise.second_patch");
   }
 }
 
