@@ -9,7 +9,8 @@ comparison baseline (dotted, /noise/quasi_steady or /noise/kalker), with the eff
 and, on the Fy panel, the mu-scaled normal force 20 log10|Fy_mean/N| + L_Fz) and PREFIX_transfer.png
 (narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants), and with
 /noise/wheels (curve.wheels) PREFIX_wheels.png: each wheel's band levels of Fz, Fx, Fy, Mz (its
-attribute `loop` says whether the wheels were coupled, noise.contact_coupling).
+attribute `loop` says whether the wheels were coupled, noise.contact_coupling), and a second patch's
+(noise.second_patch) as one more line.
 Files written before the coupling existed (only /noise/kalker) are plotted too. Band axes are
 labelled with the nominal band centres (..., 400, 500, 630, ..., 5000 Hz).
 """
@@ -60,6 +61,9 @@ def main():
             for name in WHEELS:
                 if f"/noise/wheels/{name}/bands/force_level" in f:
                     wheels.append((name, f[f"/noise/wheels/{name}/bands/force_level"][:]))
+                patch = f"/noise/wheels/{name}/patches/1/bands/force_level"
+                if patch in f:  # noise.second_patch = "coupled": the flange patch (noise_loop.md 7.4)
+                    wheels.append((name + " flange patch", f[patch][:]))
     title = f"{args.file}: mean creepage ({creep[0]:.3g}, {creep[1]:.3g}, {creep[2]:.3g} rad/m)"
 
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
@@ -105,7 +109,8 @@ def plot_wheels(wheels, loop, centre, name, path):
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
     x = np.arange(len(centre))
     styles = {"leading_outer": ("k", "-"), "leading_inner": ("tab:blue", "-"),
-              "trailing_outer": ("k", "--"), "trailing_inner": ("tab:blue", "--")}
+              "trailing_outer": ("k", "--"), "trailing_inner": ("tab:blue", "--"),
+              "leading_outer flange patch": ("tab:red", ":")}
     for j, ax in enumerate(axes.flat):
         for wheel, level in wheels:
             c, ls = styles[wheel]
