@@ -34,18 +34,11 @@ std::optional<WheelContact> flange_patch_contact(const CurveStateInput& in,
   f.yaw = s.yaw;
   f.contact = *flank;
   f.other_rolling_radius = s.inner_rolling_radius;
-  f.creepage = kinematic_creepage(f.contact, f.other_rolling_radius,
-                                  pair.wheelset().nominal_radius, w.inverse_radius);
+  f.creepage = kinematic_creepage(f.contact, f.other_rolling_radius, pair.wheelset().nominal_radius,
+                                  w.inverse_radius);
   f.vertical_load = s.flange_vertical_load;
   // A planar patch at the flank's angle, lowered under Q_f ((V1) of loaded_contact.hpp).
-  geometry::VerticalLoadInput v;
-  v.vertical_load = s.flange_vertical_load;
-  v.material = w.material;
-  v.grid = w.grid;
-  v.grid.nx = std::min(v.grid.nx, w.lowering_nx);
-  v.rolling = contact::SteadyRollingInput(w.friction, w.speed,
-                                          {f.creepage(0), f.creepage(1), f.creepage(2)},
-                                          w.spin_offset);
+  geometry::VerticalLoadInput v = vertical_load_input(w, f.creepage, s.flange_vertical_load);
   v.max_iterations = 200;  // contraction factor mu tan(delta) ~ 0.8 at 70 degrees
   f.loaded = std::make_shared<const geometry::LoadedContact>(
       geometry::lower_under_vertical_load(pair, f.contact, v));

@@ -14,8 +14,8 @@
 //    flank's own steady state; the tread patch keeps its own lowering (the estimate's flange share
 //    is not taken off it: Sec. 7.2 step 5).
 //  * creepages: (K2') at the flank point (its rolling radius r_f, lateral position y_f, angle):
-//    xi_x = y_f/R - (r_f - r_i)/(2 r0), xi_y = -psi/cos(delta), phi = -sin(delta)/r_f - cos(delta)/R.
-//    The flank's larger radius makes xi_x large: the flange patch is in full slip.
+//    xi_x = y_f/R - (r_f - r_i)/(2 r0), xi_y = -psi/cos(delta), phi = -sin(delta)/r_f -
+//    cos(delta)/R. The flank's larger radius makes xi_x large: the flange patch is in full slip.
 #pragma once
 
 #include <optional>

@@ -40,6 +40,19 @@ Eigen::Vector3d kinematic_creepage(const geometry::ContactGeometry& c, double ot
           -c.local_pose.yaw / std::cos(gamma), -std::sin(gamma) / rc - kappa * std::cos(gamma)};
 }
 
+geometry::VerticalLoadInput vertical_load_input(const WheelContactInput& in,
+                                                const Eigen::Vector3d& creepage,
+                                                double vertical_load) {
+  geometry::VerticalLoadInput v;
+  v.vertical_load = vertical_load;
+  v.material = in.material;
+  v.grid = in.grid;
+  v.grid.nx = std::min(v.grid.nx, in.lowering_nx);
+  v.rolling = contact::SteadyRollingInput(in.friction, in.speed,
+                                          {creepage(0), creepage(1), creepage(2)}, in.spin_offset);
+  return v;
+}
+
 WheelContact wheel_contact(const WheelContactInput& in) {
   if (!in.pair) throw InputError("contact.geometry", "a wheel's contact state needs the profiles");
   if (!(in.vertical_load > 0.0) || !std::isfinite(in.vertical_load))
@@ -64,13 +77,7 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   w.vertical_load = in.vertical_load;
   // Lowered vertically under Q_w on the curved surface (curved_contact.hpp), in this side's frame:
   // its yaw c.local_pose.yaw and curvature kappa.
-  geometry::VerticalLoadInput v;
-  v.vertical_load = in.vertical_load;
-  v.material = in.material;
-  v.grid = in.grid;
-  v.grid.nx = std::min(v.grid.nx, in.lowering_nx);
-  v.rolling = contact::SteadyRollingInput(
-      in.friction, in.speed, {w.creepage(0), w.creepage(1), w.creepage(2)}, in.spin_offset);
+  geometry::VerticalLoadInput v = vertical_load_input(in, w.creepage, in.vertical_load);
   v.curved = true;
   v.yaw = w.contact.local_pose.yaw;
   v.inverse_radius = kappa;

@@ -95,6 +95,13 @@ struct WheelContact {
 Eigen::Vector3d kinematic_creepage(const geometry::ContactGeometry& c, double other_rolling_radius,
                                    double nominal_radius, double kappa);
 
+/// The lowering's input for the wheel `in` (material, grid with at most in.lowering_nx elements in
+/// x, friction, speed, spin offset) at the creepages (xi_x, xi_y, phi) and vertical load (N);
+/// planar.
+geometry::VerticalLoadInput vertical_load_input(const WheelContactInput& in,
+                                                const Eigen::Vector3d& creepage,
+                                                double vertical_load);
+
 /// The wheel's contact: contact point of its side at (u, psi), creepages, the patch lowered
 /// under its vertical load. InputError naming curve.wheels for an input outside the model.
 WheelContact wheel_contact(const WheelContactInput& in);

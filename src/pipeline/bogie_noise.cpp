@@ -47,10 +47,9 @@ std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCas
     throw InputError("noise.second_patch",
                      "a second patch is a contact of the bogie loop: \"coupled\" needs "
                      "noise.contact_coupling = \"bogie\"");
-  const bool leading_outer =
-      std::any_of(wheels.begin(), wheels.end(), [](const WheelNoise& w) {
-        return w.state.wheel == noise::WheelId::leading_outer;
-      });
+  const bool leading_outer = std::any_of(wheels.begin(), wheels.end(), [](const WheelNoise& w) {
+    return w.state.wheel == noise::WheelId::leading_outer;
+  });
   if (!curve.state || !curve.state_input || !leading_outer) return {};
   const std::optional<noise::WheelContact> flange =
       noise::flange_patch_contact(*curve.state_input, *curve.state);

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "io/case_reader.hpp"
 #include "core/errors.hpp"
+#include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/noise_pipeline.hpp"
@@ -23,13 +23,15 @@ using cd = std::complex<double>;
 // 1 kHz, 24 elements in x (cheap), continuous support (the point receptance is the same at every
 // rail position).
 io::NoiseInputs leading_wheelset_with_flange_patch() {
-  const std::vector<std::string> o = {
-      "noise.points_per_band=4",       "noise.band_max=1000.0",
-      "noise.compare=\"none\"",        "grid.nx=24",
-      "track.support=\"continuous\"",  "noise.second_patch=\"coupled\"",
-      "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
-  return io::read_noise_inputs(io::CaseReader::from_file(
-      std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o));
+  const std::vector<std::string> o = {"noise.points_per_band=4",
+                                      "noise.band_max=1000.0",
+                                      "noise.compare=\"none\"",
+                                      "grid.nx=24",
+                                      "track.support=\"continuous\"",
+                                      "noise.second_patch=\"coupled\"",
+                                      "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
+  return io::read_noise_inputs(
+      io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o));
 }
 
 double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
@@ -82,11 +84,12 @@ TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
   EXPECT_NEAR(p.loaded->vertical_load, s.flange_vertical_load, 1e-8 * s.flange_vertical_load);
   EXPECT_GT(p.normal_force() * std::sin(p.contact.contact_angle),
             p.normal_force() * std::cos(p.contact.contact_angle));
-  std::printf("  flange patch: angle %.3f rad, wheel s %.1f mm, rail %.1f mm, Q_f %.2f kN, N %.2f kN, "
-              "k_N %.3e N/m (tread: angle %.3f rad, k_N %.3e N/m)\n",
-              p.contact.contact_angle, 1e3 * p.contact.wheel_s, 1e3 * p.contact.rail_y,
-              1e-3 * p.vertical_load, 1e-3 * p.normal_force(), r_->patches[0].normal_stiffness,
-              tread.contact.contact_angle, r_->wheels[0].normal_stiffness);
+  std::printf(
+      "  flange patch: angle %.3f rad, wheel s %.1f mm, rail %.1f mm, Q_f %.2f kN, N %.2f kN, "
+      "k_N %.3e N/m (tread: angle %.3f rad, k_N %.3e N/m)\n",
+      p.contact.contact_angle, 1e3 * p.contact.wheel_s, 1e3 * p.contact.rail_y,
+      1e-3 * p.vertical_load, 1e-3 * p.normal_force(), r_->patches[0].normal_stiffness,
+      tread.contact.contact_angle, r_->wheels[0].normal_stiffness);
 }
 
 // With every cross term off, the loop with the second patch splits into single-contact loops:
@@ -120,7 +123,8 @@ TEST_F(SecondPatch, CoupledPatchIsDrivenThroughTheStructures) {
   ASSERT_TRUE(r_->bogie);
   ASSERT_EQ(r_->bogie->contacts(), 3);
   double patch = 0.0;
-  for (const Eigen::MatrixXcd& F : r_->bogie->force) patch = std::max(patch, F.middleRows(8, 4).norm());
+  for (const Eigen::MatrixXcd& F : r_->bogie->force)
+    patch = std::max(patch, F.middleRows(8, 4).norm());
   EXPECT_GT(patch, 0.0);
   const std::vector<noise::BandLevels> off =
       pipeline::bogie_bands(pipeline::bogie_loop(r_->wheels, in_->noise, r_->axis.frequency),
@@ -128,10 +132,12 @@ TEST_F(SecondPatch, CoupledPatchIsDrivenThroughTheStructures) {
   double moved = 0.0;
   for (std::size_t j = 0; j < off[0].centre.size(); ++j)
     for (int i = 0; i < 4; ++i)
-      moved = std::max(moved, std::abs(r_->wheels[0].bands.force_level[j][i] - off[0].force_level[j][i]));
+      moved = std::max(moved,
+                       std::abs(r_->wheels[0].bands.force_level[j][i] - off[0].force_level[j][i]));
   EXPECT_GT(moved, 0.01);
-  std::printf("  flange patch coupled vs off: the tread contact's force levels move by up to %.2f dB\n",
-              moved);
+  std::printf(
+      "  flange patch coupled vs off: the tread contact's force levels move by up to %.2f dB\n",
+      moved);
 }
 
 // The structures between the three contacts (two treads and the flange patch, all cross terms,
