@@ -28,8 +28,8 @@
 //     CONTACT module 1 with a prescribed vertical force and its curved-surface option): N and F_y
 //     from the steady rolling solution of the patch, (K8) = (V1). A patch that wraps onto the
 //     flank carries the flank's share: the estimate's flange share is reported, not added.
-// The flange contact is not a second coupling point of the loop (a later step): its load is
-// reported, the loop runs on the tread contact.
+// The flange contact is reported here; with noise.second_patch = "coupled" it becomes a second
+// contact of the wheel in the bogie loop (noise/flange_patch.hpp).
 #pragma once
 
 #include <Eigen/Core>
