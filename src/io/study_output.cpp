@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
@@ -15,6 +17,7 @@
 #include "io/noise_output.hpp"
 #include "io/output_files.hpp"
 #include "noise/roughness.hpp"
+#include "noise/wheel_contact.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -35,11 +38,130 @@ std::string number(double v) {
   return buf;
 }
 
+constexpr noise::WheelId kWheels[4] = {noise::WheelId::leading_outer, noise::WheelId::leading_inner,
+                                       noise::WheelId::trailing_outer, noise::WheelId::trailing_inner};
+
 const char* status_name(CaseStatus s) {
   return s == CaseStatus::kComplete ? "complete"
          : s == CaseStatus::kFailed ? "failed"
          : s == CaseStatus::kStale  ? "stale"
                                     : "missing";
+}
+
+// /noise/wheels/<wheel> of a case file: the wheels whose contact state and bands are all there.
+std::vector<WheelRecord> read_wheel_records(const Hdf5Reader& h, std::size_t nb) {
+  std::vector<WheelRecord> out;
+  for (noise::WheelId id : kWheels) {
+    const std::string g = std::string("/noise/wheels/") + noise::wheel_name(id);
+    const auto creepage = h.numbers(g + "/contact/creepage"), angle = h.numbers(g + "/contact/angle"),
+               normal = h.numbers(g + "/contact/normal_force"), force = h.numbers(g + "/bands/force_level"),
+               velocity = h.numbers(g + "/bands/velocity_level");
+    if (!creepage || creepage->size() != 3 || !angle || angle->empty() || !normal || normal->empty() || !force ||
+        !velocity || force->size() != 4 * nb || velocity->size() != 8 * nb)
+      continue;
+    WheelRecord w;
+    w.name = noise::wheel_name(id);
+    w.creepage = {(*creepage)[0], (*creepage)[1], (*creepage)[2]};
+    w.contact_angle = angle->front();
+    w.normal_force = normal->front();
+    w.force_level = *force;
+    w.velocity_level = *velocity;
+    out.push_back(std::move(w));
+  }
+  return out;
+}
+
+// Band levels of every row on the study's band centres (NaN where a row has none): n x nb x 4
+// forces and n x nb x 8 velocities. `levels(i)` gives row i's record (its band centres) and the
+// levels to take (a case's own, or one wheel's), or nulls.
+struct BandTable {
+  std::vector<double> force, velocity;
+};
+using RowLevels = std::function<std::pair<const CaseRecord*, const std::vector<double>*>(std::size_t, bool)>;
+
+BandTable band_table(std::size_t n, const std::vector<double>& centres, const RowLevels& levels) {
+  const std::size_t nb = centres.size();
+  BandTable t{std::vector<double>(n * nb * 4, kNaN), std::vector<double>(n * nb * 8, kNaN)};
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [record, force] = levels(i, false);
+    if (!record || !force) continue;
+    const std::vector<double>& velocity = *levels(i, true).second;
+    for (std::size_t b = 0; b < nb; ++b)  // index of centre b in the row's bands
+      for (std::size_t k = 0; k < record->band_centre.size(); ++k) {
+        if (std::abs(record->band_centre[k] - centres[b]) > 1e-9 * centres[b]) continue;
+        for (int j = 0; j < 4; ++j) t.force[(i * nb + b) * 4 + j] = (*force)[k * 4 + j];
+        for (int j = 0; j < 8; ++j) t.velocity[(i * nb + b) * 8 + j] = velocity[k * 8 + j];
+        break;
+      }
+  }
+  return t;
+}
+
+// The CSV header of a band table: Fz_1000Hz [dB re 1 N], ..., wheel_vz_1000Hz, ..., rail_wz_...,
+// each name after `prefix` ("" for the case's own levels, "leading_inner." for a wheel's).
+void band_header(std::ostream& csv, const std::string& prefix, const std::vector<double>& centres) {
+  const char* force_names[4] = {"Fz", "Fx", "Fy", "Mz"};
+  const char* force_ref[4] = {"dB re 1 N", "dB re 1 N", "dB re 1 N", "dB re 1 N m"};
+  const char* velocity_names[4] = {"vz", "vx", "vy", "wz"};
+  const char* velocity_ref[4] = {"dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 rad/s"};
+  for (double c : centres)
+    for (int j = 0; j < 4; ++j)
+      csv << "," << prefix << force_names[j] << "_" << number(noise::nominal_centre(c)) << "Hz [" << force_ref[j] << "]";
+  for (int side = 0; side < 2; ++side)
+    for (double c : centres)
+      for (int j = 0; j < 4; ++j)
+        csv << "," << prefix << (side ? "rail_" : "wheel_") << velocity_names[j] << "_"
+            << number(noise::nominal_centre(c)) << "Hz [" << velocity_ref[j] << "]";
+}
+
+void band_cells(std::ostream& csv, const BandTable& t, std::size_t i, std::size_t nb) {
+  for (std::size_t b = 0; b < nb; ++b)
+    for (int j = 0; j < 4; ++j) csv << "," << number(t.force[(i * nb + b) * 4 + j]);
+  for (int side = 0; side < 2; ++side)
+    for (std::size_t b = 0; b < nb; ++b)
+      for (int j = 0; j < 4; ++j) csv << "," << number(t.velocity[(i * nb + b) * 8 + side * 4 + j]);
+}
+
+// One wheel's columns of the study: its contact state and band levels per row (NaN where a row
+// lacks the wheel).
+struct WheelColumns {
+  std::string name;
+  std::vector<double> creepage, angle, normal;  // n x 3, n, n
+  BandTable bands;
+};
+
+const WheelRecord* find_wheel(const StudyRow& r, const std::string& name) {
+  if (r.status != CaseStatus::kComplete) return nullptr;
+  for (const WheelRecord& w : r.record.wheels)
+    if (w.name == name) return &w;
+  return nullptr;
+}
+
+// The wheels any complete case has, in the order leading_outer ... trailing_inner.
+std::vector<WheelColumns> wheel_columns(const std::vector<StudyRow>& rows, const std::vector<double>& centres) {
+  const std::size_t n = rows.size();
+  std::vector<WheelColumns> out;
+  for (noise::WheelId id : kWheels) {
+    const std::string name = noise::wheel_name(id);
+    bool any = false;
+    for (const StudyRow& r : rows) any = any || find_wheel(r, name);
+    if (!any) continue;
+    WheelColumns c{name, std::vector<double>(3 * n, kNaN), std::vector<double>(n, kNaN),
+                   std::vector<double>(n, kNaN), {}};
+    for (std::size_t i = 0; i < n; ++i)
+      if (const WheelRecord* w = find_wheel(rows[i], name)) {
+        for (int k = 0; k < 3; ++k) c.creepage[3 * i + k] = w->creepage[k];
+        c.angle[i] = w->contact_angle;
+        c.normal[i] = w->normal_force;
+      }
+    c.bands = band_table(n, centres, [&](std::size_t i, bool velocity) {
+      const WheelRecord* w = find_wheel(rows[i], name);
+      return std::make_pair(w ? &rows[i].record : nullptr,
+                            w ? (velocity ? &w->velocity_level : &w->force_level) : nullptr);
+    });
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
 }  // namespace
@@ -95,6 +217,7 @@ std::optional<CaseRecord> read_case_record(const std::string& path) {
   c.band_centre = *centre;
   c.force_level = *force;
   c.velocity_level = *velocity;
+  c.wheels = read_wheel_records(h, centre->size());
   const auto t = h.attribute("/", "run_time");
   c.run_time = t ? std::strtod(t->c_str(), nullptr) : kNaN;
   return c;
@@ -111,15 +234,16 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
       break;
     }
   const std::size_t nb = centres.size();
-  auto band_of = [&](const StudyRow& r, std::size_t b) -> long {  // index of centre b in the row's bands
-    if (r.status != CaseStatus::kComplete) return -1;
-    for (std::size_t k = 0; k < r.record.band_centre.size(); ++k)
-      if (std::abs(r.record.band_centre[k] - centres[b]) <= 1e-9 * centres[b]) return long(k);
-    return -1;
-  };
+  const BandTable bands = band_table(n, centres, [&](std::size_t i, bool velocity) {
+    const bool complete = rows[i].status == CaseStatus::kComplete;
+    const CaseRecord& c = rows[i].record;
+    return std::make_pair(complete ? &c : nullptr,
+                          complete ? (velocity ? &c.velocity_level : &c.force_level) : nullptr);
+  });
+  const std::vector<WheelColumns> wheels = wheel_columns(rows, centres);
 
   std::vector<double> run_time(n, kNaN), creepage(3 * n, kNaN), angle(n, kNaN), normal(n, kNaN),
-      adhesion(n, kNaN), slip(n, kNaN), force(n * nb * 4, kNaN), velocity(n * nb * 8, kNaN);
+      adhesion(n, kNaN), slip(n, kNaN);
   std::vector<int> index(n), status(n);
   std::vector<std::string> message(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -135,18 +259,14 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
     normal[i] = c.normal_force;
     adhesion[i] = double(c.adhesion_elements);
     slip[i] = double(c.slip_elements);
-    for (std::size_t b = 0; b < nb; ++b) {
-      const long k = band_of(r, b);
-      if (k < 0) continue;
-      for (int j = 0; j < 4; ++j) force[(i * nb + b) * 4 + j] = c.force_level[k * 4 + j];
-      for (int j = 0; j < 8; ++j) velocity[(i * nb + b) * 8 + j] = c.velocity_level[k * 8 + j];
-    }
   }
 
   auto units_of = [](const std::string& key) {
     const KeySpec* s = find_key(key);
     return s && !s->units.empty() ? s->units : std::string("-");
   };
+  const char* force_units = "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)";
+  const char* velocity_units = "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]";
 
   {
     Hdf5Writer w(h5_path);
@@ -175,9 +295,16 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
     w.write("/study/adhesion_elements", adhesion, {n}, "-");
     w.write("/study/slip_elements", slip, {n}, "-");
     w.write("/study/band_centre", centres, {nb}, "Hz");
-    w.write("/study/force_level", force, {n, nb, 4}, "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
-    w.write("/study/velocity_level", velocity, {n, nb, 2, 4},
-            "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
+    w.write("/study/force_level", bands.force, {n, nb, 4}, force_units);
+    w.write("/study/velocity_level", bands.velocity, {n, nb, 2, 4}, velocity_units);
+    for (const WheelColumns& c : wheels) {  // as /noise/wheels/<wheel> of the cases
+      const std::string g = "/study/wheels/" + c.name + "/";
+      w.write(g + "creepage", c.creepage, {n, 3}, "-, -, rad/m (the wheel's own contact frame)");
+      w.write(g + "contact_angle", c.angle, {n}, "rad");
+      w.write(g + "normal_force", c.normal, {n}, "N");
+      w.write(g + "force_level", c.bands.force, {n, nb, 4}, force_units);
+      w.write(g + "velocity_level", c.bands.velocity, {n, nb, 2, 4}, velocity_units);
+    }
     w.attribute("/study", "base", plan.base);
     w.attribute("/study", "combine", plan.combine == pipeline::Combine::kZip ? "zip" : "product");
     w.commit();
@@ -188,17 +315,13 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
     for (const auto& a : plan.axes) csv << "," << csv_cell(a.key + " [" + units_of(a.key) + "]");
     csv << ",status,run_time [s],xi_x [-],xi_y [-],phi [rad/m],contact_angle [rad],normal_force [N],"
            "adhesion_elements [-],slip_elements [-]";
-    const char* force_names[4] = {"Fz", "Fx", "Fy", "Mz"};
-    const char* force_ref[4] = {"dB re 1 N", "dB re 1 N", "dB re 1 N", "dB re 1 N m"};
-    const char* velocity_names[4] = {"vz", "vx", "vy", "wz"};
-    const char* velocity_ref[4] = {"dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 m/s", "dB re 1e-9 rad/s"};
-    for (std::size_t b = 0; b < nb; ++b)
-      for (int j = 0; j < 4; ++j) csv << "," << force_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz [" << force_ref[j] << "]";
-    for (int side = 0; side < 2; ++side)
-      for (std::size_t b = 0; b < nb; ++b)
-        for (int j = 0; j < 4; ++j)
-          csv << "," << (side ? "rail_" : "wheel_") << velocity_names[j] << "_" << number(noise::nominal_centre(centres[b])) << "Hz ["
-              << velocity_ref[j] << "]";
+    band_header(csv, "", centres);
+    for (const WheelColumns& c : wheels) {
+      const std::string p = "," + c.name + ".";
+      csv << p << "xi_x [-]" << p << "xi_y [-]" << p << "phi [rad/m]" << p << "contact_angle [rad]" << p
+          << "normal_force [N]";
+      band_header(csv, c.name + ".", centres);
+    }
     csv << ",message\n";
     for (std::size_t i = 0; i < n; ++i) {
       const StudyRow& r = rows[i];
@@ -207,11 +330,12 @@ void write_study_table(const std::string& h5_path, const std::string& csv_path, 
       csv << "," << status_name(r.status) << "," << number(run_time[i]);
       for (int k = 0; k < 3; ++k) csv << "," << number(creepage[3 * i + k]);
       csv << "," << number(angle[i]) << "," << number(normal[i]) << "," << number(adhesion[i]) << "," << number(slip[i]);
-      for (std::size_t b = 0; b < nb; ++b)
-        for (int j = 0; j < 4; ++j) csv << "," << number(force[(i * nb + b) * 4 + j]);
-      for (int side = 0; side < 2; ++side)
-        for (std::size_t b = 0; b < nb; ++b)
-          for (int j = 0; j < 4; ++j) csv << "," << number(velocity[(i * nb + b) * 8 + side * 4 + j]);
+      band_cells(csv, bands, i, nb);
+      for (const WheelColumns& c : wheels) {
+        for (int k = 0; k < 3; ++k) csv << "," << number(c.creepage[3 * i + k]);
+        csv << "," << number(c.angle[i]) << "," << number(c.normal[i]);
+        band_cells(csv, c.bands, i, nb);
+      }
       csv << "," << csv_cell(r.message) << "\n";
     }
   }).commit();
