@@ -142,11 +142,11 @@ def main():
     with open(os.path.join(a.work, "summary.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["radius_m", a.param, "class", "max_growth_rate_1_per_s", "frequency_Hz", "unstable_modes"] +
-                   [f"{wh}_unstable_modes" for wh in WHEELS] + ["wheelsets_left_out", "message"])
+                   [f"{wh}_unstable_modes" for wh in WHEELS] + ["wheelsets_run", "wheelsets_left_out", "message"])
         for c in cells:
             w.writerow([c["radius"], c["value"], CLASS_NAMES[c["class"]], c["growth"], c["frequency"],
                         "; ".join(c["modes"])] + ["; ".join(c.get("wheel_modes", {}).get(wh, [])) for wh in WHEELS] +
-                       [c.get("left_out", ""), c["message"]])
+                       [int(c.get("wheelsets", False)), c.get("left_out", ""), c["message"]])
 
     import matplotlib
     matplotlib.use("Agg")

@@ -35,14 +35,16 @@ std::vector<std::string> curve_cases() {
     const io::CaseReader reader = io::CaseReader::from_file(e.path().string());
     try {
       if (io::read_noise_inputs(reader).noise.curve_radius > 0.0) out.push_back(e.path().string());
-    } catch (const InputError&) {  // a contact case (e.g. a given wheelset position), not a noise case
+    } catch (
+        const InputError&) {  // a contact case (e.g. a given wheelset position), not a noise case
     }
   }
   std::sort(out.begin(), out.end());
   return out;
 }
 
-TEST(WheelsetPassivity, EveryWheelOfEveryShippedCurveIsPassiveWithConstantFrictionAndNoNormalCoupling) {
+TEST(WheelsetPassivity,
+     EveryWheelOfEveryShippedCurveIsPassiveWithConstantFrictionAndNoNormalCoupling) {
   const std::vector<std::string> cases = curve_cases();
   ASSERT_GE(cases.size(), 6u) << "the shipped curve cases";
   int with_wheels = 0, roots = 0, stopped = 0;
@@ -58,10 +60,14 @@ TEST(WheelsetPassivity, EveryWheelOfEveryShippedCurveIsPassiveWithConstantFricti
                   fs::path(file).filename().string().c_str());
       continue;
     }
-    const std::vector<std::string> o = {"friction.law=\"falling\"",      "friction.kinetic_ratio=1",
-                                        "friction.decay=0",               "noise.normal_coupling=\"off\"",
-                                        "noise.squeal_wheelsets=\"on\"",  "track.support=\"continuous\"",
-                                        "grid.nx=16",                     "noise.band_min=300",
+    const std::vector<std::string> o = {"friction.law=\"falling\"",
+                                        "friction.kinetic_ratio=1",
+                                        "friction.decay=0",
+                                        "noise.normal_coupling=\"off\"",
+                                        "noise.squeal_wheelsets=\"on\"",
+                                        "track.support=\"continuous\"",
+                                        "grid.nx=16",
+                                        "noise.band_min=300",
                                         fe ? "noise.band_max=700" : "noise.band_max=1200"};
     const io::CaseReader reader = io::CaseReader::from_file(file, o);
     io::NoiseInputs in = io::read_noise_inputs(reader);
@@ -87,20 +93,23 @@ TEST(WheelsetPassivity, EveryWheelOfEveryShippedCurveIsPassiveWithConstantFricti
         stopped += !x.converged;
         converged += x.converged;
         unstable += x.unstable;
-        EXPECT_LT(x.s.real(), 0.0) << name << " " << noise::wheel_name(w.wheel) << " " << x.label << " at "
-                                   << x.frequency << " Hz, zeta " << x.damping_ratio
-                                   << (x.converged ? "" : " (continuation stopped)");
+        EXPECT_LT(x.s.real(), 0.0)
+            << name << " " << noise::wheel_name(w.wheel) << " " << x.label << " at " << x.frequency
+            << " Hz, zeta " << x.damping_ratio << (x.converged ? "" : " (continuation stopped)");
         largest = std::max(largest, x.s.real() / std::abs(x.s));
       }
-      std::printf("%-22s %s wheelset: %zu roots (%d converged), %d unstable, least damped Re s/|s| = %.3e, "
-                  "%.1f s\n",
-                  name.c_str(), noise::is_leading(ws.wheels.front()) ? "leading " : "trailing", ws.roots.size(),
-                  converged, unstable, largest, ws.seconds);
+      std::printf(
+          "%-22s %s wheelset: %zu roots (%d converged), %d unstable, least damped Re s/|s| = %.3e, "
+          "%.1f s\n",
+          name.c_str(), noise::is_leading(ws.wheels.front()) ? "leading " : "trailing",
+          ws.roots.size(), converged, unstable, largest, ws.seconds);
     }
   }
   EXPECT_GE(with_wheels, 4) << "curve cases with per-wheel states (mode-table wheel)";
-  std::printf("wheelset passivity: %d curve cases with per-wheel states, %d roots, %d continuations stopped\n",
-              with_wheels, roots, stopped);
+  std::printf(
+      "wheelset passivity: %d curve cases with per-wheel states, %d roots, %d continuations "
+      "stopped\n",
+      with_wheels, roots, stopped);
   // the n = 1 clusters (docs/squeal.md Sec. 9.1) may stop; no more than a quarter of the roots
   EXPECT_LE(stopped, roots / 4);
 }

@@ -1,6 +1,7 @@
 // A study of a case with several wheels (curve.wheels): each case file holds every wheel's bands as
 // `rollnoise noise` writes them (/noise/wheels/<wheel>/bands/*), and `collect` gives each wheel its
-// columns (`leading_inner.Fy_1000Hz [dB re 1 N]`, /study/wheels/<wheel>/*) with the case files' values.
+// columns (`leading_inner.Fy_1000Hz [dB re 1 N]`, /study/wheels/<wheel>/*) with the case files'
+// values.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -81,31 +82,40 @@ TEST(StudyWheels, CollectedPerWheelColumnsEqualTheCaseFilesBandLevels) {
   const std::size_t nb = centres.size();
   const char* force_names[4] = {"Fz", "Fx", "Fy", "Mz"};
   for (const std::string wheel : {"leading_outer", "leading_inner"}) {
-    const std::vector<double> study_force = read_doubles(h5, "/study/wheels/" + wheel + "/force_level"),
-                              study_velocity = read_doubles(h5, "/study/wheels/" + wheel + "/velocity_level");
+    const std::vector<double> study_force =
+                                  read_doubles(h5, "/study/wheels/" + wheel + "/force_level"),
+                              study_velocity =
+                                  read_doubles(h5, "/study/wheels/" + wheel + "/velocity_level");
     ASSERT_EQ(study_force.size(), 2 * nb * 4) << wheel;
     ASSERT_EQ(study_velocity.size(), 2 * nb * 8) << wheel;
     for (int k = 0; k < 2; ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "out/case_%04d.h5", k);
       const std::string file = (d / name).string();
-      const std::vector<double> force = read_doubles(file, "/noise/wheels/" + wheel + "/bands/force_level"),
-                                velocity = read_doubles(file, "/noise/wheels/" + wheel + "/bands/velocity_level");
-      ASSERT_EQ(force.size(), nb * 4) << "the case file has the wheel's bands: " << file << " " << wheel;
+      const std::vector<double> force = read_doubles(
+                                    file, "/noise/wheels/" + wheel + "/bands/force_level"),
+                                velocity = read_doubles(
+                                    file, "/noise/wheels/" + wheel + "/bands/velocity_level");
+      ASSERT_EQ(force.size(), nb * 4)
+          << "the case file has the wheel's bands: " << file << " " << wheel;
       ASSERT_EQ(velocity.size(), nb * 8) << file << " " << wheel;
       // study.h5: the case file's values exactly (copied, not recomputed)
-      for (std::size_t j = 0; j < nb * 4; ++j) EXPECT_EQ(study_force[k * nb * 4 + j], force[j]) << wheel << " " << j;
+      for (std::size_t j = 0; j < nb * 4; ++j)
+        EXPECT_EQ(study_force[k * nb * 4 + j], force[j]) << wheel << " " << j;
       for (std::size_t j = 0; j < nb * 8; ++j)
         EXPECT_EQ(study_velocity[k * nb * 8 + j], velocity[j]) << wheel << " " << j;
-      // study.csv: the same to its 10 significant digits (|level| < 200 dB: 2e-7 dB). The wheel's band
-      // columns follow each other as the case's own do: nb x (Fz, Fx, Fy, Mz), then [wheel, rail] x nb x 4.
+      // study.csv: the same to its 10 significant digits (|level| < 200 dB: 2e-7 dB). The wheel's
+      // band columns follow each other as the case's own do: nb x (Fz, Fx, Fy, Mz), then [wheel,
+      // rail] x nb x 4.
       std::size_t first = header.size();
       for (std::size_t q = 0; q < header.size() && first == header.size(); ++q)
         if (header[q].rfind(wheel + ".Fz_", 0) == 0) first = q;
       ASSERT_LT(first + 12 * nb, header.size()) << header_line;
       for (std::size_t j = 0; j < nb * 4; ++j) {
-        EXPECT_EQ(header[first + j].rfind(wheel + "." + force_names[j % 4] + "_", 0), 0u) << header[first + j];
-        EXPECT_NEAR(std::stod(rows[k].at(first + j)), force[j], 2e-7) << header[first + j] << ", case " << k;
+        EXPECT_EQ(header[first + j].rfind(wheel + "." + force_names[j % 4] + "_", 0), 0u)
+            << header[first + j];
+        EXPECT_NEAR(std::stod(rows[k].at(first + j)), force[j], 2e-7)
+            << header[first + j] << ", case " << k;
       }
       for (int side = 0; side < 2; ++side)
         for (std::size_t j = 0; j < nb * 4; ++j) {
@@ -116,9 +126,11 @@ TEST(StudyWheels, CollectedPerWheelColumnsEqualTheCaseFilesBandLevels) {
         }
     }
   }
-  // the two roughness spectra give the wheels different levels (the wheels' bands follow each case's roughness)
+  // the two roughness spectra give the wheels different levels (the wheels' bands follow each
+  // case's roughness)
   const std::vector<double> inner = read_doubles(h5, "/study/wheels/leading_inner/force_level");
   double largest = 0.0;
-  for (std::size_t j = 0; j < nb * 4; ++j) largest = std::max(largest, std::abs(inner[j] - inner[nb * 4 + j]));
+  for (std::size_t j = 0; j < nb * 4; ++j)
+    largest = std::max(largest, std::abs(inner[j] - inner[nb * 4 + j]));
   EXPECT_GT(largest, 0.5) << "dB between the cast-iron and the disc-braked wheel's levels";
 }
