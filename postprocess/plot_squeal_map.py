@@ -6,6 +6,12 @@ unstable) and the largest growth rate Re s with the labels of the unstable modes
   /usr/bin/python3 postprocess/plot_squeal_map.py [--case cases/squeal_150m.toml]
       [--radii 100,150,200,300,500,1000] [--param friction.decay --values 0.5,1,2,3,4]
       [--binary build/rollnoise] [--work squeal_map] [-j 2] [-o squeal_map.png] [--set KEY=VALUE] [--fast]
+      [--wheelsets]
+
+--wheelsets: also the squeal of each wheelset with both its contacts (noise.squeal_wheelsets = "on",
+profiles only, docs/squeal.md Sec. 9.3): a third panel shows which wheels squeal (the unstable roots
+of /squeal/wheels/unstable by wheel, or that a wheelset was left out because a wheel's contact
+alone is unstable), and summary.csv gets the unstable roots per wheel.
 
 Each run writes WORK/r<R>_<i>.h5; a run the program refuses because the linearised contact alone
 is unstable (InputError naming friction.decay, docs/squeal.md) is a cell of its own class; any other
@@ -57,7 +63,49 @@ def run_one(binary, case, work, radius, param, value, index, extra):
     cell["growth"], cell["frequency"] = float(s.real[k]), float(freq[k])
     cell["modes"] = [f"{labels[i]} ({freq[i]:.0f} Hz)" for i in np.flatnonzero(unstable)]
     cell["class"] = SQUEAL if unstable.any() else STABLE
+    cell.update(wheel_roots(out))
     return cell
+
+
+WHEELS = ["leading_outer", "leading_inner", "trailing_outer", "trailing_inner"]
+WHEEL_SHORT = {"leading_outer": "LO", "leading_inner": "LI", "trailing_outer": "TO", "trailing_inner": "TI"}
+
+
+def wheel_roots(path):
+    """The unstable roots of the wheelsets (/squeal/wheels/unstable) by wheel, and the wheelsets left
+    out (attribute left_out); empty when the run has no per-wheelset squeal."""
+    import h5py
+    out = {"wheel_modes": {}, "left_out": "", "wheelsets": False}
+    with h5py.File(path, "r") as f:
+        if "/squeal/wheels" not in f:
+            return out
+        g = f["/squeal/wheels"]
+        out["wheelsets"] = True
+        out["left_out"] = rh.text(g.attrs["left_out"]) if "left_out" in g.attrs else ""
+        if "unstable" in g and "wheel" in g["unstable"]:
+            u = g["unstable"]
+            for w, m, fr in zip(u["wheel"][()], u["mode"][()], u["frequency"][()]):
+                out["wheel_modes"].setdefault(rh.text(w), []).append(f"{rh.text(m)} ({fr:.0f} Hz)")
+    return out
+
+
+def wheel_cell_text(c):
+    """Which wheels squeal in one cell: 'LI 3: axial n=2 (360 Hz) ...', or that wheelsets were left out."""
+    lines = []
+    for w in WHEELS:
+        modes = c.get("wheel_modes", {}).get(w, [])
+        if modes:
+            lines.append(f"{WHEEL_SHORT[w]} {len(modes)}: {modes[0]}")
+    if c.get("left_out"):
+        lines.append("left out: " + ", ".join(WHEEL_SHORT[w] for w in WHEELS if w in c["left_out"]))
+    return "\n".join(lines) if lines else ("no wheel squeals" if c.get("wheelsets") else "")
+
+
+def wheel_class(c):
+    """0 no wheel squeals, 1..4 one wheel (WHEELS order), 5 several wheels; +6 when a wheelset was left out."""
+    squealing = [i for i, w in enumerate(WHEELS) if c.get("wheel_modes", {}).get(w)]
+    k = 0 if not squealing else (squealing[0] + 1 if len(squealing) == 1 else 5)
+    return k + (6 if c.get("left_out") else 0)
 
 
 def main():
@@ -73,7 +121,11 @@ def main():
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                    help="passed on to every run (repeatable), e.g. grid.nx=12")
     p.add_argument("--fast", action="store_true", help="2 x 2 runs (the first two of each list)")
+    p.add_argument("--wheelsets", action="store_true",
+                   help="also each wheelset with both its contacts (noise.squeal_wheelsets = \"on\"): which wheels squeal")
     a = p.parse_args()
+    if a.wheelsets:
+        a.set = a.set + ['noise.squeal_wheelsets="on"']
     radii, values = floats(a.radii), floats(a.values)
     if a.fast:
         radii, values = radii[:2], values[:2]
@@ -89,10 +141,12 @@ def main():
         cells = list(ex.map(lambda t: run_one(a.binary, a.case, a.work, t[0], a.param, t[1], t[2], a.set), jobs))
     with open(os.path.join(a.work, "summary.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["radius_m", a.param, "class", "max_growth_rate_1_per_s", "frequency_Hz", "unstable_modes", "message"])
+        w.writerow(["radius_m", a.param, "class", "max_growth_rate_1_per_s", "frequency_Hz", "unstable_modes"] +
+                   [f"{wh}_unstable_modes" for wh in WHEELS] + ["wheelsets_run", "wheelsets_left_out", "message"])
         for c in cells:
             w.writerow([c["radius"], c["value"], CLASS_NAMES[c["class"]], c["growth"], c["frequency"],
-                        "; ".join(c["modes"]), c["message"]])
+                        "; ".join(c["modes"])] + ["; ".join(c.get("wheel_modes", {}).get(wh, [])) for wh in WHEELS] +
+                       [int(c.get("wheelsets", False)), c.get("left_out", ""), c["message"]])
 
     import matplotlib
     matplotlib.use("Agg")
@@ -102,7 +156,9 @@ def main():
     nr, nv = len(radii), len(values)
     cls = np.array([c["class"] for c in cells]).reshape(nr, nv)
     growth = np.array([c["growth"] for c in cells]).reshape(nr, nv)
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 5.5))
+    with_wheels = any(c.get("wheelsets") for c in cells)
+    fig, axes = plt.subplots(1, 3 if with_wheels else 2, figsize=(19.5 if with_wheels else 13, 5.5))
+    ax1, ax2 = axes[0], axes[1]
     cmap = ListedColormap(["#9ecae1", "#de2d26", "#fdae6b", "#bdbdbd"])
     ax1.imshow(cls.T, origin="lower", cmap=cmap, vmin=-0.5, vmax=3.5, aspect="auto")
     for i in range(nr):
@@ -121,7 +177,16 @@ def main():
                 ax2.text(i, j, f"{growth[i, j]:.3g}\n{cells[i * nv + j]['frequency']:.0f} Hz", ha="center",
                          va="center", fontsize=6)
     ax2.set_title("largest growth rate of the coupled roots")
-    for ax in (ax1, ax2):
+    if with_wheels:  # which wheels squeal (the wheelsets with both contacts)
+        ax3 = axes[2]
+        wcls = np.array([wheel_class(c) for c in cells]).reshape(nr, nv)
+        colours = ["#9ecae1", "#de2d26", "#31a354", "#756bb1", "#e6550d", "#636363"]
+        ax3.imshow(wcls.T % 6, origin="lower", cmap=ListedColormap(colours), vmin=-0.5, vmax=5.5, aspect="auto")
+        for i in range(nr):
+            for j in range(nv):
+                ax3.text(i, j, wheel_cell_text(cells[i * nv + j]), ha="center", va="center", fontsize=6)
+        ax3.set_title("which wheels squeal (LO, LI, TO, TI: leading/trailing outer/inner)")
+    for ax in axes:
         ax.set_xticks(range(nr), [f"{r:g}" for r in radii])
         ax.set_yticks(range(nv), [f"{v:g}" for v in values])
         ax.set_xlabel("curve radius (m)")

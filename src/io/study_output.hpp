@@ -25,6 +25,16 @@ std::optional<std::string> read_case_stamp(const std::string& path);
 void write_case_error(const std::string& path, const std::string& message);
 std::optional<std::string> read_case_error(const std::string& path);
 
+/// One wheel of curve.wheels in a case file (/noise/wheels/<name>): its contact state and bands.
+struct WheelRecord {
+  std::string name;                      ///< leading_outer, leading_inner, trailing_outer, trailing_inner
+  std::array<double, 3> creepage{};      ///< xi_x, xi_y (-), phi (rad/m), the wheel's own contact frame
+  double contact_angle = 0.0;            ///< rad
+  double normal_force = 0.0;             ///< N
+  std::vector<double> force_level;       ///< nb x 4, as CaseRecord::force_level (on its band_centre)
+  std::vector<double> velocity_level;    ///< nb x 2 x 4, as CaseRecord::velocity_level
+};
+
 /// What `collect` takes from a case file.
 struct CaseRecord {
   double run_time = 0.0;                 ///< s
@@ -35,6 +45,7 @@ struct CaseRecord {
   std::vector<double> band_centre;       ///< Hz
   std::vector<double> force_level;       ///< nb x 4, dB (Fz, Fx, Fy re 1 N; Mz re 1 N m)
   std::vector<double> velocity_level;    ///< nb x 2 x 4, dB re 1e-9 m/s, rad/s ([wheel, rail] x (z, x, y, rot z))
+  std::vector<WheelRecord> wheels;       ///< /noise/wheels/*, in the order leading_outer ... trailing_inner
 };
 /// nullopt when the file lacks what a noise case writes.
 std::optional<CaseRecord> read_case_record(const std::string& path);

@@ -81,8 +81,8 @@ struct NoiseResult {
   /// The wheel and rail spectra at the frequencies (shared by the wheels' loops).
   std::shared_ptr<const noise::StructureSpectra> spectra;
   /// curve.wheels: each wheel's contact state and its loop run alone (pipeline/wheel_noise.hpp);
-  /// the leading outer wheel's is the main run above. Set by run_noise (not by run_noise_loop: a
-  /// study writes the top-level results only).
+  /// the leading outer wheel's is the main run above. Set by run_noise (not by run_noise_loop; a
+  /// study runs run_noise, so its cases have them too).
   std::vector<WheelNoise> wheels;
   /// noise.contact_coupling = "bogie": the loop with all the wheels' contacts (contact a = wheels[a],
   /// one source each; pipeline/bogie_noise.hpp); then wheels[a].bands are its levels.

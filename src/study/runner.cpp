@@ -92,14 +92,15 @@ void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::Stud
       io::NoiseInputs in = io::read_noise_inputs(reader);
       pipeline::NoiseResult r;
       if (loop) {
-        r = *loop;  // the same inputs up to the roughness (reuse_groups): the same stages 1-4
+        r = *loop;  // the same inputs up to the roughness (reuse_groups): the same stages 1-4 and wheels
         ++shared.loops_reused;
+        io::within_case(reader, [&] { pipeline::add_bands(r, in.noise); });
       } else {
-        r = io::within_case(reader, [&] { return pipeline::run_noise_loop(std::move(in.contact), in.noise, reuse); });
+        // as `rollnoise noise`: the main loop, every wheel of curve.wheels (/noise/wheels) and the bands
+        r = io::within_case(reader, [&] { return pipeline::run_noise(std::move(in.contact), in.noise, reuse); });
         ++shared.loops_computed;
         if (reuse) loop = r;
       }
-      io::within_case(reader, [&] { pipeline::add_bands(r, in.noise); });
       io::write_study_case(pipeline::case_output(plan, index), reader, in.noise, r, case_stamp(plan, c, reader),
                            seconds_since(t0));
       std::error_code ec;

@@ -8,6 +8,7 @@ HDF5, another command's output) gives one line on stderr and exit status 2, no t
 Run by CTest (test `postprocess_plots_smoke`, CMakeLists.txt). Prints 'N passed, M failed'.
 """
 import contextlib
+import csv
 import io
 import os
 import runpy
@@ -113,12 +114,26 @@ def main():
         ("plot_squeal_map.py", ["--binary", binary, "--fast", "--work", j("squeal_map"), "-o", j("squeal_map.png"),
                                 "--set", "grid.nx=12", "--set", "grid.ny=10", "--set", "grid.scale=1.3",
                                 "--set", "noise.band_max=2000"], ["squeal_map.png", "squeal_map/summary.csv"]),
+        # the wheels' panel: one run of the profile case with every wheelset (constant friction, 300-400 Hz, ~1 s)
+        ("plot_squeal_map.py", ["--binary", binary, "--case", os.path.join(CASES, "curve_300m.toml"), "--radii", "300",
+                                "--param", "friction.mu", "--values", "0.3", "--wheelsets", "--work",
+                                j("squeal_map_wheels"), "-o", j("squeal_map_wheels.png"), "--set", "grid.nx=12",
+                                "--set", "grid.ny=10", "--set", "noise.band_max=400", "--set",
+                                'track.support="continuous"'],
+         ["squeal_map_wheels.png", "squeal_map_wheels/summary.csv"]),
     ]
     for script, args, outputs in runs:
         status, err = plot(script, *args)
         check(f"{script} {os.path.basename(args[0])}", status == 0 and all(os.path.getsize(j(o)) > 0 for o in outputs
                                                                           if os.path.exists(j(o))) and
               all(os.path.exists(j(o)) for o in outputs), f"status {status}: {err}")
+    # the wheels' map ran the squeal of the wheelsets (a column per wheel, wheelsets_run = 1)
+    summary = j("squeal_map_wheels/summary.csv")
+    if os.path.exists(summary):
+        with open(summary) as f:
+            rows = list(csv.DictReader(f))
+        check("plot_squeal_map.py --wheelsets summary", len(rows) == 1 and "leading_inner_unstable_modes" in rows[0] and
+              rows[0].get("wheelsets_run") == "1", str(rows))
     # wrong inputs: one line naming the file, exit status 2
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
