@@ -139,7 +139,7 @@ TEST(DiscreteWaveguide, ReciprocalAndPassive) {
 // conforming 6-node elements give upper bounds, decreasing as the mesh is refined (40, 30, 15 mm:
 // 1206.4, 1205.6, 1197.4 Hz; 3404.7, 3398.4, 3343.7; 4844.0, 4818.1, 4798.3; 4917.2, 4916.7,
 // 4914.4), and the loop's 30 mm mesh is within 2 % of the 15 mm one (measured 1.6 % at most, the
-// 3.4 kHz wave, whose thin foot tip needs the finer mesh). No published table of UIC60 cut-ons was
+// 3.4 kHz wave, the slowest to converge). No published table of UIC60 cut-ons was
 // at hand to compare with (docs/models.md Sec. 2.5a says what was searched).
 TEST(FreeRailCutOn, HigherWavesConvergeToTwoPercentAtTheLoopsMesh) {
   auto cut_ons = [](double h) {
