@@ -1,6 +1,7 @@
 #include "dynamics/rail_section.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 
 #include "core/errors.hpp"
@@ -30,6 +31,13 @@ std::vector<Eigen::Vector2d> uic60_outline() {
   for (int i = static_cast<int>(half.size()) - 2; i >= 1; --i)
     outline.emplace_back(-1e-3 * half[i][0], 1e-3 * half[i][1]);
   return outline;
+}
+
+double rail_head_bottom(const std::vector<Eigen::Vector2d>& outline) {
+  if (outline.empty()) throw InputError("rail_section", "empty rail outline");
+  double lo = outline[0].y(), hi = lo;
+  for (const auto& p : outline) lo = std::min(lo, p.y()), hi = std::max(hi, p.y());
+  return lo + (133.0 / 172.0) * (hi - lo);
 }
 
 std::vector<SectionPoint> section_points(const fem::QuadraticTriangleMesh& mesh, int t) {

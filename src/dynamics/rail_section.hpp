@@ -38,6 +38,12 @@ namespace rollnoise::dynamics {
 /// lists its properties against the standard's.
 std::vector<Eigen::Vector2d> uic60_outline();
 
+/// The z of a section's head underside (m) for the spin load of RailWaveguide::contact_loads: at
+/// the UIC60 proportion, 133/172 of the height above the lowest point (kUic60HeadBottom for
+/// uic60_outline(), to round-off). An estimate for other sections: the spin is the plane fitted to
+/// u_x over the triangles above it.
+double rail_head_bottom(const std::vector<Eigen::Vector2d>& outline);
+
 /// Properties of a meshed section (SI). Coordinates of the centroid in the mesh's (y, z); the
 /// second moments about the centroid; the shear centre relative to the centroid.
 struct SectionProperties {

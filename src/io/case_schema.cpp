@@ -196,8 +196,13 @@ const std::vector<KeySpec>& case_schema() {
       {"track.position", T::NonNegReal, "0.3", "m", "contact position from a sleeper (0.3 = mid-span)"},
       {"track.model", T::String, "\"beam\"", "-",
        "rail model: \"beam\" (Timoshenko beams, vertical and lateral) or \"waveguide\" (2.5D finite "
-       "elements of the UIC60 section: torsion, cross-section deformation; continuous support only)",
+       "elements of the UIC60 section or track.rail_section: torsion, cross-section deformation; continuous or "
+       "discrete support)",
        {"beam", "waveguide"}},
+      {"track.rail_section", T::String, "", "-",
+       "model = \"waveguide\": the rail's cross-section outline (CSV y_mm, z_mm: a closed polygon, z up, "
+       "flat foot at the lowest z; e.g. models/rail/uic60_outline.csv)", {}, 0,
+       "optional: the built-in UIC60 (60E1) outline, identical to models/rail/uic60_outline.csv"},
       {"wheel.wheelset", T::String, "\"models/wheel/wheelset_920mm.toml\"", "-", "rigid wheelset file"},
       {"wheel.modes", T::String, "\"models/wheel/wheel_920mm_modes.csv\"", "-", "wheel modes file"},
       // the FE wheel (docs/models.md Sec. 3.4; dynamics/wheel_fe.hpp)

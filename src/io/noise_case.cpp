@@ -5,8 +5,10 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "io/frequency_axis.hpp"
+#include "io/rail_section_file.hpp"
 #include "io/roughness_file.hpp"
 #include "io/track_file.hpp"
 #include "io/wheel_fe_case.hpp"
@@ -92,17 +94,19 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.flange_clearance = r.real("curve.flange_clearance"); });
   problems.check([&] { c.contact_angle = r.real("contact.angle"); });
 
-  std::string track_id, wheel_id;
+  std::string track_id, wheel_id, track_section;
   problems.check([&] {
     const std::string file = resolve_model_file(r, "track.file");
     const dynamics::TrackParameters track = read_track_parameters(file);
     const std::string support = r.string("track.support");
     const double position = r.real("track.position");
     const std::string model = r.string("track.model");
-    if (model == "waveguide" && support != "continuous")
-      r.fail("track.model", "the waveguide rail has the continuous support only: set track.support = \"continuous\"");
-    if (model == "waveguide")
-      c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, dynamics::WaveguideRailOptions{});
+    if (model != "waveguide" && r.has("track.rail_section"))
+      r.fail("track.rail_section", "applies to track.model = \"waveguide\" only");
+    if (model == "waveguide" && support == "discrete")
+      c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, waveguide_rail_options(r, track_section), position);
+    else if (model == "waveguide")
+      c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, waveguide_rail_options(r, track_section));
     else {
       c.rail_track = track;
       c.rail_support = support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous;
@@ -114,7 +118,7 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
           position);
     char pos[32];
     std::snprintf(pos, sizeof pos, "%.17g", position);
-    track_id = "track " + file + ", " + model + ", " + support + ", " + pos;
+    track_id = "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
   });
   problems.check([&] {
     const std::string wheelset = resolve_model_file(r, "wheel.wheelset");

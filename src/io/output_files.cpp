@@ -137,7 +137,7 @@ Provenance& provenance_store() {
 const std::vector<std::string>& case_file_keys() {
   static const std::vector<std::string> keys = {
       "contact.wheel_profile", "contact.rail_profile", "track.file",      "wheel.wheelset",
-      "wheel.modes",           "wheel.section",        "wheel.shapes", "roughness.rail",       "roughness.wheel", "excitation.file"};
+      "wheel.modes",           "wheel.section",        "wheel.shapes", "track.rail_section", "roughness.rail",       "roughness.wheel", "excitation.file"};
   return keys;
 }
 

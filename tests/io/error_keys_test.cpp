@@ -195,8 +195,8 @@ TEST(ErrorKeys, KeysNamedInMessagesBuiltAtRunTimeAreCaseKeys) {
   };
   const std::vector<Failure> failures = {
       {"noise " + curve + out + " --set friction.mu=10", curve, "friction.mu"},
-      {"receptance " + curve + out + " --set track.model=waveguide --set track.support=discrete", curve,
-       "track.model"},
+      {"receptance " + curve + out + " --set track.rail_section=models/rail/uic60_outline.csv", curve,
+       "track.rail_section"},
       {"steady " + hertz + out + profiles + " --set contact.wheel_profile=" + (d / "loop_a").string(), hertz,
        "contact.wheel_profile"},
       {"steady " + hertz + out + profiles + " --set contact.rail_profile=" + (d / "profile_folder").string(), hertz,
