@@ -34,11 +34,14 @@
 #   FallingFrictionModel.SweepRoutes* (69 s) and .ConstantFrictionLimits* (53 s),
 #   FallingFrictionSqueal.* (63 s, a bisection of squeal runs); the same functions run sanitized in
 #   the other FallingFriction*, LaplaceCoefficients.* and SquealFallingFriction.* tests.
-#   SquealKalker.* (5 s in Release: a squeal run and route 1 on curve_300m); the same code paths
-#   run sanitized in SquealRoutes.* and SquealPassivity.*.
+#   SquealKalker.* (5 s in Release: a squeal run and route 1 on curve_300m_table); the same code
+#   paths run sanitized in SquealRoutes.* and SquealPassivity.*.
 #   StudyWheels.* (3 s in Release: a study of a profile case with two coupled wheels) and
 #   WheelsetPassivity.* (squeal per wheelset on every shipped curve case); the same code paths run
 #   sanitized in Study.* and ContactSetSqueal.UncoupledWheels*.
+#   SquealRoutes.*WithTheFeWheel (route 1 against route 2 on curve_500m with its FE wheel: the FE
+#   modes and twice the loop modes of the table wheel); the routes' code runs sanitized in the
+#   table-wheel SquealRoutes test, the FE modes in WheelFe.* and LowestModesSolver.*.
 #   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
 #   RailWaveguideReduced.*, WaveguideRailModel.*: dense eigenproblems of n = 621 (zgeev, the Ritz
 #   basis' generalised symmetric ones); RailWaveguidePatch.* and the smoke test's waveguide
@@ -46,7 +49,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|RailSectionFile\.ShippedUic60'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|RailSectionFile\.ShippedUic60|SquealRoutes\.Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \

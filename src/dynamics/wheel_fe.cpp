@@ -109,13 +109,19 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
   std::vector<fem::MeshPoint> tread_points;
   for (std::size_t i = 0; i < w.tread_s.size(); ++i)
     tread_points.push_back(fem::locate(w.mesh, {w.tread_r[i], w.tread_s[i]}, 1e-4));
+  // one solver for all n: the orders share the mesh's sparsity pattern (one symbolic analysis),
+  // and each order's count of modes is the guess for the next one's
+  fem::LowestModesSolver solver(fixed, 2 * kPi * options.f_max);
+  const fem::AxisymmetricOrders orders(w.mesh, options.material);
+  int previous_count = -1;
   for (int n = 0; n <= options.n_max; ++n) {
-    const auto km = fem::assemble_axisymmetric(w.mesh, options.material, n);
+    const auto km = orders.matrices(n);
     if (n == 0)
       w.mass = Eigen::VectorXd::Ones(km.mass.rows())
                    .dot(km.mass * Eigen::VectorXd::Ones(km.mass.rows())) /
                3.0;
-    const auto modes = fem::lowest_modes(km.stiffness, km.mass, fixed, 2 * kPi * options.f_max);
+    const auto modes = solver.solve(km.stiffness, km.mass, previous_count);
+    previous_count = static_cast<int>(modes.omega.size());
     for (int j = 0; j < modes.omega.size(); ++j) {
       WheelFeMode m;
       m.frequency = modes.omega(j) / (2 * kPi);

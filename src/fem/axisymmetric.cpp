@@ -53,6 +53,26 @@ Eigen::Vector3d area_coordinates(const QuadraticTriangleMesh& mesh, const std::a
   return {1.0 - x(0) - x(1), x(0), x(1)};
 }
 
+// One quadrature point of a section triangle (coordinates xy): the shape values N, their (r, z)
+// derivatives dN, the radius r and the weight w |J| r (without the circumferential integral).
+struct SectionPoint {
+  Eigen::Matrix<double, 6, 1> N;
+  Eigen::Matrix<double, 2, 6> dN;
+  double r = 0.0, weight = 0.0;
+};
+
+SectionPoint section_point(const Eigen::Matrix<double, 2, 6>& xy, const TrianglePoint& q) {
+  SectionPoint p;
+  p.N = triangle6_shape(q.xi, q.eta);
+  const auto dref = triangle6_shape_derivatives(q.xi, q.eta);
+  const Eigen::Matrix2d jac = triangle6_jacobian(dref, xy);
+  p.dN = jac.inverse() * dref;
+  p.r = xy.row(0).dot(p.N.transpose());
+  if (!(p.r > 0.0)) throw std::invalid_argument("axisymmetric section reaches r <= 0");
+  p.weight = q.weight * jac.determinant() * p.r;
+  return p;
+}
+
 }  // namespace
 
 AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
@@ -67,16 +87,11 @@ AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
     Eigen::Matrix<double, 18, 18> ke = Eigen::Matrix<double, 18, 18>::Zero();
     Eigen::Matrix<double, 6, 6> me = Eigen::Matrix<double, 6, 6>::Zero();
     for (const auto& q : triangle_gauss_degree5()) {
-      const auto N = triangle6_shape(q.xi, q.eta);
-      const auto dref = triangle6_shape_derivatives(q.xi, q.eta);
-      const Eigen::Matrix2d jac = triangle6_jacobian(dref, xy);
-      const Eigen::Matrix<double, 2, 6> dN = jac.inverse() * dref;
-      const double r = xy.row(0).dot(N.transpose());
-      if (!(r > 0.0)) throw std::invalid_argument("axisymmetric section reaches r <= 0");
-      const double w = q.weight * jac.determinant() * r * circumferential;
-      const auto b = strain_matrix(N, dN, r, n);
+      const SectionPoint p = section_point(xy, q);
+      const double w = p.weight * circumferential;
+      const auto b = strain_matrix(p.N, p.dN, p.r, n);
       ke.noalias() += w * b.transpose() * d * b;
-      me.noalias() += w * material.density * N * N.transpose();
+      me.noalias() += w * material.density * p.N * p.N.transpose();
     }
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j) {
@@ -93,6 +108,55 @@ AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
   out.mass.resize(ndof, ndof);
   out.stiffness.setFromTriplets(k_entries.begin(), k_entries.end());
   out.mass.setFromTriplets(m_entries.begin(), m_entries.end());
+  return out;
+}
+
+AxisymmetricOrders::AxisymmetricOrders(const QuadraticTriangleMesh& mesh,
+                                       const IsotropicMaterial& material) {
+  const Eigen::Matrix<double, 6, 6> d = elasticity(material);
+  std::vector<Eigen::Triplet<double>> k0, k1, k2, m;
+  for (auto* v : {&k0, &k1, &k2}) v->reserve(mesh.triangles.size() * 324);
+  m.reserve(mesh.triangles.size() * 108);
+  for (const auto& t : mesh.triangles) {
+    const auto xy = triangle6_coordinates(mesh.nodes, t);
+    Eigen::Matrix<double, 18, 18> ke0 = Eigen::Matrix<double, 18, 18>::Zero(), ke1 = ke0, ke2 = ke0;
+    Eigen::Matrix<double, 6, 6> me = Eigen::Matrix<double, 6, 6>::Zero();
+    for (const auto& q : triangle_gauss_degree5()) {
+      const SectionPoint p = section_point(xy, q);
+      const double w = p.weight;
+      const Eigen::Matrix<double, 6, 18> b0 = strain_matrix(p.N, p.dN, p.r, 0);
+      const Eigen::Matrix<double, 6, 18> b1 = strain_matrix(p.N, p.dN, p.r, 1) - b0;
+      const Eigen::Matrix<double, 18, 6> b0d = w * b0.transpose() * d;
+      const Eigen::Matrix<double, 18, 6> b1d = w * b1.transpose() * d;
+      ke0.noalias() += b0d * b0;
+      ke1.noalias() += b0d * b1 + b1d * b0;
+      ke2.noalias() += b1d * b1;
+      me.noalias() += w * material.density * p.N * p.N.transpose();
+    }
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        for (int a = 0; a < 3; ++a) {
+          m.emplace_back(3 * t[i] + a, 3 * t[j] + a, me(i, j));
+          for (int c = 0; c < 3; ++c) {
+            const int row = 3 * t[i] + a, col = 3 * t[j] + c, ei = 3 * i + a, ej = 3 * j + c;
+            k0.emplace_back(row, col, ke0(ei, ej));
+            k1.emplace_back(row, col, ke1(ei, ej));
+            k2.emplace_back(row, col, ke2(ei, ej));
+          }
+        }
+  }
+  const int ndof = 3 * static_cast<int>(mesh.nodes.size());
+  for (auto [part, entries] : {std::pair{&k0_, &k0}, {&k1_, &k1}, {&k2_, &k2}, {&m_, &m}}) {
+    part->resize(ndof, ndof);
+    part->setFromTriplets(entries->begin(), entries->end());
+  }
+}
+
+AxisymmetricMatrices AxisymmetricOrders::matrices(int n) const {
+  const double circumferential = n == 0 ? 2 * kPi : kPi;
+  AxisymmetricMatrices out;
+  out.stiffness = circumferential * (k0_ + double(n) * k1_ + double(n) * n * k2_);
+  out.mass = circumferential * m_;
   return out;
 }
 

@@ -41,6 +41,22 @@ struct AxisymmetricMatrices {
 AxisymmetricMatrices assemble_axisymmetric(const QuadraticTriangleMesh& mesh,
                                            const IsotropicMaterial& material, int n);
 
+/// K and M of every order n from three order-independent parts, assembled once: the strain matrix
+/// is affine in n, B_n = B_0 + n B_1 (B_1 = B at n = 1 minus B_0), so
+///   K_n = c_n (K_0 + n K_1 + n^2 K_2),  M_n = c_n M_1,  with (integrals over r dr dz)
+///   K_0 = int B_0^T D B_0,  K_1 = int (B_0^T D B_1 + B_1^T D B_0),  K_2 = int B_1^T D B_1,
+/// equal to assemble_axisymmetric(mesh, material, n) to round-off, with one sparsity pattern for
+/// all n (the union of the parts', explicit zeros kept). A mesh's orders n = 0..10 cost one
+/// assembly with three element products instead of eleven.
+class AxisymmetricOrders {
+ public:
+  AxisymmetricOrders(const QuadraticTriangleMesh& mesh, const IsotropicMaterial& material);
+  AxisymmetricMatrices matrices(int n) const;
+
+ private:
+  Eigen::SparseMatrix<double> k0_, k1_, k2_, m_;  // without c_n
+};
+
 /// Where a point lies in the mesh: its triangle and reference coordinates (xi, eta).
 struct MeshPoint {
   int triangle = -1;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 namespace rollnoise::fem {
@@ -16,9 +17,32 @@ struct Modes {
   Eigen::MatrixXd shapes;
 };
 
-/// All modes with omega <= omega_max, the DOFs `fixed` held at zero. Shift sigma = 0 (K is
-/// nonsingular with the supports); the number of requested modes grows until one exceeds omega_max.
-/// Throws NumericalError when Spectra does not converge.
+/// All modes with omega <= omega_max, the DOFs `fixed` held at zero, of a sequence of problems
+/// with one sparsity pattern (the orders n of one axisymmetric mesh). Shift sigma slightly below 0
+/// (K - sigma M positive definite); the number of requested modes starts at the expected count plus
+/// two (8 when unknown) and doubles until one mode exceeds omega_max. The sparse LDL^T's symbolic
+/// analysis (AMD ordering, elimination tree) is done once for the pattern and reused by every
+/// problem with the same pattern (re-done when it differs): per problem one numeric factorisation.
+class LowestModesSolver {
+ public:
+  LowestModesSolver(std::vector<int> fixed, double omega_max);
+  ~LowestModesSolver();
+  LowestModesSolver(const LowestModesSolver&) = delete;
+  LowestModesSolver& operator=(const LowestModesSolver&) = delete;
+
+  /// The modes of K phi = omega^2 M phi; `expected` a guess of their count (e.g. the previous
+  /// order's), < 0 unknown. Throws NumericalError when Spectra does not converge.
+  Modes solve(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+              int expected = -1);
+
+ private:
+  struct Factorisation;
+  std::vector<int> fixed_;
+  double omega_max_;
+  std::unique_ptr<Factorisation> factorisation_;
+};
+
+/// One problem: LowestModesSolver(fixed, omega_max).solve(stiffness, mass).
 Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
                    const Eigen::SparseMatrix<double>& mass, const std::vector<int>& fixed,
                    double omega_max);

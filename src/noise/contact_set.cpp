@@ -192,7 +192,14 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
       Receptance6 w = Receptance6::Zero(), r = Receptance6::Zero();
       if (self || cross.wheelset)
         w += rigid_flexibility6(wheel.wheelset(), ca, cb).cast<cdouble>() / (-omega * omega);
-      if (self || cross.wheel) w += wheel_modal_cross(modal, ca, cb);
+      // the point receptance at the contact's own position on the tread (the FE wheel's shapes
+      // there, as the single-contact loop; the table wheel: its one table); between two patches of
+      // one wheel the reference table moved rigidly (the FE cross receptance is not passed here)
+      if (self)
+        w +=
+            wheel_modal_cross(wheel.modal_receptance(frequency, ca.position.wheel_shift_y), ca, ca);
+      else if (cross.wheel)
+        w += wheel_modal_cross(modal, ca, cb);
       if ((self || cross.rail) && ca.side == cb.side) r = rail_cross(transfer[a * n + b], ca, cb);
       const Eigen::Matrix<cdouble, 6, 4> Tb =
           contact_frame(cb.position.contact_angle).cast<cdouble>();

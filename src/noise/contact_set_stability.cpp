@@ -75,6 +75,11 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
     loop.contact_wheel.push_back(static_cast<int>(it - loop.wheels.begin()));
     if (it == loop.wheels.end()) loop.wheels.push_back(w);
   }
+  // each contact's mode shapes at its own position on the tread (the FE wheel follows the contact;
+  // the table wheel has one table): the same frequencies and damping at every position
+  std::vector<std::vector<dynamics::WheelMode>> at_contact;
+  for (const ContactPoint& p : points)
+    at_contact.push_back(wheel.modes_at(p.position.wheel_shift_y));
   for (std::size_t w = 0; w < loop.wheels.size(); ++w)
     for (std::size_t k = 0; k < wheel.modes().size(); ++k) {
       const dynamics::WheelMode& wm = wheel.modes()[k];
@@ -84,7 +89,7 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
                        static_cast<int>(w)};
       for (Eigen::Index a = 0; a < n; ++a)
         if (std::make_pair(points[a].wheelset, points[a].side) == loop.wheels[w])
-          m.shape.segment<4>(4 * a) = contact_shape(wm, points[a]);
+          m.shape.segment<4>(4 * a) = contact_shape(at_contact[a][k], points[a]);
       loop.modes.push_back(m);
     }
   // The rigid wheelsets' flexibility in the contact frames (constant: alpha = C / s^2).

@@ -1,7 +1,7 @@
 // Squeal with Kalker's constant creep coefficients (noise.contact_model = "kalker"). The contact is
 // quasi-steady, f(s) = f_Kalker at every s (noise::ConstantTransfer): route 2's continuation must
 // reach every root (before, the contact was a one-term Markov series whose convergence guard
-// refused every s, and all roots came back not converged). Checked on curve_300m (coarse grid, 16
+// refused every s, and all roots came back not converged). Checked on curve_300m_table (the table wheel; coarse grid, 16
 // elements in x; band to 3 kHz, 22 modes; continuous track, as squeal_routes_test.cpp):
 //  - every root converged and is a zero of (S1): sigma_min/sigma_max of the equilibrated A(s) at
 //    most 1e-10 (measured <= 3e-12);
@@ -28,7 +28,7 @@ TEST(SquealKalker, EveryRootConvergesIsStableAndMatchesRoute1WithinItsRailFit) {
   const std::vector<std::string> o = {"grid.nx=16", "track.support=\"continuous\"",
                                       "noise.band_max=3000", "noise.contact_model=\"kalker\""};
   const io::CaseReader reader =
-      io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o);
+      io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m_table.toml", o);
   io::NoiseInputs in = io::read_noise_inputs(reader);
   ASSERT_FALSE(in.noise.use_nss);
   const pipeline::SquealResult r = pipeline::run_squeal(std::move(in.contact), in.noise);
