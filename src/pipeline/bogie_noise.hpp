@@ -23,9 +23,12 @@ std::vector<noise::ContactPoint> bogie_contacts(const std::vector<WheelNoise>& w
 /// (M3) with the wheels' contacts and one source per wheel, at `frequency`; `cross` selects the
 /// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). InputError
 /// naming noise.contact_coupling for the waveguide rail (it has no transfer between two points).
+/// `spectra` (optional): the single-contact loop's spectra of nc.rail at `frequency`, whose rail
+/// point receptance at nc.rail_position is then not solved again (the same bits).
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
-                                       const noise::CrossCoupling& cross = {});
+                                       const noise::CrossCoupling& cross = {},
+                                       const noise::StructureSpectra* spectra = nullptr);
 
 /// Band levels (M4) of every wheel: each source with its own wheel's contact filter (a, b) on the
 /// case's roughness spectra.

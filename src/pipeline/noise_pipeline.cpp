@@ -119,7 +119,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t1 = Clock::now();
   r.wheels = wheel_loops(r, nc, *r.spectra);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
-    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(bogie_loop(r.wheels, nc, r.axis.frequency));
+    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.spectra.get()));
   r.seconds_wheels = seconds_since(t1);
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
