@@ -1,14 +1,20 @@
 // The cost of a noise case against a steady Hertzian solve (issue 25's speed targets), and of the
 // two kernels that dominated it: the contact search on the profiles (WheelRailPair::minimum_gap)
 // and the discretely supported rail per frequency (Eq. (2) of dynamics/track.hpp).
-//   build/rollnoise_bench --benchmark_filter='NoiseCase|SteadyHertz|MinimumGap|DiscreteRail'
+//   build/rollnoise_bench \
+//     --benchmark_filter='SpeedBars|NoiseCase|SteadyHertz|MinimumGap|DiscreteRail'
+// SpeedBarsCurve300m prints issue 25's two ratios (single wheel / steady, four wheels / single).
 // Counters: `elements` (contact grid nx x ny of the case), `frequencies` (of the noise case),
 // `supports` (2N + 1 of the rail), `samples` (wheel profile samples scanned per minimum_gap).
 // The noise case also reports its stage times (contact = curve state, patch and NSS sweep;
 // structures = wheel and rail receptances) as counters in seconds.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <ctime>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "contact/steady_rolling.hpp"
 #include "dynamics/track.hpp"
@@ -29,43 +35,106 @@ std::string source_path(const char* relative) {
   return std::string(ROLLNOISE_SOURCE_DIR) + "/" + relative;
 }
 
-// rollnoise noise cases/curve_300m.toml without writing the output: curve state (bogie estimate
-// on the S1002/UIC60 profiles), the patch, the NSS sweep, the receptances, the loop, the bands.
-void NoiseCaseCurve300m(benchmark::State& state) {
-  const io::CaseReader reader = io::CaseReader::from_file(source_path("cases/curve_300m.toml"), {});
-  double elements = 0, frequencies = 0, contact_s = 0, structures_s = 0;
+// rollnoise noise cases/curve_300m.toml (`overrides`: --set strings) without writing the output:
+// curve state (bogie estimate on the S1002/UIC60 profiles), each wheel's patch and NSS sweep, the
+// receptances, the loops, the bands.
+pipeline::NoiseResult run_curve_300m(const io::CaseReader& reader) {
+  io::NoiseInputs in = io::read_noise_inputs(reader);
+  return pipeline::run_noise(std::move(in.contact), in.noise);
+}
+
+// rollnoise steady cases/hertz_paper.toml without the output: the normal problem and one steady
+// rolling solve. Returns the element count.
+int run_steady_hertz(const io::CaseReader& reader) {
+  io::ContactCase cc = io::read_contact_case(reader);
+  pipeline::place_contact(cc);
+  const contact::ContactPatch patch = pipeline::solve_patch(cc);
+  const auto s = contact::solve_steady_rolling(patch.influence, patch.normal.pn, cc.steady_input(),
+                                               cc.tangential);
+  benchmark::DoNotOptimize(s);
+  return patch.grid.nx * patch.grid.ny;
+}
+
+const std::vector<std::string> kSingleWheel = {"curve.wheels=[\"leading_outer\"]"};
+
+void NoiseCaseCurve300m(benchmark::State& state, std::vector<std::string> overrides) {
+  const io::CaseReader reader =
+      io::CaseReader::from_file(source_path("cases/curve_300m.toml"), overrides);
+  double elements = 0, frequencies = 0, contact_s = 0, structures_s = 0, wheels_s = 0;
   for (auto _ : state) {
-    io::NoiseInputs in = io::read_noise_inputs(reader);
-    const pipeline::NoiseResult r = pipeline::run_noise(std::move(in.contact), in.noise);
+    const pipeline::NoiseResult r = run_curve_300m(reader);
     elements = r.contact.grid.nx * r.contact.grid.ny;
     frequencies = static_cast<double>(r.axis.frequency.size());
     contact_s = r.seconds_contact;
     structures_s = r.seconds_structures;
+    wheels_s = r.seconds_wheels;
   }
-  state.counters["elements"] = elements;
+  state.counters["elements"] = elements;  // the leading outer wheel's grid
   state.counters["frequencies"] = frequencies;
   state.counters["contact_s"] = contact_s;
   state.counters["structures_s"] = structures_s;
+  state.counters["wheels_s"] = wheels_s;
 }
-BENCHMARK(NoiseCaseCurve300m)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(NoiseCaseCurve300m, four_wheels, std::vector<std::string>{})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK_CAPTURE(NoiseCaseCurve300m, leading_outer, kSingleWheel)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
-// rollnoise steady cases/hertz_paper.toml without the output: the normal problem and one steady
-// rolling solve.
 void SteadyHertzPaper(benchmark::State& state) {
-  const io::CaseReader reader = io::CaseReader::from_file(source_path("cases/hertz_paper.toml"), {});
+  const io::CaseReader reader =
+      io::CaseReader::from_file(source_path("cases/hertz_paper.toml"), {});
   int elements = 0;
-  for (auto _ : state) {
-    io::ContactCase cc = io::read_contact_case(reader);
-    pipeline::place_contact(cc);
-    const contact::ContactPatch patch = pipeline::solve_patch(cc);
-    const auto s = contact::solve_steady_rolling(patch.influence, patch.normal.pn,
-                                                 cc.steady_input(), cc.tangential);
-    benchmark::DoNotOptimize(s);
-    elements = patch.grid.nx * patch.grid.ny;
-  }
+  for (auto _ : state) elements = run_steady_hertz(reader);
   state.counters["elements"] = elements;
 }
 BENCHMARK(SteadyHertzPaper)->Unit(benchmark::kMillisecond)->Iterations(10);
+
+// Issue 25's two speed bars in-process (CPU time of this process, std::clock, so without the
+// process start-up that `perf stat` of the commands includes): the single-wheel noise case over
+// the steady Hertz case (bar: <= 5) and the four-wheel case over the single-wheel case (bar:
+// <= 2.5), the median of 3 runs each. Counters: the ratios, the CPU seconds, the grid (elements of
+// the leading outer wheel's patch, of the Hertz patch) and the frequency count.
+double cpu_seconds(const std::function<void()>& run) {
+  std::vector<double> t;
+  for (int i = 0; i < 3; ++i) {
+    const std::clock_t c0 = std::clock();
+    run();
+    t.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+  }
+  std::sort(t.begin(), t.end());
+  return t[1];
+}
+
+void SpeedBarsCurve300m(benchmark::State& state) {
+  const io::CaseReader four = io::CaseReader::from_file(source_path("cases/curve_300m.toml"), {});
+  const io::CaseReader one =
+      io::CaseReader::from_file(source_path("cases/curve_300m.toml"), kSingleWheel);
+  const io::CaseReader hertz = io::CaseReader::from_file(source_path("cases/hertz_paper.toml"), {});
+  double t4 = 0, t1 = 0, th = 0, elements = 0, frequencies = 0, hertz_elements = 0;
+  for (auto _ : state) {
+    t4 = cpu_seconds([&] {
+      const pipeline::NoiseResult r = run_curve_300m(four);
+      benchmark::DoNotOptimize(r);
+    });
+    t1 = cpu_seconds([&] {
+      const pipeline::NoiseResult r = run_curve_300m(one);
+      elements = r.contact.grid.nx * r.contact.grid.ny;
+      frequencies = static_cast<double>(r.axis.frequency.size());
+    });
+    th = cpu_seconds([&] { hertz_elements = run_steady_hertz(hertz); });
+  }
+  state.counters["single_over_steady"] = t1 / th;
+  state.counters["four_over_single"] = t4 / t1;
+  state.counters["four_cpu_s"] = t4;
+  state.counters["single_cpu_s"] = t1;
+  state.counters["steady_cpu_s"] = th;
+  state.counters["elements"] = elements;
+  state.counters["hertz_elements"] = hertz_elements;
+  state.counters["frequencies"] = frequencies;
+}
+BENCHMARK(SpeedBarsCurve300m)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // One contact search of the S1002 wheel on the UIC60 rail at a yawed, rolled pose.
 void MinimumGapS1002Uic60(benchmark::State& state) {

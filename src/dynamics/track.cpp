@@ -119,21 +119,46 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer(double frequency, double x_r,
   return H;
 }
 
+std::vector<Eigen::Matrix2cd> DiscretelySupportedRail::transfers(
+    double frequency, const std::vector<std::pair<double, double>>& pairs) const {
+  const double omega = checked_omega(frequency);
+  std::vector<Eigen::Matrix2cd> H =
+      solve_pairs(InfiniteBeam(rail_, omega, 0.0), support_.dynamic_stiffness(omega), pairs, false);
+  for (const Eigen::Matrix2cd& h : H)
+    if (!h.allFinite())
+      throw NumericalError("DiscretelySupportedRail: non-finite receptance at f = " +
+                           std::to_string(frequency) + " Hz");
+  return H;
+}
+
 Eigen::Matrix2cd DiscretelySupportedRail::solve(const InfiniteBeam& free_rail, cdouble K,
                                                 double x_r, double x_e, bool dense) const {
+  return solve_pairs(free_rail, K, {{x_r, x_e}}, dense).front();
+}
+
+std::vector<Eigen::Matrix2cd> DiscretelySupportedRail::solve_pairs(
+    const InfiniteBeam& free_rail, cdouble K, const std::vector<std::pair<double, double>>& pairs,
+    bool dense) const {
   const int m = 2 * n_ + 1;
-  const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
+  const Eigen::Index np = static_cast<Eigen::Index>(pairs.size());
 
   // Toeplitz column of S = A + K^{-1} I: g_wF(d L), d = 0 .. 2N, plus the compliance on d = 0.
+  // S depends on the frequency only; each pair has its own window, so its own B_e, B_r.
   const Eigen::MatrixX2cd column = free_rail.deflection_rows(0.0, spacing_, m);
   std::vector<cdouble> t(column.col(0).data(), column.col(0).data() + m);
   t[0] += 1.0 / K;
 
-  // B_e and B_r (rows: g_wF, g_wM of the free rail at x_n - x); B_r = B_e for the point receptance.
-  const double x_first = (n0 - n_) * spacing_;
-  const Eigen::MatrixXcd Be = free_rail.deflection_rows(x_first - x_e, spacing_, m);
-  Eigen::MatrixXcd Br;
-  if (x_r != x_e) Br = free_rail.deflection_rows(x_first - x_r, spacing_, m);
+  // B_e and B_r of each pair (rows: g_wF, g_wM of the free rail at x_n - x, over the 2N + 1
+  // supports centred on the sleeper nearest the pair's midpoint); B_r = B_e for a point receptance.
+  Eigen::MatrixXcd Be(m, 2 * np);
+  std::vector<Eigen::MatrixXcd> Br(pairs.size());
+  for (Eigen::Index p = 0; p < np; ++p) {
+    const double x_r = pairs[p].first, x_e = pairs[p].second;
+    const long n0 = std::lround(0.5 * (x_r + x_e) / spacing_);  // sleeper nearest the midpoint
+    const double x_first = (n0 - n_) * spacing_;
+    Be.middleCols(2 * p, 2) = free_rail.deflection_rows(x_first - x_e, spacing_, m);
+    if (x_r != x_e) Br[p] = free_rail.deflection_rows(x_first - x_r, spacing_, m);
+  }
   // X = S^{-1} B_e by Levinson's recursion, O(m^2) (linalg/toeplitz_solve.hpp), or by the dense
   // LU with pivoting where that recursion's residual check fails or `dense` is asked for.
   Eigen::MatrixXcd X;
@@ -143,7 +168,14 @@ Eigen::Matrix2cd DiscretelySupportedRail::solve(const InfiniteBeam& free_rail, c
       for (int j = 0; j < m; ++j) S(i, j) = t[std::abs(i - j)];
     X = S.partialPivLu().solve(Be);
   }
-  return free_rail.transfer(x_r - x_e) - (x_r != x_e ? Br : Be).transpose() * X;
+  std::vector<Eigen::Matrix2cd> H(pairs.size());
+  for (Eigen::Index p = 0; p < np; ++p) {
+    const double x_r = pairs[p].first, x_e = pairs[p].second;
+    const Eigen::MatrixXcd Xp = X.middleCols(2 * p, 2);
+    H[p] = free_rail.transfer(x_r - x_e) -
+           (x_r != x_e ? Br[p] : Eigen::MatrixXcd(Be.middleCols(2 * p, 2))).transpose() * Xp;
+  }
+  return H;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -41,6 +41,8 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dynamics/receptance.hpp"
 #include "dynamics/track_beam.hpp"
@@ -98,6 +100,13 @@ class DiscretelySupportedRail {
   /// Point receptance matrix at x.
   Eigen::Matrix2cd point(double frequency, double x) const { return transfer(frequency, x, x); }
 
+  /// transfer(frequency, x_r, x_e) for several (x_r, x_e) pairs at one frequency, each with its
+  /// own window of supports (centred on its midpoint) as transfer() has it, but with one Levinson
+  /// recursion on S serving all of them (S depends on the frequency only): equal to transfer()
+  /// per pair to the last bit, unless the recursion's residual check sends them to the dense LU.
+  std::vector<Eigen::Matrix2cd> transfers(double frequency,
+                                          const std::vector<std::pair<double, double>>& pairs) const;
+
   /// Eq. (2) at a complex angular frequency omega = -i s (s the Laplace variable, 1/s; see
   /// InfiniteBeam for the continuation).
   Eigen::Matrix2cd transfer_at(cdouble omega, double x_response, double x_load) const;
@@ -109,6 +118,10 @@ class DiscretelySupportedRail {
   /// `dense`: the dense LU instead of Levinson's recursion.
   Eigen::Matrix2cd solve(const InfiniteBeam& free_rail, cdouble K, double x_r, double x_e,
                          bool dense) const;
+  /// solve() for several (x_r, x_e) pairs, one Toeplitz system with their B_e as columns.
+  std::vector<Eigen::Matrix2cd> solve_pairs(const InfiniteBeam& free_rail, cdouble K,
+                                            const std::vector<std::pair<double, double>>& pairs,
+                                            bool dense) const;
 
   BeamSection rail_;
   Support support_;

@@ -18,14 +18,18 @@ class RailArc {
     const double step = 1e-5, reach = 0.03;
     const double lo = std::max(y0 - reach, pair.rail().y_min() + pair.rail_offset());
     const double hi = std::min(y0 + reach, pair.rail().y_max() + pair.rail_offset());
-    for (double y = y0; y >= lo; y -= step) y_.insert(y_.begin(), y);
+    for (double y = y0; y >= lo; y -= step) y_.push_back(y);  // then reversed: ascending
+    std::reverse(y_.begin(), y_.end());
     for (double y = y0 + step; y <= hi; y += step) y_.push_back(y);
+    std::vector<double> z(y_.size());  // the rail at each sample, once (in order: a search hint)
+    Profile::Cursor cursor;
+    for (std::size_t i = 0; i < y_.size(); ++i) z[i] = pair.rail_z(y_[i], cursor);
     s_.assign(y_.size(), 0.0);
     const auto i0 = std::lower_bound(y_.begin(), y_.end(), y0 - 0.5 * step) - y_.begin();
     for (std::size_t i = i0 + 1; i < y_.size(); ++i)
-      s_[i] = s_[i - 1] + std::hypot(y_[i] - y_[i - 1], pair.rail_z(y_[i]) - pair.rail_z(y_[i - 1]));
+      s_[i] = s_[i - 1] + std::hypot(y_[i] - y_[i - 1], z[i] - z[i - 1]);
     for (auto i = i0; i > 0; --i)
-      s_[i - 1] = s_[i] - std::hypot(y_[i] - y_[i - 1], pair.rail_z(y_[i]) - pair.rail_z(y_[i - 1]));
+      s_[i - 1] = s_[i] - std::hypot(y_[i] - y_[i - 1], z[i] - z[i - 1]);
   }
   bool contains(double s) const { return s >= s_.front() && s <= s_.back(); }
   double y(double s) const {

@@ -53,6 +53,16 @@ double Profile::z(double y) const {
   return gsl_interp_eval(spline_->interp, y_.data(), z_.data(), y, nullptr);
 }
 
+double Profile::z(double y, Cursor& cursor) const {
+  if (y < y_.front() || y > y_.back()) return z(y);
+  // GSL's accelerator holds the interval index only (gsl_interp_accel_find: the cached interval if
+  // it contains y, else the binary search), so a stack copy per call keeps the cursor ours.
+  gsl_interp_accel acc{cursor.interval, 0, 0};
+  const double v = gsl_interp_eval(spline_->interp, y_.data(), z_.data(), y, &acc);
+  cursor.interval = acc.cache;
+  return v;
+}
+
 double Profile::slope(double y) const {
   y = std::clamp(y, y_.front(), y_.back());
   return gsl_interp_eval_deriv(spline_->interp, y_.data(), z_.data(), y, nullptr);

@@ -49,6 +49,14 @@ class Profile {
 
   /// z(y) (m). Outside [y_min, y_max] the end tangent is extrapolated linearly.
   double z(double y) const;
+
+  /// A search hint for a run of evaluations at nearby y (a scan along the profile): the knot
+  /// interval of the last evaluation, tried first before the binary search. The interval found is
+  /// the one the search finds, so z(y, cursor) == z(y) to the bit. One cursor per thread.
+  struct Cursor {
+    std::size_t interval = 0;
+  };
+  double z(double y, Cursor& cursor) const;
   /// dz/dy (-).
   double slope(double y) const;
   /// d2z/dy2 of the Steffen spline (1/m): piecewise linear, discontinuous at the knots.

@@ -137,7 +137,8 @@ struct PoseFrame {
 GapStrip strip_at(const WheelRailPair& pair, const ContactGeometry& cg, double t) {
   const double c = std::cos(cg.contact_angle), s = std::sin(cg.contact_angle);
   const WheelsetPose& pose = cg.local_pose;
-  auto rail_point = [&](double y) { return std::make_pair(y, pair.rail_z(y)); };
+  Profile::Cursor cursor;  // the strip's walk moves along the rail: a search hint
+  auto rail_point = [&](double y) { return std::make_pair(y, pair.rail_z(y, cursor)); };
   const PoseFrame frame(pose);
   auto wheel_at = [&](double sw) {
     return frame.point(pair.wheel_offset() + sw,
@@ -242,9 +243,10 @@ WheelPoint WheelRailPair::wheel_point(double s, const WheelsetPose& pose) const 
 double WheelRailPair::minimum_gap(const WheelsetPose& pose, double* s_at_minimum) const {
   const PoseFrame frame(pose);
   const double offset = wheel_offset();
+  Profile::Cursor cursor;  // the scan's samples move along the rail: a search hint
   auto gap_of = [&](const WheelPoint& p) {
     if (!rail_contains(p.y)) return std::numeric_limits<double>::infinity();
-    return rail_z(p.y) - p.z;
+    return rail_z(p.y, cursor) - p.z;
   };
   auto gap = [&](double s) {
     return gap_of(frame.point(offset + s, wheelset_.nominal_radius + wheel_.z(s), wheel_.slope(s)));

@@ -104,6 +104,7 @@ class WheelRailPair {
 
   /// Depth of the rail surface (m) at track y, and its slope dz/dy (-).
   double rail_z(double y) const { return rail_.z(y - rail_offset_); }
+  double rail_z(double y, Profile::Cursor& cursor) const { return rail_.z(y - rail_offset_, cursor); }
   double rail_slope(double y) const { return rail_.slope(y - rail_offset_); }
   bool rail_contains(double y) const { return rail_.contains(y - rail_offset_); }
 

@@ -71,22 +71,66 @@ RailLine::RailLine(const dynamics::TrackParameters& track, dynamics::TrackSuppor
 }
 
 Receptance4 RailLine::transfer(double frequency, double x_r, double x_e) const {
+  return transfers(frequency, {{x_r, x_e}}).front();
+}
+
+RailLine RailLine::with_point_receptance(double x, std::vector<double> frequency,
+                                         std::vector<Receptance4> receptance) const {
+  RailLine out = *this;
+  if (frequency.size() != receptance.size() || !std::is_sorted(frequency.begin(), frequency.end()))
+    return out;  // not usable as a table: everything is solved
+  out.known_ = std::make_shared<const KnownPoint>(
+      KnownPoint{x, std::move(frequency), std::move(receptance)});
+  return out;
+}
+
+const Receptance4* RailLine::known_point(double frequency, double x) const {
+  if (!known_ || x != known_->x) return nullptr;
+  const auto& f = known_->frequency;
+  const auto it = std::lower_bound(f.begin(), f.end(), frequency);
+  if (it == f.end() || *it != frequency) return nullptr;
+  return &known_->receptance[static_cast<std::size_t>(it - f.begin())];
+}
+
+std::vector<Receptance4> RailLine::transfers(
+    double frequency, const std::vector<std::pair<double, double>>& pairs) const {
   if (!(frequency > 0.0) || !std::isfinite(frequency))
     throw InputError("frequency", "rail transfer receptance needs a positive frequency");
+  std::vector<Receptance4> out(pairs.size());
+  std::vector<std::pair<double, double>> unknown;  // the pairs to solve, at `slot` in out
+  std::vector<std::size_t> slot;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const Receptance4* known =
+        pairs[p].first == pairs[p].second ? known_point(frequency, pairs[p].first) : nullptr;
+    if (known) {
+      out[p] = *known;
+      continue;
+    }
+    unknown.push_back(pairs[p]);
+    slot.push_back(p);
+  }
+  if (unknown.empty()) return out;
   const double omega = dynamics::angular(frequency), L = track_.sleeper_spacing;
-  Eigen::Matrix2cd Hv, Hl;
+  std::vector<Eigen::Matrix2cd> Hv(unknown.size()), Hl(unknown.size());
   if (support_ == dynamics::TrackSupport::kDiscrete) {
-    Hv = vertical_.transfer(frequency, x_r, x_e);
-    Hl = lateral_.transfer(frequency, x_r, x_e);
+    Hv = vertical_.transfers(frequency, unknown);
+    Hl = lateral_.transfers(frequency, unknown);
   } else {
-    Hv = dynamics::continuous_transfer(track_.vertical, track_.vertical_support, L, frequency,
-                                       x_r - x_e);
-    Hl = dynamics::continuous_transfer(track_.lateral, track_.lateral_support, L, frequency,
-                                       x_r - x_e);
+    for (std::size_t p = 0; p < unknown.size(); ++p) {
+      const double dx = unknown[p].first - unknown[p].second;
+      Hv[p] =
+          dynamics::continuous_transfer(track_.vertical, track_.vertical_support, L, frequency, dx);
+      Hl[p] =
+          dynamics::continuous_transfer(track_.lateral, track_.lateral_support, L, frequency, dx);
+    }
   }
   const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / L;
-  const cdouble rod = dynamics::rod_receptance(track_.vertical, omega, s_x, x_r - x_e);
-  return dynamics::rail_receptance4(Hv, Hl, rod, track_.head_height);
+  for (std::size_t p = 0; p < unknown.size(); ++p) {
+    const cdouble rod =
+        dynamics::rod_receptance(track_.vertical, omega, s_x, unknown[p].first - unknown[p].second);
+    out[slot[p]] = dynamics::rail_receptance4(Hv[p], Hl[p], rod, track_.head_height);
+  }
+  return out;
 }
 
 Receptance4 RailLine::transfer_laplace(cdouble s, double x_r, double x_e) const {
@@ -168,21 +212,25 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
   out.rail6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
   // Rail transfers between positions on one rail, each pair once (reciprocity: H(b, a) = H(a,
   // b)^T). Both rails are the same track: a pair of positions met on the other rail (the inner
-  // wheels at the outer wheels' x) reuses that rail's result, the same bits.
-  std::vector<Receptance4> transfer(static_cast<std::size_t>(n * n));
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> solved;
+  // wheels at the outer wheels' x) reuses that rail's result, the same bits. The distinct pairs
+  // are solved together: one Toeplitz recursion per frequency and beam (RailLine::transfers).
+  std::vector<std::pair<double, double>> positions;  // (x_a, x_b) of each distinct pair
+  std::vector<std::size_t> which(static_cast<std::size_t>(n * n), 0);
   for (Eigen::Index a = 0; a < n; ++a)
     for (Eigen::Index b = a; b < n; ++b) {
       if (contacts[a].side != contacts[b].side || (a != b && !cross.rail)) continue;
-      const auto same_positions = [&](const std::pair<Eigen::Index, Eigen::Index>& p) {
-        return contacts[p.first].rail_x == contacts[a].rail_x &&
-               contacts[p.second].rail_x == contacts[b].rail_x;
-      };
-      const auto earlier = std::find_if(solved.begin(), solved.end(), same_positions);
-      transfer[a * n + b] = earlier != solved.end()
-                                ? transfer[earlier->first * n + earlier->second]
-                                : rail.transfer(frequency, contacts[a].rail_x, contacts[b].rail_x);
-      solved.emplace_back(a, b);
+      const std::pair<double, double> xy(contacts[a].rail_x, contacts[b].rail_x);
+      const auto earlier = std::find(positions.begin(), positions.end(), xy);
+      which[a * n + b] = static_cast<std::size_t>(earlier - positions.begin());
+      if (earlier == positions.end()) positions.push_back(xy);
+    }
+  const std::vector<Receptance4> solved =
+      positions.empty() ? std::vector<Receptance4>{} : rail.transfers(frequency, positions);
+  std::vector<Receptance4> transfer(static_cast<std::size_t>(n * n));
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index b = a; b < n; ++b) {
+      if (contacts[a].side != contacts[b].side || (a != b && !cross.rail)) continue;
+      transfer[a * n + b] = solved[which[a * n + b]];
       if (b != a) transfer[b * n + a] = transfer[a * n + b].transpose();
     }
   for (Eigen::Index a = 0; a < n; ++a) {

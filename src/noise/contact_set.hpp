@@ -46,6 +46,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "dynamics/track.hpp"
@@ -91,15 +93,34 @@ class RailLine {
   RailLine(const dynamics::TrackParameters& track, dynamics::TrackSupport support);
   /// Displacement at x_response per force at x_load (m along the rail from a sleeper).
   Receptance4 transfer(double frequency, double x_response, double x_load) const;
+  /// transfer() for several (x_response, x_load) pairs at one frequency, to the same bits; the
+  /// discrete rail solves them with one Toeplitz recursion (DiscretelySupportedRail::transfers).
+  std::vector<Receptance4> transfers(double frequency,
+                                     const std::vector<std::pair<double, double>>& pairs) const;
   /// The same at the Laplace variable s (RailModel::receptance_laplace's continuation).
   Receptance4 transfer_laplace(cdouble s, double x_response, double x_load) const;
   const dynamics::TrackParameters& track() const { return track_; }
   dynamics::TrackSupport support() const { return support_; }
 
+  /// This line with the point receptance at x already known at the given frequencies, e.g.
+  /// StructureSpectra::rail of RailModel(track, support, x), which equals transfer(f, x, x) to the
+  /// bit: transfers() then takes it for the pair (x, x) at those frequencies instead of solving
+  /// Eq. (2) again (the single-contact loop has solved it). Ignored unless `frequency` is
+  /// ascending with one receptance each.
+  RailLine with_point_receptance(double x, std::vector<double> frequency,
+                                 std::vector<Receptance4> receptance) const;
+
  private:
   dynamics::TrackParameters track_;
   dynamics::TrackSupport support_;
   dynamics::DiscretelySupportedRail vertical_, lateral_;
+  struct KnownPoint {
+    double x = 0.0;
+    std::vector<double> frequency;  ///< ascending
+    std::vector<Receptance4> receptance;
+  };
+  std::shared_ptr<const KnownPoint> known_;
+  const Receptance4* known_point(double frequency, double x) const;
 };
 
 /// The structures between N contacts at one frequency, for the loop with several contacts.

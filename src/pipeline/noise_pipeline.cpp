@@ -121,7 +121,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   r.patches = second_patches(r.curve, r.contact, nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
-        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
+        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches, r.spectra.get()));
   r.seconds_wheels = seconds_since(t1);
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);

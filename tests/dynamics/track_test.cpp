@@ -12,8 +12,11 @@
 #include <complex>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/errors.hpp"
+#include "linalg/toeplitz_solve.hpp"
 
 namespace rd = rollnoise::dynamics;
 using cd = std::complex<double>;
@@ -325,6 +328,42 @@ TEST(DiscreteTrack, ToeplitzSolveEqualsDenseLuOfEq2ToRoundOff) {
     }
   }
   std::printf("largest relative difference Levinson - dense LU: %.2e\n", worst);
+}
+
+// Several pairs at one frequency through one Toeplitz recursion (DiscretelySupportedRail::
+// transfers, the contact set's rail) equal each pair's own transfer() to the bit: the recursion
+// treats its columns independently and each pair keeps its own window of supports.
+TEST(DiscreteTrack, TransfersOfSeveralPairsEqualEachPairsTransferToTheBit) {
+  const rd::TrackParameters t = rd::uic60_ballasted();
+  const rd::DiscretelySupportedRail rail(t.vertical, t.vertical_support, t.sleeper_spacing,
+                                         t.supports_each_side);
+  const std::vector<std::pair<double, double>> pairs = {
+      {0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}, {2.8, 0.3}, {0.0, 0.0}};
+  for (double f : {63.0, 850.0, 4100.0}) {
+    const std::vector<Eigen::Matrix2cd> h = rail.transfers(f, pairs);
+    ASSERT_EQ(h.size(), pairs.size());
+    for (std::size_t p = 0; p < pairs.size(); ++p)
+      EXPECT_EQ(h[p], rail.transfer(f, pairs[p].first, pairs[p].second))
+          << "f = " << f << " Hz, pair " << p;
+  }
+}
+
+// Levinson's recursion needs regular leading principal submatrices: with a singular one (t = (1,
+// 1, 0.5): the leading 2x2 [[1, 1], [1, 1]]) toeplitz_solve reports failure, and with one that
+// is merely ill-conditioned (t_1 = 1 - 1e-13, the pivot 2e-13) its residual check does (relative
+// residual of the recursion 1.3); a well-conditioned system passes and solves to 1e-14.
+TEST(DiscreteTrack, ToeplitzSolveRefusesWhatLevinsonCannotSolve) {
+  using rollnoise::linalg::toeplitz_solve;
+  Eigen::MatrixXcd B(3, 2), X;
+  B << 1.0, cd(0.0, 2.0), -0.5, 1.0, 0.25, cd(3.0, -1.0);
+  EXPECT_FALSE(toeplitz_solve({1.0, 1.0, 0.5}, B, X));
+  EXPECT_FALSE(toeplitz_solve({1.0, 1.0 - 1e-13, 0.3}, B, X));
+  const std::vector<cd> t = {cd(4.0, 0.5), cd(1.0, -0.2), cd(0.5, 0.1)};
+  ASSERT_TRUE(toeplitz_solve(t, B, X));
+  Eigen::MatrixXcd T(3, 3);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) T(i, j) = t[std::abs(i - j)];
+  EXPECT_LT((T * X - B).norm(), 1e-14 * B.norm());
 }
 
 // --- the 4x4 rail receptance

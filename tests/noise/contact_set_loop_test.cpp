@@ -136,6 +136,31 @@ TEST(ContactSetReceptance, RailLineTransferIsReciprocalAndContainsThePointRecept
   }
 }
 
+// A rail line told its point receptance (the single-contact loop's spectra) returns it for the
+// pair (x, x) at those frequencies and solves everything else: the contact set's receptance equals
+// the one with nothing known to the bit, since RailModel's point receptance is transfer(f, x, x).
+TEST(ContactSetReceptance, KnownRailPointReceptanceGivesTheSameBits) {
+  const rn::RailLine line(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete);
+  const std::vector<double> f = {150.0, 1100.0, 3700.0};
+  std::vector<rd::Receptance4> point;
+  const rd::RailModel model(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
+  for (double fk : f) point.push_back(model.receptance(fk));
+  const rn::RailLine told = line.with_point_receptance(0.3, f, point);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    EXPECT_EQ(told.transfer(f[k], 0.3, 0.3), point[k]);
+    EXPECT_EQ(line.transfer(f[k], 0.3, 0.3), point[k]);
+    const std::vector<rd::Receptance4> a =
+        told.transfers(f[k], {{0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}});
+    const std::vector<rd::Receptance4> b =
+        line.transfers(f[k], {{0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}});
+    for (int p = 0; p < 3; ++p) EXPECT_EQ(a[p], b[p]) << f[k] << " Hz, pair " << p;
+  }
+  // a frequency not in the table, and a wrong-sized table, are solved
+  EXPECT_EQ(told.transfer(151.0, 0.3, 0.3), model.receptance(151.0));
+  const rn::RailLine bad = line.with_point_receptance(0.3, f, {});
+  EXPECT_EQ(bad.transfer(150.0, 0.3, 0.3), point[0]);
+}
+
 // The assembled receptances of a bogie with five contacts (two wheelsets, both sides, a flange
 // patch) with all cross terms: wheel and rail symmetric (reciprocity, M1) to 1e-12 relative, and
 // passive (dissipation matrix -(A - A^H)/2i >= 0 after equilibration, down to -1e-10 of its largest
