@@ -37,13 +37,14 @@
 #   SquealKalker.* (5 s in Release: a squeal run and route 1 on curve_300m); the same code paths
 #   run sanitized in SquealRoutes.* and SquealPassivity.*.
 #   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
-#   RailWaveguideReduced.*, WaveguideRailModel.*: dense eigenproblems of n = 621 (zgeev, the Ritz
-#   basis' generalised symmetric ones); RailWaveguidePatch.* and the smoke test's waveguide
-#   receptance run them sanitized.
+#   RailWaveguideReduced.*, WaveguideRailModel.*, WaveguideRailAtContact.*: dense eigenproblems of
+#   n = 621 (zgeev, the Ritz basis' generalised symmetric ones); RailWaveguidePatch.*,
+#   RailContactPoint.*, ReceptanceInterpolation.* and the smoke test's waveguide receptance run
+#   them sanitized.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|WaveguideRailAtContact\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
