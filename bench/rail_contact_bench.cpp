@@ -91,6 +91,7 @@ BENCHMARK(RailContactGrid)
     ->Arg(0)
     ->Arg(12)
     ->Arg(24)
+    ->Arg(36)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
