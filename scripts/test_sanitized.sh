@@ -43,13 +43,14 @@
 #   modes and twice the loop modes of the table wheel); the routes' code runs sanitized in the
 #   table-wheel SquealRoutes test, the FE modes in WheelFe.* and LowestModesSolver.*.
 #   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
-#   RailWaveguideReduced.*, WaveguideRailModel.*: dense eigenproblems of n = 621 (zgeev, the Ritz
-#   basis' generalised symmetric ones); RailWaveguidePatch.* and the smoke test's waveguide
-#   receptance run them sanitized.
+#   RailWaveguideReduced.*, WaveguideRailModel.*, WaveguideRailAtContact.*: dense eigenproblems of
+#   n = 621 (zgeev, the Ritz basis' generalised symmetric ones); RailWaveguidePatch.*,
+#   RailContactPoint.*, ReceptanceInterpolation.* and the smoke test's waveguide receptance run
+#   them sanitized.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|RailSectionFile\.ShippedUic60|SquealRoutes\.Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|WheelFe\.AxialFamilyMatchesPublished|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|RailSectionFile\.ShippedUic60|SquealRoutes\.Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel|WaveguideRailAtContact\.'
 
 start=$SECONDS
 cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -296,4 +296,19 @@ Receptance4 RailModel::receptance_laplace(cdouble s) const {
   return contact_point_receptance(Hv, Hl, rod, track_.head_height);
 }
 
+// The beams are not loaded at the contact (loaded_at_contact() is false): the loop moves their
+// centre-line receptance (noise/loop.hpp); asking them for a contact receptance is a bug.
+std::vector<Receptance4> RailModel::contact_receptances(const std::vector<double>&, double,
+                                                        double) const {
+  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
+}
+
+Receptance4 RailModel::contact_receptance(double, double, double) const {
+  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
+}
+
+Receptance4 RailModel::contact_receptance_laplace(cdouble, double, double) const {
+  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
+}
+
 }  // namespace rollnoise::dynamics

@@ -159,6 +159,22 @@ class RailModel {
   /// receptance_laplace(i omega) = receptance(omega / 2 pi) up to round-off.
   virtual Receptance4 receptance_laplace(cdouble s) const;
 
+  /// True if the model is loaded at the contact itself on the rail head (contact_receptance*):
+  /// the waveguide rail. False (the beams): the loop moves receptance() rigidly from the centre
+  /// line to the contact and rotates it into the contact frame (noise/loop.hpp).
+  virtual bool loaded_at_contact() const { return false; }
+  /// For loaded_at_contact() models: the 4x4 in the contact frame (normal n, x, lateral tangent
+  /// t, rotation about n; noise/loop.hpp) of a contact at `offset_y` (m, lateral, from the rail's
+  /// centre line, rail profile coordinate) with contact angle `contact_angle` (rad), per
+  /// frequency (Hz) of `frequencies` (the whole grid at once: a model may compute it on a coarser
+  /// grid and interpolate), at one frequency, and at the Laplace variable s.
+  virtual std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
+                                                       double offset_y, double contact_angle) const;
+  virtual Receptance4 contact_receptance(double frequency, double offset_y,
+                                         double contact_angle) const;
+  virtual Receptance4 contact_receptance_laplace(cdouble s, double offset_y,
+                                                 double contact_angle) const;
+
   const TrackParameters& track() const { return track_; }
 
  private:

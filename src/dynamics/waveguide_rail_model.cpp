@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <string>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -42,10 +44,16 @@ Eigen::Vector2d crown_of(const fem::QuadraticTriangleMesh& mesh) {
 
 WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
                                        const WaveguideRailOptions& options)
-    : RailModel(track, TrackSupport::kContinuous, 0.0), rail_(full_model(track, options)) {
-  loads_ = rail_.patch_loads(crown_of(rail_.mesh()), options.patch_half_width,
+    : RailModel(track, TrackSupport::kContinuous, 0.0),
+      options_(options),
+      outline_(options.outline.empty() ? uic60_outline() : options.outline),
+      full_(full_model(track, options)),
+      rail_(full_) {
+  if (options.grid_per_octave < 0)
+    throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
+  loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
                              Eigen::Vector2d(0.0, 1.0), options.head_bottom);
-  rail_ = rail_.reduced(options.reduction, loads_);
+  rail_ = full_.reduced(options.reduction, loads_);
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
@@ -71,6 +79,202 @@ Receptance4 WaveguideRailModel::receptance_laplace(cdouble s) const {
   if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
     throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
   return at(cdouble(0.0, -1.0) * s);  // i omega = s
+}
+
+Eigen::Vector2d outline_contact_point(const std::vector<Eigen::Vector2d>& outline,
+                                      double head_bottom, double offset_y, double contact_angle) {
+  // The head's top edges (both ends at z >= head_bottom, outward normal upwards), in the outline's
+  // counter-clockwise order (from +y over the crown to -y), each with its normal's angle
+  // gamma_e = atan2(-n_y, n_z) (the loop's contact angle of that normal).
+  struct Edge {
+    Eigen::Vector2d a, b;
+    double angle;
+  };
+  std::vector<Edge> top;
+  const std::size_t n = outline.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = outline[i], b = outline[(i + 1) % n], d = b - a;
+    if (d.norm() == 0.0 || a.y() < head_bottom || b.y() < head_bottom) continue;
+    const Eigen::Vector2d normal = Eigen::Vector2d(d.y(), -d.x()).normalized();  // outward (CCW)
+    if (normal.y() <= 0.0) continue;
+    top.push_back({a, b, std::atan2(-normal.x(), normal.y())});
+  }
+  if (top.empty()) throw InputError("rail_section", "the rail outline has no head above it");
+  // Candidates: a point of an edge (the one nearest y = offset_y), cost |gamma - gamma_e|; a
+  // vertex shared by two consecutive edges whose normals bracket gamma, cost 0.
+  double best_cost = INFINITY, best_distance = INFINITY;
+  Eigen::Vector2d best(0.0, 0.0);
+  auto consider = [&](const Eigen::Vector2d& p, double cost) {
+    const double distance = std::abs(p.x() - offset_y);
+    if (cost < best_cost - 1e-12 || (cost <= best_cost + 1e-12 && distance < best_distance))
+      best = p, best_cost = std::min(cost, best_cost), best_distance = distance;
+  };
+  for (std::size_t i = 0; i < top.size(); ++i) {
+    const Edge& e = top[i];
+    const double dy = e.b.x() - e.a.x();
+    const double t = dy != 0.0 ? std::clamp((offset_y - e.a.x()) / dy, 0.0, 1.0) : 0.5;
+    consider(e.a + t * (e.b - e.a), std::abs(contact_angle - e.angle));
+    if (i + 1 < top.size() && top[i + 1].a == e.b) {
+      const double lo = std::min(e.angle, top[i + 1].angle), hi = std::max(e.angle, top[i + 1].angle);
+      if (contact_angle >= lo && contact_angle <= hi) consider(e.b, 0.0);
+    }
+  }
+  return best;
+}
+
+Eigen::Vector2d WaveguideRailModel::contact_point(double offset_y, double contact_angle) const {
+  return outline_contact_point(outline_, options_.head_bottom, offset_y, contact_angle);
+}
+
+std::shared_ptr<WaveguideRailModel::Station> WaveguideRailModel::station(
+    const Points& points) const {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = stations_.find(points);
+    if (it != stations_.end()) return it->second;
+  }
+  Eigen::MatrixXd loads(full_.dofs(), 4 * static_cast<int>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [offset_y, angle] = points[i];
+    if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
+      throw NumericalError("waveguide rail: a contact needs a finite offset and |angle| < pi/2, "
+                           "got " + std::to_string(offset_y) + " m, " + std::to_string(angle) +
+                           " rad");
+    // The contact frame's normal (-sin gamma, cos gamma) in (y, z): noise::contact_frame.
+    const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));
+    loads.middleCols(4 * i, 4) = full_.patch_loads(contact_point(offset_y, angle),
+                                                   options_.patch_half_width, normal,
+                                                   options_.head_bottom);
+  }
+  auto s = std::make_shared<Station>(Station{full_.reduced(options_.reduction, loads), loads, {}});
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return stations_.emplace(points, std::move(s)).first->second;
+}
+
+Receptance4 WaveguideRailModel::between(cdouble omega, const Points& points, int a, int b,
+                                        double x) const {
+  const std::shared_ptr<Station> s = station(points);
+  const std::tuple<double, double, double> key(omega.real(), omega.imag(), x);
+  Eigen::MatrixXcd all;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = s->memo.find(key);
+    if (it != s->memo.end()) all = it->second;
+  }
+  if (all.size() == 0) {
+    all = s->model.transfer(s->model.waves(omega), s->loads, s->loads, x);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    s->memo.emplace(key, all);
+  }
+  return all.block<4, 4>(4 * a, 4 * b);
+}
+
+namespace {
+
+cdouble checked_omega(double frequency) {
+  if (!std::isfinite(frequency) || !(frequency > 0.0))
+    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
+  return cdouble(angular(frequency), 0.0);
+}
+
+cdouble checked_laplace(cdouble s) {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  return cdouble(0.0, -1.0) * s;  // i omega = s
+}
+
+}  // namespace
+
+Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,
+                                                   double contact_angle) const {
+  return between(checked_omega(frequency), {{offset_y, contact_angle}}, 0, 0, 0.0);
+}
+
+Receptance4 WaveguideRailModel::contact_receptance_laplace(cdouble s, double offset_y,
+                                                           double contact_angle) const {
+  return between(checked_laplace(s), {{offset_y, contact_angle}}, 0, 0, 0.0);
+}
+
+Receptance4 WaveguideRailModel::contact_transfer(double frequency, double offset_a,
+                                                 double angle_a, double offset_b, double angle_b,
+                                                 double x) const {
+  // one station per unordered pair: (b, a) at -x is the transpose of (a, b) at x
+  const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
+  if (b < a) return contact_transfer(frequency, offset_b, angle_b, offset_a, angle_a, -x).transpose();
+  return between(checked_omega(frequency), {a, b}, 0, 1, x);
+}
+
+Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offset_a,
+                                                         double angle_a, double offset_b,
+                                                         double angle_b, double x) const {
+  const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
+  if (b < a)
+    return contact_transfer_laplace(s, offset_b, angle_b, offset_a, angle_a, -x).transpose();
+  return between(checked_laplace(s), {a, b}, 0, 1, x);
+}
+
+std::vector<Receptance4> WaveguideRailModel::contact_receptances(
+    const std::vector<double>& frequencies, double offset_y, double contact_angle) const {
+  std::vector<Receptance4> out;
+  if (frequencies.empty()) return out;
+  const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
+  // The direct grid: grid_per_octave points per octave from the lowest to the highest frequency
+  // (both included); every frequency directly if that is not fewer.
+  const int per_octave = options_.grid_per_octave;
+  const int intervals =
+      per_octave > 0 ? std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))))
+                     : 0;
+  if (per_octave == 0 || intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) {
+    for (double f : frequencies) out.push_back(contact_receptance(f, offset_y, contact_angle));
+    return out;
+  }
+  std::vector<double> grid(intervals + 1);
+  std::vector<Receptance4> values;
+  for (int i = 0; i <= intervals; ++i) {
+    grid[i] = i == intervals ? *hi : *lo * std::pow(*hi / *lo, double(i) / intervals);
+    values.push_back(contact_receptance(grid[i], offset_y, contact_angle));
+  }
+  return interpolate_receptances(grid, values, frequencies);
+}
+
+std::vector<Receptance4> interpolate_receptances(const std::vector<double>& grid,
+                                                 const std::vector<Receptance4>& values,
+                                                 const std::vector<double>& frequencies) {
+  const int n = static_cast<int>(grid.size());
+  if (n < 3 || static_cast<int>(values.size()) != n)
+    throw NumericalError("interpolate_receptances: at least 3 samples, one value per sample");
+  std::vector<double> x(n);
+  for (int i = 0; i < n; ++i) x[i] = std::log(grid[i]);
+  // Slopes dR/dx at the samples: the derivative of the parabola through (i-1, i, i+1) at i
+  // (one-sided parabola at the ends); cubic Hermite between samples (de Boor, A Practical Guide
+  // to Splines, 2001, Ch. IV, Eq. (7)).
+  std::vector<Receptance4> slope(n);
+  for (int i = 0; i < n; ++i) {
+    const int j = std::clamp(i, 1, n - 2);
+    const double h0 = x[j] - x[j - 1], h1 = x[j + 1] - x[j];
+    const Receptance4 d0 = (values[j] - values[j - 1]) / h0, d1 = (values[j + 1] - values[j]) / h1;
+    if (i == j)
+      slope[i] = (h1 * d0 + h0 * d1) / (h0 + h1);
+    else if (i == 0)
+      slope[i] = d0 - h0 * (d1 - d0) / (h0 + h1);
+    else
+      slope[i] = d1 + h1 * (d1 - d0) / (h0 + h1);
+  }
+  std::vector<Receptance4> out;
+  out.reserve(frequencies.size());
+  for (double f : frequencies) {
+    const double xf = std::log(f);
+    if (!(xf >= x.front() - 1e-12 && xf <= x.back() + 1e-12))
+      throw NumericalError("interpolate_receptances: frequency outside the sampled grid");
+    const int i = std::clamp(
+        static_cast<int>(std::upper_bound(x.begin(), x.end(), xf) - x.begin()) - 1, 0, n - 2);
+    const double h = x[i + 1] - x[i], t = (xf - x[i]) / h;
+    const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t),
+                 h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+    out.push_back(h00 * values[i] + h10 * h * slope[i] + h01 * values[i + 1] +
+                  h11 * h * slope[i + 1]);
+  }
+  return out;
 }
 
 }  // namespace rollnoise::dynamics

@@ -61,6 +61,8 @@ Eigen::Matrix4d rigid_flexibility(const dynamics::RigidWheelset& w, const Contac
 
 Receptance4 rail_receptance_laplace(const dynamics::RailModel& rail, cdouble s,
                                     const ContactPosition& p) {
+  if (rail.loaded_at_contact())  // the waveguide: loaded at the contact itself
+    return rail.contact_receptance_laplace(s, p.rail_offset_y, p.contact_angle);
   Receptance6 a = embed(rail.receptance_laplace(s));
   if (p.rail_offset_y != 0.0) a = move_point(a, Eigen::Vector3d(0.0, p.rail_offset_y, 0.0));
   return to_contact_frame(a, p.contact_angle);

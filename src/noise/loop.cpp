@@ -108,6 +108,18 @@ Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, 
   return rail_receptance6(rail.receptance(frequency), offset_y);
 }
 
+Receptance4 rail_contact_receptance(const dynamics::RailModel& rail, double frequency,
+                                    const ContactPosition& p) {
+  if (rail.loaded_at_contact())
+    return rail.contact_receptance(frequency, p.rail_offset_y, p.contact_angle);
+  return to_contact_frame(rail_receptance6(rail, frequency, p.rail_offset_y), p.contact_angle);
+}
+
+Receptance6 from_contact_frame(const Receptance4& a, double contact_angle) {
+  const Eigen::Matrix<cdouble, 6, 4> T = contact_frame(contact_angle).cast<cdouble>();
+  return T * a * T.transpose();
+}
+
 StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
                                    const std::vector<double>& frequencies) {
   StructureSpectra s;
@@ -115,13 +127,15 @@ StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dyna
   for (double f : frequencies) {
     check_frequency(f);
     s.wheel_modal.push_back(wheel.modal_receptance(f));
-    s.rail.push_back(rail.receptance(f));
+    if (!rail.loaded_at_contact()) s.rail.push_back(rail.receptance(f));
   }
   return s;
 }
 
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
                                              const ContactPosition& position) {
+  ROLLNOISE_ASSERT(spectra.rail.size() == spectra.frequency.size(),
+                   "the spectra carry no rail (a rail loaded at the contact): pass the rail model");
   StructuralReceptances s;
   s.frequency = spectra.frequency;
   s.position = position;
@@ -140,9 +154,25 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, 
 
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const dynamics::RailModel& rail,
+                                             const StructureSpectra& spectra,
+                                             const ContactPosition& position) {
+  if (!rail.loaded_at_contact()) return structural_receptances(wheel, spectra, position);
+  // The rail at the contact itself: its contact-frame 4x4, and as a global 6x6 for the velocities.
+  StructureSpectra modal_only = spectra;
+  modal_only.rail.assign(spectra.frequency.size(), Receptance4::Zero());
+  StructuralReceptances s = structural_receptances(wheel, modal_only, position);
+  s.rail_contact =
+      rail.contact_receptances(spectra.frequency, position.rail_offset_y, position.contact_angle);
+  for (std::size_t k = 0; k < s.frequency.size(); ++k)
+    s.rail[k] = from_contact_frame(s.rail_contact[k], position.contact_angle);
+  return s;
+}
+
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
+                                             const dynamics::RailModel& rail,
                                              const ContactPosition& position,
                                              const std::vector<double>& frequencies) {
-  return structural_receptances(wheel, structure_spectra(wheel, rail, frequencies), position);
+  return structural_receptances(wheel, rail, structure_spectra(wheel, rail, frequencies), position);
 }
 
 StructuralReceptances structural_receptances(const std::vector<double>& frequencies,

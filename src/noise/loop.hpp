@@ -87,6 +87,16 @@ Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequenc
 /// The rail at the contact point offset laterally from the centre line (torsion not modelled).
 Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y);
 
+/// The rail's 4x4 in the contact frame at `position`: a rail loaded at the contact itself
+/// (RailModel::loaded_at_contact(), the waveguide) gives it there; the beams' centre-line
+/// receptance is moved by the offset and rotated (rail_receptance6, to_contact_frame).
+Receptance4 rail_contact_receptance(const dynamics::RailModel& rail, double frequency,
+                                    const ContactPosition& position);
+
+/// T a T^T (T = contact_frame): a contact-frame 4x4 as a global 6x6 at the contact point (rank 4:
+/// the rotations about x and t_y are not carried), for the rail's velocities in the loop.
+Receptance6 from_contact_frame(const Receptance4& a, double contact_angle);
+
 /// Wheel and rail receptances precomputed at a list of frequencies for one contact position:
 /// compute once, then run the loop for as many contact models and roughness spectra as needed.
 struct StructuralReceptances {
@@ -102,7 +112,9 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const std::vector<double>& frequencies);
 
 /// The costly, position-independent part of structural_receptances: the wheel's modal receptance
-/// at its reference point and the rail's at its centre line, per frequency. Cases with the same
+/// at its reference point and the rail's at its centre line, per frequency (`rail` empty for a
+/// rail loaded at the contact, RailModel::loaded_at_contact(): its receptance depends on the
+/// position, and the overload with the rail model computes it there). Cases with the same
 /// wheel, track and frequencies share it (a study computes it once, docs/study.md).
 struct StructureSpectra {
   std::vector<double> frequency;  ///< Hz
@@ -113,6 +125,14 @@ StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dyna
 /// The receptances at `position` from the spectra: the same arithmetic as the overload above
 /// (the rigid wheelset, the lever arms and the contact frame are cheap), so the same bits.
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
+                                             const ContactPosition& position);
+
+/// The same with the rail model: a rail loaded at the contact (the waveguide) is evaluated at
+/// `position` (RailModel::contact_receptances on the spectra's frequencies), in the contact frame;
+/// for the beams, the same bits as the overload above.
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
+                                             const dynamics::RailModel& rail,
+                                             const StructureSpectra& spectra,
                                              const ContactPosition& position);
 
 /// From 4x4 (z, x, y, rot z) receptances at the contact point, e.g. read from files (no lever

@@ -155,7 +155,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   const std::shared_ptr<const noise::StructureSpectra> spectra =
       reuse ? reuse->spectra(nc, freq)
             : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, freq));
-  const noise::StructuralReceptances structures = noise::structural_receptances(*nc.wheel, *spectra, r.curve.position);
+  const noise::StructuralReceptances structures = noise::structural_receptances(*nc.wheel, *nc.rail, *spectra, r.curve.position);
   r.seconds_structures = seconds_since(t1);
   using Baseline = NoiseCase::Baseline;
   noise::LoopVariantsInput in;

@@ -150,14 +150,14 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
   const auto tr = Clock::now();
   std::vector<Eigen::MatrixXcd> Hr;
-  for (double f : fr) Hr.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, f, p.rail_offset_y), p.contact_angle));
+  for (double f : fr) Hr.push_back(noise::rail_contact_receptance(*nc.rail, f, p));
   out.seconds_rail = seconds_since(tr);
   out.rail = fit(fr, Hr, o);
   {
     std::vector<Eigen::MatrixXcd> exact, fitted;
     for (const auto& m : nc.wheel->modes())
       if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) {
-        exact.push_back(noise::to_contact_frame(noise::rail_receptance6(*nc.rail, m.frequency, p.rail_offset_y), p.contact_angle));
+        exact.push_back(noise::rail_contact_receptance(*nc.rail, m.frequency, p));
         fitted.push_back(out.rail.model.frequency_response(m.frequency));
       }
     out.rail_error_at_modes = linalg::relative_response_error(exact, fitted, out.rail.scaling);

@@ -35,7 +35,7 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
     in.model = kalker_coefficients(c, frequency.size());
   }
   const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, spectra, w.position());
+      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, w.position());
   out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed, in.model,
                                                    in.normal_coupling);
   out.position = w.position();
