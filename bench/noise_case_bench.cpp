@@ -37,7 +37,7 @@ void NoiseCaseCurve300m(benchmark::State& state) {
   for (auto _ : state) {
     io::NoiseInputs in = io::read_noise_inputs(reader);
     const pipeline::NoiseResult r = pipeline::run_noise(std::move(in.contact), in.noise);
-    elements = r.contact.grid.nx * r.contact.grid.ny;
+    elements = r.mean.contact().grid.nx * r.mean.contact().grid.ny;
     frequencies = static_cast<double>(r.axis.frequency.size());
     contact_s = r.seconds_contact;
     structures_s = r.seconds_structures;

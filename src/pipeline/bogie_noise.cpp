@@ -46,10 +46,10 @@ std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& lo
   for (const WheelNoise& w : wheels) {
     noise::ContactFilter filter;
     filter.model = nc.filter;
-    filter.a = w.contact.a;
-    filter.b = w.contact.b;
+    filter.a = w.mean.contact().a;
+    filter.b = w.mean.contact().b;
     levels.push_back(
-        noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, w.contact.speed, filter)
+        noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, w.mean.contact().speed, filter)
             .levels(centres));
   }
   std::vector<noise::BandLevels> out;

@@ -6,8 +6,9 @@
 //   Hertzian case in a curve with curve.creepage = "estimate": the quasi-static bogie estimate on
 //     the conical tread (noise/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
 //   otherwise the case's creepage.mean and contact point (or contact.angle).
-// The stage writes the state's contact point, normal force and creepages into the contact case
-// and places it (pipeline/contact_case.hpp): geometry only, nothing is solved.
+// The stage returns the case placed at the state's contact point with its normal force and
+// creepages (pipeline/contact_case.hpp): geometry only, nothing is solved; the mean-contact stage
+// (pipeline/mean_contact.hpp) solves it.
 #pragma once
 
 #include <optional>
@@ -35,9 +36,15 @@ struct CurveSetup {
   double rolling_radius(const NoiseCase& nc) const;
 };
 
-/// Resolve the curve contact state and set c's contact point, normal force, a, b, grid and
-/// creepage accordingly. InputError (curve.* / wheelset.* keys) for inputs outside the models.
-CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc);
+/// The case placed by the curve contact state, and the state.
+struct CurvePlacement {
+  ContactCase contact;  ///< placed: contact point, normal force, a, b, grid and creepage of the state
+  CurveSetup curve;
+};
+
+/// Resolve the curve contact state and place the case accordingly. InputError (curve.* /
+/// wheelset.* keys) for inputs outside the models.
+CurvePlacement resolve_curve(const ContactCase& c, const NoiseCase& nc);
 
 /// The wheels of curve.wheels (docs/interface.md): as listed, or by default all four in a curve and
 /// the leading outer wheel alone on tangent track; none without a curve contact state.
