@@ -56,7 +56,7 @@ void SteadyHertzPaper(benchmark::State& state) {
   int elements = 0;
   for (auto _ : state) {
     io::ContactCase cc = io::read_contact_case(reader);
-    pipeline::place_contact(cc);
+    cc = pipeline::placed_contact(std::move(cc));
     const contact::ContactPatch patch = pipeline::solve_patch(cc);
     const auto s = contact::solve_steady_rolling(patch.influence, patch.normal.pn,
                                                  cc.steady_input(), cc.tangential);
