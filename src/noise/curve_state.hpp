@@ -82,7 +82,9 @@ struct CurveStateInput {
   /// here.
   std::shared_ptr<const ProfileCurvingTable> table;
 
-  void validate() const;  ///< InputError naming the curve./wheelset. key
+  /// The fields lie within the model (the contract of curve_contact_state; user input is checked
+  /// with its case keys by pipeline::check_curve_state_input).
+  bool valid() const;
 };
 
 struct CurveContactState {
@@ -127,7 +129,7 @@ double cant_deficiency_load_transfer(double wheel_load, double cant_deficiency, 
 /// with friction mu up the flange (K6): |Y| (cos d + mu sin d) / (sin d - mu cos d) (N).
 double flange_vertical_load(double lateral_force, double flange_angle, double mu);
 
-/// Steps 1-4 above. InputError naming the key for bad input; NumericalError from the estimate.
+/// Steps 1-4 above. `in` valid() (a contract); NumericalError from the estimate.
 CurveContactState curve_contact_state(const CurveStateInput& in);
 
 /// Every wheel's contact state, in the order of `wheels` (docs/noise_loop.md Sec. 7.3): each wheel

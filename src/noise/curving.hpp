@@ -162,7 +162,9 @@ struct BogieCurvingInput {
   bool gravitational_stiffness = true;
 
   double half_distance() const;
-  void validate() const;
+  /// The fields lie within the model (the contract of estimate_bogie_curving; user input is checked
+  /// with its case keys by pipeline::check_bogie_curving_input).
+  bool valid() const;
 };
 
 struct AxleCurving {
@@ -210,8 +212,9 @@ struct CurvingEstimate {
 /// (u >= 3), u = |f xi| / (mu Q) (Johnson & Vermeulen 1964; Shen, Hedrick & Elkins 1983).
 double saturation_secant_factor(double u);
 
-/// The estimate (K1)-(K3). InputError naming the field for bad input; NumericalError if the
-/// saturation iteration does not converge.
+/// The estimate (K1)-(K3). `in` valid() (a contract); InputError naming the case key when the
+/// state needs a flange force beyond Nadal's limit; NumericalError if the saturation iteration does
+/// not converge.
 CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in);
 
 }  // namespace rollnoise::noise

@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 
 #include "noise/kalker_linear.hpp"
+#include "pipeline/curve_input_checks.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -38,7 +39,7 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.wheel_creepages = nc.wheel_creepages;
     in.static_wheel_load = c.normal_force;
   }
-  in.validate();
+  check_curve_state_input(in);
   return in;
 }
 
@@ -99,7 +100,9 @@ CurvePlacement resolve_curve(const ContactCase& c, const NoiseCase& nc) {
   const ContactCase& placed = p.contact;
   if (nc.estimate_creepage && nc.curve_radius > 0.0) {
     s.estimated = true;
-    s.curving = noise::estimate_bogie_curving(bogie_curving_input(placed, nc));
+    const noise::BogieCurvingInput in = bogie_curving_input(placed, nc);
+    check_bogie_curving_input(in);
+    s.curving = noise::estimate_bogie_curving(in);
     p.contact.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
     s.position = s.curving.position();
   }

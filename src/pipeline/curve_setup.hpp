@@ -55,7 +55,8 @@ std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase
 std::vector<noise::WheelContact> curve_wheels(const CurveSetup& s, const NoiseCase& nc);
 
 /// The inputs of the curve contact state: the case's profiles, material, grid options, curve,
-/// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; validated.
+/// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; checked
+/// (check_curve_state_input: InputError naming the key).
 noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& nc);
 
 /// The inputs of the bogie estimate on the conical tread (Hertzian curve cases): the curve, the
