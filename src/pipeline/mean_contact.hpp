@@ -46,7 +46,8 @@ class MeanContact {
   MeanContact() = default;
   /// The case as run: placed (contact point, N, a, b, creepage), its grid the patch's final grid.
   const ContactCase& contact() const { return contact_; }
-  /// The curve state the case was placed by (default: none).
+  /// The curve state the case was placed by (default: none; a wheel of the bogie carries its state
+  /// in its noise::WheelContact).
   const CurveSetup& curve() const { return curve_; }
   const contact::ContactPatch& patch() const { return *patch_; }
   const std::shared_ptr<const contact::ContactPatch>& shared_patch() const { return patch_; }
