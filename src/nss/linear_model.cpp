@@ -14,7 +14,6 @@
 
 #include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
-#include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "nss/linear_model_parts.hpp"
 
@@ -30,8 +29,9 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
     : dt_(patch.grid.dx / in.speed), speed_(in.speed), mu_(in.mu), solver_(in.solver), sampling_(in.sampling),
       table_(patch.influence), built_(std::make_unique<Built>()) {
   contact::check_rolling_input(in.mu, in.speed, contact::Creepage{});
-  // solver.threads is checked against the same range by io (case_schema.cpp)
-  ROLLNOISE_ASSERT(in.threads >= 0 && in.threads <= kMaxThreads, "0 (one per hardware thread) to kMaxThreads threads");
+  if (in.threads < 0 || in.threads > kMaxThreads)
+    throw InputError("solver.threads", "must be 0 (one per hardware thread) to " + std::to_string(kMaxThreads) +
+                                           ", not " + std::to_string(in.threads));
   threads_ = in.threads > 0 ? in.threads
                             : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxThreads);
   const contact::Grid& g = patch.grid;
