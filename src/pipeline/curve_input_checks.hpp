@@ -6,8 +6,8 @@
 // as contracts (ROLLNOISE_ASSERT) of noise::curve_contact_state and noise::estimate_bogie_curving.
 #pragma once
 
-#include "noise/curve_state.hpp"
-#include "noise/curving.hpp"
+#include "vehicle/curve_state.hpp"
+#include "vehicle/curving.hpp"
 
 namespace rollnoise::pipeline {
 

@@ -14,8 +14,8 @@
 #include <optional>
 #include <vector>
 
-#include "noise/curve_state.hpp"
-#include "noise/curving.hpp"
+#include "vehicle/curve_state.hpp"
+#include "vehicle/curving.hpp"
 #include "noise/loop.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/noise_case.hpp"

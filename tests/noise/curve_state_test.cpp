@@ -1,6 +1,6 @@
 // The curve contact state from the profiles (src/noise/curve_state.hpp): limits, load transfer,
 // the two-point share, the multibody input, friction and cant deficiency.
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
 #include "pipeline/curve_input_checks.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The quasi-static curving estimate (src/noise/curving.hpp).
-#include "noise/curving.hpp"
+#include "vehicle/curving.hpp"
 #include "pipeline/curve_input_checks.hpp"
 
 #include <gtest/gtest.h>

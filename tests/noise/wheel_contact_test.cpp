@@ -14,7 +14,7 @@
 #include "curve_fixture.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
 #include "pipeline/curve_input_checks.hpp"
 
 using namespace noise_test;

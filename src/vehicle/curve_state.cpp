@@ -1,4 +1,4 @@
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
 
 #include <algorithm>
 #include <cmath>

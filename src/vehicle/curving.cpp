@@ -1,4 +1,4 @@
-#include "noise/curving.hpp"
+#include "vehicle/curving.hpp"
 
 #include <algorithm>
 #include <array>
