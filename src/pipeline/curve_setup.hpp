@@ -1,10 +1,10 @@
 // The curve stage of the noise pipeline: the mean contact state of the leading outer wheel.
 //
 //   profiles with curve.creepage = "estimate" or "multibody": the curve contact state
-//     (noise/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
+//     (vehicle/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
 //     load transfer and flange share, creepages);
 //   Hertzian case in a curve with curve.creepage = "estimate": the quasi-static bogie estimate on
-//     the conical tread (noise/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
+//     the conical tread (vehicle/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
 //   otherwise the case's creepage.mean and contact point (or contact.angle).
 // The stage returns the case placed at the state's contact point with its normal force and
 // creepages (pipeline/contact_case.hpp): geometry only, nothing is solved; the mean-contact stage

@@ -1,4 +1,4 @@
-// The curve contact state from the profiles (src/noise/curve_state.hpp): limits, load transfer,
+// The curve contact state from the profiles (src/vehicle/curve_state.hpp): limits, load transfer,
 // the two-point share, the multibody input, friction and cant deficiency.
 #include "vehicle/curve_state.hpp"
 #include "pipeline/curve_input_checks.hpp"

@@ -1,4 +1,4 @@
-// The quasi-static curving estimate (src/noise/curving.hpp).
+// The quasi-static curving estimate (src/vehicle/curving.hpp).
 #include "vehicle/curving.hpp"
 #include "pipeline/curve_input_checks.hpp"
 

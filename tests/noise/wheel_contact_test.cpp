@@ -1,5 +1,5 @@
 // Every wheel's contact state (src/noise/wheel_contact.hpp, bogie_wheel_contacts of
-// src/noise/curve_state.hpp): the inner wheel's mirrored frame, its sign conventions, the loads
+// src/vehicle/curve_state.hpp): the inner wheel's mirrored frame, its sign conventions, the loads
 // and creepages of the four wheels, and the multibody input of both wheelsets.
 #include "noise/wheel_contact.hpp"
 
