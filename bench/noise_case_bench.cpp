@@ -47,7 +47,7 @@ pipeline::NoiseResult run_curve_300m(const io::CaseReader& reader) {
 // rolling solve. Returns the element count.
 int run_steady_hertz(const io::CaseReader& reader) {
   io::ContactCase cc = io::read_contact_case(reader);
-  pipeline::place_contact(cc);
+  cc = pipeline::placed_contact(std::move(cc));
   const contact::ContactPatch patch = pipeline::solve_patch(cc);
   const auto s = contact::solve_steady_rolling(patch.influence, patch.normal.pn, cc.steady_input(),
                                                cc.tangential);
@@ -63,7 +63,7 @@ void NoiseCaseCurve300m(benchmark::State& state, std::vector<std::string> overri
   double elements = 0, frequencies = 0, contact_s = 0, structures_s = 0, wheels_s = 0;
   for (auto _ : state) {
     const pipeline::NoiseResult r = run_curve_300m(reader);
-    elements = r.contact.grid.nx * r.contact.grid.ny;
+    elements = r.mean.contact().grid.nx * r.mean.contact().grid.ny;
     frequencies = static_cast<double>(r.axis.frequency.size());
     contact_s = r.seconds_contact;
     structures_s = r.seconds_structures;
@@ -120,7 +120,7 @@ void SpeedBarsCurve300m(benchmark::State& state) {
     });
     t1 = cpu_seconds([&] {
       const pipeline::NoiseResult r = run_curve_300m(one);
-      elements = r.contact.grid.nx * r.contact.grid.ny;
+      elements = r.mean.contact().grid.nx * r.mean.contact().grid.ny;
       frequencies = static_cast<double>(r.axis.frequency.size());
     });
     th = cpu_seconds([&] { hertz_elements = run_steady_hertz(hertz); });

@@ -44,7 +44,7 @@ io::ContactTransient transient_of(const io::CaseReader& reader, const io::Contac
 int run_contact_input(const CommonOptions& o, bool steady_only) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   io::ContactCase cc = io::read_contact_case(reader);
-  io::within_case(reader, [&] { pipeline::place_contact(cc); });
+  io::within_case(reader, [&] { cc = pipeline::placed_contact(std::move(cc)); });
   const std::string dir = o.output.empty() ? "." : o.output;
   if (fs::exists(dir) && !fs::is_directory(dir))
     throw InputError("-o", "-o " + dir + ": not a folder");

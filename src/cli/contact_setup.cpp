@@ -4,9 +4,9 @@
 
 namespace rollnoise::cli {
 
-MeanState solve_mean_state(const io::CaseReader& r, bool with_model) {
-  io::ContactCase c = io::read_contact_case(r);
-  return io::within_case(r, [&] { return pipeline::solve_mean_state(std::move(c), with_model); });
+MeanContact solve_mean_contact(const io::CaseReader& r) {
+  const io::ContactCase c = io::read_contact_case(r);
+  return io::within_case(r, [&] { return pipeline::mean_contact(c, pipeline::MeanContactOptions{}); });
 }
 
 }  // namespace rollnoise::cli

@@ -1,15 +1,15 @@
-// The mean state of a case file, for the commands that start from it (creep, response, validate,
-// bench): the case read by io, the mean state solved by the pipeline (pipeline/mean_state.hpp).
+// The mean contact of a case file, for the commands that start from it (response, validate): the
+// case read by io, the mean contact solved by the pipeline (pipeline/mean_contact.hpp).
 #pragma once
 
 #include "io/case_reader.hpp"
-#include "pipeline/mean_state.hpp"
+#include "pipeline/mean_contact.hpp"
 
 namespace rollnoise::cli {
 
-using pipeline::MeanState;
+using pipeline::MeanContact;
 
-/// Read the contact part of the case and solve its mean state (and linear model when asked).
-MeanState solve_mean_state(const io::CaseReader& r, bool with_model);
+/// Read the contact part of the case and solve its mean contact with the linear model.
+MeanContact solve_mean_contact(const io::CaseReader& r);
 
 }  // namespace rollnoise::cli

@@ -37,7 +37,7 @@ int run_creep(const CommonOptions& o, const std::string& csv, bool direct, const
                                                    "--extrapolate-grids")
                 : pipeline::run_creep(std::move(cc), freq, direct, freq_key);
   });
-  const nss::LinearContactModel& model = *r.state.model;
+  const nss::LinearContactModel& model = *r.state.model();
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);

@@ -105,18 +105,18 @@ int run_noise(const CommonOptions& o) {
   io::write_noise(w, reader, nc, r);
   w.commit();
 
-  const pipeline::ContactCase& cc = r.contact;
+  const pipeline::ContactCase& cc = r.mean.contact();
   const auto& centres = r.axis.centres;
   char track[64] = "tangent track";  // the radius as a number: any size prints (no int cast)
   if (nc.curve_radius > 0) std::snprintf(track, sizeof track, "curve R = %.6g m", nc.curve_radius);
   std::printf("%s: %s, V = %.3g m/s; leading outer wheel: creepages (%.4g, %.4g, %.4g rad/m), "
               "contact angle %.3g rad\n",
               reader.name().c_str(), track,
-              cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.curve.position.contact_angle);
-  print_contact_state(r.curve);
+              cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.mean.curve().position.contact_angle);
+  print_contact_state(r.mean.curve());
   std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "
               "structures %.1f s, total %.1f s\n",
-              r.stage.model->adhesion_elements(), r.stage.model->slip_elements(), r.axis.frequency.size(),
+              r.mean.model()->adhesion_elements(), r.mean.model()->slip_elements(), r.axis.frequency.size(),
               centres.size(), r.seconds_contact, r.seconds_structures, r.seconds_total);
   print_wheels(r);
   if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());

@@ -26,13 +26,13 @@
 namespace rollnoise::cli {
 namespace {
 
-Eigen::Vector3d mean_force(const MeanState& ms) {
-  const auto f = contact::total_forces(ms.patch->grid, ms.steady.px, ms.steady.py);
+Eigen::Vector3d mean_force(const MeanContact& ms) {
+  const auto f = contact::total_forces(ms.patch().grid, ms.steady().px, ms.steady().py);
   return {f.Fx, f.Fy, f.Mz};
 }
 
-nss::LinearResponse linear_response(const MeanState& ms, const contact::CreepageHistory& h, long steps) {
-  return nss::linear_response(*ms.model, mean_force(ms), ms.contact.normal_force, h, steps);
+nss::LinearResponse linear_response(const MeanContact& ms, const contact::CreepageHistory& h, long steps) {
+  return nss::linear_response(*ms.model(), mean_force(ms), ms.contact().normal_force, h, steps);
 }
 
 long steps_of(const io::CaseReader& reader, double dt) {
@@ -52,21 +52,21 @@ long steps_of(const io::CaseReader& reader, double dt) {
 int run_response(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const contact::CreepageHistory h = io::read_excitation(reader);
-  MeanState ms = solve_mean_state(reader, true);
-  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact, h); });
-  const long steps = steps_of(reader, ms.model->time_step());
-  io::normal_load_series(reader, h, ms.contact.normal_force, ms.model->time_step(), steps);  // N_k > 0
+  const MeanContact ms = solve_mean_contact(reader);
+  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact(), h); });
+  const long steps = steps_of(reader, ms.model()->time_step());
+  io::normal_load_series(reader, h, ms.contact().normal_force, ms.model()->time_step(), steps);  // N_k > 0
   const auto t0 = std::chrono::steady_clock::now();
   const nss::LinearResponse r = linear_response(ms, h, steps);
   const double ms_run = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
-  io::write_mean_state(w, reader, *ms.patch, ms.contact.creepage, ms.steady);
+  io::write_mean_state(w, reader, ms.patch(), ms.contact().creepage, ms.steady());
   io::write_linear_response(w, "/response", r);
   io::write_excitation(w, "/response/excitation", h);
   w.commit();
   std::printf("%s: linear response, %ld steps of %.4g s, in %.0f ms (recursion%s)\n", reader.name().c_str(),
-              steps, ms.model->time_step(), ms_run, r.has_synthesis() ? " and harmonic synthesis" : "");
+              steps, ms.model()->time_step(), ms_run, r.has_synthesis() ? " and harmonic synthesis" : "");
   if (r.has_synthesis()) {
     const double t_start = reader.real("transient.analysis_start");
     const nss::RecursionSynthesisGap gap = nss::recursion_synthesis_gap(r, t_start);
@@ -81,30 +81,30 @@ int run_validate(const CommonOptions& o) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   const auto reference = read_reference(o);  // CONTACT's run: bad files fail before any work
   const contact::CreepageHistory h = io::read_excitation(reader);
-  MeanState ms = solve_mean_state(reader, true);
-  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact, h); });
-  const double dt = ms.model->time_step();
+  const MeanContact ms = solve_mean_contact(reader);
+  io::within_case(reader, [&] { pipeline::check_excitation_nyquist(ms.contact(), h); });
+  const double dt = ms.model()->time_step();
   const long steps = steps_of(reader, dt);
-  io::normal_load_series(reader, h, ms.contact.normal_force, dt, steps);  // N_k > 0, else InputError
+  io::normal_load_series(reader, h, ms.contact().normal_force, dt, steps);  // N_k > 0, else InputError
   const double t_start = reader.real("transient.analysis_start");
   const nss::LinearResponse lin = linear_response(ms, h, steps);
   if (nss::analysed_samples(lin.time, t_start) < 8)
     reader.fail("transient.analysis_start", "leaves fewer than 8 samples to analyse");
 
   // the unsteady reference from the same steady state
-  contact::TransientRolling rolling(ms.patch->influence, ms.patch->normal.pn, ms.contact.mu, ms.contact.speed,
-                                    ms.contact.spin_offset, ms.contact.backend, ms.contact.tangential);
-  rolling.set_falling_friction(ms.contact.falling);
-  rolling.set_tractions(ms.steady.px, ms.steady.py);
+  contact::TransientRolling rolling(ms.patch().influence, ms.patch().normal.pn, ms.contact().mu, ms.contact().speed,
+                                    ms.contact().spin_offset, ms.contact().backend, ms.contact().tangential);
+  rolling.set_falling_friction(ms.contact().falling);
+  rolling.set_tractions(ms.steady().px, ms.steady().py);
   const bool varying_load = h.has_normal_variation();
   if (varying_load)  // the normal problem is re-solved at every step (transient_rolling.hpp)
-    rolling.set_normal_problem(ms.patch->undeformed_distance, ms.contact.normal_force, ms.contact.normal);
+    rolling.set_normal_problem(ms.patch().undeformed_distance, ms.contact().normal_force, ms.contact().normal);
   std::vector<Eigen::Vector3d> unsteady = {mean_force(ms)};
   const auto t0 = std::chrono::steady_clock::now();
   {
     Progress progress("unsteady solver", steps, o.quiet, "steps");
     const auto forces =
-        contact::rolling_forces(rolling, ms.patch->grid, h, ms.contact.sampling, dt, steps,
+        contact::rolling_forces(rolling, ms.patch().grid, h, ms.contact().sampling, dt, steps,
                                 varying_load ? lin.normal_force : std::vector<double>{},
                                 [&](long k) { progress.update(k); });
     unsteady.insert(unsteady.end(), forces.begin(), forces.end());
@@ -118,7 +118,7 @@ int run_validate(const CommonOptions& o) {
 
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
-  io::write_mean_state(w, reader, *ms.patch, ms.contact.creepage, ms.steady);
+  io::write_mean_state(w, reader, ms.patch(), ms.contact().creepage, ms.steady());
   io::write_linear_response(w, "/validate/linear", lin);
   io::write_excitation(w, "/validate/excitation", h);
   io::write_validation(w, lin, unsteady, v, fr);

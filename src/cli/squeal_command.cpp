@@ -46,7 +46,7 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
   pipeline::RouteAgreement agreement;
   if (route1) {
     r1 = io::within_case(reader, [&] { return pipeline::squeal_route1(r, nc); });
-    roots1 = pipeline::match_route1(r1, route2 ? r.roots : pipeline::uncoupled_roots(nc, r.curve));
+    roots1 = pipeline::match_route1(r1, route2 ? r.roots : pipeline::uncoupled_roots(nc, r.mean.curve()));
     if (route2) agreement = pipeline::route_agreement(roots1, r.roots);
   }
   pipeline::Route1Deviation dev;

@@ -37,7 +37,7 @@ int run_statespace(const CommonOptions& o, const std::string& csv_prefix) {
   w.commit();
   for (auto& t : tables) t.commit();
 
-  const nss::LinearContactModel& model = *r.creep.state.model;
+  const nss::LinearContactModel& model = *r.creep.state.model();
   std::printf(
       "%s: linear NSS model on %d contact elements (%d adhesion, %d slip); f, g at %zu frequencies "
       "(0 Hz and the band %.6g-%.6g Hz) in %.0f ms\n",

@@ -38,7 +38,7 @@ void print_solution(const contact::Grid& g, const contact::TangentialSolution& s
 int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
   const io::CaseReader reader = io::CaseReader::from_file(o.case_file, o.overrides);
   io::ContactCase cc = io::read_contact_case(reader);
-  io::within_case(reader, [&] { pipeline::place_contact(cc); });
+  io::within_case(reader, [&] { cc = pipeline::placed_contact(std::move(cc)); });
   if (sweeps.size() > 1) throw InputError("--sweep", "one --sweep per run");
   if (!sweeps.empty() && !o.contact_reference.empty())
     throw InputError("--reference", "--reference compares the steady solution; not with --sweep");
@@ -50,7 +50,7 @@ int run_steady(const CommonOptions& o, const std::vector<std::string>& sweeps) {
     for (const auto& kv : io::expand_sweep(sweeps[0], reader, cc, values)) {
       const io::CaseReader point = reader.with(kv);
       point_cases.push_back(io::read_contact_case(point));
-      io::within_case(point, [&] { pipeline::place_contact(point_cases.back()); });
+      io::within_case(point, [&] { point_cases.back() = pipeline::placed_contact(std::move(point_cases.back())); });
     }
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);

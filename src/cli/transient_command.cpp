@@ -19,7 +19,7 @@ int run_transient(const CommonOptions& o) {
   pipeline::TransientInput in{io::read_excitation(reader), reader.real("transient.duration"),
                               reader.string("transient.start") == "steady", reader.real_list("transient.snapshots")};
   io::within_case(reader, [&] {
-    pipeline::place_contact(cc);
+    cc = pipeline::placed_contact(std::move(cc));
     pipeline::check_transient(cc, in);  // before any solve
   });
   const std::string out = output_path(o, reader.name());

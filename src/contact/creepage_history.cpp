@@ -5,7 +5,7 @@
 #include <random>
 #include <utility>
 
-#include "core/errors.hpp"
+#include "core/assert.hpp"
 
 namespace rollnoise::contact {
 
@@ -42,10 +42,8 @@ CreepageHistory CreepageHistory::harmonic(const Creepage& mean,
                                           const std::array<double, 3>& amplitude, double frequency,
                                           const std::array<double, 3>& phase,
                                           double normal_amplitude, double normal_phase) {
-  if (!(frequency > 0.0)) throw InputError("excitation.frequency", "must be positive");
-  if (!std::isfinite(normal_amplitude))
-    throw InputError("excitation.normal_amplitude", "must be finite");
-  if (!std::isfinite(normal_phase)) throw InputError("excitation.normal_phase", "must be finite");
+  ROLLNOISE_ASSERT(frequency > 0.0 && std::isfinite(normal_amplitude) && std::isfinite(normal_phase),
+                   "harmonic excitation: a positive frequency, a finite load amplitude and phase");
   CreepageHistory h;
   h.kind_ = Kind::harmonic;
   h.mean_ = mean;
@@ -61,11 +59,8 @@ CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
                                                const std::array<double, 3>& amplitude, double f_min,
                                                double f_max, int count, std::uint64_t seed,
                                                double normal_amplitude) {
-  if (!(f_min > 0.0)) throw InputError("excitation.f_min", "must be positive");
-  if (!(f_max >= f_min)) throw InputError("excitation.f_max", "must not be below excitation.f_min");
-  if (count < 1) throw InputError("excitation.count", "must be at least 1");
-  if (!std::isfinite(normal_amplitude))
-    throw InputError("excitation.normal_amplitude", "must be finite");
+  ROLLNOISE_ASSERT(f_min > 0.0 && f_max >= f_min && count >= 1 && std::isfinite(normal_amplitude),
+                   "multiharmonic excitation: 0 < f_min <= f_max, count >= 1, a finite load amplitude");
   CreepageHistory h;
   h.kind_ = Kind::multiharmonic;
   h.mean_ = mean;
@@ -89,17 +84,11 @@ CreepageHistory CreepageHistory::multiharmonic(const Creepage& mean,
 
 CreepageHistory CreepageHistory::samples(const Creepage& mean, std::vector<double> t,
                                          std::vector<Creepage> values, std::vector<double> normal) {
-  if (t.size() < 2 || t.size() != values.size())
-    throw InputError("excitation.file", "a creepage time series needs at least two samples");
-  if (!normal.empty() && normal.size() != t.size())
-    throw InputError("excitation.file", "the normal-load column needs one value per time");
-  for (size_t i = 0; i < normal.size(); ++i)
-    if (!std::isfinite(normal[i]))
-      throw InputError("excitation.file",
-                       "normal-load variation not finite (row " + std::to_string(i + 1) + ")");
-  for (size_t i = 1; i < t.size(); ++i)
-    if (!(t[i] > t[i - 1]))
-      throw InputError("excitation.file", "times must increase (row " + std::to_string(i + 1) + ")");
+  ROLLNOISE_ASSERT(t.size() >= 2 && t.size() == values.size() && (normal.empty() || normal.size() == t.size()),
+                   "a creepage time series of two or more samples, one normal load (if any) per time");
+  const auto not_increasing = [](double a, double b) { return !(b > a); };
+  ROLLNOISE_ASSERT(std::adjacent_find(t.begin(), t.end(), not_increasing) == t.end(), "strictly increasing times");
+  (void)not_increasing;
   CreepageHistory h;
   h.kind_ = Kind::samples;
   h.mean_ = mean;

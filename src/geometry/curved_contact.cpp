@@ -174,6 +174,52 @@ CurvedPatch curved_patch(const WheelRailPair& pair, const ContactGeometry& c, co
   return p;
 }
 
+// The sums over the patch of (C3) and the forces on the wheel, each row with its own orientation
+// (cos and sin of its contact angle): up = sum pn cos + py sin, lat = sum py cos - pn sin,
+// lon = sum px, pc = sum pn cos, psum = sum pn (per element area).
+struct RowSums {
+  double up = 0.0, lat = 0.0, lon = 0.0, pc = 0.0, psum = 0.0;
+};
+RowSums row_sums(const contact::Grid& g, const contact::GridField& pn_field, const contact::TangentialSolution& t,
+                 const std::vector<double>& cosd, const std::vector<double>& sind) {
+  RowSums r;
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const int k = g.index(ix, iy);
+      const double pn = pn_field[k], py = t.py[k];
+      r.up += pn * cosd[iy] + py * sind[iy];
+      r.lat += py * cosd[iy] - pn * sind[iy];
+      r.lon += t.px[k];
+      r.pc += pn * cosd[iy];
+      r.psum += pn;
+    }
+  return r;
+}
+
+[[noreturn]] void no_fixed_point(double Q, int max_iterations, double vertical, double lowering_change,
+                                 double cos_change) {
+  std::ostringstream m;
+  m << "wheel lowered under its vertical load " << Q << " N on the curved surface: no"
+    << " fixed point in " << max_iterations << " iterations (vertical force " << vertical
+    << " N, lowering change " << lowering_change << " m, mean cos change " << cos_change << ")";
+  throw NumericalError(m.str());
+}
+
+// Each row's contact angle, and their range over the rows that carry pressure.
+void set_row_angles(const CurvedPatch& cp, const ContactGeometry& c, const contact::GridField& pn,
+                    LoadedContact& out) {
+  const contact::Grid& g = cp.grid;
+  out.angle_min = 10.0, out.angle_max = -10.0;
+  for (int iy = 0; iy < g.ny; ++iy) {
+    out.row_angle.push_back(cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle);
+    for (int ix = 0; ix < g.nx; ++ix)
+      if (pn[g.index(ix, iy)] > 0.0) {
+        out.angle_min = std::min(out.angle_min, out.row_angle.back());
+        out.angle_max = std::max(out.angle_max, out.row_angle.back());
+      }
+  }
+}
+
 }  // namespace
 
 LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGeometry& c,
@@ -209,17 +255,8 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
       out.tangential = contact::solve_steady_rolling(patch->influence, patch->normal.pn, rolling,
                                                      {}, tstart);
       // (C3) and the forces on the wheel, each row with its own orientation.
-      double up = 0.0, lat = 0.0, lon = 0.0, pc = 0.0, psum = 0.0;
-      for (int iy = 0; iy < g.ny; ++iy)
-        for (int ix = 0; ix < g.nx; ++ix) {
-          const int k = g.index(ix, iy);
-          const double pn = patch->normal.pn[k], py = out.tangential.py[k];
-          up += pn * cosd[iy] + py * sind[iy];
-          lat += py * cosd[iy] - pn * sind[iy];
-          lon += out.tangential.px[k];
-          pc += pn * cosd[iy];
-          psum += pn;
-        }
+      const RowSums rs = row_sums(g, patch->normal.pn, out.tangential, cosd, sind);
+      const double up = rs.up, lat = rs.lat, lon = rs.lon, pc = rs.pc, psum = rs.psum;
       const double a = g.element_area();
       out.force_track = {lon * a, lat * a, up * a};
       const double dz_next = patch->normal.approach / c0, mean_cos = pc / psum;
@@ -227,14 +264,8 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
                            std::abs(dz_next - dz) <= 1e-4 * std::abs(dz_next) + 1e-13 &&
                            std::abs(mean_cos - c0) <= 1e-5;
       if (settled) break;
-      if (out.iterations >= in.max_iterations) {
-        std::ostringstream m;
-        m << "wheel lowered under its vertical load " << Q << " N on the curved surface: no"
-          << " fixed point in " << in.max_iterations << " iterations (vertical force "
-          << up * a << " N, lowering change " << dz_next - dz << " m, mean cos change "
-          << mean_cos - c0 << ")";
-        throw NumericalError(m.str());
-      }
+      if (out.iterations >= in.max_iterations)
+        no_fixed_point(Q, in.max_iterations, up * a, dz_next - dz, mean_cos - c0);
       // The vertical approach dz cos δ(s) at the fixed point; c0 the pressure-weighted mean. The
       // tolerances above leave an error in h~ of < 1e-4 dz |cos δ - c0|, < 1e-4 of the approach.
       dz = dz_next;
@@ -260,15 +291,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     out.creep_force = integrate_creep_force(g, out.tangential);
     out.vertical_approach = dz;
     out.curved = true;
-    out.angle_min = 10.0, out.angle_max = -10.0;
-    for (int iy = 0; iy < g.ny; ++iy) {
-      out.row_angle.push_back(cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle);
-      for (int ix = 0; ix < g.nx; ++ix)
-        if (patch->normal.pn[g.index(ix, iy)] > 0.0) {
-          out.angle_min = std::min(out.angle_min, out.row_angle.back());
-          out.angle_max = std::max(out.angle_max, out.row_angle.back());
-        }
-    }
+    set_row_angles(cp, c, patch->normal.pn, out);
     out.patch = std::move(patch);
     return out;
   }

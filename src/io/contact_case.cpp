@@ -35,7 +35,7 @@ void read_hertz_grid(const CaseReader& r, ContactCase& c, long nx, long ny) {
 }
 
 // The right wheel of a wheelset on track (docs/geometry.md): profiles, wheelset position, grid
-// options. The contact point and the grid are found by pipeline::place_contact.
+// options. The contact point and the grid are found by pipeline::placed_contact.
 void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& problems) {
   std::optional<geometry::Profile> wheel, rail;
   problems.check([&] {
@@ -47,7 +47,7 @@ void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& 
   if (wheel && rail) c.profiles = std::make_shared<const geometry::WheelRailPair>(*wheel, *rail);
   problems.check([&] { c.wheelset = {r.real("contact.lateral_displacement"), r.real("contact.yaw")}; });
   c.grid_options.nx = static_cast<int>(nx);
-  // the grid is placed around the contact the profiles give (pipeline::place_contact): a fixed
+  // the grid is placed around the contact the profiles give (pipeline::placed_contact): a fixed
   // extent is not honoured there, so it is refused rather than silently ignored
   for (const char* key : {"grid.x_min", "grid.x_max", "grid.y_min", "grid.y_max"})
     problems.check([&] {

@@ -1,6 +1,6 @@
 // Reading the contact part of a case (material, friction, speed, geometry, grid, mean creepage,
 // solver settings) into pipeline::ContactCase: values checked, profile files read, nothing solved
-// (the contact point of a profile case is found by pipeline::place_contact).
+// (the contact point of a profile case is found by pipeline::placed_contact).
 #pragma once
 
 #include "io/case_reader.hpp"

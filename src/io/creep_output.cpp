@@ -18,8 +18,8 @@ const char* kLoadUnits =
 
 void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& freq, const pipeline::CreepResult& c,
                  bool direct) {
-  const pipeline::MeanState& ms = c.state;
-  write_mean_state(w, r, *ms.patch, ms.contact.creepage, ms.steady);
+  const pipeline::MeanContact& ms = c.state;
+  write_mean_state(w, r, ms.patch(), ms.contact().creepage, ms.steady());
   std::vector<std::complex<double>> flat;
   for (const auto& m : c.f)
     for (int j = 0; j < 3; ++j)
@@ -29,9 +29,9 @@ void write_creep(Hdf5Writer& w, const CaseReader& r, const std::vector<double>& 
   std::vector<std::complex<double>> flat_g;
   for (const auto& v : c.g) flat_g.insert(flat_g.end(), {v(0), v(1), v(2)});
   w.write("/creep/g", flat_g, {freq.size(), 3}, kLoadUnits);
-  w.write("/creep/nyquist_frequency", ms.model->nyquist_frequency(), "Hz");
+  w.write("/creep/nyquist_frequency", ms.model()->nyquist_frequency(), "Hz");
   w.attribute("/creep", "method", creep_method(c, direct));
-  w.attribute("/creep", "creepage_sampling", contact::sampling_name(ms.contact.sampling));
+  w.attribute("/creep", "creepage_sampling", contact::sampling_name(ms.contact().sampling));
   if (c.extrapolation) write_extrapolation(w, freq, *c.extrapolation);
 }
 
@@ -74,7 +74,7 @@ void write_extrapolation(Hdf5Writer& w, const std::vector<double>& freq, const p
 std::string creep_method(const pipeline::CreepResult& c, bool direct) {
   if (direct) return "complex LU per frequency (--direct)";
   // the route the fast sweep took (nss/markov_sweep.cpp)
-  switch (c.state.model->sweep_info().method) {
+  switch (c.state.model()->sweep_info().method) {
     case nss::SweepInfo::Method::krylov:
       return "block Krylov reduced model (Markov parameters, Horner per frequency)";
     case nss::SweepInfo::Method::markov:

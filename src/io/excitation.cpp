@@ -118,11 +118,13 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
       dn.push_back(e);
     }
   }
-  try {
-    return contact::CreepageHistory::samples(mean, t, v, dn);
-  } catch (const InputError& e) {
-    r.fail("excitation.file", file.string() + ": " + e.what());
-  }
+  // the series as contact::CreepageHistory::samples takes it
+  if (t.size() < 2) r.fail("excitation.file", file.string() + ": a creepage time series needs at least two samples");
+  for (size_t i = 1; i < t.size(); ++i)
+    if (!(t[i] > t[i - 1]))
+      r.fail("excitation.file",
+             file.string() + ": times must increase (sample " + std::to_string(i + 1) + ")");
+  return contact::CreepageHistory::samples(mean, t, v, dn);
 }
 
 void write_excitation(Hdf5Writer& w, const std::string& group, const contact::CreepageHistory& h) {

@@ -92,7 +92,7 @@ void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelN
   const noise::WheelContact& st = wn.state;
   const geometry::LoadedContact& loaded = *st.loaded;
   const std::string g = group + "/contact/";
-  w.write(g + "normal_stiffness", wn.normal_stiffness, "N/m");
+  w.write(g + "normal_stiffness", wn.mean.normal_stiffness(), "N/m");
   w.write(g + "angle", st.contact.contact_angle, "rad");
   w.write(g + "position_wheel", st.contact.wheel_s,
           "m (wheel profile coordinate from the nominal running circle, field side > 0)");
@@ -210,7 +210,8 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
                  const pipeline::NoiseResult& r) {
   using Baseline = pipeline::NoiseCase::Baseline;
   const auto& variants = r.variants;
-  write_mean_state(w, case_as_run(reader, r.contact, r.curve), *r.stage.patch, r.contact.creepage, r.stage.steady);
+  write_mean_state(w, case_as_run(reader, r.mean.contact(), r.mean.curve()), r.mean.patch(), r.mean.contact().creepage,
+                   r.mean.steady());
   const std::vector<double>& freq = r.axis.frequency;
   const std::size_t nf = freq.size();
   w.write("/noise/frequency", freq, {nf}, "Hz");
@@ -226,13 +227,13 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   w.write("/noise/creep/f", flatten(r.creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
   w.write("/noise/creep/g", flatten(r.load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
-  write_contact_state(w, "/noise/contact", nc, r.contact, r.curve, r.stage.normal_stiffness);
+  write_contact_state(w, "/noise/contact", nc, r.mean.contact(), r.mean.curve(), r.mean.normal_stiffness());
   write_wheels(w, r);
-  if (r.curve.estimated) {
+  if (r.mean.curve().estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
-    w.write("/noise/curving/attack_angle", r.curve.curving.leading.attack_angle, "rad");
-    w.write("/noise/curving/lateral", r.curve.curving.leading.lateral, "m");
-    w.write("/noise/curving/flange_force", r.curve.curving.leading.flange_force, "N");
+    w.write("/noise/curving/attack_angle", r.mean.curve().curving.leading.attack_angle, "rad");
+    w.write("/noise/curving/lateral", r.mean.curve().curving.leading.lateral, "m");
+    w.write("/noise/curving/flange_force", r.mean.curve().curving.leading.flange_force, "N");
   }
   if (variants.has_uncoupled()) {
     write_variant(w, "/noise/uncoupled", variants.uncoupled, r.uncoupled_bands, "the same contact with g = 0");
@@ -257,7 +258,8 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
 void write_receptance(Hdf5Writer& w, const CaseReader& reader, const pipeline::ReceptanceResult& r) {
   const std::string units =
       "m/N, m/(N m), rad/N, rad/(N m); order normal, x, y, rotation about the normal (contact frame)";
-  write_mean_state(w, case_as_run(reader, r.contact, r.curve), *r.stage.patch, r.contact.creepage, r.stage.steady);
+  write_mean_state(w, case_as_run(reader, r.mean.contact(), r.mean.curve()), r.mean.patch(), r.mean.contact().creepage,
+                   r.mean.steady());
   const std::size_t nf = r.frequency.size();
   w.write("/receptance/frequency", r.frequency, {nf}, "Hz");
   w.write("/receptance/wheel", flatten(r.structures.wheel_contact), {nf, 4, 4}, units);

@@ -7,8 +7,9 @@ namespace rollnoise::io {
 
 void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseCase& nc,
                   const pipeline::SquealResult& r) {
-  write_mean_state(w, case_as_run(reader, r.contact, r.curve), *r.stage.patch, r.contact.creepage, r.stage.steady);
-  write_contact_state(w, "/squeal/contact", nc, r.contact, r.curve, r.stage.normal_stiffness);
+  write_mean_state(w, case_as_run(reader, r.mean.contact(), r.mean.curve()), r.mean.patch(), r.mean.contact().creepage,
+                   r.mean.steady());
+  write_contact_state(w, "/squeal/contact", nc, r.mean.contact(), r.mean.curve(), r.mean.normal_stiffness());
   const std::size_t n = r.roots.size();
   std::vector<std::complex<double>> s, s0;
   std::vector<double> freq, zeta, fn, residual, singular;

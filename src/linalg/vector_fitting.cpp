@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace rollnoise::linalg {
 namespace {
@@ -257,14 +258,15 @@ double relative_response_error(const std::vector<Eigen::MatrixXcd>& H,
   return std::max(worst, 0.0);
 }
 
-RationalFit fit_rational(const std::vector<double>& frequency,
-                         const std::vector<Eigen::MatrixXcd>& H, const RationalFitOptions& o) {
+namespace {
+
+// The frequency range of the samples (checked): the highest f and the lowest positive one.
+std::pair<double, double> sample_range(const std::vector<double>& frequency, const std::vector<Eigen::MatrixXcd>& H) {
   const size_t K = frequency.size();
   if (K < 2 || H.size() != K)
     throw std::invalid_argument("fit_rational: need two or more samples, one per frequency");
-  const Eigen::Index p = H[0].rows(), m = H[0].cols();
   for (const auto& h : H)
-    if (h.rows() != p || h.cols() != m)
+    if (h.rows() != H[0].rows() || h.cols() != H[0].cols())
       throw std::invalid_argument("fit_rational: samples differ in size");
   double f_max = 0.0, f_lo = std::numeric_limits<double>::infinity();
   for (double f : frequency) {
@@ -274,17 +276,14 @@ RationalFit fit_rational(const std::vector<double>& frequency,
     if (f > 0) f_lo = std::min(f_lo, f);
   }
   if (!(f_max > 0)) throw std::invalid_argument("fit_rational: no positive frequency");
-  const double w_ref = 2.0 * M_PI * f_max;
-  const double lo =
-      std::max(f_lo / f_max, 1e-4);  // starting poles from the lowest sample (relative)
+  return {f_max, f_lo};
+}
 
-  RationalFit best;
-  Eigen::MatrixXd peak = Eigen::MatrixXd::Zero(p, m);
-  for (const auto& h : H) peak = peak.cwiseMax(h.cwiseAbs());
-  best.scaling =
-      o.scaling.output.size() == p && o.scaling.input.size() == m ? o.scaling : equilibrate(peak);
-  const IoScaling& sc = best.scaling;
-
+// The fit's data: s'_k = i f_k / f_max, the samples scaled by `sc` and weighted by 1/|H_s(f_k)|_F,
+// one weighted vector per entry that is not zero everywhere (|H_ij| peak > 0).
+Data scaled_data(const std::vector<double>& frequency, const std::vector<Eigen::MatrixXcd>& H, double f_max,
+                 const IoScaling& sc, const Eigen::MatrixXd& peak) {
+  const size_t K = frequency.size();
   Data d;
   d.s.resize(K);
   d.weight.resize(K);
@@ -295,27 +294,34 @@ RationalFit fit_rational(const std::vector<double>& frequency,
     const double nk = Hs[k].norm();
     d.weight(k) = nk > 0 ? 1.0 / nk : 1.0;
   }
-  for (Eigen::Index i = 0; i < p; ++i)
-    for (Eigen::Index j = 0; j < m; ++j) {
+  for (Eigen::Index i = 0; i < peak.rows(); ++i)
+    for (Eigen::Index j = 0; j < peak.cols(); ++j) {
       if (peak(i, j) == 0.0) continue;  // fitted as 0
       Eigen::VectorXcd e(K);
       for (size_t k = 0; k < K; ++k) e(k) = d.weight(k) * Hs[k](i, j);
       d.entry.push_back(e);
       d.index.emplace_back(int(i), int(j));
     }
+  return d;
+}
 
-  // the order loop (poles in units of w_ref); at most K - 1 poles (the QR blocks need K >= N + 1)
-  const int max_poles = std::max(1, std::min(o.max_poles, int(K) - 1));
-  const int step = std::max(1, o.pole_step);
-  std::vector<cd> best_poles;
-  Eigen::MatrixXd best_coef;
-  double best_err = std::numeric_limits<double>::infinity();
-  int best_flipped = 0;
+// The best fit over the orders (poles in units of w_ref): pole_step, 2 pole_step, ... poles, at
+// most K - 1 (the QR blocks need K >= N + 1), until the weighted error reaches the target.
+struct OrderFit {
+  std::vector<cd> poles;
+  Eigen::MatrixXd coef;
+  int flipped = 0;
+};
+OrderFit best_order(const Data& d, double lo, const RationalFitOptions& o) {
+  OrderFit best;
   if (d.entry.empty()) {  // H = 0: the zero model
-    best_err = 0.0;
-    best_coef = Eigen::MatrixXd::Zero(1, 0);
+    best.coef = Eigen::MatrixXd::Zero(1, 0);
+    return best;
   }
-  for (int n = std::min(step, max_poles); !d.entry.empty() && n <= max_poles; n += step) {
+  const int max_poles = std::max(1, std::min(o.max_poles, int(d.s.size()) - 1));
+  const int step = std::max(1, o.pole_step);
+  double best_err = std::numeric_limits<double>::infinity();
+  for (int n = std::min(step, max_poles); n <= max_poles; n += step) {
     std::vector<cd> poles = starting_poles(n, lo, 1.0);
     int flipped = 0;
     for (int it = 0; it < o.iterations; ++it) {
@@ -329,37 +335,61 @@ RationalFit fit_rational(const std::vector<double>& frequency,
     const Eigen::MatrixXcd phi = basis(d.s, poles);
     const Eigen::MatrixXd coef = fit_residues(d, phi);
     const double err = weighted_error(d, phi, coef);
-    if (err < best_err)
-      best_err = err, best_poles = poles, best_coef = coef, best_flipped = flipped;
+    if (err < best_err) best_err = err, best.poles = poles, best.coef = coef, best.flipped = flipped;
     if (best_err <= o.target) break;
   }
+  return best;
+}
 
-  // residues in physical units: R = w_ref so_i si_j R', D = so_i si_j d'; the realisation
-  const int N = pole_count(best_poles);
-  std::vector<Eigen::MatrixXcd> residues(best_poles.size(), Eigen::MatrixXcd::Zero(p, m));
+// The state space of a fit in physical units: poles w_ref a', residues R = w_ref so_i si_j R',
+// D = so_i si_j d'; the realisation, and the poles with their conjugates.
+void physical_model(const OrderFit& f, const Data& d, double w_ref, Eigen::Index p, Eigen::Index m, RationalFit& out) {
+  const IoScaling& sc = out.scaling;
+  const int N = pole_count(f.poles);
+  std::vector<Eigen::MatrixXcd> residues(f.poles.size(), Eigen::MatrixXcd::Zero(p, m));
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(p, m);
   for (size_t e = 0; e < d.index.size(); ++e) {
     const auto [i, j] = d.index[e];
     const double u = sc.output(i) * sc.input(j);
     int col = 0;
-    for (size_t n = 0; n < best_poles.size(); ++n) {
-      if (best_poles[n].imag() == 0.0) {
-        residues[n](i, j) = w_ref * u * best_coef(col++, e);
+    for (size_t n = 0; n < f.poles.size(); ++n) {
+      if (f.poles[n].imag() == 0.0) {
+        residues[n](i, j) = w_ref * u * f.coef(col++, e);
       } else {
-        residues[n](i, j) = w_ref * u * cd(best_coef(col, e), best_coef(col + 1, e));
+        residues[n](i, j) = w_ref * u * cd(f.coef(col, e), f.coef(col + 1, e));
         col += 2;
       }
     }
-    D(i, j) = u * best_coef(N, e);
+    D(i, j) = u * f.coef(N, e);
   }
   std::vector<cd> poles_phys;
-  for (cd a : best_poles) poles_phys.push_back(w_ref * a);
-  best.model = realise(poles_phys, residues, D);
+  for (cd a : f.poles) poles_phys.push_back(w_ref * a);
+  out.model = realise(poles_phys, residues, D);
   for (cd a : poles_phys) {
-    best.poles.push_back(a);
-    if (a.imag() != 0.0) best.poles.push_back(std::conj(a));
+    out.poles.push_back(a);
+    if (a.imag() != 0.0) out.poles.push_back(std::conj(a));
   }
-  best.flipped = best_flipped;
+  out.flipped = f.flipped;
+}
+
+}  // namespace
+
+RationalFit fit_rational(const std::vector<double>& frequency,
+                         const std::vector<Eigen::MatrixXcd>& H, const RationalFitOptions& o) {
+  const auto [f_max, f_lo] = sample_range(frequency, H);
+  const size_t K = frequency.size();
+  const Eigen::Index p = H[0].rows(), m = H[0].cols();
+  const double w_ref = 2.0 * M_PI * f_max;
+  const double lo = std::max(f_lo / f_max, 1e-4);  // starting poles from the lowest sample (relative)
+
+  RationalFit best;
+  Eigen::MatrixXd peak = Eigen::MatrixXd::Zero(p, m);
+  for (const auto& h : H) peak = peak.cwiseMax(h.cwiseAbs());
+  best.scaling =
+      o.scaling.output.size() == p && o.scaling.input.size() == m ? o.scaling : equilibrate(peak);
+  const IoScaling& sc = best.scaling;
+  const Data d = scaled_data(frequency, H, f_max, sc, peak);
+  physical_model(best_order(d, lo, o), d, w_ref, p, m, best);
 
   // the reported errors, from the realised model
   std::vector<Eigen::MatrixXcd> Hm(K);

@@ -64,8 +64,7 @@ std::array<double, 2> third_octave_edges(double centre) {
 }
 
 std::vector<double> band_frequencies(const std::vector<double>& centres, int points_per_band) {
-  if (points_per_band < 1)
-    throw InputError("noise.points_per_band", "need at least one frequency per band");
+  ROLLNOISE_ASSERT(points_per_band >= 1, "at least one frequency per band (noise.points_per_band, checked by io)");
   std::vector<double> out;
   for (double c : centres) {
     if (!(c > 0.0)) throw InputError("frequency", "band centres must be positive");

@@ -98,10 +98,10 @@ std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& lo
     if (!excited[a]) continue;
     noise::ContactFilter filter;
     filter.model = nc.filter;
-    filter.a = contacts[a]->contact.a;
-    filter.b = contacts[a]->contact.b;
+    filter.a = contacts[a]->mean.contact().a;
+    filter.b = contacts[a]->mean.contact().b;
     levels.push_back(noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness,
-                                             contacts[a]->contact.speed, filter)
+                                             contacts[a]->mean.contact().speed, filter)
                          .levels(centres));
   }
   std::vector<noise::BandLevels> out;

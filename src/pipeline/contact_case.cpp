@@ -8,7 +8,7 @@
 
 namespace rollnoise::pipeline {
 
-void place_contact_at(ContactCase& c, const geometry::ContactGeometry& point, double normal_force) {
+ContactCase placed_contact_at(ContactCase c, const geometry::ContactGeometry& point, double normal_force) {
   c.contact_point = point;
   c.normal_force = normal_force;
   c.grid = geometry::choose_grid(*c.profiles, c.contact_point, c.normal_force, c.material, c.grid_options);
@@ -16,11 +16,17 @@ void place_contact_at(ContactCase& c, const geometry::ContactGeometry& point, do
   c.a = hz.a, c.b = hz.b;  // Hertz's estimate from the curvatures at the contact point
   c.placed = true;
   check_contact_size(c);
+  return c;
 }
 
-void place_contact(ContactCase& c) {
-  if (c.placed || !c.profiles) return check_contact_size(c);
-  place_contact_at(c, geometry::find_contact(*c.profiles, c.wheelset), c.normal_force);
+ContactCase placed_contact(ContactCase c) {
+  if (c.placed || !c.profiles) {
+    check_contact_size(c);
+    return c;
+  }
+  const geometry::ContactGeometry point = geometry::find_contact(*c.profiles, c.wheelset);
+  const double normal_force = c.normal_force;
+  return placed_contact_at(std::move(c), point, normal_force);
 }
 
 double nyquist_frequency(const ContactCase& c) { return 0.5 * c.speed / c.grid.dx; }

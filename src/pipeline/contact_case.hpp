@@ -1,7 +1,7 @@
 // The contact part of a case as plain data (read by io/contact_case.hpp, nothing solved), and the
 // first steps of every pipeline on it:
 //
-//   place_contact       profiles: the contact point of the wheelset position, the grid chosen
+//   placed_contact      profiles: the contact point of the wheelset position, the grid chosen
 //                       around it and Hertz's semi-axes from the curvatures there (geometry only,
 //                       milliseconds); the Hertzian case is placed when read;
 //   check_nyquist       the frequencies a command will evaluate against the grid's Nyquist limit
@@ -35,7 +35,7 @@ struct ContactCase {
   std::string geometry = "hertz";  ///< "hertz" or "profiles"
   double normal_force = 0.0;
   double a = 0.0, b = 0.0;  ///< Hertz semi-axes (m); profiles: Hertz's estimate at the contact point
-  contact::Grid grid;       ///< Hertzian: from the case; profiles: chosen by place_contact
+  contact::Grid grid;       ///< Hertzian: from the case; profiles: chosen by placed_contact
   double spin_offset = 0.0;
   contact::Creepage creepage;
   /// rolling.creepage_sampling: when the creepage of a rolling step is taken (transient, linear model)
@@ -44,7 +44,7 @@ struct ContactCase {
   nss::LinearSolver linear_solver = nss::LinearSolver::automatic;  ///< solver.linear_model
   int threads = 0;  ///< solver.threads: of the linear model (0: one per hardware thread, at most 4)
   /// profiles: the wheel-rail pair, the wheelset position the contact point is found at, and
-  /// (after place_contact) the contact point.
+  /// (after placed_contact) the contact point.
   std::shared_ptr<const geometry::WheelRailPair> profiles;
   geometry::WheelsetPosition wheelset;
   geometry::ContactGeometry contact_point;
@@ -57,21 +57,21 @@ struct ContactCase {
   contact::SteadyRollingInput steady_input() const { return {mu, speed, creepage, spin_offset, falling}; }
 };
 
-/// Profiles: find the contact point at `c.wheelset`, choose the grid around it and set a, b from
-/// Hertz's estimate. Hertzian cases are placed when read; a placed case is left unchanged. Either
-/// way InputError naming grid.nx when the contact problem on the grid exceeds limits.memory
-/// (check_contact_size), before anything is solved.
-void place_contact(ContactCase& c);
+/// The case placed. Profiles: the contact point found at `c.wheelset`, the grid chosen around it and
+/// a, b from Hertz's estimate. Hertzian cases are placed when read; a placed case is returned
+/// unchanged. Either way InputError naming grid.nx when the contact problem on the grid exceeds
+/// limits.memory (check_contact_size), before anything is solved.
+[[nodiscard]] ContactCase placed_contact(ContactCase c);
 
-/// Profiles: the contact point given (the curve contact state found it) with its normal force;
-/// the grid and a, b follow as in place_contact.
-void place_contact_at(ContactCase& c, const geometry::ContactGeometry& point, double normal_force);
+/// Profiles: the case placed at the contact point given (the curve contact state found it) with
+/// its normal force; the grid and a, b follow as in placed_contact.
+[[nodiscard]] ContactCase placed_contact_at(ContactCase c, const geometry::ContactGeometry& point, double normal_force);
 
 /// The grid's Nyquist limit V/(2 dx) (Hz): one rolling step dx/V per time step.
 double nyquist_frequency(const ContactCase& c);
 
-/// InputError naming `key` when a frequency lies above the Nyquist limit. Called once the case is
-/// placed (before any solve) and again on the patch's grid, which profiles may have enlarged.
+/// InputError naming `key` when a frequency lies above the Nyquist limit. The mean-contact stage
+/// (pipeline/mean_contact.hpp) calls it once, on the patch's final grid (profiles may enlarge it).
 void check_nyquist(const ContactCase& c, const std::vector<double>& freq, const std::string& key);
 
 /// The normal problem of the case (placed). With profiles the grid is enlarged when the contact

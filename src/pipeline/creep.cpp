@@ -12,13 +12,13 @@ namespace rollnoise::pipeline {
 CreepResult run_creep(ContactCase c, const std::vector<double>& freq, bool direct, const std::string& frequency_key) {
   using Clock = std::chrono::steady_clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-  place_contact(c);
-  check_nyquist(c, freq, frequency_key);
   CreepResult r;
   const auto t0 = Clock::now();
-  r.state = solve_mean_state(std::move(c), true);
-  check_nyquist(r.state.contact, freq, frequency_key);  // on the patch's grid
-  const nss::LinearContactModel& model = *r.state.model;
+  MeanContactOptions options;
+  options.frequencies = freq;
+  options.frequency_key = frequency_key;
+  r.state = mean_contact(c, options);
+  const nss::LinearContactModel& model = *r.state.model();
   const auto t1 = Clock::now();
   if (direct) {
     for (double fr : freq) r.f.push_back(model.creep_coefficients_direct(fr));
@@ -49,7 +49,7 @@ ContactCase refined_case(const ContactCase& base, double factor, const std::stri
     c.grid.ny = std::max(1, static_cast<int>(std::lround(g.ny * factor)));
     c.grid.dx = g.dx * g.nx / c.grid.nx;
     c.grid.dy = g.dy * g.ny / c.grid.ny;
-    place_contact(c);  // placed: checks the size against limits.memory
+    c = placed_contact(std::move(c));  // placed: checks the size against limits.memory
   } catch (const InputError& e) {
     throw InputError(key, what.str() + e.what());
   }
@@ -77,7 +77,7 @@ CreepResult run_creep_extrapolated(ContactCase c, const std::vector<double>& fre
                                    const std::string& frequency_key, const std::vector<double>& factors,
                                    const std::string& factors_key) {
   check_factors(factors, factors_key);
-  place_contact(c);
+  c = placed_contact(std::move(c));
   std::vector<ContactCase> cases;
   for (double s : factors) cases.push_back(refined_case(c, s, factors_key));
   for (const ContactCase& rc : cases) check_nyquist(rc, freq, frequency_key);  // before any solve
@@ -91,9 +91,10 @@ CreepResult run_creep_extrapolated(ContactCase c, const std::vector<double>& fre
   std::vector<nss::LoadVector> g0;
   for (size_t i = 0; i < cases.size(); ++i) {
     CreepResult r = run_creep(std::move(cases[i]), with_zero, direct, frequency_key);
-    ex.nx.push_back(r.state.contact.grid.nx);
-    ex.ny.push_back(r.state.contact.grid.ny);
-    ex.dx.push_back(r.state.contact.grid.dx);
+    const contact::Grid& grid = r.state.contact().grid;
+    ex.nx.push_back(grid.nx);
+    ex.ny.push_back(grid.ny);
+    ex.dx.push_back(grid.dx);
     g0.push_back(r.g.back());
     r.f.pop_back();
     r.g.pop_back();

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "nss/linear_model.hpp"
-#include "pipeline/mean_state.hpp"
+#include "pipeline/mean_contact.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -28,7 +28,7 @@ struct CreepExtrapolation {
 };
 
 struct CreepResult {
-  MeanState state;
+  MeanContact state;  ///< the case as run, patch, steady state and linear model
   std::vector<nss::CreepMatrix> f;  ///< (N, N m, N m^2), rows Fx, Fy, Mz
   std::vector<nss::LoadVector> g;   ///< (-, -, m)
   nss::LoadVector g0;               ///< g(0), the quasi-static dF/dN, by the same method
@@ -37,8 +37,8 @@ struct CreepResult {
   std::optional<CreepExtrapolation> extrapolation;
 };
 
-/// InputError naming `frequency_key` when a frequency lies above the grid's Nyquist limit
-/// (checked once the contact is placed, before anything is solved).
+/// InputError naming `frequency_key` when a frequency lies above the Nyquist limit of the patch's
+/// grid (checked once, before steady rolling and the model are solved).
 CreepResult run_creep(ContactCase c, const std::vector<double>& freq, bool direct, const std::string& frequency_key);
 
 /// Grid-converged f and g (`creep --extrapolate`, docs/accuracy.md): run_creep on the case's grid

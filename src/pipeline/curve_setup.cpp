@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 
 #include "noise/kalker_linear.hpp"
+#include "pipeline/curve_input_checks.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -38,7 +39,7 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.wheel_creepages = nc.wheel_creepages;
     in.static_wheel_load = c.normal_force;
   }
-  in.validate();
+  check_curve_state_input(in);
   return in;
 }
 
@@ -80,30 +81,34 @@ std::vector<noise::WheelContact> curve_wheels(const CurveSetup& s, const NoiseCa
   return noise::bogie_wheel_contacts(*s.state_input, *s.state, ids);
 }
 
-CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc) {
-  CurveSetup s;
+CurvePlacement resolve_curve(const ContactCase& c, const NoiseCase& nc) {
+  CurvePlacement p;
+  CurveSetup& s = p.curve;
   s.position = {0.0, 0.0, nc.contact_angle};
   if (c.profiles && (nc.estimate_creepage || nc.multibody)) {
     s.state_input = curve_state_input(c, nc);
     s.state = noise::curve_contact_state(*s.state_input);
     s.estimated = s.state->estimated;
     s.curving = s.state->estimate;
-    place_contact_at(c, s.state->contact, s.state->normal_force);
+    p.contact = placed_contact_at(c, s.state->contact, s.state->normal_force);
     const Eigen::Vector3d& xi = s.state->creepage;
-    c.creepage = {xi(0), xi(1), xi(2)};
+    p.contact.creepage = {xi(0), xi(1), xi(2)};
     s.position = s.state->position();
-    return s;
+    return p;
   }
-  place_contact(c);
+  p.contact = placed_contact(c);
+  const ContactCase& placed = p.contact;
   if (nc.estimate_creepage && nc.curve_radius > 0.0) {
     s.estimated = true;
-    s.curving = noise::estimate_bogie_curving(bogie_curving_input(c, nc));
-    c.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
+    const noise::BogieCurvingInput in = bogie_curving_input(placed, nc);
+    check_bogie_curving_input(in);
+    s.curving = noise::estimate_bogie_curving(in);
+    p.contact.creepage = {s.curving.xi_x, s.curving.xi_y, s.curving.phi};
     s.position = s.curving.position();
   }
-  if (c.profiles)  // curve.creepage = "case": the case's contact point
-    s.position = {c.contact_point.wheel_s, c.contact_point.rail_y, c.contact_point.contact_angle};
-  return s;
+  if (placed.profiles)  // curve.creepage = "case": the case's contact point
+    s.position = {placed.contact_point.wheel_s, placed.contact_point.rail_y, placed.contact_point.contact_angle};
+  return p;
 }
 
 }  // namespace rollnoise::pipeline

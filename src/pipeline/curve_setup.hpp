@@ -1,20 +1,21 @@
 // The curve stage of the noise pipeline: the mean contact state of the leading outer wheel.
 //
 //   profiles with curve.creepage = "estimate" or "multibody": the curve contact state
-//     (noise/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
+//     (vehicle/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
 //     load transfer and flange share, creepages);
 //   Hertzian case in a curve with curve.creepage = "estimate": the quasi-static bogie estimate on
-//     the conical tread (noise/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
+//     the conical tread (vehicle/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
 //   otherwise the case's creepage.mean and contact point (or contact.angle).
-// The stage writes the state's contact point, normal force and creepages into the contact case
-// and places it (pipeline/contact_case.hpp): geometry only, nothing is solved.
+// The stage returns the case placed at the state's contact point with its normal force and
+// creepages (pipeline/contact_case.hpp): geometry only, nothing is solved; the mean-contact stage
+// (pipeline/mean_contact.hpp) solves it.
 #pragma once
 
 #include <optional>
 #include <vector>
 
-#include "noise/curve_state.hpp"
-#include "noise/curving.hpp"
+#include "vehicle/curve_state.hpp"
+#include "vehicle/curving.hpp"
 #include "noise/loop.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/noise_case.hpp"
@@ -35,9 +36,15 @@ struct CurveSetup {
   double rolling_radius(const NoiseCase& nc) const;
 };
 
-/// Resolve the curve contact state and set c's contact point, normal force, a, b, grid and
-/// creepage accordingly. InputError (curve.* / wheelset.* keys) for inputs outside the models.
-CurveSetup resolve_curve(ContactCase& c, const NoiseCase& nc);
+/// The case placed by the curve contact state, and the state.
+struct CurvePlacement {
+  ContactCase contact;  ///< placed: contact point, normal force, a, b, grid and creepage of the state
+  CurveSetup curve;
+};
+
+/// Resolve the curve contact state and place the case accordingly. InputError (curve.* /
+/// wheelset.* keys) for inputs outside the models.
+CurvePlacement resolve_curve(const ContactCase& c, const NoiseCase& nc);
 
 /// The wheels of curve.wheels (docs/interface.md): as listed, or by default all four in a curve and
 /// the leading outer wheel alone on tangent track; none without a curve contact state.
@@ -48,7 +55,8 @@ std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase
 std::vector<noise::WheelContact> curve_wheels(const CurveSetup& s, const NoiseCase& nc);
 
 /// The inputs of the curve contact state: the case's profiles, material, grid options, curve,
-/// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; validated.
+/// wheel load (contact.normal_force, or wheelset.wheel_load) and [wheelset]; checked
+/// (check_curve_state_input: InputError naming the key).
 noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& nc);
 
 /// The inputs of the bogie estimate on the conical tread (Hertzian curve cases): the curve, the

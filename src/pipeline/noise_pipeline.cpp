@@ -9,7 +9,6 @@
 #include "noise/contact_receptance.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/roughness.hpp"
-#include "pipeline/mean_state.hpp"
 
 namespace rollnoise::pipeline {
 namespace {
@@ -27,14 +26,12 @@ noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t
   return k;
 }
 
-ContactStage contact_stage(const ContactCase& c, bool with_model) {
-  ContactStage s;
-  s.patch = std::make_shared<const contact::ContactPatch>(solve_patch(c));
-  const contact::HalfSpaceOperator op(s.patch->influence, contact::Problem::Normal, 0, c.backend);
-  s.normal_stiffness = contact::normal_load_sensitivity(s.patch->grid, op, s.patch->normal).stiffness();
-  s.steady = contact::solve_steady_rolling(s.patch->influence, s.patch->normal.pn, c.steady_input(), c.tangential);
-  if (with_model) s.model = linear_model(c, *s.patch, s.steady);
-  return s;
+MeanContactOptions noise_contact_options(const NoiseCase& nc, const std::vector<double>& frequency) {
+  MeanContactOptions o;
+  o.with_model = nc.use_nss;
+  o.frequencies = frequency;
+  o.frequency_key = "noise.band_max";
+  return o;
 }
 
 namespace {
@@ -55,7 +52,6 @@ BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
   BandAxis a;
   a.centres = band_centres(c, nc);
   a.frequency = noise::band_frequencies(a.centres, nc.points_per_band);
-  check_nyquist(c, a.frequency, "noise.band_max");
   return a;
 }
 
@@ -86,26 +82,26 @@ namespace {
 // main run's (its state, patch, loop), the others run on the shared spectra.
 std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, const noise::StructureSpectra& spectra) {
   std::vector<WheelNoise> out;
-  for (const noise::WheelContact& w : curve_wheels(r.curve, nc)) {
+  for (const noise::WheelContact& w : curve_wheels(r.mean.curve(), nc)) {
     if (w.wheel != noise::WheelId::leading_outer) {
-      out.push_back(wheel_noise(r.contact, nc, w, spectra, r.axis.frequency));
+      out.push_back(wheel_noise(r.mean.contact(), nc, w, spectra, r.axis.frequency));
       continue;
     }
     WheelNoise m;
     m.state = w;
-    m.contact = r.contact;
-    m.normal_stiffness = r.stage.normal_stiffness;
+    m.mean = r.mean;
     m.mean_force = r.mean_force;
-    if (r.stage.model) {
-      m.adhesion_elements = r.stage.model->adhesion_elements();
-      m.slip_elements = r.stage.model->slip_elements();
+    if (r.mean.model()) {
+      m.adhesion_elements = r.mean.model()->adhesion_elements();
+      m.slip_elements = r.mean.model()->slip_elements();
     }
     m.loop = r.variants.main;
     const noise::ContactCoefficients model =
-        nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker_coefficients(r.contact, r.axis.frequency.size());
-    m.contact_receptance = main_contact_receptance(r.axis.frequency, r.stage.normal_stiffness, r.contact.speed, model,
-                                                   nc.normal_coupling);
-    m.position = r.curve.position;
+        nc.use_nss ? noise::ContactCoefficients{r.creep, r.load}
+                   : kalker_coefficients(r.mean.contact(), r.axis.frequency.size());
+    m.contact_receptance = main_contact_receptance(r.axis.frequency, r.mean.normal_stiffness(),
+                                                   r.mean.contact().speed, model, nc.normal_coupling);
+    m.position = r.mean.curve().position;
     out.push_back(std::move(m));
   }
   return out;
@@ -118,7 +114,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
   const auto t1 = Clock::now();
   r.wheels = wheel_loops(r, nc, *r.spectra);
-  r.patches = second_patches(r.curve, r.contact, nc, r.wheels, *r.spectra, r.axis.frequency);
+  r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
         bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches, r.spectra.get()));
@@ -132,18 +128,15 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
   NoiseResult r;
-  band_centres(c, nc);             // the sizes, before any work
-  r.curve = resolve_curve(c, nc);  // 1
-  r.axis = band_axis(c, nc);       // 2, before anything is solved
-  r.contact = std::move(c);
-  const ContactCase& cc = r.contact;
+  r.axis = band_axis(c, nc);  // 1, the sizes before any work
   const std::vector<double>& freq = r.axis.frequency;
 
-  // 3. contact
-  r.stage = contact_stage(cc);
-  r.contact.grid = r.stage.patch->grid;  // profiles: the grid may have been enlarged
-  check_nyquist(cc, freq, "noise.band_max");
-  const nss::LinearContactModel& model = *r.stage.model;
+  // 2.-3. the mean contact (the model always: the quasi-steady baseline and the sweep's f(0), g(0))
+  MeanContactOptions options = noise_contact_options(nc, freq);
+  options.with_model = true;
+  r.mean = curve_mean_contact(c, nc, options);
+  const ContactCase& cc = r.mean.contact();
+  const nss::LinearContactModel& model = *r.mean.model();
   r.creep = model.creep_coefficients(freq);
   r.load = model.normal_load_coefficients(freq);  // g, the same sweep
   r.f0 = model.creep_coefficients({0.0})[0];
@@ -155,11 +148,12 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   const std::shared_ptr<const noise::StructureSpectra> spectra =
       reuse ? reuse->spectra(nc, freq)
             : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, freq));
-  const noise::StructuralReceptances structures = noise::structural_receptances(*nc.wheel, *nc.rail, *spectra, r.curve.position);
+  const noise::StructuralReceptances structures =
+      noise::structural_receptances(*nc.wheel, *nc.rail, *spectra, r.mean.curve().position);
   r.seconds_structures = seconds_since(t1);
   using Baseline = NoiseCase::Baseline;
   noise::LoopVariantsInput in;
-  in.normal_stiffness = r.stage.normal_stiffness;
+  in.normal_stiffness = r.mean.normal_stiffness();
   in.speed = cc.speed;
   in.normal_coupling = nc.normal_coupling;
   const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
@@ -172,7 +166,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   r.coupled = nc.normal_coupling && !in.model.load.empty();
   r.variants = noise::solve_loop_variants(structures, in);
   r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
-  r.mean_force = contact::total_forces(r.stage.patch->grid, r.stage.steady.px, r.stage.steady.py);
+  r.mean_force = contact::total_forces(r.mean.patch().grid, r.mean.steady().px, r.mean.steady().py);
   r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
   r.spectra = spectra;
   r.seconds_total = seconds_since(t0);
@@ -181,7 +175,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 
 void add_bands(NoiseResult& r, const NoiseCase& nc) {
   // 5. roughness and bands
-  const ContactCase& cc = r.contact;
+  const ContactCase& cc = r.mean.contact();
   noise::ContactFilter filter;
   filter.model = nc.filter;
   filter.a = cc.a;
@@ -209,17 +203,15 @@ ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::v
   for (double f : freq)  // before any work
     if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
   ReceptanceResult r;
-  r.curve = resolve_curve(c, nc);
-  if (nc.use_nss) check_nyquist(c, freq, "frequency.f_max");
-  r.contact = std::move(c);
-  const ContactCase& cc = r.contact;
+  MeanContactOptions options;
+  options.with_model = nc.use_nss;
+  if (nc.use_nss) options.frequencies = freq, options.frequency_key = "frequency.f_max";
+  r.mean = curve_mean_contact(c, nc, options);
+  const ContactCase& cc = r.mean.contact();
   r.frequency = freq;
-  r.stage = contact_stage(cc, nc.use_nss);
-  r.contact.grid = r.stage.patch->grid;
-  if (nc.use_nss) check_nyquist(cc, freq, "frequency.f_max");
-  const double kN = r.stage.normal_stiffness;
+  const double kN = r.mean.normal_stiffness();
   if (nc.use_nss) {
-    const nss::LinearContactModel& model = *r.stage.model;
+    const nss::LinearContactModel& model = *r.mean.model();
     const auto f = model.creep_coefficients(freq);
     r.contact_receptance = nc.normal_coupling
                                ? noise::contact_receptances(freq, kN, cc.speed, f, model.normal_load_coefficients(freq))
@@ -229,7 +221,7 @@ ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::v
         freq, kN, cc.speed,
         noise::steady_creep(noise::kalker_creep_matrix(cc.a, cc.b, cc.material)));
   }
-  r.structures = noise::structural_receptances(*nc.wheel, *nc.rail, r.curve.position, freq);
+  r.structures = noise::structural_receptances(*nc.wheel, *nc.rail, r.mean.curve().position, freq);
   return r;
 }
 

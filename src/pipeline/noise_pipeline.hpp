@@ -3,12 +3,12 @@
 // Each stage is callable alone; `rollnoise noise` runs them all, `rollnoise receptance` the first
 // three, and a study reuses the stages whose inputs it shares.
 //
-//   1. curve_setup.hpp: the mean contact state, the case placed (geometry only);
-//   2. the frequencies: narrow-band samples of the 1/3-octave bands, checked against the grid's
-//      Nyquist limit before anything is solved;
-//   3. contact_stage: patch, its normal stiffness dN/d(delta) on the frozen contact area
-//      (contact::normal_load_sensitivity), steady rolling, the linear model, f(w) and g(w) of one
-//      sweep, f(0) and g(0);
+//   1. the frequencies: narrow-band samples of the 1/3-octave bands (their count checked before
+//      any work);
+//   2.-3. mean_contact.hpp, one immutable value: the curve contact state and the case placed by it,
+//      the patch on its final grid (the frequencies checked against its Nyquist limit once), its
+//      normal stiffness dN/d(delta) on the frozen contact area, steady rolling, the linear model;
+//      then f(w) and g(w) of one sweep, f(0) and g(0);
 //   4. structures (wheel and rail receptances at the contact point, once), the loop variants
 //      (noise/loop_variants.hpp): with the coupling g, without it, and the baseline of
 //      noise.compare (quasi-steady f(0), g(0), or Kalker's coefficients);
@@ -30,41 +30,35 @@
 #include "nss/linear_model.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/curve_setup.hpp"
+#include "pipeline/mean_contact.hpp"
 #include "pipeline/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/wheel_noise.hpp"
 
 namespace rollnoise::pipeline {
 
-/// Stage 3: the contact at the mean state.
-struct ContactStage {
-  std::shared_ptr<const contact::ContactPatch> patch;
-  double normal_stiffness = 0.0;  ///< k_N = dN/d(delta) on the frozen contact area (N/m)
-  contact::TangentialSolution steady;
-  std::shared_ptr<const nss::LinearContactModel> model;
-};
-
 /// Kalker's linear theory (full adhesion) of the case's semi-axes at n frequencies: constant f,
 /// g = 0 (no load coefficients).
 noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n);
 
-/// Patch, normal stiffness, steady rolling and (with_model) the linear model of a placed case.
-ContactStage contact_stage(const ContactCase& c, bool with_model = true);
-
-/// The narrow-band frequencies of the case's bands (stage 2) and the band centres.
+/// The narrow-band frequencies of the case's bands (stage 1) and the band centres.
 struct BandAxis {
   std::vector<double> centres;    ///< 1/3-octave centres (Hz)
   std::vector<double> frequency;  ///< narrow-band samples (Hz)
 };
-/// InputError naming noise.band_max when no band lies in the range or the samples exceed the
-/// Nyquist limit of the placed case, noise.points_per_band when their count exceeds c.limits.
+/// InputError naming noise.band_max when no band lies in the range, noise.points_per_band when
+/// their count exceeds c.limits. (The Nyquist limit is checked by the mean-contact stage.)
 BandAxis band_axis(const ContactCase& c, const NoiseCase& nc);
 
+/// The mean-contact options of a noise case: the model with noise.contact_model = "nss", the
+/// frequencies checked against the Nyquist limit naming noise.band_max.
+MeanContactOptions noise_contact_options(const NoiseCase& nc, const std::vector<double>& frequency);
+
 struct NoiseResult {
-  ContactCase contact;  ///< as run: the curve's contact point, normal force and creepages
-  CurveSetup curve;
+  /// as run: the curve state, the case at its contact point, normal force and creepages, patch,
+  /// k_N, steady state, model
+  MeanContact mean;
   BandAxis axis;
-  ContactStage stage;
   std::vector<nss::CreepMatrix> creep;  ///< f(w) (N, N m, N m^2)
   std::vector<nss::LoadVector> load;    ///< g(w) (-, -, m)
   Eigen::Matrix3cd f0;                  ///< f(0)
@@ -125,9 +119,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nu
 /// `rollnoise receptance`: wheel, rail and contact receptances at the contact point and mean state
 /// of the noise case (contact frame: normal, x, y, rotation about the normal).
 struct ReceptanceResult {
-  ContactCase contact;
-  CurveSetup curve;
-  ContactStage stage;
+  MeanContact mean;
   std::vector<double> frequency;
   noise::StructuralReceptances structures;
   std::vector<noise::Receptance4> contact_receptance;

@@ -19,19 +19,28 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 }  // namespace
 
-void check_contact_stability(const nss::LinearContactModel& model, SquealResult& r) {
+void check_contact_stability(double radius, double dt) {
   // The poles of f are the z_p with 1/z_p an eigenvalue of M0^{-1} M1; a radius rho >= 1 means the
   // contact's recursion grows by itself, at ln(rho)/dt in continuous time (docs/falling_friction.md
   // Sec. 3). The loop's roots are then meaningless (f(i w) is not the response of a stable contact).
-  r.contact_spectral_radius = model.spectral_radius();
-  if (r.contact_spectral_radius < 1.0) return;
+  if (radius < 1.0) return;
   std::ostringstream m;
-  m << "squeal: the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " << r.contact_spectral_radius
-    << " >= 1: it grows at " << std::log(r.contact_spectral_radius) / model.time_step()
+  m << "squeal: the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " << radius
+    << " >= 1: it grows at " << std::log(radius) / dt
     << " 1/s without wheel or rail). This is a limit of quasi-static falling friction "
        "(docs/falling_friction.md Sec. 3), not wheel squeal: lower friction.decay (or raise "
        "friction.kinetic_ratio), or use a smaller creepage";
   throw InputError("friction.decay", m.str());
+}
+
+MeanContactOptions squeal_contact_options(const NoiseCase& nc, const std::vector<double>& in_band) {
+  MeanContactOptions o;
+  o.with_model = nc.use_nss;
+  o.with_transfer = true;
+  o.normal_coupling = nc.normal_coupling;
+  o.frequencies = in_band;
+  o.frequency_key = "noise.band_max";
+  return o;
 }
 
 int SquealResult::unstable_count() const {
@@ -40,18 +49,19 @@ int SquealResult::unstable_count() const {
   return n;
 }
 
-noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const CurveSetup& curve,
-                               const ContactStage& stage, const noise::ContactTransfer& contact, bool coupled) {
+noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean) {
   noise::LaplaceLoop loop;
-  loop.modes = noise::contact_frame_modes(*nc.wheel, curve.position);
-  const Eigen::Matrix4d rigid = noise::rigid_flexibility(nc.wheel->wheelset(), curve.position);
-  const noise::ContactPosition position = curve.position;
-  const double kN = stage.normal_stiffness, V = c.speed;
+  const noise::ContactPosition position = mean.curve().position;
+  loop.modes = noise::contact_frame_modes(*nc.wheel, position);
+  const Eigen::Matrix4d rigid = noise::rigid_flexibility(nc.wheel->wheelset(), position);
+  const double kN = mean.normal_stiffness(), V = mean.contact().speed;
+  const bool coupled = mean.coupled();
   const dynamics::RailModel* rail = nc.rail.get();
   // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
-  loop.rest = [=, &contact](dynamics::cdouble s) {
-    const Eigen::Vector3cd g = coupled ? contact.load(s) : Eigen::Vector3cd::Zero();
-    const Eigen::Matrix3cd f = contact.creep(s);
+  const std::shared_ptr<const noise::ContactTransfer> contact = mean.transfer();
+  loop.rest = [=](dynamics::cdouble s) {
+    const Eigen::Vector3cd g = coupled ? contact->load(s) : Eigen::Vector3cd::Zero();
+    const Eigen::Matrix3cd f = contact->creep(s);
     return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
                               noise::rail_receptance_laplace(*rail, s, position) +
                               noise::contact_receptance_laplace(s, kN, V, f, g));
@@ -62,36 +72,22 @@ noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const 
 SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options, bool route2) {
   const auto t0 = Clock::now();
   SquealResult r;
-  // the band's modes, and the Nyquist limit, before anything is solved
+  // the band's modes before anything is solved
   std::vector<double> in_band;
   for (const auto& m : nc.wheel->modes())
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
   if (in_band.empty())
     throw InputError("noise.band_max", "squeal: no wheel mode between noise.band_min and noise.band_max");
-  r.curve = resolve_curve(c, nc);
-  check_nyquist(c, in_band, "noise.band_max");
-  r.contact = std::move(c);
-  r.stage = contact_stage(r.contact, nc.use_nss);
-  r.contact.grid = r.stage.patch->grid;
-  std::unique_ptr<noise::ContactTransfer> transfer;
-  if (nc.use_nss) {
-    check_nyquist(r.contact, in_band, "noise.band_max");
-    const nss::LinearContactModel& model = *r.stage.model;
-    // Falling friction: no Markov parameters (the paper form only); the contact's own stability is
-    // checked first. Constant friction: the sweep's Markov parameters (their decay proves it stable).
-    if (model.markov_parameters().empty()) check_contact_stability(model, r);
-    r.coupled = nc.normal_coupling && model.has_normal_load_input();
-    transfer = std::make_unique<noise::NssTransfer>(r.stage.model, r.coupled);
-  } else {  // Kalker's constant f, g = 0: it holds at every s (no series, no guard)
-    transfer = std::make_unique<noise::ConstantTransfer>(
-        noise::ConstantTransfer::kalker(r.contact.a, r.contact.b, r.contact.material));
-  }
-  const noise::ContactTransfer& contact = *transfer;
-  r.min_sigma = contact.min_sigma();
+  r.mean = curve_mean_contact(c, nc, squeal_contact_options(nc, in_band));
+  // Falling friction: the contact's own stability was checked (no Markov parameters to prove it)
+  r.contact_spectral_radius = r.mean.spectral_radius();
+  if (r.mean.model()) check_contact_stability(r.mean.spectral_radius(), r.mean.model()->time_step());
+  r.coupled = r.mean.coupled();
+  r.min_sigma = r.mean.transfer()->min_sigma();
   r.seconds_contact = seconds_since(t0);
 
   const auto t1 = Clock::now();
-  noise::LaplaceLoop loop = squeal_loop(r.contact, nc, r.curve, r.stage, contact, r.coupled);
+  noise::LaplaceLoop loop = squeal_loop(nc, r.mean);
   auto inner = loop.rest;
   loop.rest = [&r, inner](dynamics::cdouble s) {  // count the evaluations
     ++r.evaluations;
@@ -136,7 +132,7 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) lo = std::min(lo, m.frequency), hi = std::max(hi, m.frequency);
   out.fit_min = o.fit_min > 0 ? o.fit_min : 0.5 * lo;
   out.fit_max = o.fit_max > 0 ? o.fit_max : 2.0 * hi;
-  const noise::ContactPosition& p = r.curve.position;
+  const noise::ContactPosition& p = r.mean.curve().position;
 
   // rail: alpha_r at real frequencies in the contact frame (as the noise loop's stage 2)
   // uniform samples, and more around every mode of the band (+-4 %, where the roots lie), so that
@@ -164,8 +160,8 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   }
 
   // contact: [-f | g] with the model's creepage sampling (g = 0 when the loop is not coupled)
-  if (r.stage.model) {
-    const nss::LinearContactModel& model = *r.stage.model;
+  if (r.mean.model()) {
+    const nss::LinearContactModel& model = *r.mean.model();
     const double top = std::min(out.fit_max, model.nyquist_frequency());
     const std::vector<double> fc = linspace(0.0, top, o.contact_samples);
     std::vector<nss::LoadVector> g = r.coupled ? model.normal_load_coefficients(fc)
@@ -175,14 +171,15 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
     linalg::StateSpace& m = out.contact.model;
     m.A.resize(0, 0), m.B.resize(0, 4), m.C.resize(3, 0);
     m.D = Eigen::MatrixXd::Zero(3, 4);
-    m.D.leftCols(3) = -noise::kalker_creep_matrix(r.contact.a, r.contact.b, r.contact.material);
+    const ContactCase& cc = r.mean.contact();
+    m.D.leftCols(3) = -noise::kalker_creep_matrix(cc.a, cc.b, cc.material);
   }
   out.seconds_fit = seconds_since(t0);
 
   const auto t1 = Clock::now();
   out.eigenvalues = noise::coupled_eigenvalues(noise::rigid_flexibility(nc.wheel->wheelset(), p),
                                                noise::contact_frame_modes(*nc.wheel, p), to_noise(out.rail.model),
-                                               to_noise(out.contact.model), r.stage.normal_stiffness, r.contact.speed);
+                                               to_noise(out.contact.model), r.mean.normal_stiffness(), r.mean.contact().speed);
   out.seconds_eigen = seconds_since(t1);
   return out;
 }
@@ -190,9 +187,9 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
 Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, const NoiseCase& nc,
                                  const std::vector<dynamics::cdouble>& s) {
   Route1Deviation d;
-  const nss::LinearContactModel* m = r.stage.model.get();
+  const nss::LinearContactModel* m = r.mean.model().get();
   for (const dynamics::cdouble x : s) {
-    const Eigen::MatrixXcd ar = noise::rail_receptance_laplace(*nc.rail, x, r.curve.position);
+    const Eigen::MatrixXcd ar = noise::rail_receptance_laplace(*nc.rail, x, r.mean.curve().position);
     d.rail.push_back(linalg::relative_response_error({ar}, {r1.rail.model.response(x)}, r1.rail.scaling));
     if (!m) {
       d.contact.push_back(0.0);

@@ -24,9 +24,8 @@
 namespace rollnoise::pipeline {
 
 struct SquealResult {
-  ContactCase contact;  ///< as run
-  CurveSetup curve;
-  ContactStage stage;
+  /// as run: curve state, placed case, patch, k_N, steady state, model and the contact's transfer
+  MeanContact mean;
   bool coupled = false;                 ///< g in the loop (noise.normal_coupling and slip elements)
   double min_sigma = 0.0;               ///< the contact series converge for Re s above this (1/s)
   std::vector<noise::ModeRoot> roots;   ///< route 2, one per wheel mode in the band
@@ -47,13 +46,15 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
                         bool route2 = true);
 
 /// The linearised contact's own stability: InputError (friction.decay) naming the growth rate when
-/// the spectral radius of M0^{-1} M1 is >= 1 (recorded in r.contact_spectral_radius).
-void check_contact_stability(const nss::LinearContactModel& model, SquealResult& r);
+/// the spectral radius of M0^{-1} M1 (`radius`, time step `dt` s) is >= 1.
+void check_contact_stability(double radius, double dt);
 
-/// The loop at complex s of a solved contact stage (for tests and other drivers): the contact's
-/// Markov parameters must exist (the stage's model swept once).
-noise::LaplaceLoop squeal_loop(const ContactCase& c, const NoiseCase& nc, const CurveSetup& curve,
-                               const ContactStage& stage, const noise::ContactTransfer& contact, bool coupled);
+/// The mean-contact options of squeal: the model with noise.contact_model = "nss", the transfer,
+/// the band's wheel modes checked against the Nyquist limit naming noise.band_max.
+MeanContactOptions squeal_contact_options(const NoiseCase& nc, const std::vector<double>& in_band);
+
+/// The loop at complex s of a mean contact with its transfer (for tests and other drivers).
+noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean);
 
 /// Route 1 on a case (docs/squeal.md Sec. 4): the rail's receptance alpha_r (4 x 4, contact frame)
 /// and the contact's [-f | g] (3 x 4, `rollnoise statespace`'s convention, f with the model's

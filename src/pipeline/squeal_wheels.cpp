@@ -10,51 +10,21 @@
 namespace rollnoise::pipeline {
 namespace {
 
-// One wheel's contact for the characteristic equation: its placed case, stage and transfer
-// (as run_squeal builds them for the leading outer wheel).
+// One wheel's contact for the characteristic equation: its mean contact with its transfer (as
+// run_squeal builds the leading outer wheel's). Falling friction: the contact alone may be unstable
+// (run_squeal's check); then its wheelset's roots are meaningless and the wheelset is left out
+// (WheelsetSqueal::skipped; the mean contact has no transfer).
 struct WheelSquealContact {
   noise::WheelContact state;
-  ContactCase contact;
-  ContactStage stage;
-  std::unique_ptr<noise::ContactTransfer> transfer;
-  bool coupled = false;
-  double spectral_radius = -1.0;  ///< >= 1: the linearised contact alone is unstable (no transfer)
+  MeanContact mean;
 };
-
-WheelSquealContact squeal_contact(const ContactCase& base, const NoiseCase& nc,
-                                  const noise::WheelContact& w,
-                                  const std::vector<double>& in_band) {
-  WheelSquealContact out;
-  out.state = w;
-  out.contact = base;
-  place_contact_at(out.contact, w.contact, w.normal_force());
-  out.contact.creepage = {w.creepage(0), w.creepage(1), w.creepage(2)};
-  out.stage = contact_stage(out.contact, nc.use_nss);
-  out.contact.grid = out.stage.patch->grid;
-  if (nc.use_nss) {
-    check_nyquist(out.contact, in_band, "noise.band_max");
-    const nss::LinearContactModel& model = *out.stage.model;
-    // falling friction: the contact alone may be unstable (run_squeal's check); then its
-    // wheelset's roots are meaningless and the wheelset is left out (WheelsetSqueal::skipped)
-    if (model.markov_parameters().empty() && model.spectral_radius() >= 1.0) {
-      out.spectral_radius = model.spectral_radius();
-      return out;
-    }
-    out.coupled = nc.normal_coupling && model.has_normal_load_input();
-    out.transfer = std::make_unique<noise::NssTransfer>(out.stage.model, out.coupled);
-  } else {
-    out.transfer = std::make_unique<noise::ConstantTransfer>(
-        noise::ConstantTransfer::kalker(out.contact.a, out.contact.b, out.contact.material));
-  }
-  return out;
-}
 
 }  // namespace
 
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options) {
   if (!nc.squeal_wheelsets) return {};
-  const std::vector<noise::WheelContact> states = curve_wheels(r.curve, nc);
+  const std::vector<noise::WheelContact> states = curve_wheels(r.mean.curve(), nc);
   if (states.empty()) return {};
   if (!nc.rail_track)
     throw InputError("noise.contact_coupling",
@@ -73,16 +43,16 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
     std::vector<WheelSquealContact> wheels;
     for (const noise::WheelContact& w : states)
       if (noise::is_leading(w.wheel) == leading)
-        wheels.push_back(squeal_contact(r.contact, nc, w, in_band));
+        wheels.push_back({w, wheel_mean_contact(r.mean.contact(), w, squeal_contact_options(nc, in_band))});
     if (wheels.empty()) continue;
     WheelsetSqueal ws;
     for (const WheelSquealContact& w : wheels) {
       ws.wheels.push_back(w.state.wheel);
-      if (w.spectral_radius >= 1.0)
+      if (!w.mean.transfer())
         ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") +
                       noise::wheel_name(w.state.wheel) +
                       ": the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " +
-                      std::to_string(w.spectral_radius) + ")";
+                      std::to_string(w.mean.spectral_radius()) + ")";
     }
     if (!ws.skipped.empty()) {
       out.push_back(std::move(ws));
@@ -96,11 +66,11 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
       p.side = noise::is_outer(w.state.wheel) ? 1 : -1;
       p.position = w.state.position();
       p.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
-      contacts.push_back({p, w.transfer.get(), w.stage.normal_stiffness});
-      coupled = coupled || w.coupled;
+      contacts.push_back({p, w.mean.transfer().get(), w.mean.normal_stiffness()});
+      coupled = coupled || w.mean.coupled();
     }
     noise::ContactSetLaplaceLoop loop =
-        noise::contact_set_laplace_loop(*nc.wheel, rail, contacts, r.contact.speed, coupled);
+        noise::contact_set_laplace_loop(*nc.wheel, rail, contacts, r.mean.contact().speed, coupled);
     auto inner = loop.rest;
     long* count = &ws.evaluations;
     loop.rest = [inner, count](noise::cdouble s) {

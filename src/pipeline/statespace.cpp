@@ -49,7 +49,7 @@ StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq,
   r.frequency.erase(std::unique(r.frequency.begin(), r.frequency.end()), r.frequency.end());
   if (r.frequency.front() > 0) r.frequency.insert(r.frequency.begin(), 0.0);  // the static gain
   r.creep = run_creep(std::move(c), r.frequency, false, frequency_key);
-  const nss::LinearContactModel& model = *r.creep.state.model;
+  const nss::LinearContactModel& model = *r.creep.state.model();
   r.dt = model.time_step();
   const std::vector<Eigen::MatrixXcd> H = contact_transfer(r.creep.f, r.creep.g);
 

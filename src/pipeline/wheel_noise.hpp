@@ -16,6 +16,7 @@
 #include "noise/loop_variants.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/contact_case.hpp"
+#include "pipeline/mean_contact.hpp"
 #include "pipeline/noise_case.hpp"
 
 namespace rollnoise::pipeline {
@@ -23,8 +24,9 @@ namespace rollnoise::pipeline {
 /// One wheel's loop alone: its state, what the loop ran on and its levels.
 struct WheelNoise {
   noise::WheelContact state;
-  ContactCase contact;                   ///< placed at the wheel's contact, its creepages and N
-  double normal_stiffness = 0.0;         ///< k_N (N/m)
+  /// The wheel's mean contact: the case placed at its contact with its creepages and N, patch, k_N,
+  /// steady state, model
+  MeanContact mean;
   contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
   int adhesion_elements = 0, slip_elements = 0;
   noise::LoopResult loop;   ///< the main variant (with g when normal_coupling), the wheel alone

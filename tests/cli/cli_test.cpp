@@ -638,6 +638,9 @@ INSTANTIATE_TEST_SUITE_P(
                 "excitation.file"},
         BadLoad{"csv_nan", "", "0,0.001,0,0,0\n0.001,0.001,0,0,nan\n", "excitation.file"},
         BadLoad{"csv_mixed_columns", "", "0,0.001,0,0,0\n0.001,0.001,0,0\n", "excitation.file"},
+        // checked by io (io/excitation.cpp) before contact::CreepageHistory::samples takes the series
+        BadLoad{"csv_times_not_increasing", "", "0,0.001,0,0\n0,0.001,0,0\n", "excitation.file"},
+        BadLoad{"csv_one_sample", "", "0,0.001,0,0\n", "excitation.file"},
         BadLoad{"grid_too_small", "--set excitation.normal_amplitude=90000", "", "excitation.normal_amplitude"}),
     [](const auto& info) { return info.param.name; });
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 
@@ -46,7 +47,9 @@ TEST(CreepageHistory, SamplesAreInterpolatedLinearlyAndHeldOutside) {
   EXPECT_NEAR(h.at(2.0).xi_y, 1e-3, 1e-15);
   EXPECT_NEAR(h.at(2.0).phi, 0.0, 1e-15);
   EXPECT_NEAR(h.at(5.0).xi_x, 3e-3, 1e-15);
-  EXPECT_THROW(CreepageHistory::samples({}, {0.0, 0.0}, {{}, {}}), rollnoise::InputError);
+#ifndef NDEBUG  // a contract (io/excitation.cpp checks the file's times, naming excitation.file)
+  EXPECT_THROW(CreepageHistory::samples({}, {0.0, 0.0}, {{}, {}}), std::logic_error);
+#endif
 }
 
 TEST(CreepageHistory, HarmonicNormalLoadIsAmplitudeCosineWithItsOwnPhase) {
@@ -93,16 +96,8 @@ TEST(CreepageHistory, SampledNormalLoadIsInterpolatedLikeTheCreepages) {
   EXPECT_NEAR(h.normal_variation(2.0), -100.0, 1e-12);
   EXPECT_EQ(h.normal_variation(9.0), -300.0);
   EXPECT_FALSE(CreepageHistory::samples({0, 0, 0}, {0.0, 1.0}, {{}, {}}).has_normal_variation());
-  try {
-    CreepageHistory::samples({0, 0, 0}, {0.0, 1.0}, {{}, {}}, {0.0, std::nan("")});
-    ADD_FAILURE() << "NaN load accepted";
-  } catch (const rollnoise::InputError& e) {
-    EXPECT_EQ(e.key(), "excitation.file");
-  }
-  try {
-    CreepageHistory::harmonic({0, 0, 0}, {0, 0, 0}, 1000.0, {}, INFINITY);
-    ADD_FAILURE() << "infinite amplitude accepted";
-  } catch (const rollnoise::InputError& e) {
-    EXPECT_EQ(e.key(), "excitation.normal_amplitude");
-  }
+#ifndef NDEBUG  // contracts: io checks the case's values naming excitation.* (tests/cli BadNormalLoadTest)
+  EXPECT_THROW(CreepageHistory::harmonic({0, 0, 0}, {0, 0, 0}, 1000.0, {}, INFINITY), std::logic_error);
+  EXPECT_THROW(CreepageHistory::harmonic({0, 0, 0}, {0, 0, 0}, 0.0, {}), std::logic_error);
+#endif
 }

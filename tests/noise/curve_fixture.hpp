@@ -6,7 +6,7 @@
 
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
-#include "noise/curving.hpp"
+#include "vehicle/curving.hpp"
 #include "noise_fixture.hpp"
 
 namespace noise_test {

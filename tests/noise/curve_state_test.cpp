@@ -1,6 +1,7 @@
-// The curve contact state from the profiles (src/noise/curve_state.hpp): limits, load transfer,
+// The curve contact state from the profiles (src/vehicle/curve_state.hpp): limits, load transfer,
 // the two-point share, the multibody input, friction and cant deficiency.
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
+#include "pipeline/curve_input_checks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -190,26 +191,36 @@ TEST(CurveState, MultibodyInputPlacesTheContactAndKeepsGivenCreepages) {
   EXPECT_NEAR(f.normal_force, e.normal_force, 1e-9 * kQ);
 }
 
+// The pipeline's checks of the state's inputs (pipeline/curve_input_checks.hpp) name the case key;
+// curve_contact_state itself takes them as a contract.
 TEST(CurveState, BadInputNamesTheKey) {
   rn::CurveStateInput in = input(300.0, 0.0);
   in.cg_height = -1.0;
-  expect_input_error([&] { rn::curve_contact_state(in); }, "curve.cg_height");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "curve.cg_height");
   in = input(300.0, 0.0);
   in.wheel_load = 0.0;
-  expect_input_error([&] { rn::curve_contact_state(in); }, "contact.normal_force");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "contact.normal_force");
   in = input(300.0, 0.0);
   in.multibody = true;
   in.lateral = 0.1;
-  expect_input_error([&] { rn::curve_contact_state(in); }, "wheelset.lateral_displacement");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "wheelset.lateral_displacement");
   in.lateral = 0.0;
   in.yaw = std::nan("");
-  expect_input_error([&] { rn::curve_contact_state(in); }, "wheelset.yaw");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "wheelset.yaw");
   in.yaw = 0.0;
   in.creepage = Eigen::Vector3d(0.0, INFINITY, 0.0);
-  expect_input_error([&] { rn::curve_contact_state(in); }, "wheelset.creepage");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "wheelset.creepage");
   in = input(300.0, 0.0);
+  in.cg_height = 100.0;  // dQ = 2 Q h_d h_cg / s^2 above Q: the estimate's load transfer
+  in.cant_deficiency = 0.15;
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "curve.cg_height");
+  in = input(300.0, 0.0);
+  in.wheelbase = 0.0;
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "curve.wheelbase");
+  in = input(300.0, 0.0);
+  EXPECT_NO_THROW(rollnoise::pipeline::check_curve_state_input(in));
   in.pair.reset();
-  expect_input_error([&] { rn::curve_contact_state(in); }, "contact.geometry");
+  expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "contact.geometry");
 }
 
 // Friction and cant deficiency move the state where physics says (docs/noise_loop.md Sec. 7.2

@@ -1,5 +1,6 @@
-// The quasi-static curving estimate (src/noise/curving.hpp).
-#include "noise/curving.hpp"
+// The quasi-static curving estimate (src/vehicle/curving.hpp).
+#include "vehicle/curving.hpp"
+#include "pipeline/curve_input_checks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,18 +103,21 @@ TEST(Curving, TangentTrackLeavesOnlyTheConicalSpin) {
   EXPECT_NEAR(e.phi, -std::sin(std::atan(0.15)) / 0.46, 1e-12);
 }
 
+// The pipeline's checks of the estimate's inputs (pipeline/curve_input_checks.hpp) name the case
+// key; estimate_bogie_curving itself takes them as a contract.
 TEST(Curving, BadInputNamesTheKey) {
   rn::BogieCurvingInput in = bogie(-300.0);
   try {
-    rn::estimate_bogie_curving(in);
+    rollnoise::pipeline::check_bogie_curving_input(in);
     FAIL();
   } catch (const rollnoise::InputError& e) {
     EXPECT_EQ(e.key(), "curve.radius");
   }
   in = bogie(300.0);
+  EXPECT_NO_THROW(rollnoise::pipeline::check_bogie_curving_input(in));
   in.f22 = 0.0;
   try {
-    rn::estimate_bogie_curving(in);
+    rollnoise::pipeline::check_bogie_curving_input(in);
     FAIL();
   } catch (const rollnoise::InputError& e) {
     EXPECT_EQ(e.key(), "curving.f22");

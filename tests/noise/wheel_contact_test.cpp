@@ -1,5 +1,5 @@
 // Every wheel's contact state (src/noise/wheel_contact.hpp, bogie_wheel_contacts of
-// src/noise/curve_state.hpp): the inner wheel's mirrored frame, its sign conventions, the loads
+// src/vehicle/curve_state.hpp): the inner wheel's mirrored frame, its sign conventions, the loads
 // and creepages of the four wheels, and the multibody input of both wheelsets.
 #include "noise/wheel_contact.hpp"
 
@@ -14,7 +14,8 @@
 #include "curve_fixture.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
+#include "pipeline/curve_input_checks.hpp"
 
 using namespace noise_test;
 namespace rg = rollnoise::geometry;
@@ -174,9 +175,10 @@ TEST(WheelContact, MultibodyInputForBothWheelsets) {
   EXPECT_EQ(w[3].contact.wheel_s, c.wheel_s);
   for (const rn::WheelContact& x : w) EXPECT_NEAR(x.force_track()[2], x.vertical_load, 1e-5 * kQ);
 
+  // the pipeline's input checks name the key (curve_contact_state takes them as a contract)
   auto expect_key = [&](rn::CurveStateInput bad, const std::string& key) {
     try {
-      rn::curve_contact_state(bad);
+      rollnoise::pipeline::check_curve_state_input(bad);
       ADD_FAILURE() << "no InputError for " << key;
     } catch (const rollnoise::InputError& e) {
       EXPECT_EQ(e.key(), key);

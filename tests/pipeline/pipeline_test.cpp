@@ -56,16 +56,18 @@ io::NoiseInputs curve_300m_hertz(const std::vector<std::string>& overrides) {
 
 TEST(Pipeline, TheCurveStageSetsTheCreepagesOnlyWhenItEstimatesThem) {
   io::NoiseInputs est = curve_300m_hertz({});
-  pipeline::ContactCase c = est.contact;
-  const pipeline::CurveSetup s = pipeline::resolve_curve(c, est.noise);
+  const pipeline::CurvePlacement ps = pipeline::resolve_curve(est.contact, est.noise);
+  const pipeline::ContactCase& c = ps.contact;
+  const pipeline::CurveSetup& s = ps.curve;
   ASSERT_TRUE(s.estimated);
   EXPECT_TRUE(s.creepage_from_curve());
   EXPECT_EQ(c.creepage.xi_y, s.curving.xi_y);
   EXPECT_LT(c.creepage.xi_y, 0.0);  // the leading outer wheel under-steers: lateral creepage < 0 (docs)
 
   io::NoiseInputs given = curve_300m_hertz({"curve.creepage=\"case\"", "creepage.mean=[0.001, 0.002, 0.3]"});
-  pipeline::ContactCase g = given.contact;
-  const pipeline::CurveSetup t = pipeline::resolve_curve(g, given.noise);
+  const pipeline::CurvePlacement pt = pipeline::resolve_curve(given.contact, given.noise);
+  const pipeline::ContactCase& g = pt.contact;
+  const pipeline::CurveSetup& t = pt.curve;
   EXPECT_FALSE(t.creepage_from_curve());
   EXPECT_EQ(g.creepage.xi_x, 0.001);
   EXPECT_EQ(g.creepage.xi_y, 0.002);
@@ -75,18 +77,20 @@ TEST(Pipeline, TheCurveStageSetsTheCreepagesOnlyWhenItEstimatesThem) {
 TEST(Pipeline, StagesCalledAloneGiveTheWholePipelinesNumbers) {
   io::NoiseInputs in = curve_300m_hertz({});
   const pipeline::NoiseResult whole = pipeline::run_noise(in.contact, in.noise);
-  pipeline::ContactCase c = in.contact;
-  const pipeline::CurveSetup curve = pipeline::resolve_curve(c, in.noise);
-  const pipeline::BandAxis axis = pipeline::band_axis(c, in.noise);
+  const pipeline::CurvePlacement placed = pipeline::resolve_curve(in.contact, in.noise);
+  const pipeline::CurveSetup& curve = placed.curve;
+  const pipeline::BandAxis axis = pipeline::band_axis(placed.contact, in.noise);
   ASSERT_EQ(axis.frequency, whole.axis.frequency);
-  const pipeline::ContactStage stage = pipeline::contact_stage(c);
-  EXPECT_EQ(stage.normal_stiffness, whole.stage.normal_stiffness);
-  const auto f = stage.model->creep_coefficients(axis.frequency);
+  const pipeline::MeanContact mean =
+      pipeline::solve_mean_contact(placed.contact, curve, pipeline::noise_contact_options(in.noise, axis.frequency));
+  EXPECT_EQ(mean.normal_stiffness(), whole.mean.normal_stiffness());
+  EXPECT_EQ(mean.contact().grid.dx, whole.mean.contact().grid.dx);
+  const auto f = mean.model()->creep_coefficients(axis.frequency);
   ASSERT_EQ(f.size(), whole.creep.size());
   for (std::size_t i = 0; i < f.size(); ++i) EXPECT_TRUE(f[i] == whole.creep[i]) << axis.frequency[i] << " Hz";
   const auto st = noise::structural_receptances(*in.noise.wheel, *in.noise.rail, curve.position, axis.frequency);
   EXPECT_TRUE(st.wheel_contact.back() == noise::structural_receptances(*in.noise.wheel, *in.noise.rail,
-                                                                       whole.curve.position, axis.frequency)
+                                                                       whole.mean.curve().position, axis.frequency)
                                              .wheel_contact.back());
 }
 

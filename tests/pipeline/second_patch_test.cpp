@@ -72,9 +72,9 @@ pipeline::NoiseResult* SecondPatch::r_ = nullptr;
 // rail), lowered under the estimate's flange vertical load Q_f (1e-8 relative, (V1)), and its
 // normal pushes the wheel mostly laterally (|F_lat| from N > the vertical share N cos delta).
 TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
-  ASSERT_TRUE(r_->curve.state && r_->curve.state->two_point);
+  ASSERT_TRUE(r_->mean.curve().state && r_->mean.curve().state->two_point);
   ASSERT_EQ(r_->patches.size(), 1u);
-  const noise::CurveContactState& s = *r_->curve.state;
+  const noise::CurveContactState& s = *r_->mean.curve().state;
   const noise::WheelContact& p = r_->patches[0].state;
   const noise::WheelContact& tread = r_->wheels[0].state;
   EXPECT_EQ(p.wheel, noise::WheelId::leading_outer);
@@ -88,8 +88,8 @@ TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
       "  flange patch: angle %.3f rad, wheel s %.1f mm, rail %.1f mm, Q_f %.2f kN, N %.2f kN, "
       "k_N %.3e N/m (tread: angle %.3f rad, k_N %.3e N/m)\n",
       p.contact.contact_angle, 1e3 * p.contact.wheel_s, 1e3 * p.contact.rail_y,
-      1e-3 * p.vertical_load, 1e-3 * p.normal_force(), r_->patches[0].normal_stiffness,
-      tread.contact.contact_angle, r_->wheels[0].normal_stiffness);
+      1e-3 * p.vertical_load, 1e-3 * p.normal_force(), r_->patches[0].mean.normal_stiffness(),
+      tread.contact.contact_angle, r_->wheels[0].mean.normal_stiffness());
 }
 
 // With every cross term off, the loop with the second patch splits into single-contact loops:

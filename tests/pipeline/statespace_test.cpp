@@ -43,7 +43,7 @@ const Fixture& fixture() {
 
 TEST(StateSpaceExport, TheFittedModelReproducesFAndGOverTheBand) {
   const pipeline::StateSpaceResult& r = fixture().r;
-  const nss::LinearContactModel& model = *r.creep.state.model;
+  const nss::LinearContactModel& model = *r.creep.state.model();
   ASSERT_GT(model.slip_elements(), 0);
   ASSERT_GT(model.adhesion_elements(), 0);
   EXPECT_EQ(r.frequency.front(), 0.0);  // the static gain is a fitted sample
@@ -77,7 +77,7 @@ TEST(StateSpaceExport, TheFittedModelReproducesFAndGOverTheBand) {
 
 TEST(StateSpaceExport, TheDiscreteModelReproducesTheSweepExactly) {
   const pipeline::StateSpaceResult& r = fixture().r;
-  const nss::LinearContactModel& model = *r.creep.state.model;
+  const nss::LinearContactModel& model = *r.creep.state.model();
   EXPECT_LT(r.discrete.markov_error, 1e-8);
   EXPECT_LT(r.discrete_error, 1e-8);
   EXPECT_EQ(r.input_sampling, model.sampling());  // the case's (the default, average)
@@ -104,7 +104,7 @@ TEST(StateSpaceExport, TheDiscreteModelReproducesTheSweepExactly) {
 // times the Markov length, relative to the final value, outputs in the fit's scaling.
 TEST(StateSpaceExport, TheStepResponseEqualsTheLinearModelsTimeResponse) {
   const pipeline::StateSpaceResult& r = fixture().r;
-  const nss::LinearContactModel& model = *r.creep.state.model;
+  const nss::LinearContactModel& model = *r.creep.state.model();
   const double dt = r.dt, T = 16 * dt;
   const int steps = r.markov_count * 3 / 2, sub = 8;
   auto onset = [&](double t) {

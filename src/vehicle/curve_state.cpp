@@ -1,9 +1,10 @@
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "noise/kalker_linear.hpp"
 
@@ -43,43 +44,18 @@ std::string multibody_key(WheelId id, const std::string& what) {
          (is_outer(id) ? "" : "inner_") + what;
 }
 
-void CurveStateInput::validate() const {
-  if (!pair) throw InputError("contact.geometry", "the curve contact state needs the profiles");
-  if (!(radius > 0.0) || std::isnan(radius))
-    throw InputError("curve.radius", "curve.radius must be positive (inf for tangent track)");
-  if (!std::isfinite(cant_deficiency))
-    throw InputError("curve.cant_deficiency", "curve.cant_deficiency must be finite");
-  if (!(cg_height >= 0.0) || !std::isfinite(cg_height))
-    throw InputError("curve.cg_height", "curve.cg_height must be >= 0 and finite");
-  if (!(wheel_load > 0.0) || !std::isfinite(wheel_load))
-    throw InputError(multibody ? "wheelset.wheel_load" : "contact.normal_force",
-                     "the wheel load must be positive and finite");
-  if (!(speed > 0.0) || !std::isfinite(speed))
-    throw InputError("rolling.speed", "rolling.speed must be positive and finite");
-  if (!(friction > 0.0)) throw InputError("friction.mu", "friction.mu must be positive");
-  if (multibody) {
-    if (!std::isfinite(lateral) || std::abs(lateral) > 0.02)
-      throw InputError("wheelset.lateral_displacement",
-                       "wheelset.lateral_displacement must lie within +-20 mm");
-    if (!std::isfinite(yaw) || std::abs(yaw) > 0.05)
-      throw InputError("wheelset.yaw", "wheelset.yaw must lie within +-0.05 rad");
-    if (creepage && !creepage->allFinite())
-      throw InputError("wheelset.creepage", "wheelset.creepage must be finite");
-    if (!std::isfinite(trailing_lateral) || std::abs(trailing_lateral) > 0.02)
-      throw InputError("trailing_wheelset.lateral_displacement",
-                       "trailing_wheelset.lateral_displacement must lie within +-20 mm");
-    if (!std::isfinite(trailing_yaw) || std::abs(trailing_yaw) > 0.05)
-      throw InputError("trailing_wheelset.yaw", "trailing_wheelset.yaw must lie within +-0.05 rad");
-    for (WheelId id : kAllWheels) {
-      const std::string key = multibody_key(id, "wheel_load");
-      const auto& q = wheel_loads[static_cast<std::size_t>(id)];
-      if (q && (!(*q > 0.0) || !std::isfinite(*q)))
-        throw InputError(key, key + " must be positive and finite");
-      const auto& xi = wheel_creepages[static_cast<std::size_t>(id)];
-      if (xi && !xi->allFinite())
-        throw InputError(multibody_key(id, "creepage"), multibody_key(id, "creepage") + " must be finite");
-    }
+bool CurveStateInput::valid() const {
+  const auto finite_in = [](double v, double bound) { return std::isfinite(v) && std::abs(v) <= bound; };
+  bool ok = pair && radius > 0.0 && std::isfinite(cant_deficiency) && cg_height >= 0.0 && std::isfinite(cg_height) &&
+            wheel_load > 0.0 && std::isfinite(wheel_load) && speed > 0.0 && std::isfinite(speed) && friction > 0.0;
+  if (!ok || !multibody) return ok;
+  ok = finite_in(lateral, 0.02) && finite_in(yaw, 0.05) && finite_in(trailing_lateral, 0.02) &&
+       finite_in(trailing_yaw, 0.05) && (!creepage || creepage->allFinite());
+  for (std::size_t i = 0; i < wheel_loads.size(); ++i) {
+    ok = ok && (!wheel_loads[i] || (*wheel_loads[i] > 0.0 && std::isfinite(*wheel_loads[i])));
+    ok = ok && (!wheel_creepages[i] || wheel_creepages[i]->allFinite());
   }
+  return ok;
 }
 
 double cant_deficiency_load_transfer(double wheel_load, double cant_deficiency, double cg_height,
@@ -97,7 +73,7 @@ double flange_vertical_load(double lateral_force, double flange_angle, double mu
 }
 
 CurveContactState curve_contact_state(const CurveStateInput& in) {
-  in.validate();
+  ROLLNOISE_ASSERT(in.valid(), "curve contact state input outside the model (pipeline::check_curve_state_input)");
   const geometry::WheelRailPair& pair = *in.pair;
   const double r0 = pair.wheelset().nominal_radius;
   const double l0 = geometry::find_contact(pair, {0.0, 0.0}).y;  // the centred contact point

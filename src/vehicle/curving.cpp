@@ -1,4 +1,4 @@
-#include "noise/curving.hpp"
+#include "vehicle/curving.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,17 +8,12 @@
 #include <sstream>
 #include <string>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "geometry/wheel_rail.hpp"
 
 namespace rollnoise::noise {
 namespace {
-
-// `key`: the case key that sets the field (bogie_curving_input, io/noise_case.cpp), or
-// "curving.<field>" for a field no case key sets.
-void positive(double v, const char* key) {
-  if (!(v > 0.0) || !std::isfinite(v)) throw InputError(key, std::string(key) + " must be positive and finite");
-}
 
 struct Geometry {
   double a, l0, r0, inv_R, yf, Fu, f11, f22;
@@ -175,7 +170,7 @@ double saturation_secant_factor(double u) {
 
 double ProfileCurvingTable::at(const std::vector<double>& column, double y) const {
   const std::size_t n = lateral.size();
-  if (n == 0 || column.size() != n) throw InputError("curving.profiles", "empty profile table");
+  ROLLNOISE_ASSERT(n > 0 && column.size() == n, "a profile table column of the table's length");
   if (y <= lateral.front()) return column.front();
   if (y >= lateral.back()) return column.back();
   const std::size_t j = static_cast<std::size_t>(
@@ -186,8 +181,7 @@ double ProfileCurvingTable::at(const std::vector<double>& column, double y) cons
 
 ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair, double max_lateral,
                                           double step, double flange_angle) {
-  if (!(max_lateral > 0.0) || !(step > 0.0) || step > max_lateral)
-    throw InputError("curving.profiles", "profile table: need 0 < step <= max_lateral");
+  ROLLNOISE_ASSERT(max_lateral > 0.0 && step > 0.0 && step <= max_lateral, "profile table: 0 < step <= max_lateral");
   ProfileCurvingTable t;
   const int n = static_cast<int>(std::round(max_lateral / step));
   bool flanging = false;
@@ -223,39 +217,21 @@ double BogieCurvingInput::half_distance() const {
   return contact_half_distance > 0.0 ? contact_half_distance : 0.5 * (track_gauge + 0.065);
 }
 
-void BogieCurvingInput::validate() const {
-  if (!(radius > 0.0) || std::isnan(radius))
-    throw InputError("curve.radius", "curve.radius must be positive (inf for tangent track)");
-  if (!(speed >= 0.0) || !std::isfinite(speed))
-    throw InputError("rolling.speed", "rolling.speed must be >= 0");
-  if (!std::isfinite(cant_deficiency))
-    throw InputError("curve.cant_deficiency", "curve.cant_deficiency must be finite");
-  positive(wheelbase, "curve.wheelbase");
-  positive(wheel_radius, "curve.wheel_radius");
-  positive(track_gauge, "curving.track_gauge");
-  if (!(contact_half_distance >= 0.0))
-    throw InputError("curving.contact_half_distance", "curving.contact_half_distance must be >= 0");
-  if (!rolling_radius_difference && !profiles) positive(conicity, "curve.conicity");
-  if (!std::isnan(contact_angle) && !(std::abs(contact_angle) < 0.5 * M_PI))
-    throw InputError("curving.contact_angle", "curving.contact_angle must lie in (-pi/2, pi/2)");
-  if (!profiles) positive(flange_clearance, "curve.flange_clearance");
-  positive(wheel_load, "contact.normal_force");
-  positive(friction, "friction.mu");
-  if (!std::isfinite(load_transfer) || !(std::abs(load_transfer) < wheel_load))
-    throw InputError("curve.cg_height",  // dQ = 2 Q h_d h_cg / s^2 (curve_state.cpp, K4)
-                     "the load transfer by the cant deficiency, dQ = " + std::to_string(load_transfer) +
-                         " N, must be finite and below the wheel load in magnitude (curve.cg_height, "
-                         "curve.cant_deficiency)");
-  if (!std::isnan(flange_angle) && !(flange_angle >= 0.0 && flange_angle < 0.5 * M_PI))
-    throw InputError("curving.flange_angle", "curving.flange_angle must lie in [0, pi/2)");
-  if (!std::isnan(flange_friction) && !(flange_friction >= 0.0 && std::isfinite(flange_friction)))
-    throw InputError("curving.flange_friction", "curving.flange_friction must be >= 0");
-  positive(f11, "curving.f11");
-  positive(f22, "curving.f22");
+bool BogieCurvingInput::valid() const {
+  const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+  return radius > 0.0 && speed >= 0.0 && std::isfinite(speed) && std::isfinite(cant_deficiency) &&
+         positive(wheelbase) && positive(wheel_radius) && positive(track_gauge) && contact_half_distance >= 0.0 &&
+         (rolling_radius_difference || profiles || positive(conicity)) &&
+         (std::isnan(contact_angle) || std::abs(contact_angle) < 0.5 * M_PI) &&
+         (profiles || positive(flange_clearance)) && positive(wheel_load) && positive(friction) &&
+         std::isfinite(load_transfer) && std::abs(load_transfer) < wheel_load &&
+         (std::isnan(flange_angle) || (flange_angle >= 0.0 && flange_angle < 0.5 * M_PI)) &&
+         (std::isnan(flange_friction) || (flange_friction >= 0.0 && std::isfinite(flange_friction))) &&
+         positive(f11) && positive(f22);
 }
 
 CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
-  in.validate();
+  ROLLNOISE_ASSERT(in.valid(), "bogie curving input outside the model (pipeline::check_bogie_curving_input)");
   Geometry g;
   g.a = 0.5 * in.wheelbase;
   g.l0 = in.half_distance();
