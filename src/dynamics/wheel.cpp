@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::dynamics {
@@ -126,6 +127,23 @@ Receptance4 WheelModel::modal_receptance(double frequency) const { return modal_
 
 Receptance4 WheelModel::modal_receptance(double frequency, double shift_y) const {
   return modal_sum(modes_at(shift_y), frequency);
+}
+
+Receptance4 WheelModel::modal_cross_receptance(double frequency, double shift_a,
+                                               double shift_b) const {
+  if (!follows_contact()) return modal_sum(modes_, frequency);  // one table: the same shapes
+  const std::vector<WheelMode> a = modes_at(shift_a), b = modes_at(shift_b);
+  ROLLNOISE_ASSERT(a.size() == b.size(), "modes_at gives the same modes at every shift");
+  const double omega = angular(frequency);
+  Receptance4 H = Receptance4::Zero();
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const WheelMode& m = a[k];
+    const double wn = angular(m.frequency);
+    const cdouble q =
+        1.0 / (m.modal_mass * cdouble(wn * wn - omega * omega, 2.0 * m.damping_ratio * wn * omega));
+    H += (a[k].shape * b[k].shape.transpose()).cast<cdouble>() * q;
+  }
+  return H;
 }
 
 Receptance4 WheelModel::receptance(double frequency) const {

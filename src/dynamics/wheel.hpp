@@ -93,6 +93,10 @@ class WheelModel {
   std::vector<WheelMode> modes_at(double shift_y) const;
   /// The modal sum of modes_at(shift_y).
   Receptance4 modal_receptance(double frequency, double shift_y) const;
+  /// The modal sum between two contacts of the same wheel, shifted by shift_a and shift_b:
+  /// sum_k phi_k(shift_a) phi_k(shift_b)^T / (m_k (w_k^2 - w^2 + 2 i zeta_k w_k w)) with the tables
+  /// of modes_at (response at a to a force at b; shift_a = shift_b gives modal_receptance).
+  Receptance4 modal_cross_receptance(double frequency, double shift_a, double shift_b) const;
 
   const RigidWheelset& wheelset() const { return wheelset_; }
   const std::vector<WheelMode>& modes() const { return modes_; }

@@ -242,12 +242,17 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
         w += rigid_flexibility6(wheel.wheelset(), ca, cb).cast<cdouble>() / (-omega * omega);
       // the point receptance at the contact's own position on the tread (the FE wheel's shapes
       // there, as the single-contact loop; the table wheel: its one table); between two patches of
-      // one wheel the reference table moved rigidly (the FE cross receptance is not passed here)
+      // one wheel the shapes at both positions (the table wheel: its one table moved rigidly)
       if (self)
         w +=
             wheel_modal_cross(wheel.modal_receptance(frequency, ca.position.wheel_shift_y), ca, ca);
-      else if (cross.wheel)
-        w += wheel_modal_cross(modal, ca, cb);
+      else if (cross.wheel && same_wheel(ca, cb))
+        w += wheel_modal_cross(
+            wheel.follows_contact()
+                ? wheel.modal_cross_receptance(frequency, ca.position.wheel_shift_y,
+                                               cb.position.wheel_shift_y)
+                : modal,
+            ca, cb);
       if ((self || cross.rail) && ca.side == cb.side) r = rail_cross(transfer[a * n + b], ca, cb);
       const Eigen::Matrix<cdouble, 6, 4> Tb =
           contact_frame(cb.position.contact_angle).cast<cdouble>();
