@@ -62,6 +62,7 @@ TEST(WheelsetPassivity,
                   fs::path(file).filename().string().c_str());
       continue;
     }
+    const bool fe = plain.has("wheel.model") && plain.string("wheel.model") == "fe";
     const std::vector<std::string> o = {"friction.law=\"falling\"",
                                         "friction.kinetic_ratio=1",
                                         "friction.decay=0",
