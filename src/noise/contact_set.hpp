@@ -34,10 +34,11 @@
 //  * flexible wheel: the modal table gives each mode's shape at ONE point (the nominal running
 //    circle) in the four contact directions. The cross receptance between two points of the same
 //    wheel uses those same modal amplitudes at both points, moved by the lateral shift of each
-//    (M2, modal rotations about x and y zero as in loop.hpp). LIMITATION: the change of the mode
-//    shapes across the tread and onto the flange is not modelled; a flange patch then moves with
-//    the tread's modal amplitudes (an FE wheel with shapes along the tread, issue 27, will give
-//    them). The two wheels of a wheelset have independent modes (no modal cross term);
+//    (M2, modal rotations about x and y zero as in loop.hpp). LIMITATION of the mode table: the
+//    change of the mode shapes across the tread and onto the flange is not modelled; a flange
+//    patch then moves with the tread's modal amplitudes. The FE wheel (WheelModel::follows_contact)
+//    gives each contact its own shapes, in the point and the cross terms
+//    (WheelModel::modal_cross_receptance). The two wheels of a wheelset have independent modes (no modal cross term);
 //  * rail: each rail its own beam (the two rails are uncoupled: no sleeper bending, no track
 //    cross-coupling); between two contacts on the same rail at x_a, x_b along it, the transfer
 //    receptance RailLine::transfer(x_a, x_b) (Eq. 2 of dynamics/track.hpp for discrete support,
