@@ -108,32 +108,12 @@ std::vector<WheelMode> WheelModel::modes_at(double shift_y) const {
 
 namespace {
 
-Receptance4 modal_sum(const std::vector<WheelMode>& modes, double frequency) {
-  const double omega = angular(frequency);
-  Receptance4 H = Receptance4::Zero();
-  for (const WheelMode& m : modes) {
-    const double wn = angular(m.frequency);
-    // 1 / (m_n (omega_n^2 - omega^2 + 2 i zeta omega_n omega))
-    const cdouble q =
-        1.0 / (m.modal_mass * cdouble(wn * wn - omega * omega, 2.0 * m.damping_ratio * wn * omega));
-    H += (m.shape * m.shape.transpose()).cast<cdouble>() * q;
-  }
-  return H;
-}
-
-}  // namespace
-
-Receptance4 WheelModel::modal_receptance(double frequency) const { return modal_sum(modes_, frequency); }
-
-Receptance4 WheelModel::modal_receptance(double frequency, double shift_y) const {
-  return modal_sum(modes_at(shift_y), frequency);
-}
-
-Receptance4 WheelModel::modal_cross_receptance(double frequency, double shift_a,
-                                               double shift_b) const {
-  if (!follows_contact()) return modal_sum(modes_, frequency);  // one table: the same shapes
-  const std::vector<WheelMode> a = modes_at(shift_a), b = modes_at(shift_b);
-  ROLLNOISE_ASSERT(a.size() == b.size(), "modes_at gives the same modes at every shift");
+// sum_k phi_k(a) phi_k(b)^T / (m_k (omega_k^2 - omega^2 + 2 i zeta_k omega_k omega)): the response
+// at a to a force at b; `a` and `b` hold the same modes (frequency, damping, mass) in the same order,
+// their shapes at the two points (a == b: the point receptance).
+Receptance4 modal_sum(const std::vector<WheelMode>& a, const std::vector<WheelMode>& b,
+                      double frequency) {
+  ROLLNOISE_ASSERT(a.size() == b.size(), "the same modes at both points");
   const double omega = angular(frequency);
   Receptance4 H = Receptance4::Zero();
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -141,9 +121,25 @@ Receptance4 WheelModel::modal_cross_receptance(double frequency, double shift_a,
     const double wn = angular(m.frequency);
     const cdouble q =
         1.0 / (m.modal_mass * cdouble(wn * wn - omega * omega, 2.0 * m.damping_ratio * wn * omega));
-    H += (a[k].shape * b[k].shape.transpose()).cast<cdouble>() * q;
+    H += (m.shape * b[k].shape.transpose()).cast<cdouble>() * q;
   }
   return H;
+}
+
+}  // namespace
+
+Receptance4 WheelModel::modal_receptance(double frequency) const {
+  return modal_sum(modes_, modes_, frequency);
+}
+
+Receptance4 WheelModel::modal_receptance(double frequency, double shift_y) const {
+  const std::vector<WheelMode> at = modes_at(shift_y);
+  return modal_sum(at, at, frequency);
+}
+
+Receptance4 WheelModel::modal_cross_receptance(double frequency, double shift_a,
+                                               double shift_b) const {
+  return modal_sum(modes_at(shift_a), modes_at(shift_b), frequency);
 }
 
 Receptance4 WheelModel::receptance(double frequency) const {

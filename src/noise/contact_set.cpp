@@ -206,7 +206,6 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
   validate_contacts(contacts);
   const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
   const double omega = dynamics::angular(frequency);
-  const Receptance4 modal = wheel.modal_receptance(frequency);
   ContactSetReceptance out;
   out.wheel6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
   out.rail6 = Eigen::MatrixXcd::Zero(6 * n, 4 * n);
@@ -247,12 +246,9 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
         w +=
             wheel_modal_cross(wheel.modal_receptance(frequency, ca.position.wheel_shift_y), ca, ca);
       else if (cross.wheel && same_wheel(ca, cb))
-        w += wheel_modal_cross(
-            wheel.follows_contact()
-                ? wheel.modal_cross_receptance(frequency, ca.position.wheel_shift_y,
-                                               cb.position.wheel_shift_y)
-                : modal,
-            ca, cb);
+        w += wheel_modal_cross(wheel.modal_cross_receptance(frequency, ca.position.wheel_shift_y,
+                                                            cb.position.wheel_shift_y),
+                               ca, cb);
       if ((self || cross.rail) && ca.side == cb.side) r = rail_cross(transfer[a * n + b], ca, cb);
       const Eigen::Matrix<cdouble, 6, 4> Tb =
           contact_frame(cb.position.contact_angle).cast<cdouble>();

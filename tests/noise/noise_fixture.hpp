@@ -78,11 +78,11 @@ inline std::vector<double> log_frequencies(double f_min, double f_max, int n) {
 /// Smallest eigenvalue of the dissipation matrix -(A - A^H)/(2i) of a receptance A (>= 0 for a
 /// passive component: the power i omega F^H A F / 2 flowing in has a non-negative real part),
 /// after the congruence D (.) D, D = diag(|A_ii|^{-1/2}), which keeps definiteness but removes the
-/// units; relative to the largest |eigenvalue|.
+/// units; relative to the largest |eigenvalue|. Any size (N = Eigen::Dynamic for MatrixXcd).
 template <int N>
 double relative_min_dissipation(const Eigen::Matrix<std::complex<double>, N, N>& A) {
-  Eigen::Matrix<double, N, 1> d;
-  for (int i = 0; i < N; ++i)
+  Eigen::Matrix<double, N, 1> d(A.rows());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
     d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
   const Eigen::Matrix<std::complex<double>, N, N> Ds =
       d.template cast<std::complex<double>>().asDiagonal();
@@ -92,6 +92,10 @@ double relative_min_dissipation(const Eigen::Matrix<std::complex<double>, N, N>&
   const auto ev = es.eigenvalues();
   const double scale = ev.cwiseAbs().maxCoeff();
   return scale > 0 ? ev.minCoeff() / scale : 0.0;
+}
+/// The same for a dynamic-size receptance (or an expression that evaluates to one).
+inline double relative_min_dissipation(const Eigen::MatrixXcd& A) {
+  return relative_min_dissipation<Eigen::Dynamic>(A);
 }
 
 }  // namespace noise_test

@@ -13,11 +13,13 @@
 #include "io/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/noise_pipeline.hpp"
+#include "../noise/noise_fixture.hpp"
 
 namespace {
 
 using namespace rollnoise;
 using cd = std::complex<double>;
+using noise_test::relative_min_dissipation;
 
 // The leading wheelset of the 300 m curve with the flange patch coupled: 8 points per band up to
 // 1 kHz, 24 elements in x (cheap), continuous support (the point receptance is the same at every
@@ -38,18 +40,6 @@ double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
   return (a - b).norm() / std::max(b.norm(), 1e-300);
 }
 
-// Smallest eigenvalue of the dissipation matrix -(A - A^H)/2i after equilibration, relative to the
-// largest (>= 0 for a passive receptance A).
-double relative_min_dissipation(const Eigen::MatrixXcd& A) {
-  Eigen::VectorXd d(A.rows());
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
-  const Eigen::MatrixXcd D = d.cast<cd>().asDiagonal();
-  const Eigen::MatrixXcd Q = D * (-(A - A.adjoint()) / cd(0.0, 2.0)) * D;
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(Q);
-  const double scale = es.eigenvalues().cwiseAbs().maxCoeff();
-  return scale > 0 ? es.eigenvalues().minCoeff() / scale : 0.0;
-}
 
 class SecondPatch : public ::testing::Test {
  protected:
