@@ -83,6 +83,17 @@ double thick_ring_inplane_frequency(const RingSection& ring, const IsotropicMate
   return std::sqrt(es.eigenvalues()(0)) / (2 * kPi);
 }
 
+BeamElement hermite_beam_element(double bending_stiffness, double mass_per_length, double le) {
+  BeamElement e;
+  e.stiffness << 12, 6 * le, -12, 6 * le, 6 * le, 4 * le * le, -6 * le, 2 * le * le, -12, -6 * le,
+      12, -6 * le, 6 * le, 2 * le * le, -6 * le, 4 * le * le;
+  e.mass << 156, 22 * le, 54, -13 * le, 22 * le, 4 * le * le, 13 * le, -3 * le * le, 54, 13 * le,
+      156, -22 * le, -13 * le, -3 * le * le, -22 * le, 4 * le * le;
+  e.stiffness *= bending_stiffness / (le * le * le);
+  e.mass *= mass_per_length * le / 420;
+  return e;
+}
+
 double cantilever_strip_frequency(const std::function<double(double)>& thickness, double length,
                                   const IsotropicMaterial& material, int elements) {
   if (elements < 1 || length <= 0)
@@ -95,13 +106,9 @@ double cantilever_strip_frequency(const std::function<double(double)>& thickness
     const double h = thickness((el + 0.5) * le);  // mid-element thickness
     const double d = material.youngs_modulus * h * h * h / (12 * (1 - nu * nu));
     const double mu = material.density * h;
-    Eigen::Matrix4d ke, me;  // cubic Hermite beam element (e.g. Przemieniecki 1968)
-    ke << 12, 6 * le, -12, 6 * le, 6 * le, 4 * le * le, -6 * le, 2 * le * le, -12, -6 * le, 12,
-        -6 * le, 6 * le, 2 * le * le, -6 * le, 4 * le * le;
-    me << 156, 22 * le, 54, -13 * le, 22 * le, 4 * le * le, 13 * le, -3 * le * le, 54, 13 * le, 156,
-        -22 * le, -13 * le, -3 * le * le, -22 * le, 4 * le * le;
-    k.block<4, 4>(2 * el, 2 * el) += d / (le * le * le) * ke;
-    m.block<4, 4>(2 * el, 2 * el) += mu * le / 420 * me;
+    const BeamElement e = hermite_beam_element(d, mu, le);
+    k.block<4, 4>(2 * el, 2 * el) += e.stiffness;
+    m.block<4, 4>(2 * el, 2 * el) += e.mass;
   }
   const int free = dofs - 2;
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(k.bottomRightCorner(free, free),

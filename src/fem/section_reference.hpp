@@ -72,6 +72,15 @@ struct RingFoundation {
 double thick_ring_inplane_frequency(const RingSection& ring, const IsotropicMaterial& material,
                                     int n, const RingFoundation& foundation = {});
 
+/// The cubic Hermite (Euler-Bernoulli) beam element of length le, DOFs (w_0, w'_0, w_1, w'_1):
+/// stiffness EI/le^3 [12 6le -12 6le; ...] and consistent mass m le/420 [156 22le 54 -13le; ...]
+/// (e.g. Przemieniecki, Theory of Matrix Structural Analysis, 1968).
+struct BeamElement {
+  Eigen::Matrix4d stiffness;
+  Eigen::Matrix4d mass;
+};
+BeamElement hermite_beam_element(double bending_stiffness, double mass_per_length, double le);
+
 /// First natural frequency (Hz) of a plate strip clamped at x = 0 and free at x = length, in
 /// cylindrical bending (plane strain across its width: D = E h^3 / (12 (1 - nu^2)), mass rho h per
 /// unit area), thickness h(x) (m) given as a function. Euler-Bernoulli elements with cubic Hermite

@@ -79,14 +79,9 @@ Eigen::Vector2d web_bending_cut_ons() {
   const double length = kWebTop - kWebBottom, t = kWebThickness;
   const double d =
       steel.youngs_modulus * t * t * t / (12 * (1 - steel.poisson_ratio * steel.poisson_ratio));
-  const double le = length, mu = steel.density * t;
-  Eigen::Matrix4d kw, mw;  // Hermite beam, DOFs (v_bottom, v'_bottom, v_top, v'_top)
-  kw << 12, 6 * le, -12, 6 * le, 6 * le, 4 * le * le, -6 * le, 2 * le * le, -12, -6 * le, 12,
-      -6 * le, 6 * le, 2 * le * le, -6 * le, 4 * le * le;
-  mw << 156, 22 * le, 54, -13 * le, 22 * le, 4 * le * le, 13 * le, -3 * le * le, 54, 13 * le, 156,
-      -22 * le, -13 * le, -3 * le * le, -22 * le, 4 * le * le;
-  kw *= d / (le * le * le);
-  mw *= mu * le / 420;
+  // Hermite web element, DOFs (v_bottom, v'_bottom, v_top, v'_top)
+  const rf::BeamElement web = rf::hermite_beam_element(d, steel.density * t, length);
+  const Eigen::Matrix4d &kw = web.stiffness, &mw = web.mass;
   Eigen::Matrix4d transform = Eigen::Matrix4d::Zero();  // (v_b, v'_b, v_t, v'_t) from the DOFs
   transform(0, 2) = 1, transform(0, 3) = -(kWebBottom - foot.centroid.y()), transform(1, 3) = -1;
   transform(2, 0) = 1, transform(2, 1) = -(kWebTop - head.centroid.y()), transform(3, 1) = -1;
