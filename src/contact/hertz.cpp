@@ -5,6 +5,7 @@
 #include <gsl/gsl_sf_ellint.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
@@ -53,18 +54,18 @@ HertzContact assemble(double a, double b, double N, const Material& m) {
 }  // namespace
 
 HertzContact hertz_from_semi_axes(double a, double b, double normal_force, const Material& m) {
-  if (!(a > 0.0)) throw InputError("contact.a", "semi-axis a must be positive");
-  if (!(b > 0.0)) throw InputError("contact.b", "semi-axis b must be positive");
-  if (!(normal_force > 0.0))
-    throw InputError("contact.normal_force", "normal force must be positive");
+  // contracts: contact.a, contact.b, contact.normal_force are positive where read (schema), a
+  // patch's semi-axes and a wheel's load are positive where the pipeline makes them
+  if (!(a > 0.0)) throw std::invalid_argument("Hertz: semi-axis a must be positive");
+  if (!(b > 0.0)) throw std::invalid_argument("Hertz: semi-axis b must be positive");
+  if (!(normal_force > 0.0)) throw std::invalid_argument("Hertz: normal force must be positive");
   return assemble(a, b, normal_force, m);
 }
 
 HertzContact hertz_from_curvatures(double A, double B, double normal_force, const Material& m) {
   if (!(A > 0.0) || !(B > 0.0))
     throw InputError("contact.curvature", "both curvature coefficients must be positive");
-  if (!(normal_force > 0.0))
-    throw InputError("contact.normal_force", "normal force must be positive");
+  if (!(normal_force > 0.0)) throw std::invalid_argument("Hertz: normal force must be positive");
   const double ratio = std::max(A, B) / std::min(A, B);  // large / small >= 1
   double e = 0.0;
   const Shape near_circle = shape(1e-4);

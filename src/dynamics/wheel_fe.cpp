@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "fem/eigen_solve.hpp"
@@ -12,19 +13,21 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The contract of the FE wheel: every field is checked with its key where the case is read
+// (io/wheel_fe_case.cpp, the schema, io/wheel_section_file.cpp).
 void check_options(const WheelSection& s, const WheelFeOptions& o) {
   if (s.bore_segments.empty())
-    throw InputError("wheel.section", "the wheel section has no bore segment");
+    throw std::invalid_argument("FE wheel: the section has no bore segment");
   if (s.tread_segments.empty())
-    throw InputError("wheel.section", "the wheel section has no tread segment");
-  if (!(o.mesh_size > 0)) throw InputError("wheel.mesh_size", "wheel.mesh_size must be > 0 m");
-  if (o.n_max < 0 || o.n_max > 50) throw InputError("wheel.n_max", "wheel.n_max must lie in [0, 50]");
-  if (!(o.f_max > 0)) throw InputError("wheel.f_max", "wheel.f_max must be > 0 Hz");
+    throw std::invalid_argument("FE wheel: the section has no tread segment");
+  if (!(o.mesh_size > 0)) throw std::invalid_argument("FE wheel: the element size must be > 0 m");
+  if (o.n_max < 0 || o.n_max > 50) throw std::invalid_argument("FE wheel: the highest nodal diameter n_max must lie in [0, 50]");
+  if (!(o.f_max > 0)) throw std::invalid_argument("FE wheel: the highest natural frequency kept must be > 0 Hz");
   const auto& m = o.material;
-  if (!(m.youngs_modulus > 0)) throw InputError("wheel.youngs_modulus", "wheel.youngs_modulus must be > 0 Pa");
+  if (!(m.youngs_modulus > 0)) throw std::invalid_argument("FE wheel: Young's modulus must be > 0 Pa");
   if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
-    throw InputError("wheel.poisson_ratio", "wheel.poisson_ratio must lie in (-1, 0.5)");
-  if (!(m.density > 0)) throw InputError("wheel.density", "wheel.density must be > 0 kg/m^3");
+    throw std::invalid_argument("FE wheel: Poisson's ratio must lie in (-1, 0.5)");
+  if (!(m.density > 0)) throw std::invalid_argument("FE wheel: the density must be > 0 kg/m^3");
 }
 
 // Tread samples: points of the running-surface segments every `spacing` in s (the segments are

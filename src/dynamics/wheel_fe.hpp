@@ -67,7 +67,8 @@ struct WheelFeModes {
   double mass = 0.0;               ///< of the wheel (kg)
 };
 
-/// Meshes the section and computes the modes. Throws InputError for a bad section or options.
+/// Meshes the section and computes the modes. std::invalid_argument for a section without bore
+/// or tread segment or options outside their ranges (a contract: io checks them with their keys).
 WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options);
 
 /// (U_r, U_theta, U_z) of a mode at lateral position s on the tread (linear interpolation between

@@ -72,14 +72,14 @@ double s1002_height(double s) {
   if (!(s >= s1002_s_min - 1e-12 && s <= s1002_s_max + 1e-12)) {
     std::ostringstream m;
     m << "S1002 is defined for s in [-70, 60] mm, not s = " << s * 1e3 << " mm";
-    throw InputError("s1002", m.str());
+    throw std::domain_error(m.str());
   }
   return 1e-3 * s1002_mm(1e3 * s);
 }
 
 Profile s1002_profile(double spacing) {
   if (!(spacing > 0.0 && spacing < 5e-3))
-    throw InputError("s1002.spacing", "the S1002 sample spacing must be in (0, 5 mm)");
+    throw std::invalid_argument("the S1002 sample spacing must be in (0, 5 mm)");
   std::vector<double> y, z;
   const double s0 = -69.9e-3;
   const std::array<double, 8> knots = {kHG, kGF, kFE, kED, kDC, kCB, kBA, kSA};

@@ -16,7 +16,7 @@ namespace rollnoise::geometry {
 constexpr double s1002_s_min = -70e-3;
 constexpr double s1002_s_max = 60e-3;
 
-/// F(s) of S1002 (m) for s in metres; throws InputError outside [s1002_s_min, s1002_s_max].
+/// F(s) of S1002 (m) for s in metres; std::domain_error outside [s1002_s_min, s1002_s_max].
 double s1002_height(double s);
 
 /// The S1002 profile sampled from the analytic definition every `spacing` metres (plus the

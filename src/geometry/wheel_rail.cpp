@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "geometry/parabola_fit.hpp"
@@ -185,10 +186,11 @@ WheelRailPair::WheelRailPair(Profile wheel, Profile rail, const TrackParameters&
   if (rail_.kind() != ProfileKind::Rail)
     throw InputError(rail_.source(),
                      rail_.source() + ": is a wheel profile, a rail profile was expected");
+  // contracts: no case key sets the gauge or the nominal radius (the defaults of the structs)
   if (!(track_.gauge > 0.5 && track_.gauge < 3.0))
-    throw InputError("wheel_rail.track_gauge", "the track gauge must be between 0.5 and 3 m");
+    throw std::invalid_argument("the track gauge must be between 0.5 and 3 m");
   if (!(wheelset_.nominal_radius > 0.05))
-    throw InputError("wheel_rail.nominal_radius", "the nominal rolling radius must exceed 0.05 m");
+    throw std::invalid_argument("the nominal rolling radius must exceed 0.05 m");
   // Cant an upright rail towards the track centre: its top turns towards -y (the gauge side), a
   // rotation by -atan(inclination) from +y towards +z.
   if (!rail_.canted() && track_.rail_inclination != 0.0)

@@ -32,50 +32,45 @@ void check_phase(const CaseReader& r, const std::string& key, double phase) {
   r.fail(key, s.str());
 }
 
-}  // namespace
-
-std::string excitation_file_path(const CaseReader& r) {
-  std::filesystem::path file = r.string("excitation.file");
-  if (file.is_relative() && !r.folder().empty()) file = std::filesystem::path(r.folder()) / file;
-  return file.string();
+// excitation.type = "harmonic": one frequency, the creepages' amplitudes and phases and the
+// normal-load variation, N_mean + dN cos(2 pi f t + phase_N) > 0 checked at its minimum.
+contact::CreepageHistory harmonic_excitation(const CaseReader& r, const contact::Creepage& mean) {
+  // Phases in radians (SI, as /excitation/phase is written). Any phase is expressible within
+  // +-2 pi; a larger value is most likely meant in degrees (the unit of earlier versions).
+  const auto ph = r.real3("excitation.phase");
+  for (double p : ph) check_phase(r, "excitation.phase", p);
+  const double normal_phase = r.real("excitation.normal_phase");
+  check_phase(r, "excitation.normal_phase", normal_phase);
+  const double dN = r.real("excitation.normal_amplitude");
+  if (dN != 0.0)  // the minimum of N_mean + dN cos(.) over all times
+    check_positive_load(r, "excitation.normal_amplitude",
+                        r.real("contact.normal_force") - std::abs(dN), " at its minimum");
+  return contact::CreepageHistory::harmonic(
+      mean, r.real3("excitation.amplitude"), r.real("excitation.frequency"), ph, dN, normal_phase);
 }
 
-contact::CreepageHistory read_excitation(const CaseReader& r) {
-  const auto m = r.real3("creepage.mean");
-  const contact::Creepage mean{m[0], m[1], m[2]};
-  const std::string type = r.string("excitation.type");
-  if (type == "none") return contact::CreepageHistory::constant(mean);
-  if (type == "harmonic") {
-    // Phases in radians (SI, as /excitation/phase is written). Any phase is expressible within
-    // +-2 pi; a larger value is most likely meant in degrees (the unit of earlier versions).
-    const auto ph = r.real3("excitation.phase");
-    for (double p : ph) check_phase(r, "excitation.phase", p);
-    const double normal_phase = r.real("excitation.normal_phase");
-    check_phase(r, "excitation.normal_phase", normal_phase);
-    const double dN = r.real("excitation.normal_amplitude");
-    if (dN != 0.0)  // the minimum of N_mean + dN cos(.) over all times
-      check_positive_load(r, "excitation.normal_amplitude",
-                          r.real("contact.normal_force") - std::abs(dN), " at its minimum");
-    return contact::CreepageHistory::harmonic(
-        mean, r.real3("excitation.amplitude"), r.real("excitation.frequency"), ph, dN, normal_phase);
-  }
-  if (type == "multiharmonic") {
-    const double f0 = r.real("excitation.f_min"), f1 = r.real("excitation.f_max");
-    if (f1 < f0) r.fail("excitation.f_max", "must not be below excitation.f_min");
-    // The minimum over all times is not known in closed form: checked on the time steps of a run
-    // (normal_load_series).
-    const long count = r.integer("excitation.count");
-    // per frequency: its value and 4 phases (3 creepages, normal load)
-    within_case(r, [&] {
-      pipeline::check_size(read_limits(r), "excitation.count", double(count), "excitation frequencies",
-                           5.0 * sizeof(double) * double(count));
-    });
-    return contact::CreepageHistory::multiharmonic(
-        mean, r.real3("excitation.amplitude"), f0, f1, static_cast<int>(count),
-        static_cast<std::uint64_t>(r.integer("excitation.seed")),
-        r.real("excitation.normal_amplitude"));
-  }
-  // csv
+// excitation.type = "multiharmonic": the paper's pseudo-random creepage (Eq. 32), count
+// frequencies in [f_min, f_max] with seeded random phases.
+contact::CreepageHistory multiharmonic_excitation(const CaseReader& r, const contact::Creepage& mean) {
+  const double f0 = r.real("excitation.f_min"), f1 = r.real("excitation.f_max");
+  if (f1 < f0) r.fail("excitation.f_max", "must not be below excitation.f_min");
+  // The minimum over all times is not known in closed form: checked on the time steps of a run
+  // (normal_load_series).
+  const long count = r.integer("excitation.count");
+  // per frequency: its value and 4 phases (3 creepages, normal load)
+  within_case(r, [&] {
+    pipeline::check_size(read_limits(r), "excitation.count", double(count), "excitation frequencies",
+                         5.0 * sizeof(double) * double(count));
+  });
+  return contact::CreepageHistory::multiharmonic(
+      mean, r.real3("excitation.amplitude"), f0, f1, static_cast<int>(count),
+      static_cast<std::uint64_t>(r.integer("excitation.seed")),
+      r.real("excitation.normal_amplitude"));
+}
+
+// excitation.type = "csv": the time series t, xi_x, xi_y, phi[, dN] of excitation.file; errors
+// name the key and the file's line.
+contact::CreepageHistory csv_excitation(const CaseReader& r, const contact::Creepage& mean) {
   const std::filesystem::path file = excitation_file_path(r);
   std::istringstream in([&]() -> std::string {
     try {
@@ -125,6 +120,24 @@ contact::CreepageHistory read_excitation(const CaseReader& r) {
       r.fail("excitation.file",
              file.string() + ": times must increase (sample " + std::to_string(i + 1) + ")");
   return contact::CreepageHistory::samples(mean, t, v, dn);
+}
+
+}  // namespace
+
+std::string excitation_file_path(const CaseReader& r) {
+  std::filesystem::path file = r.string("excitation.file");
+  if (file.is_relative() && !r.folder().empty()) file = std::filesystem::path(r.folder()) / file;
+  return file.string();
+}
+
+contact::CreepageHistory read_excitation(const CaseReader& r) {
+  const auto m = r.real3("creepage.mean");
+  const contact::Creepage mean{m[0], m[1], m[2]};
+  const std::string type = r.string("excitation.type");
+  if (type == "none") return contact::CreepageHistory::constant(mean);
+  if (type == "harmonic") return harmonic_excitation(r, mean);
+  if (type == "multiharmonic") return multiharmonic_excitation(r, mean);
+  return csv_excitation(r, mean);
 }
 
 void write_excitation(Hdf5Writer& w, const std::string& group, const contact::CreepageHistory& h) {

@@ -27,10 +27,64 @@ noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) 
   return read_roughness_csv(resolve_model_file(r, key));
 }
 
-}  // namespace
+// curve.creepage and the keys it admits or excludes: [wheelset], [trailing_wheelset] with
+// "multibody", curve.wheels with the profiles, the case's own contact state with "case".
+void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
+  c.estimate_creepage = r.string("curve.creepage") == "estimate";
+  c.multibody = r.string("curve.creepage") == "multibody";
+  if (c.multibody && r.string("contact.geometry") != "profiles")
+    r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
+  for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage",
+                          "wheelset.inner_wheel_load", "wheelset.inner_creepage",
+                          "trailing_wheelset.lateral_displacement", "trailing_wheelset.yaw",
+                          "trailing_wheelset.wheel_load", "trailing_wheelset.inner_wheel_load",
+                          "trailing_wheelset.creepage", "trailing_wheelset.inner_creepage"})
+    if (r.has(key) && !c.multibody) r.fail(key, "only used with curve.creepage = \"multibody\"");
+  if (r.has("curve.wheels")) {
+    if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
+      r.fail("curve.wheels", "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
+                             "\"multibody\"");
+    c.wheels = r.string_list("curve.wheels");
+    if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");
+    for (std::size_t i = 0; i < c.wheels.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (c.wheels[i] == c.wheels[j]) r.fail("curve.wheels", "names \"" + c.wheels[i] + "\" twice");
+  }
+  if (r.string("contact.geometry") == "profiles" && r.string("curve.creepage") != "case")
+    for (const char* key : {"contact.lateral_displacement", "contact.yaw", "creepage.mean"})
+      if (r.has(key))
+        r.fail(key, "the curve contact state sets it (curve.creepage = \"case\" to give it, or "
+                    "\"multibody\" with [wheelset])");
+}
 
-NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
-  NoiseCase c;
+// The multibody contact state of the bogie's wheelsets (curve.creepage = "multibody"): positions,
+// and per wheel its load and creepage where given.
+void read_multibody_wheelsets(const CaseReader& r, NoiseCase& c) {
+  c.wheelset_lateral = r.real("wheelset.lateral_displacement");
+  c.wheelset_yaw = r.real("wheelset.yaw");
+  if (r.has("wheelset.wheel_load")) c.wheelset_load = r.real("wheelset.wheel_load");
+  if (r.has("wheelset.creepage")) {
+    const auto xi = r.real3("wheelset.creepage");
+    c.wheelset_creepage = Eigen::Vector3d(xi[0], xi[1], xi[2]);
+  }
+  c.trailing_lateral = r.real("trailing_wheelset.lateral_displacement");
+  c.trailing_yaw = r.real("trailing_wheelset.yaw");
+  // per wheel, in the order of noise::WheelId (leading outer/inner, trailing outer/inner)
+  const char* loads[4] = {nullptr, "wheelset.inner_wheel_load", "trailing_wheelset.wheel_load",
+                          "trailing_wheelset.inner_wheel_load"};
+  const char* creeps[4] = {nullptr, "wheelset.inner_creepage", "trailing_wheelset.creepage",
+                           "trailing_wheelset.inner_creepage"};
+  for (int k = 1; k < 4; ++k) {
+    if (r.has(loads[k])) c.wheel_loads[k] = r.real(loads[k]);
+    if (r.has(creeps[k])) {
+      const auto xi = r.real3(creeps[k]);
+      c.wheel_creepages[k] = Eigen::Vector3d(xi[0], xi[1], xi[2]);
+    }
+  }
+}
+
+// [curve]: radius, cant deficiency, the curve creepage state and the bogie's parameters.
+void read_curve(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
   problems.check([&] {
     c.curve_radius = r.real("curve.radius");
     if (c.curve_radius > 0.0 && c.curve_radius < 50.0)
@@ -39,99 +93,60 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   problems.check([&] { c.cant_deficiency = r.real("curve.cant_deficiency"); });
   problems.check([&] { c.cg_height = r.real("curve.cg_height"); });
   problems.check([&] {
-    c.estimate_creepage = r.string("curve.creepage") == "estimate";
-    c.multibody = r.string("curve.creepage") == "multibody";
-    if (c.multibody && r.string("contact.geometry") != "profiles")
-      r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
-    for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage",
-                            "wheelset.inner_wheel_load", "wheelset.inner_creepage",
-                            "trailing_wheelset.lateral_displacement", "trailing_wheelset.yaw",
-                            "trailing_wheelset.wheel_load", "trailing_wheelset.inner_wheel_load",
-                            "trailing_wheelset.creepage", "trailing_wheelset.inner_creepage"})
-      if (r.has(key) && !c.multibody) r.fail(key, "only used with curve.creepage = \"multibody\"");
-    if (r.has("curve.wheels")) {
-      if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
-        r.fail("curve.wheels", "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
-                               "\"multibody\"");
-      c.wheels = r.string_list("curve.wheels");
-      if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");
-      for (std::size_t i = 0; i < c.wheels.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-          if (c.wheels[i] == c.wheels[j]) r.fail("curve.wheels", "names \"" + c.wheels[i] + "\" twice");
-    }
-    if (r.string("contact.geometry") == "profiles" && r.string("curve.creepage") != "case")
-      for (const char* key : {"contact.lateral_displacement", "contact.yaw", "creepage.mean"})
-        if (r.has(key))
-          r.fail(key, "the curve contact state sets it (curve.creepage = \"case\" to give it, or "
-                      "\"multibody\" with [wheelset])");
-    if (c.multibody) {
-      c.wheelset_lateral = r.real("wheelset.lateral_displacement");
-      c.wheelset_yaw = r.real("wheelset.yaw");
-      if (r.has("wheelset.wheel_load")) c.wheelset_load = r.real("wheelset.wheel_load");
-      if (r.has("wheelset.creepage")) {
-        const auto xi = r.real3("wheelset.creepage");
-        c.wheelset_creepage = Eigen::Vector3d(xi[0], xi[1], xi[2]);
-      }
-      c.trailing_lateral = r.real("trailing_wheelset.lateral_displacement");
-      c.trailing_yaw = r.real("trailing_wheelset.yaw");
-      // per wheel, in the order of noise::WheelId (leading outer/inner, trailing outer/inner)
-      const char* loads[4] = {nullptr, "wheelset.inner_wheel_load", "trailing_wheelset.wheel_load",
-                              "trailing_wheelset.inner_wheel_load"};
-      const char* creeps[4] = {nullptr, "wheelset.inner_creepage", "trailing_wheelset.creepage",
-                               "trailing_wheelset.inner_creepage"};
-      for (int k = 1; k < 4; ++k) {
-        if (r.has(loads[k])) c.wheel_loads[k] = r.real(loads[k]);
-        if (r.has(creeps[k])) {
-          const auto xi = r.real3(creeps[k]);
-          c.wheel_creepages[k] = Eigen::Vector3d(xi[0], xi[1], xi[2]);
-        }
-      }
-    }
+    read_curve_creepage_mode(r, c);
+    if (c.multibody) read_multibody_wheelsets(r, c);
   });
   problems.check([&] { c.wheelbase = r.real("curve.wheelbase"); });
   problems.check([&] { c.wheel_radius = r.real("curve.wheel_radius"); });
   problems.check([&] { c.conicity = r.real("curve.conicity"); });
   problems.check([&] { c.flange_clearance = r.real("curve.flange_clearance"); });
   problems.check([&] { c.contact_angle = r.real("contact.angle"); });
+}
 
-  std::string track_id, wheel_id, track_section;
-  problems.check([&] {
-    const std::string file = resolve_model_file(r, "track.file");
-    const dynamics::TrackParameters track = read_track_parameters(file);
-    const std::string support = r.string("track.support");
-    const double position = r.real("track.position");
-    const std::string model = r.string("track.model");
-    if (model != "waveguide" && r.has("track.rail_section"))
-      r.fail("track.rail_section", "applies to track.model = \"waveguide\" only");
-    if (model == "waveguide" && support == "discrete")
-      c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, waveguide_rail_options(r, track_section), position);
-    else if (model == "waveguide")
-      c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, waveguide_rail_options(r, track_section));
-    else {
-      c.rail_track = track;
-      c.rail_support = support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous;
-      c.rail_position = position;
-    }
-    if (model != "waveguide")
-      c.rail = std::make_unique<dynamics::RailModel>(
-          track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
-          position);
-    char pos[32];
-    std::snprintf(pos, sizeof pos, "%.17g", position);
-    track_id = "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
-  });
-  problems.check([&] {
-    const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
-    if (const auto fe = read_wheel_fe_case(r, problems)) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
-      c.wheel = std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &wheel_id));
-      wheel_id = "wheel " + wheelset + ", " + wheel_id;
-      return;
-    }
-    const std::string modes = resolve_model_file(r, "wheel.modes");
-    c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
-    wheel_id = "wheel " + wheelset + ", " + modes;
-  });
-  c.structures_id = track_id + "; " + wheel_id;
+// [track]: the rail model (beams or waveguide, continuous or discrete support); its identity for
+// the study's reuse groups.
+std::string read_track(const CaseReader& r, NoiseCase& c) {
+  std::string track_section;
+  const std::string file = resolve_model_file(r, "track.file");
+  const dynamics::TrackParameters track = read_track_parameters(file);
+  const std::string support = r.string("track.support");
+  const double position = r.real("track.position");
+  const std::string model = r.string("track.model");
+  if (model != "waveguide" && r.has("track.rail_section"))
+    r.fail("track.rail_section", "applies to track.model = \"waveguide\" only");
+  if (model == "waveguide" && support == "discrete")
+    c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, waveguide_rail_options(r, track_section), position);
+  else if (model == "waveguide")
+    c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, waveguide_rail_options(r, track_section));
+  else {
+    c.rail_track = track;
+    c.rail_support = support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous;
+    c.rail_position = position;
+  }
+  if (model != "waveguide")
+    c.rail = std::make_unique<dynamics::RailModel>(
+        track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
+        position);
+  char pos[32];
+  std::snprintf(pos, sizeof pos, "%.17g", position);
+  return "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
+}
+
+// [wheel]: the FE wheel or the wheelset with a mode table; its identity for the reuse groups.
+std::string read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
+  std::string id;
+  const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
+  if (const auto fe = read_wheel_fe_case(r, problems)) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
+    c.wheel = std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &id));
+    return "wheel " + wheelset + ", " + id;
+  }
+  const std::string modes = resolve_model_file(r, "wheel.modes");
+  c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
+  return "wheel " + wheelset + ", " + modes;
+}
+
+// [roughness] and [noise]: the spectra, the contact filter, the loop's options and the bands.
+void read_roughness_and_loop(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
   problems.check([&] { c.rail_roughness = roughness(r, "roughness.rail"); });
   problems.check([&] { c.wheel_roughness = roughness(r, "roughness.wheel"); });
   problems.check([&] {
@@ -176,6 +191,18 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
     if (c.band_max < c.band_min) r.fail("noise.band_max", "must not be below noise.band_min");
   });
   problems.check([&] { c.points_per_band = static_cast<int>(r.integer("noise.points_per_band")); });
+}
+
+}  // namespace
+
+NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
+  NoiseCase c;
+  read_curve(r, problems, c);
+  std::string track_id, wheel_id;
+  problems.check([&] { track_id = read_track(r, c); });
+  problems.check([&] { wheel_id = read_wheel(r, problems, c); });
+  c.structures_id = track_id + "; " + wheel_id;
+  read_roughness_and_loop(r, problems, c);
   return c;
 }
 

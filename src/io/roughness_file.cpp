@@ -1,6 +1,7 @@
 #include "io/roughness_file.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -43,7 +44,11 @@ noise::RoughnessSpectrum read_roughness_csv(const std::string& path) {
     s.wavelength.push_back(w);
     s.level.push_back(l);
   }
-  s.validate(path);
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {  // the spectrum's contract, named by the file
+    throw InputError(path, path + ": " + e.what());
+  }
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
@@ -14,9 +15,9 @@ namespace {
 void check_increasing(const std::vector<double>& f) {
   for (std::size_t k = 0; k < f.size(); ++k) {
     if (!(f[k] > 0.0) || !std::isfinite(f[k]))
-      throw InputError("frequency", "band levels need positive frequencies");
+      throw std::invalid_argument("band levels need positive frequencies");
     if (k > 0 && !(f[k] > f[k - 1]))
-      throw InputError("frequency", "band levels need strictly increasing frequencies");
+      throw std::invalid_argument("band levels need strictly increasing frequencies");
   }
 }
 
@@ -45,7 +46,7 @@ double weighted_mean(const std::vector<double>& f, const std::vector<double>& v,
   if (first == f.size()) {
     std::ostringstream s;
     s << "band levels: no narrow-band frequency in the 1/3-octave band at " << centre << " Hz";
-    throw InputError("frequency", s.str());
+    throw std::invalid_argument(s.str());
   }
   if (count) *count = static_cast<int>(last - first + 1);
   double sum = 0.0;
@@ -67,7 +68,7 @@ std::vector<double> band_frequencies(const std::vector<double>& centres, int poi
   ROLLNOISE_ASSERT(points_per_band >= 1, "at least one frequency per band (noise.points_per_band, checked by io)");
   std::vector<double> out;
   for (double c : centres) {
-    if (!(c > 0.0)) throw InputError("frequency", "band centres must be positive");
+    if (!(c > 0.0)) throw std::invalid_argument("band centres must be positive");
     const auto e = third_octave_edges(c);
     const double df = (e[1] - e[0]) / points_per_band;
     for (int i = 0; i < points_per_band; ++i) out.push_back(e[0] + (i + 0.5) * df);

@@ -43,7 +43,8 @@ std::vector<double> band_frequencies(const std::vector<double>& centres, int poi
 std::vector<double> covered_centres(const std::vector<double>& f, int min_points = 1);
 
 /// The cell-weighted linear-frequency mean of `values` (sampled at increasing `f`) over the band
-/// centred at `centre`. InputError("frequency") when the band holds no sample.
+/// centred at `centre`. std::invalid_argument when the band holds no sample (a contract:
+/// the narrow-band axis is built from the bands, noise.points_per_band >= 4).
 double band_mean(const std::vector<double>& f, const std::vector<double>& values, double centre);
 
 /// Band levels (B1) of one transfer function H (per unit roughness): L_r + 10 log10(<|H|^2> r0^2

@@ -1,5 +1,7 @@
 #include "noise/contact_receptance.hpp"
 
+#include <stdexcept>
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <sstream>
@@ -12,11 +14,11 @@ namespace {
 
 void check_common(double frequency, double normal_stiffness, double speed) {
   if (!(frequency > 0.0) || !std::isfinite(frequency))
-    throw InputError("frequency", "contact receptance needs a positive frequency");
+    throw std::invalid_argument("contact receptance needs a positive frequency");
   if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness))
-    throw InputError("normal_stiffness", "contact normal stiffness must be positive");
+    throw std::invalid_argument("contact normal stiffness must be positive");
   if (!(speed > 0.0) || !std::isfinite(speed))
-    throw InputError("rolling.speed", "contact receptance needs a positive rolling speed");
+    throw std::invalid_argument("contact receptance needs a positive rolling speed");
 }
 
 }  // namespace
@@ -57,7 +59,7 @@ Receptance4 contact_receptance(double frequency, double normal_stiffness, double
 Receptance4 contact_receptance_laplace(cdouble s, double normal_stiffness, double speed,
                                        const Eigen::Matrix3cd& creep, const LoadCoefficients& load) {
   if (!(std::abs(s) > 0.0) || !std::isfinite(std::abs(s)))
-    throw InputError("frequency", "contact receptance needs a finite, non-zero s");
+    throw std::invalid_argument("contact receptance needs a finite, non-zero s");
   check_common(1.0, normal_stiffness, speed);
   const Eigen::FullPivLU<Eigen::Matrix3cd> lu(creep);
   // Reciprocal condition estimate from the pivots (relative to the largest entry).
@@ -114,7 +116,7 @@ std::vector<Receptance4> contact_receptances(const std::vector<double>& frequenc
 
 Receptance4 normal_contact_receptance(double normal_stiffness) {
   if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness))
-    throw InputError("normal_stiffness", "contact normal stiffness must be positive");
+    throw std::invalid_argument("contact normal stiffness must be positive");
   Receptance4 a = Receptance4::Zero();
   a(0, 0) = 1.0 / normal_stiffness;
   return a;
@@ -126,9 +128,9 @@ CreepFunction steady_creep(const Eigen::Matrix3d& f) {
 }
 
 Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double G, double nu) {
-  if (!(a > 0.0) || !(b > 0.0)) throw InputError("a", "semi-axes must be positive");
-  if (!(G > 0.0)) throw InputError("shear_modulus", "shear modulus must be positive");
-  if (!(nu >= 0.0 && nu <= 0.5)) throw InputError("nu", "Poisson's ratio must be in [0, 0.5]");
+  if (!(a > 0.0) || !(b > 0.0)) throw std::invalid_argument("semi-axes must be positive");
+  if (!(G > 0.0)) throw std::invalid_argument("shear modulus must be positive");
+  if (!(nu >= 0.0 && nu <= 0.5)) throw std::invalid_argument("Poisson's ratio must be in [0, 0.5]");
   const double c = std::sqrt(a * b);
   Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
   K(0, 0) = K(1, 1) = 4.0 * G * c / (2.0 - nu);  // Mindlin, two identical bodies
@@ -138,7 +140,7 @@ Eigen::Matrix3d tangential_contact_stiffness(double a, double b, double G, doubl
 
 CreepFunction creep_with_tangential_stiffness(const Eigen::Matrix3d& steady,
                                               const Eigen::Matrix3d& stiffness, double speed) {
-  if (!(speed > 0.0)) throw InputError("rolling.speed", "rolling speed must be positive");
+  if (!(speed > 0.0)) throw std::invalid_argument("rolling speed must be positive");
   const Eigen::Matrix3cd fs_inv = steady.cast<cdouble>().inverse();
   const Eigen::Matrix3cd K_inv = stiffness.cast<cdouble>().inverse();
   return [fs_inv, K_inv, speed](double frequency) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
@@ -77,8 +78,8 @@ KalkerCoefficients kalker_coefficients(double a_over_b, double nu) {
     throw InputError("a_over_b", "Kalker's table covers a/b from 0.1 to 10, got a/b = " +
                                      std::to_string(a_over_b));
   if (!std::isfinite(nu) || nu < 0.0 || nu > 0.5)
-    throw InputError("nu",
-                     "Kalker's table covers Poisson's ratio 0 to 0.5, got " + std::to_string(nu));
+    throw std::invalid_argument("Kalker's table covers Poisson's ratio 0 to 0.5, got " +
+                                std::to_string(nu));  // material.nu is checked where read
   // Bracketing rows i, i+1 in the table order and the weight t on row i+1, linear in g.
   int i = 0;
   double t = 0.0;
@@ -100,10 +101,10 @@ KalkerCoefficients kalker_coefficients(double a_over_b, double nu) {
 }
 
 Eigen::Matrix3d kalker_creep_matrix(double a, double b, double G, double nu) {
-  if (!(a > 0.0) || !std::isfinite(a)) throw InputError("a", "semi-axis a must be positive");
-  if (!(b > 0.0) || !std::isfinite(b)) throw InputError("b", "semi-axis b must be positive");
-  if (!(G > 0.0) || !std::isfinite(G))
-    throw InputError("shear_modulus", "shear modulus must be positive");
+  // contracts: the semi-axes of a patch, G from material.E > 0 and material.nu in [0, 0.5)
+  if (!(a > 0.0) || !std::isfinite(a)) throw std::invalid_argument("Kalker: semi-axis a must be positive");
+  if (!(b > 0.0) || !std::isfinite(b)) throw std::invalid_argument("Kalker: semi-axis b must be positive");
+  if (!(G > 0.0) || !std::isfinite(G)) throw std::invalid_argument("Kalker: shear modulus must be positive");
   const KalkerCoefficients k = kalker_coefficients(a / b, nu);
   const double c = std::sqrt(a * b), c2 = c * c, c3 = c2 * c, c4 = c2 * c2;
   Eigen::Matrix3d f = Eigen::Matrix3d::Zero();

@@ -52,7 +52,8 @@ struct KalkerTableRow {
 const KalkerTableRow* kalker_table(int* rows);
 
 /// C_ij at any a/b in [0.1, 10] and nu in [0, 0.5] (interpolated as above).
-/// InputError("a_over_b") / InputError("nu") outside the table.
+/// InputError("a_over_b") outside the table (a/b comes from the patch); std::invalid_argument for
+/// nu outside [0, 0.5] (a contract: material.nu is checked where read).
 KalkerCoefficients kalker_coefficients(double a_over_b, double nu);
 
 /// The creep matrix f (F = -f xi) for semi-axes a (rolling direction), b (lateral), the combined

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -44,19 +45,18 @@ double RoughnessSpectrum::level_at(double lambda) const {
   return level[i] + t * (level[j] - level[i]);
 }
 
-void RoughnessSpectrum::validate(const std::string& key) const {
+void RoughnessSpectrum::validate() const {
   if (wavelength.size() != level.size())
-    throw InputError(key, key + ": wavelength and level columns differ in length");
-  if (wavelength.size() < 2) throw InputError(key, key + ": a spectrum needs at least two bands");
+    throw std::invalid_argument("wavelength and level columns differ in length");
+  if (wavelength.size() < 2) throw std::invalid_argument("a spectrum needs at least two bands");
   for (std::size_t i = 0; i < wavelength.size(); ++i) {
     if (!(wavelength[i] > 0.0) || !std::isfinite(wavelength[i]))
-      throw InputError(key,
-                       key + ": wavelength must be positive, got " + std::to_string(wavelength[i]));
+      throw std::invalid_argument("wavelength must be positive, got " + std::to_string(wavelength[i]));
     if (!std::isfinite(level[i]))
-      throw InputError(key, key + ": level must be a finite number (dB re 1 um)");
+      throw std::invalid_argument("level must be a finite number (dB re 1 um)");
     if (i > 0 && !(wavelength[i] < wavelength[i - 1]))
-      throw InputError(key, key + ": wavelengths must be distinct (band " +
-                                std::to_string(wavelength[i]) + " m repeated)");
+      throw std::invalid_argument("wavelengths must be distinct (band " +
+                                  std::to_string(wavelength[i]) + " m repeated)");
   }
 }
 
@@ -111,7 +111,7 @@ double nominal_centre(double f) {
 
 std::vector<double> third_octave_centres(double f_min, double f_max) {
   if (!(f_min > 0.0) || !(f_max >= f_min))
-    throw InputError("frequency", "third-octave bands need 0 < f_min <= f_max");
+    throw std::invalid_argument("third-octave bands need 0 < f_min <= f_max");
   std::vector<double> out;
   const int n0 = third_octave_index(f_min), n1 = third_octave_index(f_max);
   for (int n = n0; n <= n1; ++n) out.push_back(1000.0 * std::pow(10.0, n / 10.0));
@@ -129,16 +129,15 @@ double third_octave_bandwidth(double centre) {
 ContactRoughness::ContactRoughness(RoughnessSpectrum wheel, RoughnessSpectrum rail, double speed,
                                    ContactFilter filter)
     : wheel_(std::move(wheel)), rail_(std::move(rail)), speed_(speed), filter_(filter) {
-  wheel_.validate("roughness.wheel");
-  rail_.validate("roughness.rail");
+  wheel_.validate();
+  rail_.validate();
   if (!(speed_ > 0.0) || !std::isfinite(speed_))
-    throw InputError("rolling.speed",
-                     "roughness: speed must be positive, got " + std::to_string(speed_));
+    throw std::invalid_argument("roughness: speed must be positive, got " + std::to_string(speed_));
   filter_.validate();
 }
 
 double ContactRoughness::combined_level(double f) const {
-  if (!(f > 0.0)) throw InputError("frequency", "roughness: frequency must be positive");
+  if (!(f > 0.0)) throw std::invalid_argument("roughness: frequency must be positive");
   const double lambda = speed_ / f;  // f = V / lambda
   return energy_sum_db(wheel_.level_at(lambda), rail_.level_at(lambda));
 }
@@ -161,7 +160,7 @@ double ContactRoughness::psd(double f) const {
 }
 
 double ContactRoughness::line_amplitude(double f, double df) const {
-  if (!(df > 0.0)) throw InputError("frequency", "roughness: line spacing must be positive");
+  if (!(df > 0.0)) throw std::invalid_argument("roughness: line spacing must be positive");
   return std::sqrt(2.0 * psd(f) * df);
 }
 

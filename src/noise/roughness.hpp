@@ -34,8 +34,10 @@ struct RoughnessSpectrum {
   /// values held beyond the tabulated range.
   double level_at(double wavelength) const;
 
-  /// Throws InputError(key, ...) unless the table is usable (>= 2 bands, decreasing, finite).
-  void validate(const std::string& key) const;
+  /// The contract of a usable table (>= 2 bands, wavelengths positive and strictly decreasing,
+  /// levels finite): std::invalid_argument saying which fails. A reader of a spectrum maps it to
+  /// its key or file (io/roughness_file.cpp).
+  void validate() const;
 };
 
 /// The EN ISO 3095:2013 rail roughness limit, in the 35 bands from 2 m to 0.8 mm as tabulated by

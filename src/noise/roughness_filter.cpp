@@ -1,5 +1,7 @@
 #include "noise/roughness_filter.hpp"
 
+#include <stdexcept>
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_bessel.h>
@@ -47,14 +49,11 @@ double isotropic_integrand(double u, void* p) {
 void ContactFilter::validate() const {
   if (model == ContactFilterModel::kNone) return;
   if (!(a > 0.0) || !std::isfinite(a))
-    throw InputError("contact_filter.a",
-                     "contact filter: semi-axis a must be positive, got " + std::to_string(a));
+    throw std::invalid_argument("contact filter: semi-axis a must be positive, got " + std::to_string(a));
   if (model == ContactFilterModel::kIsotropic && (!(b >= 0.0) || !std::isfinite(b)))
-    throw InputError("contact_filter.b",
-                     "contact filter: semi-axis b must be >= 0, got " + std::to_string(b));
+    throw std::invalid_argument("contact filter: semi-axis b must be >= 0, got " + std::to_string(b));
   if (!(spectral_exponent > 0.0) || !(spectral_exponent < 10.0))
-    throw InputError("contact_filter.spectral_exponent",
-                     "contact filter: spectral exponent n must be in (0, 10), got " +
+    throw std::invalid_argument("contact filter: spectral exponent n must be in (0, 10), got " +
                          std::to_string(spectral_exponent));
 }
 

@@ -44,7 +44,8 @@ struct ContactFilter {
   double b = 0.0;                  ///< lateral semi-axis (m); used by kIsotropic
   double spectral_exponent = 2.0;  ///< n of S1(k) ~ k^{-n}: isotropic model and band weighting
 
-  /// Throws InputError naming the field.
+  /// The contract (a > 0, b >= 0 for the isotropic model, 0 < n < 10): std::invalid_argument
+  /// naming the field; the pipeline sets the fields from the patch and roughness.filter.
   void validate() const;
 
   /// |H(k)|^2 at wavenumber k = 2 pi / lambda (rad/m).

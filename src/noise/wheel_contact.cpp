@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 
@@ -54,7 +55,8 @@ geometry::VerticalLoadInput vertical_load_input(const WheelContactInput& in,
 }
 
 WheelContact wheel_contact(const WheelContactInput& in) {
-  if (!in.pair) throw InputError("contact.geometry", "a wheel's contact state needs the profiles");
+  if (!in.pair)  // a contract: the pipeline builds a wheel's contact only with contact.geometry = "profiles"
+    throw std::invalid_argument("a wheel's contact state needs the profiles");
   if (!(in.vertical_load > 0.0) || !std::isfinite(in.vertical_load))
     throw InputError("curve.wheels",
                      std::string("the vertical load of the ") + wheel_name(in.wheel) +

@@ -1,6 +1,9 @@
 #include "pipeline/curve_input_checks.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "core/errors.hpp"
@@ -54,6 +57,24 @@ void check_multibody(const noise::CurveStateInput& in) {
 
 }  // namespace
 
+void check_flange_friction(const noise::FlangeFriction& f, const std::string& key) {
+  if (f.below_nadal_limit()) return;
+  char values[160];
+  std::snprintf(values, sizeof values, " = %.4g: must stay below tan(delta_f) = %.4g (flange angle %.4g rad)",
+                f.friction, std::tan(f.angle), f.angle);
+  throw InputError(key, key + values + ", Nadal's limit, else the flange cannot carry a lateral force");
+}
+
+std::shared_ptr<const noise::ProfileCurvingTable> curving_profile_table(const noise::CurveStateInput& in) {
+  try {
+    return std::make_shared<const noise::ProfileCurvingTable>(
+        noise::profile_curving_table(*in.pair, 0.010, in.table_step));
+  } catch (const std::domain_error& e) {
+    throw InputError("contact.wheel_profile",
+                     std::string("the profile table of contact.wheel_profile on contact.rail_profile: ") + e.what());
+  }
+}
+
 void check_curve_state_input(const noise::CurveStateInput& in) {
   if (!in.pair) throw InputError("contact.geometry", "the curve contact state needs the profiles");
   if (!(in.radius > 0.0) || std::isnan(in.radius))
@@ -104,6 +125,9 @@ void check_bogie_curving_input(const noise::BogieCurvingInput& in) {
     throw InputError("curving.flange_friction", "curving.flange_friction must be >= 0");
   positive(in.f11, "curving.f11");
   positive(in.f22, "curving.f22");
+  // the flange friction is friction.mu unless given apart; delta_f may come from the profiles
+  check_flange_friction(noise::flange_friction(in),
+                        std::isnan(in.flange_friction) ? "friction.mu" : "curving.flange_friction");
 }
 
 }  // namespace rollnoise::pipeline

@@ -6,6 +6,9 @@
 // as contracts (ROLLNOISE_ASSERT) of noise::curve_contact_state and noise::estimate_bogie_curving.
 #pragma once
 
+#include <memory>
+#include <string>
+
 #include "vehicle/curve_state.hpp"
 #include "vehicle/curving.hpp"
 
@@ -22,5 +25,14 @@ void check_curve_state_input(const noise::CurveStateInput& in);
 /// curve.flange_clearance, contact.normal_force, friction.mu, curve.cg_height, or curving.<field>
 /// for a field no case key sets.
 void check_bogie_curving_input(const noise::BogieCurvingInput& in);
+
+/// Nadal's limit (curving.hpp, K6): InputError naming `key` (friction.mu, or the key that set the
+/// flange friction) when the flange friction reaches tan(delta_f).
+void check_flange_friction(const noise::FlangeFriction& f, const std::string& key);
+
+/// The profile table of the bogie estimate (noise::profile_curving_table, as curve_contact_state
+/// makes it); InputError naming contact.wheel_profile when the profile pair has no flangeway
+/// clearance (the centred wheelset's contact on the flange).
+std::shared_ptr<const noise::ProfileCurvingTable> curving_profile_table(const noise::CurveStateInput& in);
 
 }  // namespace rollnoise::pipeline

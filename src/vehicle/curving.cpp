@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 
@@ -162,7 +163,202 @@ bool solve_active_set(const Geometry& g, const std::array<double, 2>& S,
   return true;
 }
 
+// Below a tread load of this fraction of Q the wheel counts as unloaded.
+constexpr double kUnloaded = 1e-3;
+
+// The wheels' vertical loads: tread loads Q_t (index 2 i + side, side 0 outer, 1 inner), Q +- dQ
+// (K4) less the flange share Q_f of a flanging wheel (K6), and Q_f of axle i.
+struct WheelLoads {
+  std::array<double, 4> tread;
+  std::array<double, 2> flange = {0.0, 0.0};
+};
+
+// The secant factor's load dependence (K5): (Q_w / Q)^(2/3), Hertz's creep coefficients scaling
+// with the patch area.
+double load_factor(const WheelLoads& loads, double Q, int w) {
+  const std::array<double, 4>& Qt = loads.tread;
+  return std::cbrt(Qt[w] * Qt[w] / (Q * Q));
+}
+
+// The flange contact of (K6) as the iteration uses it: angle delta_f, friction mu_f, and whether
+// a flange takes a vertical share (delta_f > 0). std::domain_error beyond Nadal's limit.
+struct FlangeContact {
+  double angle, friction;
+  bool share;
+};
+FlangeContact flange_contact(const BogieCurvingInput& in) {
+  const FlangeFriction f = flange_friction(in);
+  if (!f.below_nadal_limit()) {
+    char values[200];
+    std::snprintf(values, sizeof values,
+                  "flange friction mu_f = %.4g reaches tan(delta_f) = %.4g (flange angle %.4g rad): "
+                  "Nadal's limit, the flange cannot carry a lateral force",
+                  f.friction, std::tan(f.angle), f.angle);
+    throw std::domain_error(values);
+  }
+  return {f.angle, f.friction, f.angle > 0.0};
+}
+
+// The bogie of (K1)-(K3) and (K7): half wheelbase a, contact half distance l0, wheel radius r0,
+// 1/R, the flange clearance y_f, the unbalanced lateral force Fu = 4 Q h_d / (2 l0), Delta_r(y)
+// (the profiles' table, a given function or the cone 2 lambda y) and the gravitational stiffness
+// with the tread loads of the current iterate (`loads`, which must outlive the result).
+Geometry bogie_geometry(const BogieCurvingInput& in, const WheelLoads& loads) {
+  Geometry g;
+  g.a = 0.5 * in.wheelbase;
+  g.l0 = in.half_distance();
+  g.r0 = in.wheel_radius;
+  g.inv_R = std::isinf(in.radius) ? 0.0 : 1.0 / in.radius;
+  const ProfileCurvingTable* table = in.profiles.get();
+  g.yf = table ? table->flange_clearance : in.flange_clearance;
+  g.Fu = 4.0 * in.wheel_load * in.cant_deficiency / (2.0 * g.l0);
+  g.f11 = in.f11;
+  g.f22 = in.f22;
+  g.delta_r = [&in, table](double y) {
+    if (table) return table->at(table->rolling_radius_difference, y);
+    return in.rolling_radius_difference ? in.rolling_radius_difference(y) : 2.0 * in.conicity * y;
+  };
+  auto tan_gamma_outer = [&in, table](double y) {
+    if (table) return std::tan(table->at(table->contact_angle, y));
+    return std::isnan(in.contact_angle) ? in.conicity : std::tan(in.contact_angle);
+  };
+  // (K7): the normal loads' lateral components, -Q_w tan gamma_w towards the track centre.
+  g.gravity = [&in, &loads, tan_gamma_outer](int i, double y) {
+    if (!in.gravitational_stiffness) return 0.0;
+    const std::array<double, 4>& Qt = loads.tread;
+    return -(Qt[2 * i] * tan_gamma_outer(y) - Qt[2 * i + 1] * tan_gamma_outer(-y));
+  };
+  return g;
+}
+
+// The flange-contact state of (K3) at the secant sums S: the previous iterate's state first (it
+// usually persists while the saturation settles), then the others with the fewest contacts first.
+// Sets *active to the state found; NumericalError when none is consistent.
+State solve_flange_state(const Geometry& g, const std::array<double, 2>& S, int iteration,
+                         const State& previous, std::array<int, 2>* active) {
+  static const std::array<std::array<int, 2>, 9> sets = {
+      {{0, 0}, {1, 0}, {0, -1}, {-1, 0}, {0, 1}, {1, -1}, {1, 1}, {-1, -1}, {-1, 1}}};
+  State x = previous;
+  bool found = iteration > 0 && solve_active_set(g, S, *active, previous, &x);
+  for (std::size_t c = 0; c < sets.size() && !found; ++c)
+    if (solve_active_set(g, S, sets[c], previous, &x)) {
+      *active = sets[c];
+      found = true;
+    }
+  if (!found)
+    throw NumericalError("curving estimate: no consistent flange-contact state (iteration " +
+                         std::to_string(iteration) + ")");
+  return x;
+}
+
+// The flange shares (K6): a flanging axle's flange normal force N_f = |Y| / (sin delta_f - mu_f
+// cos delta_f), its vertical load Q_f = N_f (cos delta_f + mu_f sin delta_f), relaxed like the
+// saturation, taken from the flanging wheel's tread load. Returns the largest change of Q_f / Q.
+double update_flange_loads(const FlangeContact& f, const std::array<int, 2>& active,
+                           const State& x, double Q, double dQ, WheelLoads* loads) {
+  double change = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    const double N_f = f.share && active[i] != 0
+                           ? std::abs(x.Y[i]) / (std::sin(f.angle) - f.friction * std::cos(f.angle))
+                           : 0.0;
+    const double target = N_f * (std::cos(f.angle) + f.friction * std::sin(f.angle));
+    double& Qf = loads->flange[i];
+    change = std::max(change, std::abs(target - Qf) / Q);
+    Qf = 0.5 * (Qf + target);
+    for (int side = 0; side < 2; ++side) {
+      const double base = side == 0 ? Q + dQ : Q - dQ;
+      const bool flanging = (active[i] == 1 && side == 0) || (active[i] == -1 && side == 1);
+      // Floored while the saturation settles (the first iterates, unsaturated, overestimate
+      // the flange force); a converged state at the floor is reported by the caller.
+      loads->tread[2 * i + side] = std::max(base - (flanging ? Qf : 0.0), kUnloaded * Q);
+    }
+  }
+  return change;
+}
+
+// Saturation of the combined creep force of each wheel (K5), a relaxed fixed point on the secant
+// factors s: u = k |(f11 xi_x, f22 xi_y)| / (mu Q_w), s -> k s(u) with k the load factor, xi_x of
+// (K2) and xi_y = -psi_i of (K1). Returns the largest change of s.
+double update_secant_factors(const BogieCurvingInput& in, const Geometry& g, const State& x,
+                             const WheelLoads& loads, std::array<double, 4>* s) {
+  double change = 0.0;
+  const double theta = (x.y[0] - x.y[1]) / (2.0 * g.a);
+  const double psi[2] = {theta + g.a * g.inv_R, theta - g.a * g.inv_R};
+  for (int i = 0; i < 2; ++i) {
+    const double xi_x = g.l0 * g.inv_R - g.delta_r(x.y[i]) / (2.0 * g.r0), xi_y = -psi[i];
+    for (int w = 0; w < 2; ++w) {  // outer (+xi_x) and inner (-xi_x) wheel: same |xi|
+      const double k = load_factor(loads, in.wheel_load, 2 * i + w);
+      const double u =
+          k * std::hypot(in.f11 * xi_x, in.f22 * xi_y) / (in.friction * loads.tread[2 * i + w]);
+      const double target = in.saturation ? k * saturation_secant_factor(u) : k;
+      double& sw = (*s)[2 * i + w];
+      change = std::max(change, std::abs(target - sw));
+      sw = 0.5 * (sw + target);
+    }
+  }
+  return change;
+}
+
+// Axle i of the converged state: lateral displacement, attack angle (K1), flange force and
+// contact, xi_x of its outer wheel (K2), the flange's loads (K6) and the tread loads.
+AxleCurving axle_curving(const Geometry& g, const FlangeContact& f, const State& x,
+                         const std::array<int, 2>& active, const WheelLoads& loads,
+                         double bogie_yaw, int i) {
+  AxleCurving ax;
+  ax.lateral = x.y[i];
+  ax.attack_angle = bogie_yaw + (i == 0 ? 1.0 : -1.0) * g.a * g.inv_R;
+  ax.flange_force = x.Y[i];
+  ax.flange = active[i];
+  ax.xi_x_outer = g.l0 * g.inv_R - g.delta_r(ax.lateral) / (2.0 * g.r0);
+  const double Qf = loads.flange[i];
+  ax.flange_vertical_load = Qf;
+  ax.flange_normal_force =
+      Qf > 0.0 ? Qf / (std::cos(f.angle) + f.friction * std::sin(f.angle)) : 0.0;
+  ax.tread_load_outer = loads.tread[2 * i];
+  ax.tread_load_inner = loads.tread[2 * i + 1];
+  return ax;
+}
+
+// The leading outer wheel's tread contact (K2): contact angle, rolling radius, the contact's
+// positions on wheel and rail (the profiles' table, or the cone: its angle, with a given
+// Delta_r(y) its local slope Delta_r'/2), and the creepages xi_x, xi_y, phi.
+void set_leading_contact(const BogieCurvingInput& in, const Geometry& g, CurvingEstimate* e) {
+  const ProfileCurvingTable* table = in.profiles.get();
+  const double y1 = e->leading.lateral;
+  if (table) {
+    e->contact_angle = table->at(table->contact_angle, y1);
+    e->rolling_radius = table->at(table->rolling_radius, y1);
+    e->contact_shift_on_wheel = table->at(table->wheel_position, y1);
+    e->rail_contact_offset = table->at(table->rail_position, y1);
+  } else {
+    double lambda = in.conicity;
+    if (in.rolling_radius_difference) {
+      const double h = 1e-5;
+      lambda = (g.delta_r(y1 + h) - g.delta_r(y1 - h)) / (4.0 * h);
+    }
+    e->contact_angle = std::isnan(in.contact_angle) ? std::atan(lambda) : in.contact_angle;
+    e->rolling_radius = g.r0 + 0.5 * g.delta_r(y1);
+    e->contact_shift_on_wheel = -y1;
+    e->rail_contact_offset = 0.0;
+  }
+  e->xi_x = e->leading.xi_x_outer;
+  e->xi_y = -e->leading.attack_angle / std::cos(e->contact_angle);
+  e->phi = -std::sin(e->contact_angle) / e->rolling_radius - std::cos(e->contact_angle) * g.inv_R;
+}
+
 }  // namespace
+
+bool FlangeFriction::below_nadal_limit() const {
+  return !(angle > 0.0) || std::sin(angle) - friction * std::cos(angle) > 0.0;
+}
+
+FlangeFriction flange_friction(const BogieCurvingInput& in) {
+  const ProfileCurvingTable* table = in.profiles.get();
+  FlangeFriction f;
+  f.angle = !std::isnan(in.flange_angle) ? in.flange_angle : (table ? table->flange_angle : 0.0);
+  f.friction = std::isnan(in.flange_friction) ? in.friction : in.flange_friction;
+  return f;
+}
 
 double saturation_secant_factor(double u) {
   return u < 3.0 ? 1.0 - u / 3.0 + u * u / 27.0 : 1.0 / u;
@@ -207,9 +403,7 @@ ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair, d
     }
   }
   if (!(t.flange_clearance > 0.0))
-    throw InputError(
-        "curving.profiles",
-        "profile table: the contact is on the flange already for the centred wheelset");
+    throw std::domain_error("the contact is on the flange already for the centred wheelset");
   return t;
 }
 
@@ -232,57 +426,16 @@ bool BogieCurvingInput::valid() const {
 
 CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   ROLLNOISE_ASSERT(in.valid(), "bogie curving input outside the model (pipeline::check_bogie_curving_input)");
-  Geometry g;
-  g.a = 0.5 * in.wheelbase;
-  g.l0 = in.half_distance();
-  g.r0 = in.wheel_radius;
-  g.inv_R = std::isinf(in.radius) ? 0.0 : 1.0 / in.radius;
-  const ProfileCurvingTable* table = in.profiles.get();
-  g.yf = table ? table->flange_clearance : in.flange_clearance;
-  g.Fu = 4.0 * in.wheel_load * in.cant_deficiency / (2.0 * g.l0);
-
-  auto delta_r = [&](double y) {
-    if (table) return table->at(table->rolling_radius_difference, y);
-    return in.rolling_radius_difference ? in.rolling_radius_difference(y) : 2.0 * in.conicity * y;
-  };
-  g.f11 = in.f11;
-  g.f22 = in.f22;
-  g.delta_r = delta_r;
-
-  // Tread loads of the wheels (index 2 i + side, side 0 outer, 1 inner): Q +- dQ (K4), less the
-  // flange share Q_f of a flanging wheel (K6), updated with the saturation iteration.
+  const FlangeContact flange = flange_contact(in);
   const double Q = in.wheel_load, dQ = in.load_transfer;
-  const double delta_f =
-      !std::isnan(in.flange_angle) ? in.flange_angle : (table ? table->flange_angle : 0.0);
-  const double mu_f = std::isnan(in.flange_friction) ? in.friction : in.flange_friction;
-  const bool flange_share = delta_f > 0.0;
-  if (flange_share && !(std::sin(delta_f) - mu_f * std::cos(delta_f) > 0.0)) {
-    // the flange friction is friction.mu unless given apart; delta_f comes from the profiles
-    const std::string key = std::isnan(in.flange_friction) ? "friction.mu" : "curving.flange_friction";
-    char values[160];
-    std::snprintf(values, sizeof values, " = %.4g: must stay below tan(delta_f) = %.4g (flange angle %.4g rad)",
-                  mu_f, std::tan(delta_f), delta_f);
-    throw InputError(key, key + values + ", Nadal's limit, else the flange cannot carry a lateral force");
-  }
-  std::array<double, 4> Qt = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};
-  std::array<double, 2> Qf = {0.0, 0.0};  // flange vertical load of axle i (K6)
-  const double unloaded = 1e-3;           // tread loads below this fraction of Q: wheel unloaded
-  auto tan_gamma_outer = [&](double y) {
-    if (table) return std::tan(table->at(table->contact_angle, y));
-    return std::isnan(in.contact_angle) ? in.conicity : std::tan(in.contact_angle);
-  };
-  // (K7): the normal loads' lateral components, -Q_w tan gamma_w towards the track centre.
-  g.gravity = [&](int i, double y) {
-    if (!in.gravitational_stiffness) return 0.0;
-    return -(Qt[2 * i] * tan_gamma_outer(y) - Qt[2 * i + 1] * tan_gamma_outer(-y));
-  };
-  auto load_factor = [&](int w) { return std::cbrt(Qt[w] * Qt[w] / (Q * Q)); };  // (K5)
+  WheelLoads loads;
+  loads.tread = {Q + dQ, Q - dQ, Q + dQ, Q - dQ};  // (K4), before the flange shares
+  const Geometry g = bogie_geometry(in, loads);
 
-  // Flange-contact choices, fewest contacts first.
-  const std::array<std::array<int, 2>, 9> sets = {
-      {{0, 0}, {1, 0}, {0, -1}, {-1, 0}, {0, 1}, {1, -1}, {1, 1}, {-1, -1}, {-1, 1}}};
+  // The saturation iteration: per iterate, the flange-contact state of (K3) at the current secant
+  // factors, then the flange shares (K6) and the secant factors (K5), each relaxed.
   std::array<double, 4> s;  // effective secant factors: 1 outer, 1 inner, 2 outer, 2 inner
-  for (int w = 0; w < 4; ++w) s[w] = load_factor(w);
+  for (int w = 0; w < 4; ++w) s[w] = load_factor(loads, Q, w);
   State x;
   std::array<int, 2> active = {0, 0};
   int it = 0;
@@ -290,53 +443,13 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   const int max_iterations = 500;
   for (; it < max_iterations && change > 1e-12; ++it) {
     const std::array<double, 2> S = {s[0] + s[1], s[2] + s[3]};
-    // The previous flange-contact state first (it usually persists while the saturation
-    // settles), then the others with the fewest contacts first.
-    const State previous = x;
-    bool found = it > 0 && solve_active_set(g, S, active, previous, &x);
-    for (std::size_t c = 0; c < sets.size() && !found; ++c)
-      if (solve_active_set(g, S, sets[c], previous, &x)) {
-        active = sets[c];
-        found = true;
-      }
-    if (!found)
-      throw NumericalError("curving estimate: no consistent flange-contact state (iteration " +
-                           std::to_string(it) + ")");
+    x = solve_flange_state(g, S, it, x, &active);
     change = 0.0;
-    // Flange shares (K6) and the tread loads (relaxed like the saturation).
-    for (int i = 0; i < 2; ++i) {
-      const double N_f = flange_share && active[i] != 0
-                             ? std::abs(x.Y[i]) / (std::sin(delta_f) - mu_f * std::cos(delta_f))
-                             : 0.0;
-      const double target = N_f * (std::cos(delta_f) + mu_f * std::sin(delta_f));
-      change = std::max(change, std::abs(target - Qf[i]) / Q);
-      Qf[i] = 0.5 * (Qf[i] + target);
-      for (int side = 0; side < 2; ++side) {
-        const double base = side == 0 ? Q + dQ : Q - dQ;
-        const bool flanging = (active[i] == 1 && side == 0) || (active[i] == -1 && side == 1);
-        // Floored while the saturation settles (the first iterates, unsaturated, overestimate
-        // the flange force); a converged state at the floor is reported below.
-        Qt[2 * i + side] = std::max(base - (flanging ? Qf[i] : 0.0), unloaded * Q);
-      }
-    }
-    // Saturation of the combined creep force of each wheel (relaxed fixed point on s).
-    const double theta = (x.y[0] - x.y[1]) / (2.0 * g.a);
-    const double psi[2] = {theta + g.a * g.inv_R, theta - g.a * g.inv_R};
-    for (int i = 0; i < 2; ++i) {
-      const double xi_x = g.l0 * g.inv_R - delta_r(x.y[i]) / (2.0 * g.r0), xi_y = -psi[i];
-      for (int w = 0; w < 2; ++w) {  // outer (+xi_x) and inner (-xi_x) wheel: same |xi|
-        const double k = load_factor(2 * i + w);
-        const double u =
-            k * std::hypot(in.f11 * xi_x, in.f22 * xi_y) / (in.friction * Qt[2 * i + w]);
-        const double target = in.saturation ? k * saturation_secant_factor(u) : k;
-        double& sw = s[2 * i + w];
-        change = std::max(change, std::abs(target - sw));
-        sw = 0.5 * (sw + target);
-      }
-    }
+    change = std::max(change, update_flange_loads(flange, active, x, Q, dQ, &loads));
+    change = std::max(change, update_secant_factors(in, g, x, loads, &s));
   }
   for (int w = 0; w < 4; ++w)
-    if (!(Qt[w] > unloaded * Q))
+    if (!(loads.tread[w] > kUnloaded * Q))
       throw NumericalError(
           "curving estimate: a wheel is unloaded (load transfer or flange load at the wheel load: "
           "overturning or flange climbing, Nadal's limit)");
@@ -353,43 +466,10 @@ CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in) {
   e.yaw_rate = -in.speed * g.inv_R;
   e.bogie_yaw = (x.y[0] - x.y[1]) / (2.0 * g.a);
   AxleCurving* axles[2] = {&e.leading, &e.trailing};
-  for (int i = 0; i < 2; ++i) {
-    AxleCurving& ax = *axles[i];
-    ax.lateral = x.y[i];
-    ax.attack_angle = e.bogie_yaw + (i == 0 ? 1.0 : -1.0) * g.a * g.inv_R;
-    ax.flange_force = x.Y[i];
-    ax.flange = active[i];
-    ax.xi_x_outer = g.l0 * g.inv_R - delta_r(ax.lateral) / (2.0 * g.r0);
-    ax.flange_vertical_load = Qf[i];
-    ax.flange_normal_force =
-        Qf[i] > 0.0 ? Qf[i] / (std::cos(delta_f) + mu_f * std::sin(delta_f)) : 0.0;
-    ax.tread_load_outer = Qt[2 * i];
-    ax.tread_load_inner = Qt[2 * i + 1];
-  }
+  for (int i = 0; i < 2; ++i) *axles[i] = axle_curving(g, flange, x, active, loads, e.bogie_yaw, i);
   e.load_transfer = dQ;
-  e.flange_angle = flange_share ? delta_f : 0.0;
-  // The leading outer wheel's tread contact (K2).
-  const double y1 = e.leading.lateral;
-  if (table) {
-    e.contact_angle = table->at(table->contact_angle, y1);
-    e.rolling_radius = table->at(table->rolling_radius, y1);
-    e.contact_shift_on_wheel = table->at(table->wheel_position, y1);
-    e.rail_contact_offset = table->at(table->rail_position, y1);
-  } else {
-    // Conical tread: the cone angle; with a given Delta_r(y), its local slope Delta_r'/2.
-    double lambda = in.conicity;
-    if (in.rolling_radius_difference) {
-      const double h = 1e-5;
-      lambda = (delta_r(y1 + h) - delta_r(y1 - h)) / (4.0 * h);
-    }
-    e.contact_angle = std::isnan(in.contact_angle) ? std::atan(lambda) : in.contact_angle;
-    e.rolling_radius = g.r0 + 0.5 * delta_r(y1);
-    e.contact_shift_on_wheel = -y1;
-    e.rail_contact_offset = 0.0;
-  }
-  e.xi_x = e.leading.xi_x_outer;
-  e.xi_y = -e.leading.attack_angle / std::cos(e.contact_angle);
-  e.phi = -std::sin(e.contact_angle) / e.rolling_radius - std::cos(e.contact_angle) * g.inv_R;
+  e.flange_angle = flange.share ? flange.angle : 0.0;
+  set_leading_contact(in, g, &e);
   return e;
 }
 

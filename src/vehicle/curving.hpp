@@ -117,6 +117,8 @@ struct ProfileCurvingTable {
 
 /// Tabulates the geometry for y in [-max_lateral, max_lateral] in steps of `step`; the flange
 /// clearance is the last y > 0 whose contact angle stays below `flange_angle` (rad).
+/// std::domain_error when the centred wheelset's contact is on the flange already (no flangeway
+/// clearance: the profile pair is outside the estimate; the pipeline names the profile keys).
 ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair,
                                           double max_lateral = 0.010, double step = 0.1e-3,
                                           double flange_angle = 0.6);
@@ -212,9 +214,21 @@ struct CurvingEstimate {
 /// (u >= 3), u = |f xi| / (mu Q) (Johnson & Vermeulen 1964; Shen, Hedrick & Elkins 1983).
 double saturation_secant_factor(double u);
 
-/// The estimate (K1)-(K3). `in` valid() (a contract); InputError naming the case key when the
-/// state needs a flange force beyond Nadal's limit; NumericalError if the saturation iteration does
-/// not converge.
+/// The flange contact of (K6) for an input: its angle delta_f (`flange_angle`, else the profile
+/// table's, else 0: no vertical share) and its friction mu_f (`flange_friction`, else `friction`).
+struct FlangeFriction {
+  double angle = 0.0;     ///< delta_f (rad)
+  double friction = 0.0;  ///< mu_f (-)
+  /// Nadal's limit (K6): the flange carries a lateral force only while sin delta_f - mu_f cos
+  /// delta_f > 0, i.e. mu_f < tan delta_f (Nadal 1908); always true without a flange share.
+  bool below_nadal_limit() const;
+};
+FlangeFriction flange_friction(const BogieCurvingInput& in);
+
+/// The estimate (K1)-(K3). `in` valid() (a contract); std::domain_error when the flange friction
+/// reaches Nadal's limit (FlangeFriction::below_nadal_limit; the pipeline checks it first, naming
+/// the key: pipeline::check_bogie_curving_input, pipeline::curve_state_input); NumericalError if the
+/// saturation iteration does not converge.
 CurvingEstimate estimate_bogie_curving(const BogieCurvingInput& in);
 
 }  // namespace rollnoise::noise

@@ -58,11 +58,7 @@ TEST(BandLevels, CoveredBandsAndMissingSamples) {
   ASSERT_FALSE(c.empty());
   EXPECT_NEAR(c.front(), 100.0, 1e-9);  // the 80 Hz band starts at 71 Hz: not covered
   EXPECT_NEAR(c.back(), 1000.0, 1e-9);  // the 1250 Hz band ends at 1403 Hz: not covered
-  try {
-    rn::band_mean({100.0, 101.0}, {1.0, 1.0}, 1000.0);
-    FAIL();
-  } catch (const rollnoise::InputError& e) {
-    EXPECT_EQ(e.key(), "frequency");
-  }
-  EXPECT_THROW(rn::band_mean({100.0, 99.0}, {1.0, 1.0}, 100.0), rollnoise::InputError);
+  // contracts of the numerics (no case key: the pipeline builds the axis from the bands)
+  EXPECT_THROW(rn::band_mean({100.0, 101.0}, {1.0, 1.0}, 1000.0), std::invalid_argument);
+  EXPECT_THROW(rn::band_mean({100.0, 99.0}, {1.0, 1.0}, 100.0), std::invalid_argument);
 }

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "core/errors.hpp"
 #include "geometry/profile.hpp"
@@ -122,6 +124,38 @@ TEST(Curving, BadInputNamesTheKey) {
   } catch (const rollnoise::InputError& e) {
     EXPECT_EQ(e.key(), "curving.f22");
   }
+}
+
+// Nadal's limit (K6): with a flange angle delta_f = 1.2 rad, tan(delta_f) = 2.572; a flange
+// friction of 2.6 reaches it, 2.5 stays below. The estimate states it as a std::domain_error (a
+// model range, no key); the pipeline's check names the key that set the flange friction:
+// friction.mu unless curving.flange_friction is given apart.
+TEST(Curving, NadalLimitIsADomainErrorOfTheEstimateAndAnInputErrorNamingItsKey) {
+  rn::BogieCurvingInput in = bogie(300.0, 0.1);
+  in.flange_angle = 1.2;
+  in.flange_friction = 2.5;
+  EXPECT_TRUE(rn::flange_friction(in).below_nadal_limit());
+  EXPECT_NO_THROW(rollnoise::pipeline::check_bogie_curving_input(in));
+  in.flange_friction = 2.6;
+  EXPECT_FALSE(rn::flange_friction(in).below_nadal_limit());
+  EXPECT_THROW(rn::estimate_bogie_curving(in), std::domain_error);
+  try {
+    rollnoise::pipeline::check_bogie_curving_input(in);
+    FAIL();
+  } catch (const rollnoise::InputError& e) {
+    EXPECT_EQ(e.key(), "curving.flange_friction");
+  }
+  in.flange_friction = std::numeric_limits<double>::quiet_NaN();  // mu_f = friction.mu
+  in.friction = 2.6;
+  try {
+    rollnoise::pipeline::check_bogie_curving_input(in);
+    FAIL();
+  } catch (const rollnoise::InputError& e) {
+    EXPECT_EQ(e.key(), "friction.mu");
+    EXPECT_NE(std::string(e.what()).find("Nadal"), std::string::npos) << e.what();
+  }
+  in.flange_angle = 0.0;  // no flange share: no limit
+  EXPECT_TRUE(rn::flange_friction(in).below_nadal_limit());
 }
 
 // The S1002 wheel on the UIC60 rail (1:40, 1435 mm) as the profile table: the centred wheelset has

@@ -125,13 +125,8 @@ TEST(KalkerTable, OutsideTheTableIsInputError) {
   } catch (const rollnoise::InputError& e) {
     EXPECT_EQ(e.key(), "a_over_b");
   }
-  try {
-    rn::kalker_coefficients(1.0, 0.6);
-    FAIL();
-  } catch (const rollnoise::InputError& e) {
-    EXPECT_EQ(e.key(), "nu");
-  }
-  EXPECT_THROW(rn::kalker_creep_matrix(0.0, 5e-3, 8e10, 0.28), rollnoise::InputError);
+  EXPECT_THROW(rn::kalker_coefficients(1.0, 0.6), std::invalid_argument);  // a contract
+  EXPECT_THROW(rn::kalker_creep_matrix(0.0, 5e-3, 8e10, 0.28), std::invalid_argument);  // a contract
 }
 
 // docs/conventions.md Secs. 1-2: Fx = -G c^2 C11 xi_x, Fy = -G c^2 C22 xi_y - G c^3 C23 phi,

@@ -1,10 +1,13 @@
 // Bad inputs at library level give a clear error (issue 7): rollnoise::InputError naming the key,
-// or NumericalError naming the solver; never a silently non-finite result.
+// NumericalError naming the solver, or (issue 26) the violated contract of a numerics function as
+// std::invalid_argument / std::domain_error with a physical message (its case key is checked where
+// it is read); never a silently non-finite result.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "stress_support.hpp"
@@ -22,7 +25,8 @@ const ContactPatch& small_patch() {
   return p;
 }
 
-// Passes if `f` throws InputError or NumericalError; prints what happened otherwise.
+// Passes if `f` throws InputError, NumericalError or a stated contract (std::invalid_argument,
+// std::domain_error); prints what happened otherwise.
 ::testing::AssertionResult clear_error(const std::function<void()>& f) {
   try {
     f();
@@ -31,6 +35,12 @@ const ContactPatch& small_patch() {
     return ::testing::AssertionSuccess();
   } catch (const NumericalError& e) {
     std::printf("  NumericalError: %s\n", e.what());
+    return ::testing::AssertionSuccess();
+  } catch (const std::invalid_argument& e) {
+    std::printf("  contract (invalid_argument): %s\n", e.what());
+    return ::testing::AssertionSuccess();
+  } catch (const std::domain_error& e) {
+    std::printf("  contract (domain_error): %s\n", e.what());
     return ::testing::AssertionSuccess();
   } catch (const std::exception& e) {
     return ::testing::AssertionFailure() << "threw another exception: " << e.what();
