@@ -45,7 +45,8 @@ std::vector<SquealWheelContact> squeal_wheel_contacts(const SquealResult& r, con
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options) {
   if (!nc.squeal_wheelsets) return {};
-  const bool per_wheel = r.mean.curve().state || (r.mean.curve().estimated && !r.mean.contact().profiles);
+  const bool per_wheel =
+      r.mean.curve().state || (r.mean.curve().estimated && !r.mean.contact().profiles);
   if (!per_wheel) return {};
   if (!nc.rail_track)
     throw InputError("noise.contact_coupling",
@@ -78,8 +79,8 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
       else
         ws.wheels.push_back(w->wheel);
       if (!w->mean.transfer())
-        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") +
-                      noise::wheel_name(w->wheel) + (w->second_patch ? " (flange patch)" : "") +
+        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") + noise::wheel_name(w->wheel) +
+                      (w->second_patch ? " (flange patch)" : "") +
                       ": the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " +
                       std::to_string(w->mean.spectral_radius()) + ")";
     }

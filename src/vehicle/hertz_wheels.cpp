@@ -6,11 +6,14 @@
 
 namespace rollnoise::noise {
 
-double HertzWheel::semi_axis_ratio() const { return std::cbrt(load_ratio); }
+double HertzWheel::semi_axis_ratio() const {
+  return std::cbrt(load_ratio);
+}
 
 std::vector<HertzWheel> hertz_wheels(const BogieCurvingInput& in, const CurvingEstimate& e,
                                      const std::vector<WheelId>& wheels) {
-  ROLLNOISE_ASSERT(!in.profiles, "hertz_wheels: the conical tread (profiles have their own states)");
+  ROLLNOISE_ASSERT(!in.profiles,
+                   "hertz_wheels: the conical tread (profiles have their own states)");
   const double inv_R = std::isfinite(in.radius) && in.radius > 0.0 ? 1.0 / in.radius : 0.0;
   const double l0 = in.half_distance(), r0 = in.wheel_radius, gamma = e.contact_angle;
   std::vector<HertzWheel> out;

@@ -3,6 +3,8 @@
 // leading outer wheel without load transfer is the case's own contact; the loads are Q +- dQ of
 // (K4); the inner wheel's creepages (K2') mirror the outer's; the semi-axes follow Hertz at the
 // case's curvatures. Geometry only (nothing solved): milliseconds.
+#include "pipeline/squeal_hertz_wheels.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +15,6 @@
 #include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
 #include "pipeline/curve_setup.hpp"
-#include "pipeline/squeal_hertz_wheels.hpp"
 
 namespace {
 
@@ -76,8 +77,10 @@ TEST(HertzWheels, InnerWheelsCreepagesMirrorTheOuterWheelsInItsOwnFrame) {
   const auto wheels = pipeline::hertz_curve_wheels(p.contact, in.noise);
   const double inv_R = 1.0 / 150.0, r0 = in.noise.wheel_radius;
   for (bool lead : {true, false}) {
-    const auto& o = find(wheels, lead ? noise::WheelId::leading_outer : noise::WheelId::trailing_outer);
-    const auto& i = find(wheels, lead ? noise::WheelId::leading_inner : noise::WheelId::trailing_inner);
+    const auto& o =
+        find(wheels, lead ? noise::WheelId::leading_outer : noise::WheelId::trailing_outer);
+    const auto& i =
+        find(wheels, lead ? noise::WheelId::leading_inner : noise::WheelId::trailing_inner);
     const double g = o.position.contact_angle;
     EXPECT_EQ(i.position.contact_angle, g);
     EXPECT_EQ(i.lateral, o.lateral);
