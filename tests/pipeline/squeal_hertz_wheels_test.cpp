@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,9 @@ TEST(HertzWheels, LoadsAreQPlusMinusTheCantDeficiencyTransferAndSemiAxesFollowHe
         << noise::wheel_name(w.wheel);
     // Hertz at the case's curvatures: A, B of the wheel's (a, b, N) equal the case's (1e-12)
     const pipeline::ContactCase c = pipeline::hertz_wheel_case(p.contact, w);
+    std::printf("%-15s y %.3f mm psi %.3f mrad Q_w %.1f kN a %.3f mm xi (%.3e, %.3e, %.4f 1/m)\n",
+                noise::wheel_name(w.wheel), 1e3 * w.lateral, 1e3 * w.yaw, 1e-3 * w.vertical_load,
+                1e3 * c.a, w.creepage(0), w.creepage(1), w.creepage(2));
     const auto h0 = contact::hertz_from_semi_axes(p.contact.a, p.contact.b, Q, p.contact.material);
     const auto h = contact::hertz_from_semi_axes(c.a, c.b, c.normal_force, c.material);
     EXPECT_NEAR(h.A, h0.A, 1e-12 * h0.A);
