@@ -22,7 +22,7 @@ void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
     int unstable = 0;
     for (const auto& x : ws.roots) unstable += x.root.root.unstable ? 1 : 0;
     std::printf("  wheelset %s (%zu contacts, %zu roots, %d unstable, %.1f s, %ld evaluations)\n",
-                noise::is_leading(ws.wheels.front()) ? "leading" : "trailing", ws.wheels.size(), ws.roots.size(),
+                noise::is_leading(ws.wheels.front()) ? "leading" : "trailing", ws.wheels.size() + ws.second_patches, ws.roots.size(),
                 unstable, ws.seconds, ws.evaluations);
     if (!ws.skipped.empty()) std::printf("    left out: %s\n", ws.skipped.c_str());
     for (const auto& x : ws.roots)

@@ -269,7 +269,9 @@ const std::vector<KeySpec>& case_schema() {
        {"none", "own"}},
       {"noise.squeal_wheelsets", T::String, "\"off\"", "-",
        "squeal: \"on\" also finds the roots of each wheelset of curve.wheels with both its contacts "
-       "(/squeal/wheels; slow: minutes with profiles, docs/squeal.md Sec. 9.3)",
+       "(/squeal/wheels; profiles: each wheel's curve state; Hertzian curve cases: each wheel's "
+       "Hertz state from the bogie estimate; with noise.second_patch = \"coupled\" the flange "
+       "patch too; slow: minutes, docs/squeal.md Sec. 9.3)",
        {"off", "on"}},
       {"noise.compare", T::String, "\"quasi-steady\"", "-",
        "comparison baseline: the quasi-steady contact of the same state (NSS f(0), g(0); "

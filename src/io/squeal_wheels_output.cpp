@@ -44,6 +44,12 @@ void write_squeal_wheels(Hdf5Writer& w, const std::vector<pipeline::WheelsetSque
     if (!ws.skipped.empty()) skipped += (skipped.empty() ? "" : "; ") + ws.skipped;
   if (!skipped.empty())
     w.attribute("/squeal/wheels", "left_out", "wheelsets without roots: " + skipped);
+  int patches = 0;
+  for (const pipeline::WheelsetSqueal& ws : s) patches += ws.second_patches;
+  if (patches > 0)
+    w.attribute("/squeal/wheels", "second_patch",
+                "the leading outer wheel's flange patch is a third contact of the leading "
+                "wheelset (noise.second_patch = \"coupled\"; docs/squeal.md Sec. 9.3)");
   w.attribute("/squeal/wheels", "loop",
               "per wheelset, both wheels' contacts in one characteristic equation (rigid wheelset, "
               "the rails; "

@@ -166,15 +166,29 @@ class ModalForm {
     const Eigen::MatrixXcd Q = coupling(s, &det_R);
     return det_R * Eigen::MatrixXcd(own(s) + lambda * Q).partialPivLu().determinant();
   }
-  cdouble tangent(cdouble s, double lambda) const {  // ds/dlambda = -H_lambda / H_s
+  // ds/dlambda = -H_lambda / H_s, both of H deflated by the cluster's other branches `others`
+  // (G = H / prod_j (s - s_j), the same ratio at a root of H): at a near-double root (the same mode
+  // of two wheels that hardly touch the contacts, branches ~1e-4 1/s apart) H_s = (s_1 - s_2) P(s)
+  // is small and the central difference of H with h = 1e-6 |s| (~2e-3 1/s at 300 Hz) errs by
+  // h^2 H_sss / 6 ~ h^2 P / d (d the distance to the next branch), of its own size; the deflated
+  // G_s = P(s) is not small (docs/squeal.md Sec. 9.1).
+  cdouble tangent(cdouble s, double lambda, const std::vector<cdouble>& others = {}) const {
     const double h = 1e-6 * std::abs(s), dl = 1e-5;
+    auto deflation = [&](cdouble z) {
+      cdouble p = 1.0;
+      for (cdouble sj : others) p *= (z - sj);
+      return p;
+    };
     cdouble det_R;
     const Eigen::MatrixXcd O = own(s), Q = coupling(s, &det_R);
     const cdouble H_l = det_R *
                         (Eigen::MatrixXcd(O + (lambda + dl) * Q).partialPivLu().determinant() -
                          Eigen::MatrixXcd(O + (lambda - dl) * Q).partialPivLu().determinant()) /
                         (2.0 * dl);
-    return -H_l / (((*this)(s + h, lambda) - (*this)(s - h, lambda)) / (2.0 * h));
+    const cdouble G_s = ((*this)(s + h, lambda) / deflation(s + h) -
+                         (*this)(s - h, lambda) / deflation(s - h)) /
+                        (2.0 * h);
+    return -(H_l / deflation(s)) / G_s;
   }
   Eigen::MatrixXcd modal_matrix(cdouble s) const { return own(s) + coupling(s); }
 
@@ -246,7 +260,7 @@ double continue_branches(const ModalForm& H, std::vector<cdouble>& s, double lam
     const double target = std::min(1.0, lambda + step);
     try {
       if (!have_slope)
-        for (std::size_t i = 0; i < c; ++i) slope[i] = H.tangent(s[i], lambda);
+        for (std::size_t i = 0; i < c; ++i) slope[i] = H.tangent(s[i], lambda, others_of(s, i));
       have_slope = true;
     } catch (const NumericalError&) {
       return lambda;
@@ -351,7 +365,7 @@ std::vector<ContactSetRoot> connected_mode_roots(const ContactSetLaplaceLoop& lo
     bool ok = true;
     try {
       if (c > 1) s = split_cluster(H, cluster, s0, lambda1);
-      const std::vector<cdouble> start = s;  // first order in lambda1: kept where Newton fails
+    const std::vector<cdouble> start = s;  // first order in lambda1: kept where Newton fails
       for (std::size_t i = 0; i < c && c > 1; ++i) {
         const auto r = newton(H, start[i], lambda1, o, iterations[i], others_of(start, i));
         if (r && std::abs(*r - start[i]) <= 0.5 * std::abs(start[i] - s0) + 1e-9 * std::abs(s0))

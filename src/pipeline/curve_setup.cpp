@@ -69,6 +69,10 @@ noise::BogieCurvingInput bogie_curving_input(const ContactCase& c, const NoiseCa
 
 std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase& nc) {
   if (!s.state) return {};
+  return listed_wheel_ids(nc);
+}
+
+std::vector<noise::WheelId> listed_wheel_ids(const NoiseCase& nc) {
   if (nc.wheels.empty()) {  // the default
     if (nc.curve_radius > 0.0) return {noise::kAllWheels.begin(), noise::kAllWheels.end()};
     return {noise::WheelId::leading_outer};

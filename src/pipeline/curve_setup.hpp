@@ -49,6 +49,9 @@ CurvePlacement resolve_curve(const ContactCase& c, const NoiseCase& nc);
 /// The wheels of curve.wheels (docs/interface.md): as listed, or by default all four in a curve and
 /// the leading outer wheel alone on tangent track; none without a curve contact state.
 std::vector<noise::WheelId> curve_wheel_ids(const CurveSetup& s, const NoiseCase& nc);
+/// The wheels of curve.wheels as listed, or the default (all four in a curve, the leading outer
+/// wheel alone on tangent track), whatever the contact state. InputError naming curve.wheels.
+std::vector<noise::WheelId> listed_wheel_ids(const NoiseCase& nc);
 
 /// Every wheel's contact state (noise::bogie_wheel_contacts) of curve_wheel_ids, one immutable
 /// value per wheel; the leading outer wheel's is the state's.

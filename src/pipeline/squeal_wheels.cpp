@@ -5,27 +5,49 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "noise/flange_patch.hpp"
 #include "pipeline/bogie_noise.hpp"
+#include "pipeline/squeal_hertz_wheels.hpp"
 
 namespace rollnoise::pipeline {
 namespace {
 
-// One wheel's contact for the characteristic equation: its mean contact with its transfer (as
-// run_squeal builds the leading outer wheel's). Falling friction: the contact alone may be unstable
-// (run_squeal's check); then its wheelset's roots are meaningless and the wheelset is left out
-// (WheelsetSqueal::skipped; the mean contact has no transfer).
-struct WheelSquealContact {
-  noise::WheelContact state;
-  MeanContact mean;
-};
+// Every wheel's contact for the characteristic equation (SquealWheelContact: its position and mean
+// contact with its transfer, as run_squeal builds the leading outer wheel's): the profile cases'
+// curve states (curve_wheels), or the Hertz states of the Hertzian curve cases from the bogie
+// estimate (squeal_hertz_wheels.hpp); none otherwise. Falling friction: a contact alone may be
+// unstable (run_squeal's check); then its wheelset's roots are meaningless and the wheelset is left
+// out (WheelsetSqueal::skipped; the mean contact has no transfer).
+std::vector<SquealWheelContact> squeal_wheel_contacts(const SquealResult& r, const NoiseCase& nc,
+                                                      const MeanContactOptions& o) {
+  std::vector<SquealWheelContact> out;
+  const CurveSetup& curve = r.mean.curve();
+  if (curve.state) {
+    bool leading_outer = false;
+    for (const noise::WheelContact& w : curve_wheels(curve, nc)) {
+      out.push_back({w.wheel, w.position(), wheel_mean_contact(r.mean.contact(), w, o)});
+      leading_outer = leading_outer || w.wheel == noise::WheelId::leading_outer;
+    }
+    // noise.second_patch = "coupled": the flange patch of a two-point contact is one more contact
+    // of the leading outer wheel in (S6), as in the loop (bogie_noise.hpp, second_patches)
+    if (nc.second_patch && leading_outer && curve.state_input)
+      if (const auto flange = noise::flange_patch_contact(*curve.state_input, *curve.state))
+        out.push_back({flange->wheel, flange->position(),
+                       wheel_mean_contact(r.mean.contact(), *flange, o), true});
+  } else if (curve.estimated && !r.mean.contact().profiles) {
+    out = hertz_squeal_wheels(r.mean.contact(), nc, o);
+  }
+  return out;
+}
 
 }  // namespace
 
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options) {
   if (!nc.squeal_wheelsets) return {};
-  const std::vector<noise::WheelContact> states = curve_wheels(r.mean.curve(), nc);
-  if (states.empty()) return {};
+  const bool per_wheel =
+      r.mean.curve().state || (r.mean.curve().estimated && !r.mean.contact().profiles);
+  if (!per_wheel) return {};
   if (!nc.rail_track)
     throw InputError("noise.contact_coupling",
                      "squeal per wheelset couples the contacts through the beam rail only "
@@ -37,22 +59,30 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
   noise::StabilityOptions o = options;
   o.band_min = nc.band_min;
   o.band_max = nc.band_max;
+  // every wheel's contact first (its time counted with its wheelset below)
+  const auto t_contacts = std::chrono::steady_clock::now();
+  const std::vector<SquealWheelContact> all =
+      squeal_wheel_contacts(r, nc, squeal_contact_options(nc, in_band));
+  const double contacts_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_contacts).count();
   std::vector<WheelsetSqueal> out;
   for (bool leading : {true, false}) {
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<WheelSquealContact> wheels;
-    for (const noise::WheelContact& w : states)
-      if (noise::is_leading(w.wheel) == leading)
-        wheels.push_back({w, wheel_mean_contact(r.mean.contact(), w, squeal_contact_options(nc, in_band))});
+    std::vector<const SquealWheelContact*> wheels;
+    for (const SquealWheelContact& w : all)
+      if (noise::is_leading(w.wheel) == leading) wheels.push_back(&w);
     if (wheels.empty()) continue;
     WheelsetSqueal ws;
-    for (const WheelSquealContact& w : wheels) {
-      ws.wheels.push_back(w.state.wheel);
-      if (!w.mean.transfer())
-        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") +
-                      noise::wheel_name(w.state.wheel) +
+    for (const SquealWheelContact* w : wheels) {
+      if (w->second_patch)
+        ++ws.second_patches;
+      else
+        ws.wheels.push_back(w->wheel);
+      if (!w->mean.transfer())
+        ws.skipped += std::string(ws.skipped.empty() ? "" : "; ") + noise::wheel_name(w->wheel) +
+                      (w->second_patch ? " (flange patch)" : "") +
                       ": the linearised contact alone is unstable (spectral radius of M0^-1 M1 = " +
-                      std::to_string(w.mean.spectral_radius()) + ")";
+                      std::to_string(w->mean.spectral_radius()) + ")";
     }
     if (!ws.skipped.empty()) {
       out.push_back(std::move(ws));
@@ -60,14 +90,14 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
     }
     std::vector<noise::SquealContact> contacts;
     bool coupled = false;
-    for (const WheelSquealContact& w : wheels) {
+    for (const SquealWheelContact* w : wheels) {
       noise::ContactPoint p;
       p.wheelset = leading ? 0 : 1;
-      p.side = noise::is_outer(w.state.wheel) ? 1 : -1;
-      p.position = w.state.position();
+      p.side = noise::is_outer(w->wheel) ? 1 : -1;
+      p.position = w->position;
       p.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
-      contacts.push_back({p, w.mean.transfer().get(), w.mean.normal_stiffness()});
-      coupled = coupled || w.mean.coupled();
+      contacts.push_back({p, w->mean.transfer().get(), w->mean.normal_stiffness()});
+      coupled = coupled || w->mean.coupled();
     }
     noise::ContactSetLaplaceLoop loop =
         noise::contact_set_laplace_loop(*nc.wheel, rail, contacts, r.mean.contact().speed, coupled);
@@ -87,7 +117,8 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
         if ((noise::is_outer(w) ? 1 : -1) == side) wr.wheel = w;
       ws.roots.push_back(std::move(wr));
     }
-    ws.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ws.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() +
+                 contacts_seconds * static_cast<double>(wheels.size()) / all.size();
     out.push_back(std::move(ws));
   }
   return out;

@@ -26,6 +26,9 @@ struct WheelRoot {
 
 struct WheelsetSqueal {
   std::vector<noise::WheelId> wheels;  ///< of curve.wheels on this wheelset
+  /// Second patches among its contacts (noise.second_patch = "coupled": the leading outer wheel's
+  /// flange patch of a two-point contact), after the wheels' tread contacts.
+  int second_patches = 0;
   std::vector<WheelRoot> roots;
   /// Non-empty: the wheelset was left out, why (a wheel's linearised contact alone is unstable
   /// under falling friction, docs/falling_friction.md Sec. 3).
@@ -34,8 +37,10 @@ struct WheelsetSqueal {
   double seconds = 0.0;
 };
 
-/// Per wheelset of curve.wheels (leading, then trailing, those with a wheel in the list); empty
-/// without per-wheel states (Hertzian geometry) or with noise.squeal_wheelsets = "off". `r` the
+/// Per wheelset of curve.wheels (leading, then trailing, those with a wheel in the list): the
+/// profile cases' per-wheel curve states, or for a Hertzian case with curve.creepage = "estimate"
+/// each wheel's Hertz state from the bogie estimate (pipeline/squeal_hertz_wheels.hpp); empty
+/// without a curve state or with noise.squeal_wheelsets = "off". `r` the
 /// case's squeal run (its curve, contact); InputError naming noise.contact_coupling for the
 /// waveguide rail; an unstable contact alone is not an error here: its wheelset is skipped
 /// (WheelsetSqueal::skipped).
