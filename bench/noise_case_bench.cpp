@@ -96,8 +96,9 @@ BENCHMARK(SteadyHertzPaper)->Unit(benchmark::kMillisecond)->Iterations(10);
 // the steady Hertz case (bar: <= 5) and the four-wheel case over the single-wheel case (bar:
 // <= 2.5), the median of 3 runs each; the second ratio also for cases/curve_300m_table.toml (the
 // mode table instead of the FE wheel; in-process the FE wheel's modes are computed once per
-// process, so the FE ratios here exclude them, unlike the commands'). Counters: the ratios, the CPU seconds, the grid (elements of
-// the leading outer wheel's patch, of the Hertz patch) and the frequency count.
+// process, so the FE ratios here exclude them, unlike the commands'). Counters: the ratios, the
+// CPU seconds, the grid (elements of the leading outer wheel's patch, of the Hertz patch) and the
+// frequency count.
 double cpu_seconds(const std::function<void()>& run) {
   std::vector<double> t;
   for (int i = 0; i < 3; ++i) {

@@ -97,7 +97,8 @@ double max_relative_difference(const std::vector<Eigen::MatrixXd>& ha, const std
 // The block step of the next a-posteriori check (step 3 at the top of the file) after the check
 // at block step k. The checks before it were at k1 and k2 < k1; `estimate` (made at k) is the
 // error of the model of k1, `estimate_before` (made at k1) that of the model of k2 (< 0: none).
-int next_check(int k, int k1, int k2, double estimate, double estimate_before, int Lc, double tolerance) {
+int next_check(int k, int k1, int k2, double estimate, double estimate_before, int Lc,
+               double tolerance) {
   constexpr int kMinStride = 4;
   const int max_stride = std::max(kMinStride, Lc / 6);
   if (!(estimate > 0.0) || !(estimate_before > estimate) || k1 <= k2) return k + kMinStride;
