@@ -94,8 +94,11 @@ BENCHMARK(SteadyHertzPaper)->Unit(benchmark::kMillisecond)->Iterations(10);
 // Issue 25's two speed bars in-process (CPU time of this process, std::clock, so without the
 // process start-up that `perf stat` of the commands includes): the single-wheel noise case over
 // the steady Hertz case (bar: <= 5) and the four-wheel case over the single-wheel case (bar:
-// <= 2.5), the median of 3 runs each. Counters: the ratios, the CPU seconds, the grid (elements of
-// the leading outer wheel's patch, of the Hertz patch) and the frequency count.
+// <= 2.5), the median of 3 runs each; the second ratio also for cases/curve_300m_table.toml (the
+// mode table instead of the FE wheel; in-process the FE wheel's modes are computed once per
+// process, so the FE ratios here exclude them, unlike the commands'). Counters: the ratios, the
+// CPU seconds, the grid (elements of the leading outer wheel's patch, of the Hertz patch) and the
+// frequency count.
 double cpu_seconds(const std::function<void()>& run) {
   std::vector<double> t;
   for (int i = 0; i < 3; ++i) {
@@ -112,8 +115,16 @@ void SpeedBarsCurve300m(benchmark::State& state) {
   const io::CaseReader one =
       io::CaseReader::from_file(source_path("cases/curve_300m.toml"), kSingleWheel);
   const io::CaseReader hertz = io::CaseReader::from_file(source_path("cases/hertz_paper.toml"), {});
-  double t4 = 0, t1 = 0, th = 0, elements = 0, frequencies = 0, hertz_elements = 0;
+  // the same case with the wheel's mode table instead of the FE wheel (cases/curve_300m_table.toml)
+  const io::CaseReader four_table =
+      io::CaseReader::from_file(source_path("cases/curve_300m_table.toml"), {});
+  const io::CaseReader one_table =
+      io::CaseReader::from_file(source_path("cases/curve_300m_table.toml"), kSingleWheel);
+  double t4 = 0, t1 = 0, th = 0, t4_table = 0, t1_table = 0, elements = 0, frequencies = 0,
+         hertz_elements = 0;
   for (auto _ : state) {
+    t4_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(four_table)); });
+    t1_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(one_table)); });
     t4 = cpu_seconds([&] {
       const pipeline::NoiseResult r = run_curve_300m(four);
       benchmark::DoNotOptimize(r);
@@ -127,6 +138,9 @@ void SpeedBarsCurve300m(benchmark::State& state) {
   }
   state.counters["single_over_steady"] = t1 / th;
   state.counters["four_over_single"] = t4 / t1;
+  state.counters["four_over_single_table"] = t4_table / t1_table;
+  state.counters["four_table_cpu_s"] = t4_table;
+  state.counters["single_table_cpu_s"] = t1_table;
   state.counters["four_cpu_s"] = t4;
   state.counters["single_cpu_s"] = t1;
   state.counters["steady_cpu_s"] = th;

@@ -106,8 +106,6 @@ std::vector<WheelMode> WheelModel::modes_at(double shift_y) const {
   return at;
 }
 
-namespace {
-
 // sum_k phi_k(a) phi_k(b)^T / (m_k (omega_k^2 - omega^2 + 2 i zeta_k omega_k omega)): the response
 // at a to a force at b; `a` and `b` hold the same modes (frequency, damping, mass) in the same order,
 // their shapes at the two points (a == b: the point receptance).
@@ -125,8 +123,6 @@ Receptance4 modal_sum(const std::vector<WheelMode>& a, const std::vector<WheelMo
   }
   return H;
 }
-
-}  // namespace
 
 Receptance4 WheelModel::modal_receptance(double frequency) const {
   return modal_sum(modes_, modes_, frequency);

@@ -67,6 +67,13 @@ inline constexpr const char* kWheelModeFields[7] = {
 /// Checks the values of one mode; throws InputError(`where`:field, ...).
 void validate_mode(const WheelMode& mode, const std::string& where);
 
+/// The modal sum between two points from the tables of the same modes at each (as
+/// WheelModel::modes_at gives them): sum_k phi_k(a) phi_k(b)^T / (m_k (w_k^2 - w^2 + 2 i zeta_k w_k
+/// w)); `at_a` = `at_b` gives the point receptance. The contact set builds the tables once per
+/// contact and sums them per frequency (noise/contact_set.hpp).
+Receptance4 modal_sum(const std::vector<WheelMode>& at_a, const std::vector<WheelMode>& at_b,
+                      double frequency);
+
 /// Rigid wheelset plus flexible modes.
 class WheelModel {
  public:

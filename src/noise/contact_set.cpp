@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::noise {
@@ -200,10 +201,28 @@ Receptance6 rail_cross(const Receptance4& transfer, const ContactPoint& a, const
 // The assembly at one frequency
 // ---------------------------------------------------------------------------------------------
 
+ContactModeTables contact_mode_tables(const dynamics::WheelModel& wheel,
+                                      const std::vector<ContactPoint>& contacts) {
+  ContactModeTables tables;
+  tables.reserve(contacts.size());
+  for (const ContactPoint& c : contacts) tables.push_back(wheel.modes_at(c.position.wheel_shift_y));
+  return tables;
+}
+
 ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             double frequency, const CrossCoupling& cross) {
   validate_contacts(contacts);
+  return contact_set_receptance(wheel, rail, contacts, contact_mode_tables(wheel, contacts),
+                                frequency, cross);
+}
+
+ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
+                                            const std::vector<ContactPoint>& contacts,
+                                            const ContactModeTables& tables, double frequency,
+                                            const CrossCoupling& cross) {
+  validate_contacts(contacts);
+  ROLLNOISE_ASSERT(tables.size() == contacts.size(), "one mode table per contact");
   const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
   const double omega = dynamics::angular(frequency);
   ContactSetReceptance out;
@@ -243,12 +262,9 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
       // there, as the single-contact loop; the table wheel: its one table); between two patches of
       // one wheel the shapes at both positions (the table wheel: its one table moved rigidly)
       if (self)
-        w +=
-            wheel_modal_cross(wheel.modal_receptance(frequency, ca.position.wheel_shift_y), ca, ca);
+        w += wheel_modal_cross(dynamics::modal_sum(tables[a], tables[a], frequency), ca, ca);
       else if (cross.wheel && same_wheel(ca, cb))
-        w += wheel_modal_cross(wheel.modal_cross_receptance(frequency, ca.position.wheel_shift_y,
-                                                            cb.position.wheel_shift_y),
-                               ca, cb);
+        w += wheel_modal_cross(dynamics::modal_sum(tables[a], tables[b], frequency), ca, cb);
       if ((self || cross.rail) && ca.side == cb.side) r = rail_cross(transfer[a * n + b], ca, cb);
       const Eigen::Matrix<cdouble, 6, 4> Tb =
           contact_frame(cb.position.contact_angle).cast<cdouble>();

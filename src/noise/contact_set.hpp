@@ -140,6 +140,20 @@ ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, c
                                             const std::vector<ContactPoint>& contacts,
                                             double frequency, const CrossCoupling& cross = {});
 
+/// The wheel's mode table at each contact's position on the tread (WheelModel::modes_at of the
+/// contact's wheel_shift_y; for the FE wheel the shapes interpolated there), one per contact: they
+/// do not depend on the frequency, so a sweep builds them once (contact_set_structures).
+using ContactModeTables = std::vector<std::vector<dynamics::WheelMode>>;
+ContactModeTables contact_mode_tables(const dynamics::WheelModel& wheel,
+                                      const std::vector<ContactPoint>& contacts);
+
+/// The same assembly with the contacts' mode tables built beforehand (`tables[a]` for contact a,
+/// contact_mode_tables): the same result to the bit.
+ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
+                                            const std::vector<ContactPoint>& contacts,
+                                            const ContactModeTables& tables, double frequency,
+                                            const CrossCoupling& cross = {});
+
 /// The 4N x 4N contact-frame blocks (M1) from 6x6 common-frame pieces: `alpha(a, b)` gives the
 /// 6x6 receptance between contacts a and b already in a's and b's LOCAL frames (zero blocks are
 /// allowed); used by the Laplace-domain assembly of squeal as well.

@@ -20,10 +20,12 @@ ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, c
   s.contacts = contacts;
   s.cross = cross;
   s.receptance.reserve(frequencies.size());
+  validate_contacts(contacts);
+  const ContactModeTables tables = contact_mode_tables(wheel, contacts);  // once, not per frequency
   for (double f : frequencies) {
     if (!(f > 0.0) || !std::isfinite(f))
       throw InputError("frequency", "the noise loop needs positive frequencies");
-    s.receptance.push_back(contact_set_receptance(wheel, rail, contacts, f, cross));
+    s.receptance.push_back(contact_set_receptance(wheel, rail, contacts, tables, f, cross));
   }
   return s;
 }
