@@ -26,14 +26,10 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
   if (!nc.squeal_wheelsets) return {};
   const std::vector<noise::WheelContact> states = curve_wheels(r.mean.curve(), nc);
   if (states.empty()) return {};
-  if (!nc.rail_track)
-    throw InputError("noise.contact_coupling",
-                     "squeal per wheelset couples the contacts through the beam rail only "
-                     "(track.model = \"beam\")");
   std::vector<double> in_band;
   for (const auto& m : nc.wheel->modes())
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
-  const noise::RailLine rail(*nc.rail_track, nc.rail_support);
+  const dynamics::RailModel& rail = *nc.rail;
   noise::StabilityOptions o = options;
   o.band_min = nc.band_min;
   o.band_max = nc.band_max;
@@ -65,7 +61,7 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
       p.wheelset = leading ? 0 : 1;
       p.side = noise::is_outer(w.state.wheel) ? 1 : -1;
       p.position = w.state.position();
-      p.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
+      p.rail_x = rail.position() + (leading ? 0.0 : nc.wheelbase);
       contacts.push_back({p, w.mean.transfer().get(), w.mean.normal_stiffness()});
       coupled = coupled || w.mean.coupled();
     }
