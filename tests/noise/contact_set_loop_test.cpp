@@ -18,18 +18,6 @@ using namespace noise_test;
 
 using cd = std::complex<double>;
 
-rn::ContactPoint point(int wheelset, int side, double shift, double offset, double angle,
-                       double x) {
-  rn::ContactPoint c;
-  c.wheelset = wheelset;
-  c.side = side;
-  c.position.wheel_shift_y = shift;
-  c.position.rail_offset_y = offset;
-  c.position.contact_angle = angle;
-  c.rail_x = x;
-  return c;
-}
-
 // A bogie: leading wheelset (x = 0.3 m, mid-span) and trailing (x = 2.8 m, 2.5 m wheelbase), both
 // sides, plus a flange patch on the leading side +1 wheel (shifted 30 mm towards the flange,
 // 1.2 rad, on the gauge corner).

@@ -23,18 +23,6 @@ using cd = std::complex<double>;
 
 namespace {
 
-rn::ContactPoint point(int wheelset, int side, double shift, double offset, double angle,
-                       double x) {
-  rn::ContactPoint c;
-  c.wheelset = wheelset;
-  c.side = side;
-  c.position.wheel_shift_y = shift;
-  c.position.rail_offset_y = offset;
-  c.position.contact_angle = angle;
-  c.rail_x = x;
-  return c;
-}
-
 // A bogie in a curve: the leading outer wheel at the gauge corner (cases/curve_300m.toml: 36.6 mm,
 // 0.524 rad) with a flange patch (1.0 rad), the other wheels near the crown; 2.5 m wheelbase.
 std::vector<rn::ContactPoint> bogie_contacts() {
