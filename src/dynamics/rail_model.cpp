@@ -88,8 +88,7 @@ std::vector<std::pair<double, double>> distinct_positions(const std::vector<Rail
 }  // namespace
 
 std::vector<std::vector<Receptance6>> RailModel::contact_transfers(
-    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
-    bool) const {
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs, bool) const {
   std::vector<std::size_t> which;
   const std::vector<std::pair<double, double>> positions = distinct_positions(pairs, which);
   std::vector<std::vector<Receptance6>> out;

@@ -224,7 +224,8 @@ Eigen::MatrixXd static_support(const FullMatrices& f, const std::optional<FootSu
                          support->vertical.dynamic_stiffness(0.0).real()};
     for (int a = 0; a < nn; ++a)
       for (int b = 0; b < nn; ++b)
-        for (int d = 0; d < 3; ++d) ks(RailWaveguide::dof(a, d), RailWaveguide::dof(b, d)) = K[d] * f.foot(a, b);
+        for (int d = 0; d < 3; ++d)
+          ks(RailWaveguide::dof(a, d), RailWaveguide::dof(b, d)) = K[d] * f.foot(a, b);
   }
   return ks;
 }

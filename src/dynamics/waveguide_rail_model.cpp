@@ -144,7 +144,8 @@ std::vector<Receptance4> WaveguideRailModel::between(
   std::vector<std::pair<double, Eigen::MatrixXcd>> at_x;  // Eq. (W4) per distinct distance
   std::vector<Receptance4> out;
   for (const auto& [a, b, x] : pairs) {
-    auto it = std::find_if(at_x.begin(), at_x.end(), [x = x](const auto& e) { return e.first == x; });
+    auto it =
+        std::find_if(at_x.begin(), at_x.end(), [x = x](const auto& e) { return e.first == x; });
     if (it == at_x.end())
       it = at_x.insert(at_x.end(), {x, s.model.transfer(w, s.loads, s.loads, x)});
     out.push_back(it->second.block<4, 4>(4 * a, 4 * b));
@@ -266,7 +267,8 @@ RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
       std::vector<std::tuple<int, int, double>> within;
       std::vector<std::size_t> which;
       for (std::size_t p = 0; p < pairs.size(); ++p)
-        if (sets.set[p] == static_cast<int>(k)) within.push_back(sets.within[p]), which.push_back(p);
+        if (sets.set[p] == static_cast<int>(k))
+          within.push_back(sets.within[p]), which.push_back(p);
       const std::vector<Receptance4> r = between(*stations[k], omega, within);
       for (std::size_t i = 0; i < which.size(); ++i)
         out[which[i]] = from_contact_frames(r[i], pairs[which[i]].first.contact_angle,
@@ -280,7 +282,8 @@ std::vector<Receptance4> WaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
   const RailWaves w = rail_.waves(checked_omega(frequency));
   std::vector<Receptance4> out;
-  for (const auto& [xr, xe] : pairs) out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
+  for (const auto& [xr, xe] : pairs)
+    out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
   return out;
 }
 
