@@ -212,38 +212,70 @@ void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd
   axial_ = mx;
 }
 
-RailWaveguide RailWaveguide::reduced(const RailReduction& reduction,
-                                     const Eigen::MatrixXd& loads) const {
-  if (loads.rows() != dofs())
-    throw InputError("rail_reduction", "loads need one row per nodal degree of freedom");
+namespace {
+
+// The support's static stiffness on the full model's nodal degrees of freedom.
+Eigen::MatrixXd static_support(const FullMatrices& f, const std::optional<FootSupport>& support,
+                               int nn) {
+  Eigen::MatrixXd ks = Eigen::MatrixXd::Zero(3 * nn, 3 * nn);
+  if (support) {
+    const double K[3] = {support->longitudinal.dynamic_stiffness(0.0).real(),
+                         support->lateral.dynamic_stiffness(0.0).real(),
+                         support->vertical.dynamic_stiffness(0.0).real()};
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b)
+        for (int d = 0; d < 3; ++d)
+          ks(RailWaveguide::dof(a, d), RailWaveguide::dof(b, d)) = K[d] * f.foot(a, b);
+  }
+  return ks;
+}
+
+}  // namespace
+
+RailReductionModes RailWaveguide::reduction_modes(const RailReduction& reduction) const {
   if (reduction.wavenumbers.empty() || !(reduction.max_frequency > 0.0))
     throw InputError("rail_reduction", "at least one wavenumber and a positive cut-off frequency");
   const FullMatrices f = assemble_full(mesh_, material_, support_);
-  const int nn = static_cast<int>(mesh_.nodes.size()), n = 3 * nn;
-  Eigen::MatrixXd ks = Eigen::MatrixXd::Zero(n, n);  // the support's static stiffness
-  if (support_) {
-    const double K[3] = {support_->longitudinal.dynamic_stiffness(0.0).real(),
-                         support_->lateral.dynamic_stiffness(0.0).real(),
-                         support_->vertical.dynamic_stiffness(0.0).real()};
-    for (int a = 0; a < nn; ++a)
-      for (int b = 0; b < nn; ++b)
-        for (int d = 0; d < 3; ++d) ks(dof(a, d), dof(b, d)) = K[d] * f.foot(a, b);
-  }
-  // In the rotated variables the load is T^* f = f_s - i f_x and K(k) is real: the static
-  // responses to the u_x part and to the (u_y, u_z) part of each load span the response.
-  Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
-  for (int i = 0; i < n; ++i)
-    split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
+  const Eigen::MatrixXd ks = static_support(f, support_, static_cast<int>(mesh_.nodes.size()));
   const double lambda_max = std::pow(2.0 * M_PI * reduction.max_frequency, 2);
-  const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
-  std::vector<Eigen::VectorXd> vectors;
+  RailReductionModes out;
   for (double k : reduction.wavenumbers) {
     const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, f.m);
     if (es.info() != Eigen::Success)
       throw NumericalError("rail waveguide: cross-section eigensolver failed (reduction)");
+    out.modes.emplace_back();
     for (int j = 0; j < es.eigenvalues().size() && es.eigenvalues()(j) <= lambda_max; ++j)
-      vectors.push_back(es.eigenvectors().col(j));
+      out.modes.back().push_back(es.eigenvectors().col(j));
+  }
+  return out;
+}
+
+RailWaveguide RailWaveguide::reduced(const RailReduction& reduction,
+                                     const Eigen::MatrixXd& loads) const {
+  return reduced(reduction, loads, reduction_modes(reduction));
+}
+
+RailWaveguide RailWaveguide::reduced(const RailReduction& reduction, const Eigen::MatrixXd& loads,
+                                     const RailReductionModes& modes) const {
+  if (loads.rows() != dofs())
+    throw InputError("rail_reduction", "loads need one row per nodal degree of freedom");
+  if (modes.modes.size() != reduction.wavenumbers.size())
+    throw InputError("rail_reduction", "the modes are not of this reduction's wavenumbers");
+  const FullMatrices f = assemble_full(mesh_, material_, support_);
+  const int nn = static_cast<int>(mesh_.nodes.size()), n = 3 * nn;
+  const Eigen::MatrixXd ks = static_support(f, support_, nn);  // the support's static stiffness
+  // In the rotated variables the load is T^* f = f_s - i f_x and K(k) is real: the static
+  // responses to the u_x part and to the (u_y, u_z) part of each load span the response.
+  Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
+  for (int i = 0; i < n; ++i)
+    split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
+  const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
+  std::vector<Eigen::VectorXd> vectors;
+  for (std::size_t i = 0; i < reduction.wavenumbers.size(); ++i) {
+    const double k = reduction.wavenumbers[i];
+    const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
+    for (const Eigen::VectorXd& v : modes.modes[i]) vectors.push_back(v);
     const Eigen::LDLT<Eigen::MatrixXd> static_solve(K + shift * f.m);
     const Eigen::MatrixXd u = static_solve.solve(split);
     for (int j = 0; j < u.cols(); ++j) vectors.push_back(u.col(j));

@@ -105,6 +105,13 @@ struct RailReduction {
   double max_frequency = 20000.0;  ///< modes with natural frequency up to this (Hz)
 };
 
+/// The load-independent part of the Ritz basis: per wavenumber of a RailReduction the free
+/// cross-section modes up to its max_frequency (RailWaveguide::reduction_modes), computed once
+/// per model and passed to reduced() for each set of loads.
+struct RailReductionModes {
+  std::vector<std::vector<Eigen::VectorXd>> modes;  ///< per wavenumber, full nodal vectors
+};
+
 class RailWaveguide {
  public:
   /// `support`: none for the free rail. The foot is the set of boundary edges along the lowest z.
@@ -114,6 +121,11 @@ class RailWaveguide {
   /// The model restricted to the Ritz basis of `reduction` enriched by the static responses to
   /// `loads` (physical nodal components, dofs() rows; e.g. contact_loads()).
   RailWaveguide reduced(const RailReduction& reduction, const Eigen::MatrixXd& loads) const;
+  /// The same with the modes of reduction_modes(reduction) given (the same bits).
+  RailWaveguide reduced(const RailReduction& reduction, const Eigen::MatrixXd& loads,
+                        const RailReductionModes& modes) const;
+  /// The section modes of the reduction (unreduced model only).
+  RailReductionModes reduction_modes(const RailReduction& reduction) const;
 
   /// Nodal degrees of freedom of the section mesh (3 per node).
   int dofs() const { return 3 * static_cast<int>(mesh_.nodes.size()); }

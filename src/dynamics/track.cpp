@@ -258,57 +258,9 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r,
   return H;
 }
 
-namespace {
-// The 4x4 of RailModel::receptance from the vertical and lateral beams and the rod.
-Receptance4 contact_point_receptance(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod, double h) {
-  Receptance4 R = Receptance4::Zero();
-  R(kZ, kZ) = Hv(0, 0);
-  R(kZ, kX) = -h * Hv(0, 1);
-  R(kX, kZ) = -h * Hv(1, 0);
-  R(kX, kX) = rod + h * h * Hv(1, 1);
-  R(kY, kY) = Hl(0, 0);
-  R(kY, kRotZ) = Hl(0, 1);
-  R(kRotZ, kY) = Hl(1, 0);
-  R(kRotZ, kRotZ) = Hl(1, 1);
-  return R;
-}
-}  // namespace
 
 Receptance4 RailModel::receptance_laplace(cdouble s) const {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  const cdouble omega = cdouble(0.0, -1.0) * s;  // i omega = s
-  const double wr = omega.real(), L = track_.sleeper_spacing;
-  Eigen::Matrix2cd Hv, Hl;
-  if (support_ == TrackSupport::kDiscrete) {
-    Hv = vertical_.transfer_at(omega, x_, x_);
-    Hl = lateral_.transfer_at(omega, x_, x_);
-  } else {
-    Hv = InfiniteBeam(track_.vertical, omega, track_.vertical_support.dynamic_stiffness(omega) / L,
-                      track_.vertical_support.dynamic_stiffness(wr) / L)
-             .transfer(0.0);
-    Hl = InfiniteBeam(track_.lateral, omega, track_.lateral_support.dynamic_stiffness(omega) / L,
-                      track_.lateral_support.dynamic_stiffness(wr) / L)
-             .transfer(0.0);
-  }
-  const cdouble rod = rod_receptance(track_.vertical, omega, track_.longitudinal_support.dynamic_stiffness(omega) / L,
-                                     0.0, track_.longitudinal_support.dynamic_stiffness(wr) / L);
-  return contact_point_receptance(Hv, Hl, rod, track_.head_height);
-}
-
-// The beams are not loaded at the contact (loaded_at_contact() is false): the loop moves their
-// centre-line receptance (noise/loop.hpp); asking them for a contact receptance is a bug.
-std::vector<Receptance4> RailModel::contact_receptances(const std::vector<double>&, double,
-                                                        double) const {
-  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
-}
-
-Receptance4 RailModel::contact_receptance(double, double, double) const {
-  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
-}
-
-Receptance4 RailModel::contact_receptance_laplace(cdouble, double, double) const {
-  throw NumericalError("RailModel: the beam rail has no receptance at the contact itself");
+  return line_transfer_laplace(s, x_, x_);
 }
 
 }  // namespace rollnoise::dynamics

@@ -40,10 +40,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_contact.hpp"
 #include "dynamics/receptance.hpp"
 #include "dynamics/track_beam.hpp"
 
@@ -137,8 +139,10 @@ enum class TrackSupport { kContinuous, kDiscrete };
 Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
                              double h);
 
-/// The rail's receptance at the contact point as the noise loop uses it.
+/// The rail's receptance as the noise loop uses it.
 ///
+/// At the centre line (receptance, line_transfers): the 4x4 (z, x, y, rot z) at the running
+/// surface's centre, from the beams:
 ///   z, rot z  : vertical bending (z) and lateral bending (y, rotation about z = lateral slope),
 ///               from the continuous or discrete model;
 ///   x         : rod on the smeared longitudinal support plus the rotation of the cross-section
@@ -146,36 +150,61 @@ Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd&
 ///               u_head = u_rod - h psi_vert, so H_xx = H_rod + h^2 H_psiM, H_zx = -h H_wM;
 ///   y, rot z  : H_yy = H_wF, H_{y,rotz} = H_wM, H_{rotz,rotz} = H_psiM of the lateral model.
 /// Torsion of the rail and cross-section deformation are not modelled (docs/models.md).
+///
+/// At contact points (contact_transfers, laplace_transfers): the one interface of every rail
+/// model (docs/models.md Sec. 2.5c). A contact is a RailContact (x along the rail, offset on the
+/// head, contact angle); the result, per pair (a, b), is the 6x6 (x, y, z, rot x, rot y, rot z;
+/// the rail's frame, rail_contact.hpp) displacement at a's point per load at b's point, whose
+/// contact-frame 4x4 is T_a^T alpha T_b (G2). The beams (this class) and the discretely supported
+/// waveguide move their centre-line transfer between x_a and x_b rigidly to the two points (G1):
+///   alpha_ab = L(0, offset_a, 0) embed(line transfer(x_a, x_b)) L(0, offset_b, 0)^T;
+/// the continuously supported waveguide (waveguide_rail_model.hpp) loads its section at the
+/// contact points themselves.
 class RailModel {
  public:
   /// `contact_position`: distance of the contact from a sleeper along the rail (m); 0 is over a
   /// sleeper, L/2 mid-span. Ignored by the continuous model.
   RailModel(const TrackParameters& track, TrackSupport support, double contact_position);
-  virtual ~RailModel() = default;  // the waveguide rail derives (waveguide_rail_model.hpp)
+  virtual ~RailModel() = default;
 
+  /// The centre-line point receptance at position().
   virtual Receptance4 receptance(double frequency) const;
   /// The receptance at the Laplace variable s = sigma + i omega (1/s), i omega -> s: the closed
   /// forms continued to the complex frequency omega = -i s (docs/squeal.md Sec. 2);
   /// receptance_laplace(i omega) = receptance(omega / 2 pi) up to round-off.
   virtual Receptance4 receptance_laplace(cdouble s) const;
 
-  /// True if the model is loaded at the contact itself on the rail head (contact_receptance*):
-  /// the waveguide rail. False (the beams): the loop moves receptance() rigidly from the centre
-  /// line to the contact and rotates it into the contact frame (noise/loop.hpp).
-  virtual bool loaded_at_contact() const { return false; }
-  /// For loaded_at_contact() models: the 4x4 in the contact frame (normal n, x, lateral tangent
-  /// t, rotation about n; noise/loop.hpp) of a contact at `offset_y` (m, lateral, from the rail's
-  /// centre line, rail profile coordinate) with contact angle `contact_angle` (rad), per
-  /// frequency (Hz) of `frequencies` (the whole grid at once: a model may compute it on a coarser
-  /// grid and interpolate), at one frequency, and at the Laplace variable s.
-  virtual std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
-                                                       double offset_y, double contact_angle) const;
-  virtual Receptance4 contact_receptance(double frequency, double offset_y,
-                                         double contact_angle) const;
-  virtual Receptance4 contact_receptance_laplace(cdouble s, double offset_y,
-                                                 double contact_angle) const;
+  /// The centre-line 4x4 transfer, displacement at x_response per force at x_load (m along the
+  /// rail from a sleeper), for several (x_response, x_load) pairs at one frequency; the discrete
+  /// beams solve them with one Toeplitz recursion (DiscretelySupportedRail::transfers), equal to
+  /// transfer per pair to the bit. line_transfers(f, {{x, x}}) = receptance(f) at x = position().
+  virtual std::vector<Receptance4> line_transfers(
+      double frequency, const std::vector<std::pair<double, double>>& pairs) const;
+  Receptance4 line_transfer(double frequency, double x_response, double x_load) const {
+    return line_transfers(frequency, {{x_response, x_load}}).front();
+  }
+  /// The same at the Laplace variable s (receptance_laplace's continuation).
+  virtual Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const;
 
+  /// The 6x6 between contact points (see above) for every pair at every frequency of a grid:
+  /// out[k][p] is pair p at frequencies[k]. `interpolate`: a model may compute them on a coarser
+  /// grid and interpolate (the waveguide; docs/models.md Sec. 2.5b); false: each frequency
+  /// directly.
+  virtual std::vector<std::vector<Receptance6>> contact_transfers(
+      const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+      bool interpolate = true) const;
+  /// The same at complex frequency: a function of the Laplace variable s for fixed pairs, whose
+  /// setup (the waveguide's basis at those points) is done once, here.
+  using LaplaceTransfers = std::function<std::vector<Receptance6>(cdouble s)>;
+  virtual LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const;
+
+  /// The case's contact position along the rail (track.position; m from a sleeper).
+  double position() const { return x_; }
   const TrackParameters& track() const { return track_; }
+
+ protected:
+  /// (G1) of the header: the centre-line transfer moved to the two contacts' offsets.
+  static Receptance6 at_offsets(const Receptance4& line, const RailContactPair& pair);
 
  private:
   TrackParameters track_;

@@ -131,7 +131,7 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(
 DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& track,
                                                        const WaveguideRailOptions& options,
                                                        double contact_position)
-    : RailModel(track, TrackSupport::kContinuous, 0.0),
+    : RailModel(track, TrackSupport::kContinuous, contact_position),
       parts_(build(track, options)),
       x_(contact_position) {
   if (!std::isfinite(x_) || x_ < 0.0)
@@ -139,16 +139,7 @@ DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& tr
 }
 
 Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {
-  const std::pair<double, double> key(omega.real(), omega.imag());
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = memo_.find(key);
-    if (it != memo_.end()) return it->second;
-  }
-  const Receptance4 r = parts_.rail.transfer(omega, parts_.crown, x_, parts_.crown, x_);
-  const std::lock_guard<std::mutex> lock(mutex_);
-  memo_.emplace(key, r);
-  return r;
+  return parts_.rail.transfer(omega, parts_.crown, x_, parts_.crown, x_);
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance(double frequency) const {
@@ -165,10 +156,26 @@ Receptance4 DiscreteWaveguideRailModel::receptance_laplace(cdouble s) const {
 
 Receptance4 DiscreteWaveguideRailModel::transfer(double frequency, double x_response,
                                                  double x_load) const {
+  return line_transfer(frequency, x_response, x_load);
+}
+
+std::vector<Receptance4> DiscreteWaveguideRailModel::line_transfers(
+    double frequency, const std::vector<std::pair<double, double>>& pairs) const {
   if (!std::isfinite(frequency) || !(frequency > 0.0))
     throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
-  return parts_.rail.transfer(cdouble(angular(frequency), 0.0), parts_.crown, x_response,
-                              parts_.crown, x_load);
+  std::vector<Receptance4> out;
+  for (const auto& [xr, xe] : pairs)
+    out.push_back(parts_.rail.transfer(cdouble(angular(frequency), 0.0), parts_.crown, xr,
+                                       parts_.crown, xe));
+  return out;
+}
+
+Receptance4 DiscreteWaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
+                                                              double x_load) const {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  return parts_.rail.transfer(cdouble(0.0, -1.0) * s, parts_.crown, x_response, parts_.crown,
+                              x_load);
 }
 
 }  // namespace rollnoise::dynamics

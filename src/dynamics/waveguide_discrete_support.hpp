@@ -31,9 +31,8 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <map>
-#include <mutex>
 #include <utility>
+#include <vector>
 
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
@@ -84,6 +83,10 @@ class DiscreteWaveguideRailModel : public RailModel {
   Receptance4 receptance_laplace(cdouble s) const override;
   /// The 4x4 between crown loads at x_response and x_load along the rail (m, from a sleeper).
   Receptance4 transfer(double frequency, double x_response, double x_load) const;
+  /// The crown's transfers: the contacts get them moved rigidly (RailModel::contact_transfers).
+  std::vector<Receptance4> line_transfers(
+      double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
+  Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
 
   const DiscretelySupportedWaveguide& rail() const { return parts_.rail; }
   const Eigen::MatrixXd& crown_loads() const { return parts_.crown; }
@@ -97,8 +100,6 @@ class DiscreteWaveguideRailModel : public RailModel {
 
   Parts parts_;
   double x_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::pair<double, double>, Receptance4> memo_;
 
   Receptance4 at(cdouble omega) const;
 };

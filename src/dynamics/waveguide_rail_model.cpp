@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -48,25 +49,17 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
       full_(full_model(track, options)),
+      modes_(full_.reduction_modes(options.reduction)),
       rail_(full_) {
   if (options.grid_per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
   loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
                              Eigen::Vector2d(0.0, 1.0), options.head_bottom);
-  rail_ = full_.reduced(options.reduction, loads_);
+  rail_ = full_.reduced(options.reduction, loads_, modes_);
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
-  const std::pair<double, double> key(omega.real(), omega.imag());
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = memo_.find(key);
-    if (it != memo_.end()) return it->second;
-  }
-  const Receptance4 r = rail_.contact_receptance(rail_.waves(omega), loads_, loads_, 0.0);
-  const std::lock_guard<std::mutex> lock(mutex_);
-  memo_.emplace(key, r);
-  return r;
+  return rail_.contact_receptance(rail_.waves(omega), loads_, loads_, 0.0);
 }
 
 Receptance4 WaveguideRailModel::receptance(double frequency) const {
@@ -126,13 +119,8 @@ Eigen::Vector2d WaveguideRailModel::contact_point(double offset_y, double contac
   return outline_contact_point(outline_, options_.head_bottom, offset_y, contact_angle);
 }
 
-std::shared_ptr<WaveguideRailModel::Station> WaveguideRailModel::station(
+std::shared_ptr<const WaveguideRailModel::Station> WaveguideRailModel::station(
     const Points& points) const {
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = stations_.find(points);
-    if (it != stations_.end()) return it->second;
-  }
   Eigen::MatrixXd loads(full_.dofs(), 4 * static_cast<int>(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto [offset_y, angle] = points[i];
@@ -146,27 +134,23 @@ std::shared_ptr<WaveguideRailModel::Station> WaveguideRailModel::station(
                                                    options_.patch_half_width, normal,
                                                    options_.head_bottom);
   }
-  auto s = std::make_shared<Station>(Station{full_.reduced(options_.reduction, loads), loads, {}});
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return stations_.emplace(points, std::move(s)).first->second;
+  return std::make_shared<const Station>(
+      Station{full_.reduced(options_.reduction, loads, modes_), std::move(loads)});
 }
 
-Receptance4 WaveguideRailModel::between(cdouble omega, const Points& points, int a, int b,
-                                        double x) const {
-  const std::shared_ptr<Station> s = station(points);
-  const std::tuple<double, double, double> key(omega.real(), omega.imag(), x);
-  Eigen::MatrixXcd all;
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = s->memo.find(key);
-    if (it != s->memo.end()) all = it->second;
+std::vector<Receptance4> WaveguideRailModel::between(
+    const Station& s, cdouble omega, const std::vector<std::tuple<int, int, double>>& pairs) const {
+  const RailWaves w = s.model.waves(omega);
+  std::vector<std::pair<double, Eigen::MatrixXcd>> at_x;  // Eq. (W4) per distinct distance
+  std::vector<Receptance4> out;
+  for (const auto& [a, b, x] : pairs) {
+    auto it =
+        std::find_if(at_x.begin(), at_x.end(), [x = x](const auto& e) { return e.first == x; });
+    if (it == at_x.end())
+      it = at_x.insert(at_x.end(), {x, s.model.transfer(w, s.loads, s.loads, x)});
+    out.push_back(it->second.block<4, 4>(4 * a, 4 * b));
   }
-  if (all.size() == 0) {
-    all = s->model.transfer(s->model.waves(omega), s->loads, s->loads, x);
-    const std::lock_guard<std::mutex> lock(mutex_);
-    s->memo.emplace(key, all);
-  }
-  return all.block<4, 4>(4 * a, 4 * b);
+  return out;
 }
 
 namespace {
@@ -183,25 +167,151 @@ cdouble checked_laplace(cdouble s) {
   return cdouble(0.0, -1.0) * s;  // i omega = s
 }
 
+// The pairs' points grouped into the sets that are coupled (a pair joins its two points): each
+// set gets one Ritz basis, so a point asked for alone has the basis it has in the single-contact
+// loop. Per pair: its set, and (point a, point b, x_a - x_b) with the points indexed in that set.
+struct PointSets {
+  std::vector<std::vector<std::pair<double, double>>> points;  // per set, sorted
+  std::vector<int> set;                                        // per pair
+  std::vector<std::tuple<int, int, double>> within;            // per pair
+};
+
+PointSets point_sets(const std::vector<RailContactPair>& pairs) {
+  std::vector<std::pair<double, double>> all;
+  auto key = [](const RailContact& c) { return std::make_pair(c.offset_y, c.contact_angle); };
+  for (const auto& [a, b] : pairs) all.push_back(key(a)), all.push_back(key(b));
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  auto index = [&](const RailContact& c) {
+    return static_cast<int>(std::lower_bound(all.begin(), all.end(), key(c)) - all.begin());
+  };
+  std::vector<int> root(all.size());  // union-find over the points
+  for (std::size_t i = 0; i < all.size(); ++i) root[i] = static_cast<int>(i);
+  auto find = [&](int i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (const auto& [a, b] : pairs) root[find(index(a))] = find(index(b));
+  PointSets out;
+  std::vector<int> set_of_root(all.size(), -1), position(all.size(), 0);
+  for (std::size_t i = 0; i < all.size(); ++i) {  // all is sorted: each set's points too
+    int& s = set_of_root[find(static_cast<int>(i))];
+    if (s < 0) s = static_cast<int>(out.points.size()), out.points.emplace_back();
+    position[i] = static_cast<int>(out.points[s].size());
+    out.points[s].push_back(all[i]);
+  }
+  for (const auto& [a, b] : pairs) {
+    out.set.push_back(set_of_root[find(index(a))]);
+    out.within.emplace_back(position[index(a)], position[index(b)], a.x - b.x);
+  }
+  return out;
+}
+
+// The direct grid of contact_transfers: grid_per_octave points per octave from the lowest to the
+// highest frequency (both included); empty if every frequency is to be computed directly.
+std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_octave) {
+  if (frequencies.empty() || per_octave <= 0) return {};
+  const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
+  const int intervals =
+      std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))));
+  if (intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) return {};
+  std::vector<double> grid(intervals + 1);
+  for (int i = 0; i <= intervals; ++i)
+    grid[i] = i == intervals ? *hi : *lo * std::pow(*hi / *lo, double(i) / intervals);
+  return grid;
+}
+
 }  // namespace
+
+std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+    bool interpolate) const {
+  for (double f : frequencies) checked_omega(f);
+  const PointSets sets = point_sets(pairs);
+  const std::vector<double> grid =
+      interpolate ? direct_grid(frequencies, options_.grid_per_octave) : std::vector<double>{};
+  const std::vector<double>& direct = grid.empty() ? frequencies : grid;
+  // the contact-frame 4x4 of each pair at the direct frequencies, one basis per set of points
+  std::vector<std::vector<Receptance4>> values(pairs.size());
+  for (std::size_t s = 0; s < sets.points.size(); ++s) {
+    const std::shared_ptr<const Station> st = station(sets.points[s]);
+    std::vector<std::tuple<int, int, double>> within;
+    std::vector<std::size_t> which;
+    for (std::size_t p = 0; p < pairs.size(); ++p)
+      if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
+    for (double f : direct) {
+      const std::vector<Receptance4> r = between(*st, checked_omega(f), within);
+      for (std::size_t i = 0; i < which.size(); ++i) values[which[i]].push_back(r[i]);
+    }
+  }
+  if (!grid.empty())
+    for (auto& v : values) v = interpolate_receptances(grid, v, frequencies);
+  std::vector<std::vector<Receptance6>> out(frequencies.size(),
+                                            std::vector<Receptance6>(pairs.size()));
+  for (std::size_t k = 0; k < frequencies.size(); ++k)
+    for (std::size_t p = 0; p < pairs.size(); ++p)
+      out[k][p] = from_contact_frames(values[p][k], pairs[p].first.contact_angle,
+                                      pairs[p].second.contact_angle);
+  return out;
+}
+
+RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
+    const std::vector<RailContactPair>& pairs) const {
+  const PointSets sets = point_sets(pairs);
+  std::vector<std::shared_ptr<const Station>> stations;
+  for (const auto& points : sets.points) stations.push_back(station(points));
+  return [this, pairs, sets, stations](cdouble s) {
+    const cdouble omega = checked_laplace(s);
+    std::vector<Receptance6> out(pairs.size());
+    for (std::size_t k = 0; k < stations.size(); ++k) {
+      std::vector<std::tuple<int, int, double>> within;
+      std::vector<std::size_t> which;
+      for (std::size_t p = 0; p < pairs.size(); ++p)
+        if (sets.set[p] == static_cast<int>(k))
+          within.push_back(sets.within[p]), which.push_back(p);
+      const std::vector<Receptance4> r = between(*stations[k], omega, within);
+      for (std::size_t i = 0; i < which.size(); ++i)
+        out[which[i]] = from_contact_frames(r[i], pairs[which[i]].first.contact_angle,
+                                            pairs[which[i]].second.contact_angle);
+    }
+    return out;
+  };
+}
+
+std::vector<Receptance4> WaveguideRailModel::line_transfers(
+    double frequency, const std::vector<std::pair<double, double>>& pairs) const {
+  const RailWaves w = rail_.waves(checked_omega(frequency));
+  std::vector<Receptance4> out;
+  for (const auto& [xr, xe] : pairs)
+    out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
+  return out;
+}
+
+Receptance4 WaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
+                                                      double x_load) const {
+  return rail_.contact_receptance(rail_.waves(checked_laplace(s)), loads_, loads_,
+                                  x_response - x_load);
+}
 
 Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,
                                                    double contact_angle) const {
-  return between(checked_omega(frequency), {{offset_y, contact_angle}}, 0, 0, 0.0);
+  return between(*station({{offset_y, contact_angle}}), checked_omega(frequency), {{0, 0, 0.0}})
+      .front();
 }
 
 Receptance4 WaveguideRailModel::contact_receptance_laplace(cdouble s, double offset_y,
                                                            double contact_angle) const {
-  return between(checked_laplace(s), {{offset_y, contact_angle}}, 0, 0, 0.0);
+  return between(*station({{offset_y, contact_angle}}), checked_laplace(s), {{0, 0, 0.0}})
+      .front();
 }
 
 Receptance4 WaveguideRailModel::contact_transfer(double frequency, double offset_a,
                                                  double angle_a, double offset_b, double angle_b,
                                                  double x) const {
-  // one station per unordered pair: (b, a) at -x is the transpose of (a, b) at x
+  // one basis per unordered pair: (b, a) at -x is the transpose of (a, b) at x
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
   if (b < a) return contact_transfer(frequency, offset_b, angle_b, offset_a, angle_a, -x).transpose();
-  return between(checked_omega(frequency), {a, b}, 0, 1, x);
+  return between(*station({a, b}), checked_omega(frequency), {{0, 1, x}}).front();
 }
 
 Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offset_a,
@@ -210,31 +320,17 @@ Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offse
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
   if (b < a)
     return contact_transfer_laplace(s, offset_b, angle_b, offset_a, angle_a, -x).transpose();
-  return between(checked_laplace(s), {a, b}, 0, 1, x);
+  return between(*station({a, b}), checked_laplace(s), {{0, 1, x}}).front();
 }
 
 std::vector<Receptance4> WaveguideRailModel::contact_receptances(
     const std::vector<double>& frequencies, double offset_y, double contact_angle) const {
+  const RailContact c{0.0, offset_y, contact_angle};
+  const std::vector<std::vector<Receptance6>> six = contact_transfers(frequencies, {{c, c}});
   std::vector<Receptance4> out;
-  if (frequencies.empty()) return out;
-  const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
-  // The direct grid: grid_per_octave points per octave from the lowest to the highest frequency
-  // (both included); every frequency directly if that is not fewer.
-  const int per_octave = options_.grid_per_octave;
-  const int intervals =
-      per_octave > 0 ? std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))))
-                     : 0;
-  if (per_octave == 0 || intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) {
-    for (double f : frequencies) out.push_back(contact_receptance(f, offset_y, contact_angle));
-    return out;
-  }
-  std::vector<double> grid(intervals + 1);
-  std::vector<Receptance4> values;
-  for (int i = 0; i <= intervals; ++i) {
-    grid[i] = i == intervals ? *hi : *lo * std::pow(*hi / *lo, double(i) / intervals);
-    values.push_back(contact_receptance(grid[i], offset_y, contact_angle));
-  }
-  return interpolate_receptances(grid, values, frequencies);
+  const Eigen::Matrix<cdouble, 6, 4> T = contact_frame(contact_angle).cast<cdouble>();
+  for (const auto& r : six) out.push_back(T.transpose() * r.front() * T);
+  return out;
 }
 
 std::vector<Receptance4> interpolate_receptances(const std::vector<double>& grid,

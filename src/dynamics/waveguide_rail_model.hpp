@@ -3,32 +3,34 @@
 //
 //  * receptance(f): the 4x4 at the running surface's centre (the crown of the section), in the
 //    loop's order (z, x, y, rotation about z), as `rollnoise receptance` writes it;
-//  * contact_receptance*(f, offset, angle): the 4x4 with the section loaded AT THE CONTACT on the
-//    head, in that contact's frame (normal n, x, lateral tangent t, rotation about n; the loop's
-//    frame, noise/loop.hpp): the loop and squeal use it (loaded_at_contact() is true), so the
-//    head's roll under an eccentric, inclined force and the local deformation of the gauge corner
-//    are in the loop, not the crown's receptance moved rigidly (docs/models.md Sec. 2.5b).
+//  * contact_transfers / laplace_transfers (RailModel's interface at contact points, track.hpp):
+//    the section loaded AT THE CONTACTS on the head, in each contact's frame (normal n, x, lateral
+//    tangent t, rotation about n; the loop's frame, noise/loop.hpp), between any two contacts at
+//    any distance along the rail (Eq. W4 with all the points' loads in one Ritz basis), given to
+//    the loop as the 6x6 T_a A_ab T_b^T (G2 of rail_contact.hpp): the head's roll under an
+//    eccentric, inclined force and the local deformation of the gauge corner are in the loop, not
+//    the crown's receptance moved rigidly (docs/models.md Sec. 2.5b, 2.5c);
+//  * contact_receptance*, contact_transfer*: the same 4x4 at one frequency, for checks.
 //
 // The contact point on the outline: where the outline's outward normal equals the contact's,
 // n = (-sin gamma, cos gamma) in (y, z) (the contact condition: the rail's surface normal at the
 // contact is the contact normal; Kalker, Three-dimensional elastic bodies in rolling contact,
 // 1990, Sec. 1.3), on the head's top (z >= head_bottom); the outline being a polyline, a normal
 // between two edges' is their common vertex, and among equal candidates the one nearest the
-// lateral offset. Each contact point gets its own Ritz basis (the section's modes plus the static
-// responses to that point's loads, RailWaveguide::reduced), built once and kept.
+// lateral offset. The points of one query share one Ritz basis (the section's modes plus the
+// static responses to those points' loads, RailWaveguide::reduced), built by the query: for the
+// loop's frequency grid once (contact_transfers), for complex frequency once per set of pairs
+// (laplace_transfers returns a function of s holding it). Nothing is kept between queries.
 //
 // The load is a uniform traction over the boundary within `patch_half_width` of the point (not a
 // nodal point force, whose receptance grows as the mesh is refined), and the response is the same
-// average (reciprocal). Receptances are memoised per frequency and point (the loop and squeal ask
-// for the same frequencies repeatedly). contact_receptances() on a grid of many frequencies
-// computes them on a logarithmic grid of `grid_per_octave` points per octave and interpolates
+// average (reciprocal). contact_transfers() on a grid of many frequencies computes them on a
+// logarithmic grid of `grid_per_octave` points per octave and interpolates
 // (cubic Hermite in ln f, each entry; docs/models.md Sec. 2.5b gives the error).
 #pragma once
 
 #include <Eigen/Core>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -62,20 +64,28 @@ class WaveguideRailModel : public RailModel {
   /// wave crosses the real k axis, i.e. for decay rates Re s > -(loss) x omega; docs/models.md).
   Receptance4 receptance_laplace(cdouble s) const override;
 
-  bool loaded_at_contact() const override { return true; }
+  /// The crown's transfer between x_response and x_load (the centre-line model of this rail).
+  std::vector<Receptance4> line_transfers(
+      double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
+  Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
+  /// At the contacts themselves (header comment); interpolated on grid_per_octave points per
+  /// octave when `interpolate` and the grid is finer than that.
+  std::vector<std::vector<Receptance6>> contact_transfers(
+      const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+      bool interpolate = true) const override;
+  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
+
+  /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
+  /// `frequencies` (interpolated as contact_transfers), at one frequency and at s.
   std::vector<Receptance4> contact_receptances(const std::vector<double>& frequencies,
-                                               double offset_y,
-                                               double contact_angle) const override;
-  Receptance4 contact_receptance(double frequency, double offset_y,
-                                 double contact_angle) const override;
-  Receptance4 contact_receptance_laplace(cdouble s, double offset_y,
-                                         double contact_angle) const override;
+                                               double offset_y, double contact_angle) const;
+  Receptance4 contact_receptance(double frequency, double offset_y, double contact_angle) const;
+  Receptance4 contact_receptance_laplace(cdouble s, double offset_y, double contact_angle) const;
   /// The transfer between two contacts on this rail, a = (offset_a, angle_a) at x_a and
   /// b = (offset_b, angle_b) at x_b, x = x_a - x_b (m along the rail): the displacement of a in
-  /// a's contact frame per unit force of b in b's frame (Eq. W4 of rail_waveguide.hpp with both
-  /// points' loads in one Ritz basis). contact_transfer(f, a, a, 0) = contact_receptance(f, a)
-  /// up to the basis (the pair's basis is richer); contact_transfer(f, a, b, x) =
-  /// contact_transfer(f, b, a, -x)^T.
+  /// a's contact frame per unit force of b in b's frame (Eq. W4 with both points' loads in one
+  /// Ritz basis). contact_transfer(f, a, a, 0) = contact_receptance(f, a) up to the basis (the
+  /// pair's basis is richer); contact_transfer(f, a, b, x) = contact_transfer(f, b, a, -x)^T.
   Receptance4 contact_transfer(double frequency, double offset_a, double angle_a,
                                double offset_b, double angle_b, double x) const;
   Receptance4 contact_transfer_laplace(cdouble s, double offset_a, double angle_a,
@@ -88,28 +98,27 @@ class WaveguideRailModel : public RailModel {
   const Eigen::MatrixXd& crown_loads() const { return loads_; }
 
  private:
-  /// Loaded points of the section (contacts, (offset, angle) each): their reduced model, their
-  /// loads (dofs() x 4 per point) and a memo of the 4N x 4N transfer per (Re omega, Im omega, x).
+  /// Loaded points of the section (contacts, (offset, angle) each), their reduced model and loads
+  /// (dofs() x 4 per point): a value built for one query.
   using Points = std::vector<std::pair<double, double>>;
   struct Station {
     RailWaveguide model;
     Eigen::MatrixXd loads;
-    std::map<std::tuple<double, double, double>, Eigen::MatrixXcd> memo;
   };
 
   WaveguideRailOptions options_;
   std::vector<Eigen::Vector2d> outline_;
-  RailWaveguide full_;  // the unreduced model, for the contacts' bases
-  RailWaveguide rail_;  // the crown's reduced model
+  RailWaveguide full_;          // the unreduced model, for the contacts' bases
+  RailReductionModes modes_;    // its section modes, the load-independent part of every basis
+  RailWaveguide rail_;          // the crown's reduced model
   Eigen::MatrixXd loads_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::pair<double, double>, Receptance4> memo_;
-  mutable std::map<Points, std::shared_ptr<Station>> stations_;
 
   Receptance4 at(cdouble omega) const;
-  /// Block (a, b) of the transfer between `points` (a station's, sorted) at x.
-  Receptance4 between(cdouble omega, const Points& points, int a, int b, double x) const;
-  std::shared_ptr<Station> station(const Points& points) const;
+  std::shared_ptr<const Station> station(const Points& points) const;
+  /// The contact-frame 4x4 of every pair at omega, the pairs given as (point a, point b, x_a -
+  /// x_b) into the station's points: one wave solution, one Eq. (W4) per distinct distance.
+  std::vector<Receptance4> between(const Station& s, cdouble omega,
+                                   const std::vector<std::tuple<int, int, double>>& pairs) const;
 };
 
 /// The point of a counter-clockwise outline (y, z) (m) whose outward normal is

@@ -118,12 +118,7 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
     c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, waveguide_rail_options(r, track_section), position);
   else if (model == "waveguide")
     c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, waveguide_rail_options(r, track_section));
-  else {
-    c.rail_track = track;
-    c.rail_support = support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous;
-    c.rail_position = position;
-  }
-  if (model != "waveguide")
+  else
     c.rail = std::make_unique<dynamics::RailModel>(
         track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
         position);

@@ -39,11 +39,13 @@
 //    patch then moves with the tread's modal amplitudes. The FE wheel (WheelModel::follows_contact)
 //    gives each contact its own shapes, in the point and the cross terms
 //    (WheelModel::modal_cross_receptance). The two wheels of a wheelset have independent modes (no modal cross term);
-//  * rail: each rail its own beam (the two rails are uncoupled: no sleeper bending, no track
-//    cross-coupling); between two contacts on the same rail at x_a, x_b along it, the transfer
-//    receptance RailLine::transfer(x_a, x_b) (Eq. 2 of dynamics/track.hpp for discrete support,
-//    the infinite beam at x_a - x_b for continuous support, the rod in x), moved by (M2) to each
-//    contact's lateral offset on the head.
+//  * rail: each rail its own model (the two rails are uncoupled: no sleeper bending, no track
+//    cross-coupling); between two contacts on the same rail, the rail model's receptance between
+//    the two contact points (RailModel::contact_transfers, dynamics/track.hpp): the beams'
+//    transfer between x_a and x_b (Eq. 2 of track.hpp for discrete support, the infinite beam at
+//    x_a - x_b for continuous support, the rod in x) moved by (M2) to each contact's lateral
+//    offset on the head; the waveguide loaded at both contact points (docs/models.md Sec. 2.5c).
+//    Both contacts of one rail share its local frame, so the block is the rail model's 6x6.
 #pragma once
 
 #include <Eigen/Core>
@@ -81,48 +83,17 @@ void validate_contacts(const std::vector<ContactPoint>& contacts);
 /// P of the header for side +1 / -1 (the identity or diag(1, -1, 1, -1, 1, -1)).
 Eigen::Matrix<double, 6, 6> side_reflection(int side);
 
-/// (M2): L(d_a) alpha L(d_b)^T.
-Receptance6 move_points(const Receptance6& alpha, const Eigen::Vector3d& d_a,
-                        const Eigen::Vector3d& d_b);
+/// (M2): L(d_a) alpha L(d_b)^T (dynamics/rail_contact.hpp).
+using dynamics::move_points;
 
-/// One rail as a line of points: the 4x4 (z, x, y, rot z) transfer receptance between two points
-/// along it, assembled as dynamics::RailModel::receptance assembles the point receptance (the
-/// head-height lever of x, the lateral beam for y and rot z). transfer(f, x, x) equals
-/// RailModel(track, support, x).receptance(f); transfer(f, a, b) = transfer(f, b, a)^T.
-class RailLine {
- public:
-  RailLine(const dynamics::TrackParameters& track, dynamics::TrackSupport support);
-  /// Displacement at x_response per force at x_load (m along the rail from a sleeper).
-  Receptance4 transfer(double frequency, double x_response, double x_load) const;
-  /// transfer() for several (x_response, x_load) pairs at one frequency, to the same bits; the
-  /// discrete rail solves them with one Toeplitz recursion (DiscretelySupportedRail::transfers).
-  std::vector<Receptance4> transfers(double frequency,
-                                     const std::vector<std::pair<double, double>>& pairs) const;
-  /// The same at the Laplace variable s (RailModel::receptance_laplace's continuation).
-  Receptance4 transfer_laplace(cdouble s, double x_response, double x_load) const;
-  const dynamics::TrackParameters& track() const { return track_; }
-  dynamics::TrackSupport support() const { return support_; }
-
-  /// This line with the point receptance at x already known at the given frequencies, e.g.
-  /// StructureSpectra::rail of RailModel(track, support, x), which equals transfer(f, x, x) to the
-  /// bit: transfers() then takes it for the pair (x, x) at those frequencies instead of solving
-  /// Eq. (2) again (the single-contact loop has solved it). Ignored unless `frequency` is
-  /// ascending with one receptance each.
-  RailLine with_point_receptance(double x, std::vector<double> frequency,
-                                 std::vector<Receptance4> receptance) const;
-
- private:
-  dynamics::TrackParameters track_;
-  dynamics::TrackSupport support_;
-  dynamics::DiscretelySupportedRail vertical_, lateral_;
-  struct KnownPoint {
-    double x = 0.0;
-    std::vector<double> frequency;  ///< ascending
-    std::vector<Receptance4> receptance;
-  };
-  std::shared_ptr<const KnownPoint> known_;
-  const Receptance4* known_point(double frequency, double x) const;
+/// The rail pairs of a contact set, (a, b) with a <= b on one rail (a == b, or b != a when
+/// `cross.rail`), and each as the rail's pair of contact points (RailModel::contact_transfers).
+struct ContactSetRailPairs {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> index;
+  std::vector<dynamics::RailContactPair> points;
 };
+ContactSetRailPairs contact_set_rail_pairs(const std::vector<ContactPoint>& contacts,
+                                           const CrossCoupling& cross);
 
 /// The structures between N contacts at one frequency, for the loop with several contacts.
 /// `wheel` and `rail` (6N x 4N): block (a, b) is the displacement of contact a's point in a's
@@ -134,12 +105,12 @@ struct ContactSetReceptance {
   Eigen::MatrixXcd wheel, rail;    ///< 4N x 4N, (M1)
 };
 
-/// The assembly at one frequency (Hz) from the wheel model (all wheelsets alike), a rail line per
+/// The assembly at one frequency (Hz) from the wheel model (all wheelsets alike), a rail model per
 /// side (both sides alike here: `rail`) and the contacts; `cross` selects the cross terms.
-ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
+ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel,
+                                            const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             double frequency, const CrossCoupling& cross = {});
-
 /// The wheel's mode table at each contact's position on the tread (WheelModel::modes_at of the
 /// contact's wheel_shift_y; for the FE wheel the shapes interpolated there), one per contact: they
 /// do not depend on the frequency, so a sweep builds them once (contact_set_structures).
@@ -147,9 +118,12 @@ using ContactModeTables = std::vector<std::vector<dynamics::WheelMode>>;
 ContactModeTables contact_mode_tables(const dynamics::WheelModel& wheel,
                                       const std::vector<ContactPoint>& contacts);
 
-/// The same assembly with the contacts' mode tables built beforehand (`tables[a]` for contact a,
-/// contact_mode_tables): the same result to the bit.
-ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel, const RailLine& rail,
+/// The same assembly with the rail's 6x6 of each of contact_set_rail_pairs(contacts, cross) at
+/// this frequency given (a grid's worth computed at once: contact_set_structures) and the
+/// contacts' mode tables built beforehand (`tables[a]` for contact a, contact_mode_tables): the
+/// same result to the bit.
+ContactSetReceptance contact_set_receptance(const dynamics::WheelModel& wheel,
+                                            const std::vector<Receptance6>& rail_pairs,
                                             const std::vector<ContactPoint>& contacts,
                                             const ContactModeTables& tables, double frequency,
                                             const CrossCoupling& cross = {});
@@ -188,8 +162,5 @@ Eigen::Matrix<double, 6, 6> rigid_flexibility6(const dynamics::RigidWheelset& w,
 Receptance6 wheel_modal_cross(const Receptance4& modal_at_reference, const ContactPoint& a,
                               const ContactPoint& b);
 
-/// Rail between contacts a and b of the same rail in the local frame, from the 4x4 transfer
-/// between their positions along the rail; zero for different sides.
-Receptance6 rail_cross(const Receptance4& transfer, const ContactPoint& a, const ContactPoint& b);
 
 }  // namespace rollnoise::noise

@@ -11,7 +11,8 @@
 
 namespace rollnoise::noise {
 
-ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, const RailLine& rail,
+ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
+                                            const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             const std::vector<double>& frequencies,
                                             const CrossCoupling& cross) {
@@ -20,13 +21,17 @@ ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, c
   s.contacts = contacts;
   s.cross = cross;
   s.receptance.reserve(frequencies.size());
-  validate_contacts(contacts);
-  const ContactModeTables tables = contact_mode_tables(wheel, contacts);  // once, not per frequency
-  for (double f : frequencies) {
+  for (double f : frequencies)
     if (!(f > 0.0) || !std::isfinite(f))
       throw InputError("frequency", "the noise loop needs positive frequencies");
-    s.receptance.push_back(contact_set_receptance(wheel, rail, contacts, tables, f, cross));
-  }
+  validate_contacts(contacts);
+  const ContactModeTables tables = contact_mode_tables(wheel, contacts);  // once, not per frequency
+  // the rail between the contact points on the whole grid at once (RailModel::contact_transfers)
+  const std::vector<std::vector<Receptance6>> rail_pairs =
+      rail.contact_transfers(frequencies, contact_set_rail_pairs(contacts, cross).points);
+  for (std::size_t k = 0; k < frequencies.size(); ++k)
+    s.receptance.push_back(
+        contact_set_receptance(wheel, rail_pairs[k], contacts, tables, frequencies[k], cross));
   return s;
 }
 

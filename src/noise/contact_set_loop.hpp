@@ -51,7 +51,8 @@ struct ContactSetStructures {
   std::vector<ContactSetReceptance> receptance;  ///< one per frequency
 };
 
-ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel, const RailLine& rail,
+ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
+                                            const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             const std::vector<double>& frequencies,
                                             const CrossCoupling& cross = {});

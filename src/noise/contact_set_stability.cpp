@@ -54,7 +54,7 @@ Eigen::MatrixXcd ContactSetLaplaceLoop::matrix(cdouble s) const {
 }
 
 ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel,
-                                               const RailLine& rail,
+                                               const dynamics::RailModel& rail,
                                                const std::vector<SquealContact>& contacts,
                                                double speed, bool normal_coupling,
                                                const CrossCoupling& cross) {
@@ -99,19 +99,21 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
         if (a != b && !cross.wheelset) return Receptance6::Zero();
         return rigid_flexibility6(ws, points[a], points[b]).cast<cdouble>();
       });
-  loop.rest = [=, &rail](cdouble s) -> Eigen::MatrixXcd {
+  // the rails between the contact points as a function of s, set up once
+  // (RailModel::laplace_transfers; alpha_ba = alpha_ab^T)
+  const ContactSetRailPairs pairs = contact_set_rail_pairs(points, cross);
+  const dynamics::RailModel::LaplaceTransfers rail_at = rail.laplace_transfers(pairs.points);
+  loop.rest = [=](cdouble s) -> Eigen::MatrixXcd {
     Eigen::MatrixXcd A = C / (s * s);
-    // both rails are the same track: a pair of positions met before (on the other rail) reuses its
-    // transfer, the same bits
-    std::vector<std::pair<std::pair<double, double>, Receptance4>> met;
-    A += contact_frame_blocks(points, [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
-      if (points[a].side != points[b].side || (a != b && !cross.rail)) return Receptance6::Zero();
-      const std::pair<double, double> x{points[a].rail_x, points[b].rail_x};
-      auto it = std::find_if(met.begin(), met.end(), [&](const auto& m) { return m.first == x; });
-      if (it == met.end())
-        it = met.insert(met.end(), {x, rail.transfer_laplace(s, x.first, x.second)});
-      return rail_cross(it->second, points[a], points[b]);
-    });
+    const std::vector<Receptance6> r = rail_at(s);
+    std::vector<Receptance6> block(static_cast<std::size_t>(n * n), Receptance6::Zero());
+    for (std::size_t p = 0; p < pairs.index.size(); ++p) {
+      const auto [a, b] = pairs.index[p];
+      block[a * n + b] = r[p];
+      if (b != a) block[b * n + a] = r[p].transpose();
+    }
+    A += contact_frame_blocks(points,
+                              [&](Eigen::Index a, Eigen::Index b) { return block[a * n + b]; });
     for (Eigen::Index a = 0; a < n; ++a) {
       const ContactTransfer& t = *contacts[a].transfer;
       const Eigen::Vector3cd g = normal_coupling ? t.load(s) : Eigen::Vector3cd::Zero();

@@ -13,8 +13,9 @@
 //    each contact's shift and turned into its frame; contact_set.hpp's limitation: one set of
 //    amplitudes for all points of a wheel) and zero at the other wheels' contacts. The two wheels
 //    of a wheelset have their own (equal) mode tables;
-//  * rails: RailLine::transfer_laplace between contacts on one rail (continued as in
-//    RailModel::receptance_laplace), zero between the rails;
+//  * rails: RailModel::laplace_transfers between contacts on one rail (the beams continued as
+//    RailModel::receptance_laplace, the waveguide's waves at complex omega), zero between the
+//    rails;
 //  * contacts: contact_receptance_laplace with each contact's f(s), g(s) (g only with the normal
 //    coupling on).
 //
@@ -76,7 +77,7 @@ struct SquealContact {
 /// The loop (S6) of a set of contacts: every wheel that has a contact gets the modes of `wheel`;
 /// `normal_coupling` switches g (C3) on; `cross` selects the cross terms as in the noise loop.
 ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel,
-                                               const RailLine& rail,
+                                               const dynamics::RailModel& rail,
                                                const std::vector<SquealContact>& contacts,
                                                double speed, bool normal_coupling,
                                                const CrossCoupling& cross = {});

@@ -59,13 +59,17 @@ Eigen::Matrix4d rigid_flexibility(const dynamics::RigidWheelset& w, const Contac
   return to_contact_frame(moved, p.contact_angle).real();
 }
 
+std::function<Receptance4(cdouble s)> rail_laplace_at_contact(const dynamics::RailModel& rail,
+                                                             const ContactPosition& p) {
+  const dynamics::RailContact c = rail_contact(rail, p);
+  const dynamics::RailModel::LaplaceTransfers at = rail.laplace_transfers({{c, c}});
+  const double angle = p.contact_angle;
+  return [at, angle](cdouble s) { return to_contact_frame(at(s).front(), angle); };
+}
+
 Receptance4 rail_receptance_laplace(const dynamics::RailModel& rail, cdouble s,
                                     const ContactPosition& p) {
-  if (rail.loaded_at_contact())  // the waveguide: loaded at the contact itself
-    return rail.contact_receptance_laplace(s, p.rail_offset_y, p.contact_angle);
-  Receptance6 a = embed(rail.receptance_laplace(s));
-  if (p.rail_offset_y != 0.0) a = move_point(a, Eigen::Vector3d(0.0, p.rail_offset_y, 0.0));
-  return to_contact_frame(a, p.contact_angle);
+  return rail_laplace_at_contact(rail, p)(s);
 }
 
 }  // namespace rollnoise::noise

@@ -10,14 +10,6 @@
 namespace rollnoise::noise {
 namespace {
 
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d) {
-  Eigen::Matrix3d S;
-  S << 0.0, -d.z(), d.y(),  //
-      d.z(), 0.0, -d.x(),   //
-      -d.y(), d.x(), 0.0;
-  return S;
-}
-
 void check_frequency(double f) {
   if (!(f > 0.0) || !std::isfinite(f))
     throw InputError("frequency", "the noise loop needs positive frequencies");
@@ -25,39 +17,11 @@ void check_frequency(double f) {
 
 }  // namespace
 
-Receptance6 embed(const Receptance4& a) {
-  Receptance6 out = Receptance6::Zero();
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) out(kSixOfFour[i], kSixOfFour[j]) = a(i, j);
-  return out;
-}
-
 Receptance4 reduce(const Receptance6& a) {
   Receptance4 out;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) out(i, j) = a(kSixOfFour[i], kSixOfFour[j]);
   return out;
-}
-
-Receptance6 move_point(const Receptance6& a, const Eigen::Vector3d& d) {
-  // u' = u + th x d = u - d x th,  th' = th.
-  Eigen::Matrix<double, 6, 6> L = Eigen::Matrix<double, 6, 6>::Identity();
-  L.topRightCorner<3, 3>() = -cross_matrix(d);
-  const Eigen::Matrix<cdouble, 6, 6> Lc = L.cast<cdouble>();
-  return Lc * a * Lc.transpose();
-}
-
-Eigen::Matrix<double, 6, 4> contact_frame(double gamma) {
-  const double s = std::sin(gamma), c = std::cos(gamma);
-  Eigen::Matrix<double, 6, 4> T = Eigen::Matrix<double, 6, 4>::Zero();
-  T(1, 0) = -s;  // n = (0, -sin g, cos g)
-  T(2, 0) = c;
-  T(0, 1) = 1.0;  // t_x = (1, 0, 0)
-  T(1, 2) = c;    // t_y = (0, cos g, sin g)
-  T(2, 2) = s;
-  T(4, 3) = -s;  // spin about n
-  T(5, 3) = c;
-  return T;
 }
 
 Receptance4 to_contact_frame(const Receptance6& a, double gamma) {
@@ -90,29 +54,37 @@ Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequenc
   return rigid + modal;
 }
 
-// The rail at the contact point: its receptance at the centre line moved by the offset.
-Receptance6 rail_receptance6(const Receptance4& at_centre_line, double offset_y) {
-  Receptance6 a = embed(at_centre_line);
-  if (offset_y != 0.0) a = move_point(a, Eigen::Vector3d(0.0, offset_y, 0.0));
-  return a;
-}
-
 }  // namespace
 
 Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y) {
   return wheel_receptance6(wheel, frequency, wheel.modal_receptance(frequency, shift_y), shift_y);
 }
 
-Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y) {
+dynamics::RailContact rail_contact(const dynamics::RailModel& rail, const ContactPosition& p) {
+  return {rail.position(), p.rail_offset_y, p.contact_angle};
+}
+
+Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency,
+                             const ContactPosition& p) {
   check_frequency(frequency);
-  return rail_receptance6(rail.receptance(frequency), offset_y);
+  const dynamics::RailContact c = rail_contact(rail, p);
+  return rail.contact_transfers({frequency}, {{c, c}}, false).front().front();
 }
 
 Receptance4 rail_contact_receptance(const dynamics::RailModel& rail, double frequency,
                                     const ContactPosition& p) {
-  if (rail.loaded_at_contact())
-    return rail.contact_receptance(frequency, p.rail_offset_y, p.contact_angle);
-  return to_contact_frame(rail_receptance6(rail, frequency, p.rail_offset_y), p.contact_angle);
+  return to_contact_frame(rail_receptance6(rail, frequency, p), p.contact_angle);
+}
+
+std::vector<Receptance4> rail_contact_receptances(const dynamics::RailModel& rail,
+                                                  const std::vector<double>& frequencies,
+                                                  const ContactPosition& p) {
+  for (double f : frequencies) check_frequency(f);
+  const dynamics::RailContact c = rail_contact(rail, p);
+  std::vector<Receptance4> out;
+  for (const auto& r : rail.contact_transfers(frequencies, {{c, c}}, false))
+    out.push_back(to_contact_frame(r.front(), p.contact_angle));
+  return out;
 }
 
 Receptance6 from_contact_frame(const Receptance4& a, double contact_angle) {
@@ -120,22 +92,24 @@ Receptance6 from_contact_frame(const Receptance4& a, double contact_angle) {
   return T * a * T.transpose();
 }
 
-StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
+StructureSpectra structure_spectra(const dynamics::WheelModel& wheel,
                                    const std::vector<double>& frequencies) {
   StructureSpectra s;
   s.frequency = frequencies;
   for (double f : frequencies) {
     check_frequency(f);
     s.wheel_modal.push_back(wheel.modal_receptance(f));
-    if (!rail.loaded_at_contact()) s.rail.push_back(rail.receptance(f));
   }
   return s;
 }
 
-StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
+StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
+                                             const dynamics::RailModel& rail,
+                                             const StructureSpectra& spectra,
                                              const ContactPosition& position) {
-  ROLLNOISE_ASSERT(spectra.rail.size() == spectra.frequency.size(),
-                   "the spectra carry no rail (a rail loaded at the contact): pass the rail model");
+  const dynamics::RailContact c = rail_contact(rail, position);
+  const std::vector<std::vector<Receptance6>> at_contact =
+      rail.contact_transfers(spectra.frequency, {{c, c}});
   StructuralReceptances s;
   s.frequency = spectra.frequency;
   s.position = position;
@@ -145,7 +119,7 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, 
                                   ? wheel.modal_receptance(spectra.frequency[k], position.wheel_shift_y)
                                   : spectra.wheel_modal[k];
     s.wheel.push_back(wheel_receptance6(wheel, spectra.frequency[k], modal, position.wheel_shift_y));
-    s.rail.push_back(rail_receptance6(spectra.rail[k], position.rail_offset_y));
+    s.rail.push_back(at_contact[k].front());
     s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
     s.rail_contact.push_back(to_contact_frame(s.rail.back(), position.contact_angle));
   }
@@ -154,25 +128,9 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, 
 
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const dynamics::RailModel& rail,
-                                             const StructureSpectra& spectra,
-                                             const ContactPosition& position) {
-  if (!rail.loaded_at_contact()) return structural_receptances(wheel, spectra, position);
-  // The rail at the contact itself: its contact-frame 4x4, and as a global 6x6 for the velocities.
-  StructureSpectra modal_only = spectra;
-  modal_only.rail.assign(spectra.frequency.size(), Receptance4::Zero());
-  StructuralReceptances s = structural_receptances(wheel, modal_only, position);
-  s.rail_contact =
-      rail.contact_receptances(spectra.frequency, position.rail_offset_y, position.contact_angle);
-  for (std::size_t k = 0; k < s.frequency.size(); ++k)
-    s.rail[k] = from_contact_frame(s.rail_contact[k], position.contact_angle);
-  return s;
-}
-
-StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
-                                             const dynamics::RailModel& rail,
                                              const ContactPosition& position,
                                              const std::vector<double>& frequencies) {
-  return structural_receptances(wheel, rail, structure_spectra(wheel, rail, frequencies), position);
+  return structural_receptances(wheel, rail, structure_spectra(wheel, frequencies), position);
 }
 
 StructuralReceptances structural_receptances(const std::vector<double>& frequencies,

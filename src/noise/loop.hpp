@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "dynamics/rail_contact.hpp"
 #include "dynamics/receptance.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
@@ -38,26 +39,19 @@ namespace rollnoise::noise {
 using dynamics::cdouble;
 using dynamics::Receptance4;
 
-/// A receptance at a point in 6 degrees of freedom, order (x, y, z, rot x, rot y, rot z).
-using Receptance6 = Eigen::Matrix<cdouble, 6, 6>;
+/// The 6-dof receptance at a point, the lever arm and the contact frame (dynamics/rail_contact.hpp):
+///   Receptance6, order (x, y, z, rot x, rot y, rot z); kSixOfFour; embed (4x4 as 6x6);
+///   move_point, L(d) alpha L(d)^T, L = [[I, -S(d)], [0, I]], S(d) v = d x v (a force F at P + d
+///   is the force F plus the moment d x F at P); contact_frame, the columns (n, t_x, t_y, spin).
+using dynamics::contact_frame;
+using dynamics::embed;
+using dynamics::kSixOfFour;
+using dynamics::move_point;
+using dynamics::Receptance6;
 using Vector4c = Eigen::Matrix<cdouble, 4, 1>;
-
-/// Index in a Receptance6 of each Receptance4 entry (z, x, y, rot z).
-constexpr int kSixOfFour[4] = {2, 0, 1, 5};
-
-/// The 4x4 (z, x, y, rot z) receptance as a 6x6 with zero rows and columns for rot x, rot y.
-Receptance6 embed(const Receptance4& a);
 
 /// The (z, x, y, rot z) rows and columns of a 6x6 receptance.
 Receptance4 reduce(const Receptance6& a);
-
-/// Rigid lever arm: the receptance at P + d of a point rigidly attached to P,
-///   [u'; th'] = L [u; th],  L = [[I, -S(d)], [0, I]],  S(d) v = d x v,   alpha' = L alpha L^T
-/// (a force F at P + d is the force F plus the moment d x F at P). Reciprocity is preserved.
-Receptance6 move_point(const Receptance6& a, const Eigen::Vector3d& d);
-
-/// Columns: the contact directions (n, t_x, t_y, spin about n) in the global 6-dof order.
-Eigen::Matrix<double, 6, 4> contact_frame(double contact_angle);
 
 /// T^T alpha T: the 4x4 receptance in the contact frame (n, x, y, rot n).
 Receptance4 to_contact_frame(const Receptance6& a, double contact_angle);
@@ -84,14 +78,21 @@ Receptance6 wheelset_centre_receptance(const dynamics::RigidWheelset& w, double 
 /// rotations about x and y (approximate, see docs/noise_loop.md).
 Receptance6 wheel_receptance6(const dynamics::WheelModel& wheel, double frequency, double shift_y);
 
-/// The rail at the contact point offset laterally from the centre line (torsion not modelled).
-Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency, double offset_y);
+/// The rail's contact point of `position` at the case's place along the rail (RailModel::position).
+dynamics::RailContact rail_contact(const dynamics::RailModel& rail, const ContactPosition& position);
 
-/// The rail's 4x4 in the contact frame at `position`: a rail loaded at the contact itself
-/// (RailModel::loaded_at_contact(), the waveguide) gives it there; the beams' centre-line
-/// receptance is moved by the offset and rotated (rail_receptance6, to_contact_frame).
+/// The rail's 6x6 at the contact point (RailModel::contact_transfers: the beams' centre-line
+/// receptance moved by the offset, the waveguide loaded there), one frequency, computed directly.
+Receptance6 rail_receptance6(const dynamics::RailModel& rail, double frequency,
+                             const ContactPosition& position);
+
+/// The rail's 4x4 in the contact frame at `position`: to_contact_frame of rail_receptance6.
 Receptance4 rail_contact_receptance(const dynamics::RailModel& rail, double frequency,
                                     const ContactPosition& position);
+/// The same at several frequencies, each computed directly, the setup done once.
+std::vector<Receptance4> rail_contact_receptances(const dynamics::RailModel& rail,
+                                                  const std::vector<double>& frequencies,
+                                                  const ContactPosition& position);
 
 /// T a T^T (T = contact_frame): a contact-frame 4x4 as a global 6x6 at the contact point (rank 4:
 /// the rotations about x and t_y are not carried), for the rail's velocities in the loop.
@@ -112,24 +113,18 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const std::vector<double>& frequencies);
 
 /// The costly, position-independent part of structural_receptances: the wheel's modal receptance
-/// at its reference point and the rail's at its centre line, per frequency (`rail` empty for a
-/// rail loaded at the contact, RailModel::loaded_at_contact(): its receptance depends on the
-/// position, and the overload with the rail model computes it there). Cases with the same
-/// wheel, track and frequencies share it (a study computes it once, docs/study.md).
+/// at its reference point per frequency. Cases with the same wheel and frequencies share it (a
+/// study computes it once, docs/study.md). The rail is evaluated at each contact's position
+/// (RailModel::contact_transfers on the whole grid at once).
 struct StructureSpectra {
   std::vector<double> frequency;  ///< Hz
-  std::vector<Receptance4> wheel_modal, rail;
+  std::vector<Receptance4> wheel_modal;
 };
-StructureSpectra structure_spectra(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
+StructureSpectra structure_spectra(const dynamics::WheelModel& wheel,
                                    const std::vector<double>& frequencies);
-/// The receptances at `position` from the spectra: the same arithmetic as the overload above
-/// (the rigid wheelset, the lever arms and the contact frame are cheap), so the same bits.
-StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel, const StructureSpectra& spectra,
-                                             const ContactPosition& position);
 
-/// The same with the rail model: a rail loaded at the contact (the waveguide) is evaluated at
-/// `position` (RailModel::contact_receptances on the spectra's frequencies), in the contact frame;
-/// for the beams, the same bits as the overload above.
+/// The receptances at `position` from the spectra and the rail model (its contact_transfers at
+/// `position` on the spectra's frequencies): the same arithmetic as the overload above.
 StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
                                              const dynamics::RailModel& rail,
                                              const StructureSpectra& spectra,

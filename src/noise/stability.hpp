@@ -113,7 +113,12 @@ std::vector<LoopMode> contact_frame_modes(const dynamics::WheelModel& wheel, con
 /// alpha_rigid(s) = C_rig / s^2 (the wheelset_centre_receptance moved and rotated, at s = 1).
 Eigen::Matrix4d rigid_flexibility(const dynamics::RigidWheelset& wheelset, const ContactPosition& position);
 
-/// The rail at complex s in the contact frame (rail_receptance6 with receptance_laplace).
+/// The rail at complex s in the contact frame at `position` as a function of s
+/// (RailModel::laplace_transfers at rail_contact(rail, position), to_contact_frame): its setup
+/// (the waveguide's basis at the contact) is done once, here; `rail` must outlive it.
+std::function<Receptance4(cdouble s)> rail_laplace_at_contact(const dynamics::RailModel& rail,
+                                                             const ContactPosition& position);
+/// The same at one s (sets up each call).
 Receptance4 rail_receptance_laplace(const dynamics::RailModel& rail, cdouble s, const ContactPosition& position);
 
 struct StabilityOptions {

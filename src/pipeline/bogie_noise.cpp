@@ -15,7 +15,7 @@ noise::ContactPoint contact_point(const WheelNoise& w, const NoiseCase& nc) {
   c.wheelset = leading ? 0 : 1;
   c.side = noise::is_outer(w.state.wheel) ? 1 : -1;
   c.position = w.position;  // its own frame (mirrored for an inner wheel), as its loop alone
-  c.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
+  c.rail_x = nc.rail->position() + (leading ? 0.0 : nc.wheelbase);
   return c;
 }
 
@@ -66,20 +66,9 @@ std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, cons
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
                                        const noise::CrossCoupling& cross,
-                                       const std::vector<WheelNoise>& patches,
-                                       const noise::StructureSpectra* spectra) {
-  if (!nc.rail_track)
-    throw InputError(
-        "noise.contact_coupling",
-        "the wheels' contacts are coupled through the beam rail only (track.model = \"beam\"); "
-        "set noise.contact_coupling = \"none\" for the waveguide rail");
-  const noise::RailLine line(*nc.rail_track, nc.rail_support);
-  // the rail's point receptance at nc.rail_position is the single-contact loop's (spectra->rail)
-  const noise::RailLine rail =
-      spectra ? line.with_point_receptance(nc.rail_position, spectra->frequency, spectra->rail)
-              : line;
-  const noise::ContactSetStructures s =
-      noise::contact_set_structures(*nc.wheel, rail, bogie_contacts(wheels, nc, patches), frequency, cross);
+                                       const std::vector<WheelNoise>& patches) {
+  const noise::ContactSetStructures s = noise::contact_set_structures(
+      *nc.wheel, *nc.rail, bogie_contacts(wheels, nc, patches), frequency, cross);
   std::vector<std::vector<noise::Receptance4>> alpha;
   for (const WheelNoise* w : all_contacts(wheels, patches)) alpha.push_back(w->contact_receptance);
   return noise::solve_contact_set_loop(

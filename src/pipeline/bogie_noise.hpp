@@ -42,15 +42,12 @@ std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCas
 std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, const NoiseCase& nc);
 
 /// (M3) with the wheels' contacts and one source per wheel, at `frequency`; `cross` selects the
-/// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). InputError
-/// naming noise.contact_coupling for the waveguide rail (it has no transfer between two points).
-/// `spectra` (optional): the single-contact loop's spectra of nc.rail at `frequency`, whose rail
-/// point receptance at nc.rail_position is then not solved again (the same bits).
+/// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). Any rail
+/// model: nc.rail between the contact points (RailModel::contact_transfers).
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
                                        const noise::CrossCoupling& cross = {},
-                                       const std::vector<WheelNoise>& patches = {},
-                                       const noise::StructureSpectra* spectra = nullptr);
+                                       const std::vector<WheelNoise>& patches = {});
 
 /// Band levels (M4) of every contact (the wheels, then the patches): each source with its own
 /// contact's filter (a, b) on the case's roughness spectra.

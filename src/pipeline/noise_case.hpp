@@ -59,11 +59,6 @@ struct NoiseCase {
   bool second_patch_roughness = false;
   /// noise.squeal_wheelsets: squeal also per wheelset of curve.wheels (pipeline/squeal_wheels.hpp).
   bool squeal_wheelsets = false;
-  /// The beam rail the loop with several contacts needs (RailLine): track, support and the
-  /// leading axle's position along the rail (track.position); empty for the waveguide rail.
-  std::optional<dynamics::TrackParameters> rail_track;
-  dynamics::TrackSupport rail_support = dynamics::TrackSupport::kDiscrete;
-  double rail_position = 0.3;
   /// noise.compare: the comparison baseline of the loop (docs/noise_loop.md Sec. 5.1).
   enum class Baseline { kNone, kQuasiSteady, kKalker };
   Baseline compare = Baseline::kQuasiSteady;

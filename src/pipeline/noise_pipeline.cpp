@@ -59,7 +59,7 @@ std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCa
                                                                    const std::vector<double>& frequency) {
   if (nc.structures_id.empty()) {
     ++computed_;
-    return std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, frequency));
+    return std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, frequency));
   }
   // the key: the models' id and the frequencies' bits
   std::string key = nc.structures_id;
@@ -71,7 +71,7 @@ std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCa
   }
   ++computed_;
   if (spectra_.size() >= 64) spectra_.clear();  // a bound on memory (about 1 MB each)
-  auto s = std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, frequency));
+  auto s = std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, frequency));
   spectra_.emplace(std::move(key), s);
   return s;
 }
@@ -117,7 +117,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
-        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches, r.spectra.get()));
+        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
   r.seconds_wheels = seconds_since(t1);
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
@@ -147,7 +147,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   const auto t1 = Clock::now();
   const std::shared_ptr<const noise::StructureSpectra> spectra =
       reuse ? reuse->spectra(nc, freq)
-            : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, *nc.rail, freq));
+            : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, freq));
   const noise::StructuralReceptances structures =
       noise::structural_receptances(*nc.wheel, *nc.rail, *spectra, r.mean.curve().position);
   r.seconds_structures = seconds_since(t1);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -56,14 +57,15 @@ noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean) {
   const Eigen::Matrix4d rigid = noise::rigid_flexibility(nc.wheel->wheelset(), position);
   const double kN = mean.normal_stiffness(), V = mean.contact().speed;
   const bool coupled = mean.coupled();
-  const dynamics::RailModel* rail = nc.rail.get();
+  const std::function<noise::Receptance4(dynamics::cdouble)> rail =
+      noise::rail_laplace_at_contact(*nc.rail, position);  // set up once
   // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
   const std::shared_ptr<const noise::ContactTransfer> contact = mean.transfer();
   loop.rest = [=](dynamics::cdouble s) {
     const Eigen::Vector3cd g = coupled ? contact->load(s) : Eigen::Vector3cd::Zero();
     const Eigen::Matrix3cd f = contact->creep(s);
     return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
-                              noise::rail_receptance_laplace(*rail, s, position) +
+                              rail(s) +
                               noise::contact_receptance_laplace(s, kN, V, f, g));
   };
   return loop;
@@ -146,16 +148,19 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   fr.erase(std::unique(fr.begin(), fr.end()), fr.end());
   const auto tr = Clock::now();
   std::vector<Eigen::MatrixXcd> Hr;
-  for (double f : fr) Hr.push_back(noise::rail_contact_receptance(*nc.rail, f, p));
+  for (const noise::Receptance4& h : noise::rail_contact_receptances(*nc.rail, fr, p)) Hr.push_back(h);
   out.seconds_rail = seconds_since(tr);
   out.rail = fit(fr, Hr, o);
   {
     std::vector<Eigen::MatrixXcd> exact, fitted;
+    std::vector<double> at_modes;
     for (const auto& m : nc.wheel->modes())
       if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) {
-        exact.push_back(noise::rail_contact_receptance(*nc.rail, m.frequency, p));
+        at_modes.push_back(m.frequency);
         fitted.push_back(out.rail.model.frequency_response(m.frequency));
       }
+    for (const noise::Receptance4& h : noise::rail_contact_receptances(*nc.rail, at_modes, p))
+      exact.push_back(h);
     out.rail_error_at_modes = linalg::relative_response_error(exact, fitted, out.rail.scaling);
   }
 
@@ -188,8 +193,10 @@ Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, 
                                  const std::vector<dynamics::cdouble>& s) {
   Route1Deviation d;
   const nss::LinearContactModel* m = r.mean.model().get();
+  const std::function<noise::Receptance4(dynamics::cdouble)> rail =
+      noise::rail_laplace_at_contact(*nc.rail, r.mean.curve().position);  // set up once
   for (const dynamics::cdouble x : s) {
-    const Eigen::MatrixXcd ar = noise::rail_receptance_laplace(*nc.rail, x, r.mean.curve().position);
+    const Eigen::MatrixXcd ar = rail(x);
     d.rail.push_back(linalg::relative_response_error({ar}, {r1.rail.model.response(x)}, r1.rail.scaling));
     if (!m) {
       d.contact.push_back(0.0);

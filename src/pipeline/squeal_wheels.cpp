@@ -48,14 +48,10 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
   const bool per_wheel =
       r.mean.curve().state || (r.mean.curve().estimated && !r.mean.contact().profiles);
   if (!per_wheel) return {};
-  if (!nc.rail_track)
-    throw InputError("noise.contact_coupling",
-                     "squeal per wheelset couples the contacts through the beam rail only "
-                     "(track.model = \"beam\")");
   std::vector<double> in_band;
   for (const auto& m : nc.wheel->modes())
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
-  const noise::RailLine rail(*nc.rail_track, nc.rail_support);
+  const dynamics::RailModel& rail = *nc.rail;
   noise::StabilityOptions o = options;
   o.band_min = nc.band_min;
   o.band_max = nc.band_max;
@@ -95,7 +91,7 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
       p.wheelset = leading ? 0 : 1;
       p.side = noise::is_outer(w->wheel) ? 1 : -1;
       p.position = w->position;
-      p.rail_x = nc.rail_position + (leading ? 0.0 : nc.wheelbase);
+      p.rail_x = rail.position() + (leading ? 0.0 : nc.wheelbase);
       contacts.push_back({p, w->mean.transfer().get(), w->mean.normal_stiffness()});
       coupled = coupled || w->mean.coupled();
     }

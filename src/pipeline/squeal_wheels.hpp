@@ -1,7 +1,7 @@
 // Squeal per wheelset with all its contacts (docs/squeal.md Sec. 9.3): every wheel of curve.wheels
 // with its own contact state (patch, steady rolling, linear model as a ContactTransfer, k_N), the
 // two wheels of each wheelset in one characteristic equation (S6) through the rigid wheelset and
-// the rails (noise::contact_set_laplace_loop, one RailLine per case), the roots by continuation
+// the rails (noise::contact_set_laplace_loop with the case's rail model, any of them), the roots by continuation
 // from every wheel's modes (noise::contact_set_mode_roots); each root belongs to the wheel with
 // the largest modal share (dominant_wheel).
 #pragma once
@@ -40,9 +40,9 @@ struct WheelsetSqueal {
 /// Per wheelset of curve.wheels (leading, then trailing, those with a wheel in the list): the
 /// profile cases' per-wheel curve states, or for a Hertzian case with curve.creepage = "estimate"
 /// each wheel's Hertz state from the bogie estimate (pipeline/squeal_hertz_wheels.hpp); empty
-/// without a curve state or with noise.squeal_wheelsets = "off". `r` the
-/// case's squeal run (its curve, contact); InputError naming noise.contact_coupling for the
-/// waveguide rail; an unstable contact alone is not an error here: its wheelset is skipped
+/// without a curve state or with noise.squeal_wheelsets = "off". `r` the case's squeal run (its
+/// curve, contact); any rail model (beam or waveguide); an unstable contact alone is not an error
+/// here: its wheelset is skipped
 /// (WheelsetSqueal::skipped).
 std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseCase& nc,
                                              const noise::StabilityOptions& options = {});

@@ -18,18 +18,6 @@ using namespace noise_test;
 
 using cd = std::complex<double>;
 
-rn::ContactPoint point(int wheelset, int side, double shift, double offset, double angle,
-                       double x) {
-  rn::ContactPoint c;
-  c.wheelset = wheelset;
-  c.side = side;
-  c.position.wheel_shift_y = shift;
-  c.position.rail_offset_y = offset;
-  c.position.contact_angle = angle;
-  c.rail_x = x;
-  return c;
-}
-
 // A bogie: leading wheelset (x = 0.3 m, mid-span) and trailing (x = 2.8 m, 2.5 m wheelbase), both
 // sides, plus a flange patch on the leading side +1 wheel (shifted 30 mm towards the flange,
 // 1.2 rad, on the gauge corner).
@@ -77,7 +65,7 @@ rd::TrackParameters short_track() {
 TEST(ContactSetLoop, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
   const std::vector<double> f = log_frequencies(60.0, 4500.0, 14);
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rn::RailLine rail(short_track(), rd::TrackSupport::kDiscrete);
+  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   const rn::ContactSetStructures s =
       rn::contact_set_structures(wheel(), rail, cs, f, rn::CrossCoupling::none());
   const auto alpha = contacts_alpha(f, cs.size());
@@ -108,47 +96,22 @@ TEST(ContactSetLoop, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
   EXPECT_EQ(worst_cross, 0.0);
 }
 
-// The rail line: the point receptance equals RailModel's (same assembly, 1e-14) and the transfer is
-// reciprocal, H(a, b) = H(b, a)^T (1e-12), for both supports.
-TEST(ContactSetReceptance, RailLineTransferIsReciprocalAndContainsThePointReceptance) {
+// The rail's centre-line transfer: the point receptance equals RailModel's (same assembly, 1e-14)
+// and the transfer is reciprocal, H(a, b) = H(b, a)^T (1e-12), for both supports.
+TEST(ContactSetReceptance, RailCentreLineTransferIsReciprocalAndContainsThePointReceptance) {
   for (const rd::TrackSupport sup : {rd::TrackSupport::kDiscrete, rd::TrackSupport::kContinuous}) {
-    const rn::RailLine rail(rd::uic60_ballasted(), sup);
+    const rd::RailModel rail(rd::uic60_ballasted(), sup, 0.3);
     for (double f : {150.0, 1100.0, 3700.0}) {
       const rd::Receptance4 point = rd::RailModel(rd::uic60_ballasted(), sup, 0.3).receptance(f);
-      EXPECT_LE((rail.transfer(f, 0.3, 0.3) - point).norm(), 1e-14 * point.norm()) << f;
-      const rd::Receptance4 ab = rail.transfer(f, 0.3, 2.8), ba = rail.transfer(f, 2.8, 0.3);
+      EXPECT_LE((rail.line_transfer(f, 0.3, 0.3) - point).norm(), 1e-14 * point.norm()) << f;
+      const rd::Receptance4 ab = rail.line_transfer(f, 0.3, 2.8), ba = rail.line_transfer(f, 2.8, 0.3);
       EXPECT_LE((ab - ba.transpose()).norm(), 1e-12 * ab.norm()) << f;
       EXPECT_GT(ab.norm(), 0.0);
       // at complex s on the axis, the frequency-domain transfer (the continuation's start)
       const cd s(0.0, rd::angular(f));
-      EXPECT_LE((rail.transfer_laplace(s, 0.3, 2.8) - ab).norm(), 1e-10 * ab.norm()) << f;
+      EXPECT_LE((rail.line_transfer_laplace(s, 0.3, 2.8) - ab).norm(), 1e-10 * ab.norm()) << f;
     }
   }
-}
-
-// A rail line told its point receptance (the single-contact loop's spectra) returns it for the
-// pair (x, x) at those frequencies and solves everything else: the contact set's receptance equals
-// the one with nothing known to the bit, since RailModel's point receptance is transfer(f, x, x).
-TEST(ContactSetReceptance, KnownRailPointReceptanceGivesTheSameBits) {
-  const rn::RailLine line(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete);
-  const std::vector<double> f = {150.0, 1100.0, 3700.0};
-  std::vector<rd::Receptance4> point;
-  const rd::RailModel model(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
-  for (double fk : f) point.push_back(model.receptance(fk));
-  const rn::RailLine told = line.with_point_receptance(0.3, f, point);
-  for (std::size_t k = 0; k < f.size(); ++k) {
-    EXPECT_EQ(told.transfer(f[k], 0.3, 0.3), point[k]);
-    EXPECT_EQ(line.transfer(f[k], 0.3, 0.3), point[k]);
-    const std::vector<rd::Receptance4> a =
-        told.transfers(f[k], {{0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}});
-    const std::vector<rd::Receptance4> b =
-        line.transfers(f[k], {{0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}});
-    for (int p = 0; p < 3; ++p) EXPECT_EQ(a[p], b[p]) << f[k] << " Hz, pair " << p;
-  }
-  // a frequency not in the table, and a wrong-sized table, are solved
-  EXPECT_EQ(told.transfer(151.0, 0.3, 0.3), model.receptance(151.0));
-  const rn::RailLine bad = line.with_point_receptance(0.3, f, {});
-  EXPECT_EQ(bad.transfer(150.0, 0.3, 0.3), point[0]);
 }
 
 // The assembled receptances of a bogie with five contacts (two wheelsets, both sides, a flange
@@ -157,7 +120,7 @@ TEST(ContactSetReceptance, KnownRailPointReceptanceGivesTheSameBits) {
 // eigenvalue); the total with Kalker's contacts (g = 0) passive as well.
 TEST(ContactSetReceptance, AssembledBogieReceptanceIsReciprocalAndPassive) {
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rn::RailLine rail(short_track(), rd::TrackSupport::kDiscrete);
+  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   for (double f : {80.0, 340.0, 1010.0, 2460.0, 4200.0}) {
     const rn::ContactSetReceptance r = rn::contact_set_receptance(wheel(), rail, cs, f);
     EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-12 * r.wheel.norm()) << f;
@@ -186,7 +149,7 @@ TEST(ContactSetLoop, SymmetricWheelsetGivesEqualLevelsOnBothSides) {
   const std::vector<double> f = rn::band_frequencies(centres, 6);
   const std::vector<rn::ContactPoint> cs{point(0, 1, 0.0, 3.25e-3, 0.02428, 0.3),
                                          point(0, -1, 0.0, 3.25e-3, 0.02428, 0.3)};
-  const rn::RailLine rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous);
+  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   const rn::ContactSetStructures s = rn::contact_set_structures(wheel(), rail, cs, f);
   std::vector<std::vector<rn::Receptance4>> alpha(2);
   for (double fk : f)
@@ -221,7 +184,7 @@ TEST(ContactSetLoop, SymmetricWheelsetGivesEqualLevelsOnBothSides) {
 }
 
 TEST(ContactSetLoop, BadInputNamesTheKey) {
-  const rn::RailLine rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous);
+  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   auto key = [](auto fn) {
     try {
       fn();
@@ -296,7 +259,7 @@ TEST(ContactSetLoop, RailTransferToTheOtherAxleAndRigidWheelsetChangeBandLevels)
   const std::vector<rn::ContactPoint> cs{
       point(0, 1, 0.0, 3.25e-3, 0.02428, 0.3), point(0, -1, 0.0, 3.25e-3, 0.02428, 0.3),
       point(1, 1, 0.0, 3.25e-3, 0.02428, 2.8), point(1, -1, 0.0, 3.25e-3, 0.02428, 2.8)};
-  const rn::RailLine rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete);
+  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
   const rn::ContactSetStructures all = rn::contact_set_structures(wheel(), rail, cs, f);
   std::vector<std::vector<rn::Receptance4>> alpha(cs.size());
   const rn::CreepFunction creep = spring_creep();

@@ -46,7 +46,7 @@ struct Wheelset {
   rn::ConstantTransfer kalker =
       rn::ConstantTransfer::kalker(kA, kB, material().shear_modulus(), material().nu);
   std::vector<rn::ContactPoint> points{point(1, -8e-3, -6e-3, 0.35), point(-1, 2e-3, 3e-3, 0.03)};
-  rn::RailLine rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous};
+  rd::RailModel rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3};
   std::vector<rn::SquealContact> contacts() const {
     std::vector<rn::SquealContact> c;
     for (const rn::ContactPoint& p : points) c.push_back({p, &kalker, hertz().normal_stiffness()});

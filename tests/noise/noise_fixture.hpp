@@ -14,6 +14,7 @@
 #include "dynamics/wheel.hpp"
 #include "io/wheel_file.hpp"
 #include "noise/contact_receptance.hpp"
+#include "noise/contact_set.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/loop.hpp"
 
@@ -96,6 +97,20 @@ double relative_min_dissipation(const Eigen::Matrix<std::complex<double>, N, N>&
 /// The same for a dynamic-size receptance (or an expression that evaluates to one).
 inline double relative_min_dissipation(const Eigen::MatrixXcd& A) {
   return relative_min_dissipation<Eigen::Dynamic>(A);
+}
+
+/// A contact of a bogie's contact set (noise/contact_set.hpp): wheelset, side, shift on the wheel,
+/// offset on the rail head, contact angle and position along the rail.
+inline rn::ContactPoint point(int wheelset, int side, double shift, double offset, double angle,
+                              double x) {
+  rn::ContactPoint c;
+  c.wheelset = wheelset;
+  c.side = side;
+  c.position.wheel_shift_y = shift;
+  c.position.rail_offset_y = offset;
+  c.position.contact_angle = angle;
+  c.rail_x = x;
+  return c;
 }
 
 }  // namespace noise_test
