@@ -1,8 +1,7 @@
 // The cost of a noise case against a steady Hertzian solve (issue 25's speed targets), and of the
 // two kernels that dominated it: the contact search on the profiles (WheelRailPair::minimum_gap)
 // and the discretely supported rail per frequency (Eq. (2) of dynamics/track.hpp).
-//   build/rollnoise_bench \
-//     --benchmark_filter='SpeedBars|NoiseCase|SteadyHertz|MinimumGap|DiscreteRail'
+//   rollnoise_bench --benchmark_filter='SpeedBars|NoiseCase|SteadyHertz|MinimumGap|DiscreteRail'
 // SpeedBarsCurve300m prints issue 25's two ratios (single wheel / steady, four wheels / single).
 // Counters: `elements` (contact grid nx x ny of the case), `frequencies` (of the noise case),
 // `supports` (2N + 1 of the rail), `samples` (wheel profile samples scanned per minimum_gap).

@@ -3,8 +3,6 @@
 #include <cmath>
 
 namespace rollnoise::dynamics {
-namespace {
-
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d) {
   Eigen::Matrix3d S;
   S << 0.0, -d.z(), d.y(),  //
@@ -12,6 +10,8 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d) {
       -d.y(), d.x(), 0.0;
   return S;
 }
+
+namespace {
 
 // L(d) M of (G1) applied to the columns of a 6-row M: u' = u + th x d.
 template <class M>

@@ -41,6 +41,9 @@ struct RailContact {
 /// (response point a, load point b).
 using RailContactPair = std::pair<RailContact, RailContact>;
 
+/// S(d) of the lever arm (G1): S(d) v = d x v.
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& d);
+
 /// The 4x4 (z, x, y, rot z) receptance as a 6x6 with zero rows and columns for rot x, rot y.
 Receptance6 embed(const Receptance4& a);
 

@@ -5,23 +5,9 @@
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
+#include "dynamics/rail_contact.hpp"  // the 6-dof order kSixOfFour, the lever arm cross_matrix
 
 namespace rollnoise::dynamics {
-namespace {
-
-// 6-vector order of the rigid body: u_x, u_y, u_z, theta_x, theta_y, theta_z; the contact Dofs in
-// it.
-constexpr int kSixOf[4] = {2, 0, 1, 5};  // kZ, kX, kY, kRotZ
-
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
-  Eigen::Matrix3d S;
-  S << 0.0, -r.z(), r.y(),  //
-      r.z(), 0.0, -r.x(),   //
-      -r.y(), r.x(), 0.0;
-  return S;
-}
-
-}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Rigid wheelset
@@ -57,7 +43,7 @@ Receptance4 RigidWheelset::receptance(double frequency) const {
   C.bottomRightCorner<3, 3>() = Jinv;
   Receptance4 R;
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) R(i, j) = -C(kSixOf[i], kSixOf[j]) / (omega * omega);
+    for (int j = 0; j < 4; ++j) R(i, j) = -C(kSixOfFour[i], kSixOfFour[j]) / (omega * omega);
   return R;
 }
 

@@ -57,7 +57,9 @@ void expect_reciprocal_and_passive(const rd::RailModel& rail, double f,
   EXPECT_LE((r.rail - r.rail.transpose()).norm(), 1e-8 * r.rail.norm()) << f;
   EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-8 * r.wheel.norm()) << f;
   EXPECT_GT(r.rail.block(0, 8, 4, 4).norm(), 0.0) << f;  // the rail between the axles
-  if (cs.size() > 4) EXPECT_GT(r.rail.block(0, 16, 4, 4).norm(), 0.0) << f;  // tread, flange
+  if (cs.size() > 4) {  // tread, flange
+    EXPECT_GT(r.rail.block(0, 16, 4, 4).norm(), 0.0) << f;
+  }
   EXPECT_EQ(r.rail.block(0, 4, 4, 4).norm(), 0.0) << f;  // the two rails are uncoupled
   EXPECT_GE(relative_min_dissipation(r.rail), -1e-10) << f;
   EXPECT_GE(relative_min_dissipation(r.wheel + r.rail), -1e-10) << f;
