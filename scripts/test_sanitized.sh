@@ -7,7 +7,8 @@
 #   ROLLNOISE_JOBS=1        parallel jobs of the build and of ctest (default: nproc)
 #   ROLLNOISE_SANITIZE_ALL=1  also the excluded tests below (12.5 more CPU minutes)
 #
-# Build: -O1 (the usual sanitizer level) with line tables only (-g1: the reports keep file:line and
+# Build: the libraries and the program as a unity build (CMakeLists.txt, ROLLNOISE_UNITY_BUILD: about
+# half their compile time), -O1 (the usual sanitizer level) with line tables only (-g1: the reports keep file:line and
 # inlined frames, and a file compiles about a third faster than with -g); no -DNDEBUG, so Eigen's
 # index assertions are on, and _GLIBCXX_ASSERTIONS checks std::vector indices within the capacity,
 # which AddressSanitizer cannot see. No benchmarks. Any sanitizer report ends its process with
@@ -44,6 +45,14 @@
 #   SquealRoutes.*WithTheFeWheel (route 1 against route 2 on curve_500m with its FE wheel: the FE
 #   modes and twice the loop modes of the table wheel); the routes' code runs sanitized in the
 #   table-wheel SquealRoutes test, the FE modes in WheelFe.* and LowestModesSolver.*.
+#   Repeats of a computation another sanitized test makes (ctest runs each test in its own process,
+#   so a study shared by several tests of one file is recomputed per test): GridStudy.* except
+#   CreepCoefficientsAt1kHz* and AverageSamplingLeaves* (the same five-grid study, ~52 s each);
+#   AverageSampling.UnsteadySolverAgrees* (104 s) and NonHertzianContact.LinearModelSpectra* (106 s:
+#   `validate` on the S1002 patch), whose unsteady runs and linear models run sanitized in
+#   CreepageSampling.UnsteadySolverAgrees*, TransientRolling.* and ValidateCommand.*;
+#   postprocess_plots_smoke (173 s: the plot scripts, in Python; the commands it runs are sanitized
+#   in the CLI tests).
 #   The waveguide rail: RailWaveguide.{FreeRailWavenumbers,CentredVerticalReceptance,EccentricContact}*,
 #   RailWaveguideReduced.*, WaveguideRailModel.*, WaveguideRailAtContact.*: dense eigenproblems of
 #   n = 621 (zgeev, the Ritz basis' generalised symmetric ones); RailWaveguidePatch.*,
@@ -52,10 +61,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${ROLLNOISE_JOBS:-$(nproc)}
-EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|SquealFallingFriction\.TightCurveCaseSquealsInAxialModesOnly|WheelFe\.AxialFamilyNearTheUnverified|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|FreeRailCutOnReference\.|RingReference\.|RailSectionFile\.ShippedUic60|SquealRoutes\.Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel|WaveguideRailAtContact\.|WaveguideBogie\.'
+EXCLUDE='LinearModel\.(FastSweepAgrees|FastSweepHessenbergAndDirect|EveryMeanState)|NormalLoad\.(FastSweepEquals|LinearModelAgrees)|ConditioningStress\.|LaplaceCoefficients\.SpectralRadius|FallingFrictionModel\.(SweepRoutes|ConstantFrictionLimits)|FallingFrictionSqueal\.|SquealFallingFriction\.TightCurveCaseSquealsInAxialModesOnly|WheelFe\.AxialFamilyNearTheUnverified|AnnularPlate\.FrequencyConverges|RailWaveguide\.(FreeRailWavenumbers|CentredVerticalReceptance|EccentricContact)|NoiseCommand\.WritesEveryWheels|WheelContact\.FourWheels|ContactSetLoop\.RailTransferToTheOtherAxle|ContactSetSqueal\.(WheelsetWithConstantFriction|NegativeCreepDamping)|SquealKalker\.|WheelFeContact\.|FeWheelLoop\.|TreadShapesFile\.Exported|RailWaveguideReduced\.|WaveguideRailModel\.|DiscreteTrack\.ToeplitzSolveEqualsDenseLu|BogieNoise\.|SecondPatch\.|StudyWheels\.|WheelsetPassivity\.|DiscreteWaveguide\.|FreeRailCutOn\.|FreeRailCutOnReference\.|RingReference\.|RailSectionFile\.ShippedUic60|SquealRoutes\.Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel|WaveguideRailAtContact\.|WaveguideBogie\.|GridStudy\.(TransientResponseAt1kHz|PhaseCorrectedCreepCoefficients|TransientAgreesWithLinearModel|MidstepCreepCoefficients)|AverageSampling\.UnsteadySolverAgrees|NonHertzianContact\.LinearModelSpectra|postprocess_plots_smoke'
 
 start=$SECONDS
-cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S . -B build-asan -DROLLNOISE_SANITIZE=ON -DROLLNOISE_UNITY_BUILD=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -D_GLIBCXX_ASSERTIONS" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1" \
   -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON >/dev/null
 cmake --build build-asan -j"$JOBS"

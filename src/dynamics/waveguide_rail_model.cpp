@@ -155,7 +155,7 @@ std::vector<Receptance4> WaveguideRailModel::between(
 
 namespace {
 
-cdouble checked_omega(double frequency) {
+cdouble checked_complex_omega(double frequency) {
   if (!std::isfinite(frequency) || !(frequency > 0.0))
     throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
   return cdouble(angular(frequency), 0.0);
@@ -226,7 +226,7 @@ std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_
 std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
-  for (double f : frequencies) checked_omega(f);
+  for (double f : frequencies) checked_complex_omega(f);
   const PointSets sets = point_sets(pairs);
   const std::vector<double> grid =
       interpolate ? direct_grid(frequencies, options_.grid_per_octave) : std::vector<double>{};
@@ -240,7 +240,7 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     for (std::size_t p = 0; p < pairs.size(); ++p)
       if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
     for (double f : direct) {
-      const std::vector<Receptance4> r = between(*st, checked_omega(f), within);
+      const std::vector<Receptance4> r = between(*st, checked_complex_omega(f), within);
       for (std::size_t i = 0; i < which.size(); ++i) values[which[i]].push_back(r[i]);
     }
   }
@@ -280,7 +280,7 @@ RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
 
 std::vector<Receptance4> WaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
-  const RailWaves w = rail_.waves(checked_omega(frequency));
+  const RailWaves w = rail_.waves(checked_complex_omega(frequency));
   std::vector<Receptance4> out;
   for (const auto& [xr, xe] : pairs)
     out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
@@ -295,7 +295,7 @@ Receptance4 WaveguideRailModel::line_transfer_laplace(cdouble s, double x_respon
 
 Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,
                                                    double contact_angle) const {
-  return between(*station({{offset_y, contact_angle}}), checked_omega(frequency), {{0, 0, 0.0}})
+  return between(*station({{offset_y, contact_angle}}), checked_complex_omega(frequency), {{0, 0, 0.0}})
       .front();
 }
 
@@ -311,7 +311,7 @@ Receptance4 WaveguideRailModel::contact_transfer(double frequency, double offset
   // one basis per unordered pair: (b, a) at -x is the transpose of (a, b) at x
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
   if (b < a) return contact_transfer(frequency, offset_b, angle_b, offset_a, angle_a, -x).transpose();
-  return between(*station({a, b}), checked_omega(frequency), {{0, 1, x}}).front();
+  return between(*station({a, b}), checked_complex_omega(frequency), {{0, 1, x}}).front();
 }
 
 Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offset_a,

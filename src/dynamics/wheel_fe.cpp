@@ -5,13 +5,13 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "fem/eigen_solve.hpp"
 
 namespace rollnoise::dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // The contract of the FE wheel: every field is checked with its key where the case is read
 // (io/wheel_fe_case.cpp, the schema, io/wheel_section_file.cpp).

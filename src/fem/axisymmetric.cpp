@@ -6,12 +6,12 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/constants.hpp"
 #include "fem/triangle6.hpp"
 
 namespace rollnoise::fem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Isotropic elasticity in the strain order (e_r, e_z, e_t, g_rz, g_rt, g_tz).
 Eigen::Matrix<double, 6, 6> elasticity(const IsotropicMaterial& m) {

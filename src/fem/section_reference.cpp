@@ -4,11 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace rollnoise::fem {
+#include "core/constants.hpp"
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
+namespace rollnoise::fem {
 
 PlaneSectionProperties section_properties(const std::vector<Eigen::Vector2d>& polygon) {
   // Green's theorem over the edges (a_i, b_i) -> (a_j, b_j), c = a_i b_j - a_j b_i:

@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/output_files.hpp"
 
 namespace rollnoise::io {
 namespace {
 
-constexpr double kMm = 1e3;    // m -> mm
 constexpr double kMpa = 1e-6;  // Pa -> N/mm^2
 
 std::string solver_line() {

@@ -6,14 +6,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/contact_input.hpp"
 
 namespace rollnoise::io {
 namespace {
 
-constexpr double kMm = 1e3;
-constexpr double kPi = 3.14159265358979323846;
 
 std::string numbers(const std::vector<double>& v) {
   std::string s = " ";

@@ -19,7 +19,7 @@ std::vector<double> differences(const std::vector<Eigen::Vector3d>& a,
   return flatten(d, n);
 }
 
-const char* kConvention =
+const char* kForceConvention =
     "rollnoise's conventions: forces on the wheel (module 1: minus CONTACT's forces on the rail), "
     "Mz in N m";
 
@@ -41,7 +41,7 @@ void write_contact_steady_reference(Hdf5Writer& w, const ContactReference& ref) 
           "N, N, N m (4 digits)");
   w.write("/reference/contact/normal_force", ref.normal_force.front(), "N");
   w.attribute("/reference/contact", "out_file", ref.out_path);
-  w.attribute("/reference/contact", "conventions", kConvention);
+  w.attribute("/reference/contact", "conventions", kForceConvention);
   if (!ref.first_tractions) return;
   const ContactTractionField t = traction_field(*ref.first_tractions, ref.module);
   const std::size_t nx = std::size_t(t.nx), ny = std::size_t(t.ny);
@@ -69,7 +69,7 @@ void write_contact_validation(Hdf5Writer& w, const ContactReference& ref,
   w.write("/validate/contact/linear_minus_contact", differences(linear, ref.force, n), {n, 3},
           "N, N, N m");
   w.attribute("/validate/contact", "out_file", ref.out_path);
-  w.attribute("/validate/contact", "conventions", kConvention);
+  w.attribute("/validate/contact", "conventions", kForceConvention);
   w.write("/validate/contact/errors/rms_relative",
           std::vector<double>{e.rms_relative(0), e.rms_relative(1), e.rms_relative(2)}, {3},
           "RMS(linear - CONTACT) / RMS(CONTACT variation), t >= analysis_start; Fx, Fy, Mz; NaN: "

@@ -61,7 +61,7 @@ void flatten(const toml::table& t, const std::string& prefix, std::vector<Leaf>&
   }
 }
 
-std::string describe(const toml::node& n) {
+std::string describe_entry(const toml::node& n) {
   std::ostringstream os;
   if (n.is_string())
     os << '"' << n.as_string()->get() << '"';
@@ -116,7 +116,7 @@ ParameterTable ParameterTable::parse(const std::string& text, const std::string&
       const std::string where = origin + ":" + std::to_string(l.line);
       throw InputError(
           where + ":" + l.key,
-          where + ": key '" + l.key + "' needs a finite number, got " + describe(*l.node));
+          where + ": key '" + l.key + "' needs a finite number, got " + describe_entry(*l.node));
     }
     p.values_.emplace(l.key, e);
   }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_schema.hpp"
@@ -16,7 +17,6 @@ namespace rollnoise::io {
 namespace {
 
 namespace fs = std::filesystem;
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct StudyError {
   std::string file;

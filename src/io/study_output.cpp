@@ -10,6 +10,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
 #include "io/hdf5_reader.hpp"
@@ -22,7 +23,6 @@
 namespace rollnoise::io {
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string csv_cell(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;

@@ -6,6 +6,7 @@
 #include "contact/normal_solver.hpp"
 #include "contact/steady_rolling.hpp"
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "noise/contact_receptance.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/roughness.hpp"
@@ -13,8 +14,6 @@
 namespace rollnoise::pipeline {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 }  // namespace
 

@@ -9,16 +9,11 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "noise/kalker_linear.hpp"
 #include "pipeline/statespace.hpp"
 
 namespace rollnoise::pipeline {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-}  // namespace
 
 void check_contact_stability(double radius, double dt) {
   // The poles of f are the z_p with 1/z_p an eigenvalue of M0^{-1} M1; a radius rho >= 1 means the
