@@ -61,7 +61,7 @@ void expect_reciprocal_and_passive(const rd::RailModel& rail, double f,
   EXPECT_LE((r.rail - r.rail.transpose()).norm(), 1e-8 * r.rail.norm()) << f;
   EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-8 * r.wheel.norm()) << f;
   EXPECT_GT(r.rail.block(0, 8, 4, 4).norm(), 0.0) << f;  // the rail between the axles
-  if (cs.size() > 4) {  // tread, flange
+  if (cs.size() > 4) {                                   // tread, flange
     EXPECT_GT(r.rail.block(0, 16, 4, 4).norm(), 0.0) << f;
   }
   EXPECT_EQ(r.rail.block(0, 4, 4, 4).norm(), 0.0) << f;  // the two rails are uncoupled
@@ -80,9 +80,10 @@ TEST(WaveguideBogie, AssembledReceptanceIsReciprocalAndPassive) {
 }
 
 // The same on discrete supports (N = 10), the four wheels and the flange patch, 500 Hz and 1.5 kHz:
-// the section is loaded at each contact's own point (DiscreteWaveguideRailModel::contact_transfers),
-// so tread and flange patch are two points of the head, not the crown's four degrees of freedom
-// moved rigidly to both (which made the rail block singular).
+// the section is loaded at each contact's own point
+// (DiscreteWaveguideRailModel::contact_transfers), so tread and flange patch are two points of the
+// head, not the crown's four degrees of freedom moved rigidly to both (which made the rail block
+// singular).
 TEST(WaveguideBogie, AssembledReceptanceOnDiscreteSupportsIsReciprocalAndPassive) {
   for (double f : {500.0, 1500.0})
     expect_reciprocal_and_passive(discrete_rail(), f, bogie_contacts());
