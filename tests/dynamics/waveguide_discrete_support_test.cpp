@@ -229,7 +229,8 @@ TEST(DiscreteWaveguide, AtTheContactTendsToTheContinuousWaveguideAsTheSeatsSofte
 // sleeper and mid-span (measured 7.6e-11 and 1.4e-2 at 500 Hz); and between the gauge corner at
 // 0.13 m and the crown at 2.81 m the transfer is the transpose of the one the other way (1e-8).
 // A centred contact (offset 0, angle 0) is loaded at the crown with the crown's patch and the
-// same Ritz basis: its receptance is the crown receptance (receptance()) to 1e-10.
+// same Ritz basis: its receptance is the crown receptance (receptance()) to 1e-10. Squeal's
+// laplace_transfers at s = i omega equal contact_transfers at omega to 1e-9.
 TEST(DiscreteWaveguide, AtTheEccentricContactReciprocalAndPassive) {
   const rd::DiscreteWaveguideRailModel rail(track_with(10), coarse(), 0.3);
   const rd::Receptance4 crown = rail.receptance(1000.0);
@@ -247,6 +248,12 @@ TEST(DiscreteWaveguide, AtTheEccentricContactReciprocalAndPassive) {
     const rd::Receptance4 ba =
         rail.contact_transfer(f, 0.0, 0.0, 2.81, kCornerOffset, kCornerAngle, 0.13);
     EXPECT_LT((ab - ba.transpose()).norm(), 1e-8 * ab.norm()) << f;
+    // squeal's continuation at s = i omega is the same 6x6 (1e-9)
+    const rd::RailContact c{0.3, kCornerOffset, kCornerAngle};
+    const rd::Receptance6 real = rail.contact_transfers({f}, {{c, c}}).front().front();
+    const rd::Receptance6 laplace =
+        rail.laplace_transfers({{c, c}})(cd(0.0, 2.0 * M_PI * f)).front();
+    EXPECT_LT((laplace - real).norm(), 1e-9 * real.norm()) << f;
   }
 }
 
