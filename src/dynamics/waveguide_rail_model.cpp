@@ -381,13 +381,13 @@ Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto [offset_y, angle] = points[i];
     if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
-      throw NumericalError("waveguide rail: a contact needs a finite offset and |angle| < pi/2, "
-                           "got " + std::to_string(offset_y) + " m, " + std::to_string(angle) +
-                           " rad");
+      throw NumericalError(
+          "waveguide rail: a contact needs a finite offset and |angle| < pi/2, got " +
+          std::to_string(offset_y) + " m, " + std::to_string(angle) + " rad");
     const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));  // noise::contact_frame
-    loads.middleCols(4 * i, 4) = section.patch_loads(
-        outline_contact_point(outline, options.head_bottom, offset_y, angle),
-        options.patch_half_width, normal, options.head_bottom);
+    loads.middleCols(4 * i, 4) =
+        section.patch_loads(outline_contact_point(outline, options.head_bottom, offset_y, angle),
+                            options.patch_half_width, normal, options.head_bottom);
   }
   return loads;
 }
