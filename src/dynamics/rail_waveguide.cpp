@@ -514,4 +514,12 @@ int nearest_boundary_node(const fem::QuadraticTriangleMesh& mesh, const Eigen::V
   return best;
 }
 
+Eigen::MatrixXcd RailWaveguide::wave_amplitudes(const RailWaves& w, const Eigen::MatrixXd& d,
+                                                double sign) const {
+  // As transfer(): the response side's rotation i s on u_x (the load side's -i s = i (-s)).
+  Eigen::MatrixXcd q = project(d).cast<cdouble>();
+  q.topRows(axial_) *= cdouble(0.0, sign < 0.0 ? -1.0 : 1.0);
+  return w.shapes.transpose() * q;
+}
+
 }  // namespace rollnoise::dynamics

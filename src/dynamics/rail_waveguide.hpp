@@ -174,6 +174,12 @@ class RailWaveguide {
   Receptance4 contact_receptance(const RailWaves& w, const Eigen::MatrixXd& loads_a,
                                  const Eigen::MatrixXd& loads_b, double x) const;
 
+  /// Eq. (W4) factored for many distances between the same distributions: the waves'
+  /// participation A_s(d) = phi^T P^s T V^T d (s = +1 or -1, T = i on the u_x rows), so that
+  /// transfer(w, r, f, x) = A_s(r)^T diag(-i e^{-i k_j |x|} / d_j) A_{-s}(f), s the sign of x
+  /// (x = 0: s = +1). Used by the discrete supports (waveguide_discrete_support.hpp).
+  Eigen::MatrixXcd wave_amplitudes(const RailWaves& w, const Eigen::MatrixXd& d, double sign) const;
+
  private:
   fem::QuadraticTriangleMesh mesh_;
   RailMaterial material_;

@@ -3,6 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -40,11 +43,13 @@ FootAttachment foot_attachment(const RailWaveguide& rail) {
   double inertia = 0.0;
   for (int i : edges) {
     const auto& e = mesh.boundary_edges[i];
-    const double y0 = mesh.nodes[e[0]].x(), y2 = mesh.nodes[e[2]].x(), half = 0.5 * std::abs(y2 - y0);
+    const double y0 = mesh.nodes[e[0]].x(), y2 = mesh.nodes[e[2]].x(),
+                 half = 0.5 * std::abs(y2 - y0);
     for (int q = 0; q < 3; ++q) {
       const double xi = gx[q], y = 0.5 * (y0 + y2) + 0.5 * (y2 - y0) * xi - yf;
       const double N[3] = {0.5 * xi * (xi - 1.0), 1.0 - xi * xi, 0.5 * xi * (xi + 1.0)};
-      for (int k = 0; k < 3; ++k) a.loads(RailWaveguide::dof(e[k], 2), 3) += gw[q] * half * N[k] * y;
+      for (int k = 0; k < 3; ++k)
+        a.loads(RailWaveguide::dof(e[k], 2), 3) += gw[q] * half * N[k] * y;
       inertia += gw[q] * half * y * y;
     }
   }
@@ -57,7 +62,9 @@ DiscretelySupportedWaveguide::DiscretelySupportedWaveguide(RailWaveguide free_ra
                                                            FootAttachment foot,
                                                            const FootSupport& support,
                                                            int supports_each_side)
-    : rail_(std::move(free_rail)), foot_(std::move(foot)), support_(support),
+    : rail_(std::move(free_rail)),
+      foot_(std::move(foot)),
+      support_(support),
       n_(supports_each_side) {
   support_.vertical.validate("track.support.vertical");
   support_.lateral.validate("track.support.lateral");
@@ -69,51 +76,120 @@ DiscretelySupportedWaveguide::DiscretelySupportedWaveguide(RailWaveguide free_ra
     throw InputError("rail_section", "foot attachment does not match the rail's mesh");
 }
 
+namespace {
+
+// A distribution's wave amplitudes for both signs of x (RailWaveguide::wave_amplitudes).
+struct Amplitudes {
+  Eigen::MatrixXcd plus, minus;
+};
+
+Amplitudes amplitudes(const RailWaveguide& rail, const RailWaves& w, const Eigen::MatrixXd& d) {
+  return {rail.wave_amplitudes(w, d, 1.0), rail.wave_amplitudes(w, d, -1.0)};
+}
+
+// Eq. (W4)'s weights -i e^{-i k_j |x|} / d_j.
+Eigen::VectorXcd green_weights(const RailWaves& w, double x) {
+  const cdouble I(0.0, 1.0);
+  return (-I * (-I * w.wavenumbers * std::abs(x)).array().exp() / w.norms.array()).matrix();
+}
+
+// Eq. (W4) between the response amplitudes r and the load amplitudes f at x = x_r - x_l.
+Eigen::MatrixXcd green(const RailWaves& w, const Amplitudes& r, const Amplitudes& f, double x) {
+  const bool ahead = x >= 0.0;
+  return (ahead ? r.plus : r.minus).transpose() * green_weights(w, x).asDiagonal() *
+         (ahead ? f.minus : f.plus);
+}
+
+// One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and the LU of
+// I + A K (Eq. D2), whose blocks g(d L), d = 0..2N, depend on the seats' spacing only.
+struct Seats {
+  RailWaves waves;
+  Amplitudes foot;
+  Eigen::Vector4cd stiffness;
+  Eigen::PartialPivLU<Eigen::MatrixXcd> lu;
+  int n;
+  double spacing;
+};
+
+Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const FootSupport& support,
+            int n, cdouble omega) {
+  Seats s;
+  s.waves = rail.waves(omega);
+  s.foot = amplitudes(rail, s.waves, attachment.loads);
+  s.n = n;
+  s.spacing = support.sleeper_spacing;
+  const int m = 2 * n + 1;
+  const cdouble kz = support.vertical.dynamic_stiffness(omega);
+  s.stiffness << support.longitudinal.dynamic_stiffness(omega),
+      support.lateral.dynamic_stiffness(omega), kz, kz * attachment.roll_arm_squared;
+  std::vector<Eigen::Matrix4cd> g(m);  // g(-x) = g(x)^T, reciprocity of Eq. W4
+  for (int d = 0; d < m; ++d) g[d] = green(s.waves, s.foot, s.foot, d * s.spacing);
+  Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(4 * m, 4 * m);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const Eigen::Matrix4cd a = i >= j ? g[i - j] : g[j - i].transpose();
+      S.block<4, 4>(4 * i, 4 * j) += a * s.stiffness.asDiagonal();
+    }
+  s.lu.compute(S);
+  return s;
+}
+
+// Eqs. (D2)-(D3) with the seats of one frequency: the response r at x_r per load f at x_l, the
+// 2N + 1 seats nearest the midpoint.
+Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double x_r,
+                                    const Amplitudes& f, double x_l) {
+  const int m = 2 * s.n + 1;
+  const long first = std::lround(0.5 * (x_r + x_l) / s.spacing) - s.n;
+  Eigen::MatrixXcd B(4 * m, f.plus.cols());
+  for (int i = 0; i < m; ++i)
+    B.middleRows(4 * i, 4) = green(s.waves, s.foot, f, (first + i) * s.spacing - x_l);
+  const Eigen::MatrixXcd v = s.lu.solve(B);
+  // Eq. (D3): sum_n G_rf(x_r - x_n) K v_n = A_s(r)^T sum_n diag(weights) A_-s(foot) K v_n, the
+  // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
+  Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), B.cols());
+  Eigen::MatrixXcd ahead = behind;
+  for (int i = 0; i < m; ++i) {
+    const double x = x_r - (first + i) * s.spacing;
+    const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
+    if (x >= 0.0)
+      behind += green_weights(s.waves, x).asDiagonal() * (s.foot.minus * Kv);
+    else
+      ahead += green_weights(s.waves, x).asDiagonal() * (s.foot.plus * Kv);
+  }
+  return green(s.waves, r, f, x_r - x_l) - r.plus.transpose() * behind -
+         r.minus.transpose() * ahead;
+}
+
+}  // namespace
+
 Eigen::MatrixXcd DiscretelySupportedWaveguide::transfer(cdouble omega,
                                                         const Eigen::MatrixXd& response,
                                                         double x_response,
                                                         const Eigen::MatrixXd& load,
                                                         double x_load) const {
-  const RailWaves w = rail_.waves(omega);
-  const double L = support_.sleeper_spacing;
-  const int m = 2 * n_ + 1, c = static_cast<int>(load.cols());
-  const long centre = std::lround(0.5 * (x_response + x_load) / L);
-  // Eq. (D1).
-  const cdouble kz = support_.vertical.dynamic_stiffness(omega);
-  const Eigen::Vector4cd K(support_.longitudinal.dynamic_stiffness(omega),
-                           support_.lateral.dynamic_stiffness(omega), kz,
-                           kz * foot_.roll_arm_squared);
-  // A's blocks g(d L), d = 0..2N (g(-x) = g(x)^T, reciprocity of Eq. W4).
-  std::vector<Eigen::MatrixXcd> g(m);
-  for (int d = 0; d < m; ++d) g[d] = rail_.transfer(w, foot_.loads, foot_.loads, d * L);
-  Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(4 * m, 4 * m);  // I + A K, Eq. (D2)
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      const Eigen::Matrix4cd a = i >= j ? g[i - j] : g[j - i].transpose();
-      S.block<4, 4>(4 * i, 4 * j) += a * K.asDiagonal();
-    }
-  Eigen::MatrixXcd B(4 * m, c);
-  std::vector<double> x(m);
-  for (int i = 0; i < m; ++i) {
-    x[i] = (centre - n_ + i) * L;
-    B.middleRows(4 * i, 4) = rail_.transfer(w, foot_.loads, load, x[i] - x_load);
-  }
-  const Eigen::MatrixXcd v = S.partialPivLu().solve(B);
-  // Eq. (D3).
-  Eigen::MatrixXcd H = rail_.transfer(w, response, load, x_response - x_load);
-  for (int i = 0; i < m; ++i)
-    H -= rail_.transfer(w, response, foot_.loads, x_response - x[i]) * K.asDiagonal() *
-         v.middleRows(4 * i, 4);
-  return H;
+  const Seats s = seats(rail_, foot_, support_, n_, omega);
+  return supported_transfer(s, amplitudes(rail_, s.waves, response), x_response,
+                            amplitudes(rail_, s.waves, load), x_load);
 }
 
-DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(
-    const TrackParameters& track, const WaveguideRailOptions& o) {
+std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
+    cdouble omega, const Eigen::MatrixXd& points,
+    const std::vector<std::pair<double, double>>& positions) const {
+  const Seats s = seats(rail_, foot_, support_, n_, omega);
+  const Amplitudes p = amplitudes(rail_, s.waves, points);
+  std::vector<Eigen::MatrixXcd> out;
+  for (const auto& [x_r, x_l] : positions) out.push_back(supported_transfer(s, p, x_r, p, x_l));
+  return out;
+}
+
+DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackParameters& track,
+                                                                    const WaveguideRailOptions& o) {
   if (!(o.mesh_size > 0.0) || !(o.patch_half_width > 0.0))
     throw InputError("track.model", "waveguide rail: mesh size and load patch must be > 0");
-  const std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
-  const RailWaveguide full(fem::mesh_polygon(outline, o.mesh_size),
-                           rail_material(track, o.poisson_ratio), std::nullopt);
+  std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
+  RailWaveguide full(fem::mesh_polygon(outline, o.mesh_size), rail_material(track, o.poisson_ratio),
+                     std::nullopt);
+  RailReductionModes modes = full.reduction_modes(o.reduction);
   double top = full.mesh().nodes.at(0).y();
   for (const auto& p : full.mesh().nodes) top = std::max(top, p.y());
   Eigen::MatrixXd crown = full.patch_loads(Eigen::Vector2d(0.0, top), o.patch_half_width,
@@ -123,9 +199,10 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(
   loads << crown, foot.loads;
   const FootSupport support{track.vertical_support, track.lateral_support,
                             track.longitudinal_support, track.sleeper_spacing};
-  return Parts{std::move(crown),
-               DiscretelySupportedWaveguide(full.reduced(o.reduction, loads), std::move(foot),
-                                            support, track.supports_each_side)};
+  DiscretelySupportedWaveguide rail(full.reduced(o.reduction, loads, modes), std::move(foot),
+                                    support, track.supports_each_side);
+  return Parts{
+      o, std::move(outline), std::move(full), std::move(modes), std::move(crown), std::move(rail)};
 }
 
 DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& track,
@@ -138,20 +215,140 @@ DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& tr
     throw InputError("track.position", "contact position along the rail must be >= 0");
 }
 
+std::shared_ptr<const DiscreteWaveguideRailModel::Station> DiscreteWaveguideRailModel::station(
+    const std::vector<std::pair<double, double>>& points) const {
+  // the points' loads and the foot's in one Ritz basis of the free rail (as build()'s crown)
+  const Eigen::MatrixXd contacts =
+      contact_point_loads(parts_.section, parts_.outline, parts_.options, points);
+  const DiscretelySupportedWaveguide& crown = parts_.rail;
+  Eigen::MatrixXd loads(parts_.section.dofs(), contacts.cols() + 4);
+  loads << contacts, crown.foot().loads;
+  return std::make_shared<const Station>(
+      Station{DiscretelySupportedWaveguide(
+                  parts_.section.reduced(parts_.options.reduction, loads, parts_.modes),
+                  crown.foot(), crown.support(), crown.supports_each_side()),
+              contacts});
+}
+
+std::vector<Receptance4> DiscreteWaveguideRailModel::between(
+    const Station& s, cdouble omega,
+    const std::vector<std::tuple<int, int, double, double>>& pairs) {
+  std::vector<std::pair<double, double>> positions;  // distinct (x_a, x_b)
+  std::vector<std::size_t> which;
+  for (const auto& [a, b, xa, xb] : pairs) {
+    const std::pair<double, double> x(xa, xb);
+    const auto it = std::find(positions.begin(), positions.end(), x);
+    which.push_back(static_cast<std::size_t>(it - positions.begin()));
+    if (it == positions.end()) positions.push_back(x);
+  }
+  const std::vector<Eigen::MatrixXcd> H = s.rail.transfers(omega, s.loads, positions);
+  std::vector<Receptance4> out;
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    out.push_back(H[which[p]].block<4, 4>(4 * std::get<0>(pairs[p]), 4 * std::get<1>(pairs[p])));
+  return out;
+}
+
+namespace {
+
+cdouble checked_omega(double frequency) {
+  if (!std::isfinite(frequency) || !(frequency > 0.0))
+    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
+  return cdouble(angular(frequency), 0.0);
+}
+
+cdouble checked_laplace(cdouble s) {
+  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
+    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
+  return cdouble(0.0, -1.0) * s;  // i omega = s
+}
+
+// The pairs of set k of `sets` as (point a, point b, x_a, x_b), and their indices in `pairs`.
+std::vector<std::tuple<int, int, double, double>> pairs_of_set(
+    const RailPointSets& sets, const std::vector<RailContactPair>& pairs, int k,
+    std::vector<std::size_t>& which) {
+  std::vector<std::tuple<int, int, double, double>> out;
+  which.clear();
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    if (sets.set[p] != k) continue;
+    out.emplace_back(std::get<0>(sets.within[p]), std::get<1>(sets.within[p]), pairs[p].first.x,
+                     pairs[p].second.x);
+    which.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transfers(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs, bool) const {
+  for (double f : frequencies) checked_omega(f);
+  const RailPointSets sets = rail_point_sets(pairs);
+  std::vector<std::vector<Receptance6>> out(frequencies.size(),
+                                            std::vector<Receptance6>(pairs.size()));
+  for (std::size_t k = 0; k < sets.points.size(); ++k) {
+    const std::shared_ptr<const Station> st = station(sets.points[k]);
+    std::vector<std::size_t> which;
+    const auto within = pairs_of_set(sets, pairs, static_cast<int>(k), which);
+    for (std::size_t i = 0; i < frequencies.size(); ++i) {
+      const std::vector<Receptance4> r = between(*st, checked_omega(frequencies[i]), within);
+      for (std::size_t j = 0; j < which.size(); ++j) {
+        const RailContactPair& pair = pairs[which[j]];
+        out[i][which[j]] =
+            from_contact_frames(r[j], pair.first.contact_angle, pair.second.contact_angle);
+      }
+    }
+  }
+  return out;
+}
+
+RailModel::LaplaceTransfers DiscreteWaveguideRailModel::laplace_transfers(
+    const std::vector<RailContactPair>& pairs) const {
+  const RailPointSets sets = rail_point_sets(pairs);
+  std::vector<std::shared_ptr<const Station>> stations;
+  std::vector<std::vector<std::tuple<int, int, double, double>>> within;
+  std::vector<std::vector<std::size_t>> which(sets.points.size());
+  for (std::size_t k = 0; k < sets.points.size(); ++k) {
+    stations.push_back(station(sets.points[k]));
+    within.push_back(pairs_of_set(sets, pairs, static_cast<int>(k), which[k]));
+  }
+  return [pairs, stations, within, which](cdouble s) {
+    const cdouble omega = checked_laplace(s);
+    std::vector<Receptance6> out(pairs.size());
+    for (std::size_t k = 0; k < stations.size(); ++k) {
+      const std::vector<Receptance4> r = between(*stations[k], omega, within[k]);
+      for (std::size_t j = 0; j < which[k].size(); ++j) {
+        const RailContactPair& pair = pairs[which[k][j]];
+        out[which[k][j]] =
+            from_contact_frames(r[j], pair.first.contact_angle, pair.second.contact_angle);
+      }
+    }
+    return out;
+  };
+}
+
+Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, double offset_a,
+                                                         double angle_a, double x_a,
+                                                         double offset_b, double angle_b,
+                                                         double x_b) const {
+  const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
+  if (a == b) return between(*station({a}), checked_omega(frequency), {{0, 0, x_a, x_b}}).front();
+  const bool ordered = a < b;  // the points sorted, as rail_point_sets gives them
+  const std::shared_ptr<const Station> st =
+      station(ordered ? std::vector{a, b} : std::vector{b, a});
+  return between(*st, checked_omega(frequency), {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
+      .front();
+}
+
 Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {
   return parts_.rail.transfer(omega, parts_.crown, x_, parts_.crown, x_);
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance(double frequency) const {
-  if (!std::isfinite(frequency) || !(frequency > 0.0))
-    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
-  return at(cdouble(angular(frequency), 0.0));
+  return at(checked_omega(frequency));
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance_laplace(cdouble s) const {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  return at(cdouble(0.0, -1.0) * s);  // i omega = s
+  return at(checked_laplace(s));
 }
 
 Receptance4 DiscreteWaveguideRailModel::transfer(double frequency, double x_response,
@@ -161,21 +358,16 @@ Receptance4 DiscreteWaveguideRailModel::transfer(double frequency, double x_resp
 
 std::vector<Receptance4> DiscreteWaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
-  if (!std::isfinite(frequency) || !(frequency > 0.0))
-    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
   std::vector<Receptance4> out;
-  for (const auto& [xr, xe] : pairs)
-    out.push_back(parts_.rail.transfer(cdouble(angular(frequency), 0.0), parts_.crown, xr,
-                                       parts_.crown, xe));
+  for (const Eigen::MatrixXcd& h :
+       parts_.rail.transfers(checked_omega(frequency), parts_.crown, pairs))
+    out.push_back(h);
   return out;
 }
 
 Receptance4 DiscreteWaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
                                                               double x_load) const {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  return parts_.rail.transfer(cdouble(0.0, -1.0) * s, parts_.crown, x_response, parts_.crown,
-                              x_load);
+  return parts_.rail.transfer(checked_laplace(s), parts_.crown, x_response, parts_.crown, x_load);
 }
 
 }  // namespace rollnoise::dynamics

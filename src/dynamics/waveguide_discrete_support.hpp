@@ -27,10 +27,19 @@
 // A_nm = g(x_n - x_m) (block Toeplitz, g(-x) = g(x)^T), B_e,n = G_fe(x_n - x_e), G_rf(x) the
 // response at the rail's response distributions to a foot load. Solved by a dense LU (4(2N + 1)
 // unknowns; N = 60: 484). Truncation as in the beam model: the 2N + 1 seats nearest the midpoint of
-// the two positions, the rail free beyond them.
+// the two positions, the rail free beyond them. I + A K depends on the seats' spacing only, not on
+// where they are centred, so one LU per frequency serves every pair of positions.
+//
+// At the contacts (DiscreteWaveguideRailModel::contact_transfers): the distributions of Eq. (D3)
+// are the contact patches' loads at the contacts' own points of the head, in their frames (as the
+// continuous waveguide, waveguide_rail_model.hpp), G, G_fe, G_rf the free rail's Green's function
+// between them and the foot (Eq. W4 with the points' and the foot's loads in one Ritz basis); the
+// 6 x 6 is T_a H_ab T_b^T (G2 of rail_contact.hpp). No rigid move.
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -60,8 +69,16 @@ class DiscretelySupportedWaveguide {
   /// a sleeper (0 over a sleeper, L/2 mid-span).
   Eigen::MatrixXcd transfer(cdouble omega, const Eigen::MatrixXd& response, double x_response,
                             const Eigen::MatrixXd& load, double x_load) const;
+  /// Eq. (D3) between the distributions `points` (dofs() rows; responses and loads alike) for each
+  /// (x_response, x_load) of `positions`, at omega: one wave solution and one LU of I + A K for
+  /// all. out[p] is points.cols() square; transfers(w, P, {{x, y}})[0] = transfer(w, P, x, P, y).
+  std::vector<Eigen::MatrixXcd> transfers(
+      cdouble omega, const Eigen::MatrixXd& points,
+      const std::vector<std::pair<double, double>>& positions) const;
 
   const RailWaveguide& free_rail() const { return rail_; }
+  const FootAttachment& foot() const { return foot_; }
+  const FootSupport& support() const { return support_; }
   int supports_each_side() const { return n_; }
 
  private:
@@ -71,8 +88,9 @@ class DiscretelySupportedWaveguide {
   int n_;
 };
 
-/// The discretely supported waveguide rail as the loop's RailModel: the 4x4 receptance at the crown
-/// (WaveguideRailModel's load patch, order and frame) at the contact position along the rail.
+/// The discretely supported waveguide rail as the loop's RailModel: receptance() and the line
+/// transfers are the 4x4 at the crown (WaveguideRailModel's load patch, order and frame);
+/// contact_transfers() and laplace_transfers() load the section at the contacts themselves.
 class DiscreteWaveguideRailModel : public RailModel {
  public:
   /// `contact_position`: from a sleeper (m; 0 over a sleeper, L/2 mid-span).
@@ -83,20 +101,46 @@ class DiscreteWaveguideRailModel : public RailModel {
   Receptance4 receptance_laplace(cdouble s) const override;
   /// The 4x4 between crown loads at x_response and x_load along the rail (m, from a sleeper).
   Receptance4 transfer(double frequency, double x_response, double x_load) const;
-  /// The crown's transfers: the contacts get them moved rigidly (RailModel::contact_transfers).
+  /// The crown's transfers (the centre-line model of this rail).
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
+  /// At the contacts themselves (header comment): each set of coupled points (rail_point_sets)
+  /// with one Ritz basis, every frequency computed directly (`interpolate` is ignored).
+  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
+                                                          const std::vector<RailContactPair>& pairs,
+                                                          bool interpolate = true) const override;
+  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
+
+  /// The 4x4 between two contacts in their frames, a = (offset_a, angle_a) at x_a and
+  /// b = (offset_b, angle_b) at x_b along the rail (m from a sleeper), one basis for both.
+  Receptance4 contact_transfer(double frequency, double offset_a, double angle_a, double x_a,
+                               double offset_b, double angle_b, double x_b) const;
 
   const DiscretelySupportedWaveguide& rail() const { return parts_.rail; }
   const Eigen::MatrixXd& crown_loads() const { return parts_.crown; }
 
  private:
   struct Parts {
-    Eigen::MatrixXd crown;  // the crown's load patch (dofs() x 4)
+    WaveguideRailOptions options;
+    std::vector<Eigen::Vector2d> outline;
+    RailWaveguide section;     // the free rail, unreduced: the contact points' bases
+    RailReductionModes modes;  // its section modes, the load-independent part of every basis
+    Eigen::MatrixXd crown;     // the crown's load patch (dofs() x 4)
+    DiscretelySupportedWaveguide rail;  // reduced on the crown and the foot
+  };
+  /// Contact points on the rail with their own reduced model and loads (dofs() x 4 per point).
+  struct Station {
     DiscretelySupportedWaveguide rail;
+    Eigen::MatrixXd loads;
   };
   static Parts build(const TrackParameters& track, const WaveguideRailOptions& options);
+  std::shared_ptr<const Station> station(
+      const std::vector<std::pair<double, double>>& points) const;
+  /// The contact-frame 4x4 of each pair (point a, point b, x_a, x_b) of one station at omega.
+  static std::vector<Receptance4> between(
+      const Station& s, cdouble omega,
+      const std::vector<std::tuple<int, int, double, double>>& pairs);
 
   Parts parts_;
   double x_;

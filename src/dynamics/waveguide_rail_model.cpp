@@ -373,4 +373,28 @@ std::vector<Receptance4> interpolate_receptances(const std::vector<double>& grid
   return out;
 }
 
+Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
+                                    const std::vector<Eigen::Vector2d>& outline,
+                                    const WaveguideRailOptions& options,
+                                    const std::vector<std::pair<double, double>>& points) {
+  Eigen::MatrixXd loads(section.dofs(), 4 * static_cast<int>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto [offset_y, angle] = points[i];
+    if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
+      throw NumericalError(
+          "waveguide rail: a contact needs a finite offset and |angle| < pi/2, got " +
+          std::to_string(offset_y) + " m, " + std::to_string(angle) + " rad");
+    const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));  // noise::contact_frame
+    loads.middleCols(4 * i, 4) =
+        section.patch_loads(outline_contact_point(outline, options.head_bottom, offset_y, angle),
+                            options.patch_half_width, normal, options.head_bottom);
+  }
+  return loads;
+}
+
+RailPointSets rail_point_sets(const std::vector<RailContactPair>& pairs) {
+  PointSets s = point_sets(pairs);
+  return RailPointSets{std::move(s.points), std::move(s.set), std::move(s.within)};
+}
+
 }  // namespace rollnoise::dynamics

@@ -136,4 +136,23 @@ std::vector<Receptance4> interpolate_receptances(const std::vector<double>& grid
 /// The rail's material from a track's vertical beam section: E, eta, rho = m' / A; nu given.
 RailMaterial rail_material(const TrackParameters& track, double poisson_ratio);
 
+/// The load (and response) distributions of contacts at `points` ((offset_y, contact_angle) each)
+/// on `section`'s outline (outline_contact_point), dofs() x 4 per point in the contact frame
+/// (RailWaveguide::patch_loads): what WaveguideRailModel loads at a contact, for other models of
+/// the same section (the discrete supports, waveguide_discrete_support.hpp).
+Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
+                                    const std::vector<Eigen::Vector2d>& outline,
+                                    const WaveguideRailOptions& options,
+                                    const std::vector<std::pair<double, double>>& points);
+
+/// The pairs' contact points grouped into the sets that are coupled (a pair joins its two points),
+/// as WaveguideRailModel gives each set one Ritz basis: per set its points (offset_y,
+/// contact_angle), sorted; per pair its set and (point a, point b, x_a - x_b) within the set.
+struct RailPointSets {
+  std::vector<std::vector<std::pair<double, double>>> points;
+  std::vector<int> set;
+  std::vector<std::tuple<int, int, double>> within;
+};
+RailPointSets rail_point_sets(const std::vector<RailContactPair>& pairs);
+
 }  // namespace rollnoise::dynamics
