@@ -107,7 +107,12 @@ namespace {
 Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<double> z, const Eigen::MatrixXd& R) {
   using cd = std::complex<double>;
   const int n = static_cast<int>(H.rows());
-  Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> T = (-z) * H.cast<cd>();
+  // T = I - z H as real times real: (-z) * H.cast<cd>() is not vectorised (the cast) and called
+  // libgcc's __muldc3 for each of the n^2 entries, a quarter of squeal's time on squeal_150m; the
+  // same numbers (a real h times z: (-Re z) h + i (-Im z) h, the zero parts exact).
+  Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> T(n, n);
+  T.real() = -z.real() * H;
+  T.imag() = -z.imag() * H;
   T.diagonal().array() += 1.0;
   Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> X = R.cast<cd>();
   for (int k = 0; k + 1 < n; ++k) {
