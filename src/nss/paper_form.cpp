@@ -126,10 +126,9 @@ Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<
       X.row(k + 1) -= mult * X.row(k);
     }
   }
-  for (int k = n - 1; k >= 0; --k) {
-    if (k + 1 < n) X.row(k) -= T.row(k).tail(n - k - 1) * X.bottomRows(n - k - 1);
-    X.row(k) /= T(k, k);
-  }
+  // back substitution with the upper triangle left by the elimination (Eigen's blocked triangular
+  // solve: a row-by-row product with the 2-5 columns of X was a quarter of squeal's time)
+  T.triangularView<Eigen::Upper>().solveInPlace(X);
   return X;
 }
 
