@@ -63,8 +63,8 @@ noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean) {
   // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
   const std::shared_ptr<const noise::ContactTransfer> contact = mean.transfer();
   loop.rest = [=](dynamics::cdouble s) {
-    const Eigen::Vector3cd g = coupled ? contact->load(s) : Eigen::Vector3cd::Zero();
-    const Eigen::Matrix3cd f = contact->creep(s);
+    const auto [f, g] = coupled ? contact->creep_and_load(s)
+                                : std::make_pair(contact->creep(s), Eigen::Vector3cd::Zero().eval());
     return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
                               rail(s) +
                               noise::contact_receptance_laplace(s, kN, V, f, g));
