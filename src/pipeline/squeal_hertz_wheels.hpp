@@ -1,8 +1,8 @@
 // Every wheel's contact for squeal per wheelset in a Hertzian curve case (contact.geometry =
 // "hertz", curve.creepage = "estimate"; docs/squeal.md Sec. 9.3): the bogie curving estimate on the
-// conical tread WITH the load transfer of the cant deficiency (K4), each wheel's Hertz state from it
-// (vehicle/hertz_wheels.hpp: load Q_w, N_w = N_case Q_w/Q, a and b scaled by (Q_w/Q)^(1/3) at the
-// case's curvatures, the grid with them, creepages (K2') in the wheel's own frame) and the
+// conical tread WITH the load transfer of the cant deficiency (K4), each wheel's Hertz state from
+// it (vehicle/hertz_wheels.hpp: load Q_w, N_w = N_case Q_w/Q, a and b scaled by (Q_w/Q)^(1/3) at
+// the case's curvatures, the grid with them, creepages (K2') in the wheel's own frame) and the
 // mean-contact stage on it. When these states are computed (noise.squeal_wheelsets = "on"), the
 // top-level single contact of `squeal` is the leading outer wheel's state from the same estimate
 // (leading_outer_placement), so that /squeal/* and /squeal/wheels/leading_outer share one contact.
