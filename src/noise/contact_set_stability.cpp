@@ -116,9 +116,11 @@ ContactSetLaplaceLoop contact_set_laplace_loop(const dynamics::WheelModel& wheel
                               [&](Eigen::Index a, Eigen::Index b) { return block[a * n + b]; });
     for (Eigen::Index a = 0; a < n; ++a) {
       const ContactTransfer& t = *contacts[a].transfer;
-      const Eigen::Vector3cd g = normal_coupling ? t.load(s) : Eigen::Vector3cd::Zero();
+      const auto [f, g] = normal_coupling
+                              ? t.creep_and_load(s)
+                              : std::make_pair(t.creep(s), Eigen::Vector3cd::Zero().eval());
       A.block<4, 4>(4 * a, 4 * a) +=
-          contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, t.creep(s), g);
+          contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, f, g);
     }
     return A;
   };

@@ -14,6 +14,10 @@ namespace rollnoise::noise {
 
 ContactTransfer::~ContactTransfer() = default;
 
+std::pair<Eigen::Matrix3cd, Eigen::Vector3cd> ContactTransfer::creep_and_load(cdouble s) const {
+  return {creep(s), load(s)};
+}
+
 std::vector<Eigen::Matrix3cd> ContactTransfer::creep(const std::vector<double>& frequencies) const {
   std::vector<Eigen::Matrix3cd> f;
   f.reserve(frequencies.size());
@@ -145,6 +149,14 @@ MarkovContact guard_of(const std::shared_ptr<const nss::LinearContactModel>& mod
 
 NssTransfer::NssTransfer(std::shared_ptr<const nss::LinearContactModel> model, bool with_load)
     : model_(std::move(model)), with_load_(with_load), guarded_(guard_of(model_, with_load)) {}
+
+std::pair<Eigen::Matrix3cd, Eigen::Vector3cd> NssTransfer::creep_and_load(cdouble s) const {
+  // with Markov parameters the guarded series (MarkovContact); without them there is no guard and
+  // the exact evaluators are the model's, which share one solve
+  if (!with_load_ || !model_->markov_parameters().empty()) return {creep(s), load(s)};
+  const auto [f, g] = model_->coefficients_laplace(s);
+  return {f, g};
+}
 
 std::vector<Eigen::Matrix3cd> NssTransfer::creep(const std::vector<double>& frequencies) const {
   return model_->creep_coefficients(frequencies);

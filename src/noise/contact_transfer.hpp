@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "contact/material.hpp"
@@ -40,6 +41,8 @@ class ContactTransfer {
   virtual Eigen::Vector3cd load(cdouble s) const = 0;
   /// The lowest growth rate Re s (1/s) at which creep(s) and load(s) hold (-1e300: everywhere).
   virtual double min_sigma() const = 0;
+  /// creep(s) and load(s) together (by default the two calls; a model may share their work).
+  virtual std::pair<Eigen::Matrix3cd, Eigen::Vector3cd> creep_and_load(cdouble s) const;
   /// f at frequencies on the real axis (Hz); by default creep(2 pi i f) at each.
   virtual std::vector<Eigen::Matrix3cd> creep(const std::vector<double>& frequencies) const;
   /// g at frequencies on the real axis (Hz); by default load(2 pi i f) at each.
@@ -124,6 +127,8 @@ class NssTransfer final : public ContactTransfer {
   Eigen::Matrix3cd creep(cdouble s) const override { return guarded_.creep(s); }
   Eigen::Vector3cd load(cdouble s) const override { return guarded_.load(s); }
   double min_sigma() const override { return guarded_.min_sigma(); }
+  /// Without Markov parameters (no guard: falling friction) one Hessenberg solve for both.
+  std::pair<Eigen::Matrix3cd, Eigen::Vector3cd> creep_and_load(cdouble s) const override;
   std::vector<Eigen::Matrix3cd> creep(const std::vector<double>& frequencies) const override;
   std::vector<LoadCoefficients> load(const std::vector<double>& frequencies) const override;
   const nss::LinearContactModel& model() const { return *model_; }

@@ -79,6 +79,7 @@
 #include <complex>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "contact/friction_law.hpp"
@@ -227,6 +228,10 @@ class LinearContactModel {
   /// g at the complex frequency s, the same way (G3 continued; no sampling factor: the load is
   /// taken at t_k in every sampling).
   LoadVector normal_load_coefficients_laplace(std::complex<double> s) const;
+  /// Both at one s: the same values; without Markov parameters (falling friction) from ONE shifted
+  /// Hessenberg solve with the five input columns instead of one for f and one for g (squeal's
+  /// loop takes both at every s).
+  std::pair<CreepMatrix, LoadVector> coefficients_laplace(std::complex<double> s) const;
   /// The spectral radius of M0^{-1} M1 (the discrete-time contact's largest pole |z_p|; paper
   /// form, from the Hessenberg form: O(n^3) on the first call, then kept). Below 1 the contact's
   /// recursion M0 Q_k = M1 Q_{k-1} + ... decays (a stable contact); above 1 it grows at the rate

@@ -107,7 +107,12 @@ namespace {
 Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<double> z, const Eigen::MatrixXd& R) {
   using cd = std::complex<double>;
   const int n = static_cast<int>(H.rows());
-  Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> T = (-z) * H.cast<cd>();
+  // T = I - z H as real times real: (-z) * H.cast<cd>() is not vectorised (the cast) and called
+  // libgcc's __muldc3 for each of the n^2 entries, a quarter of squeal's time on squeal_150m; the
+  // same numbers (a real h times z: (-Re z) h + i (-Im z) h, the zero parts exact).
+  Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> T(n, n);
+  T.real() = -z.real() * H;
+  T.imag() = -z.imag() * H;
   T.diagonal().array() += 1.0;
   Eigen::Matrix<cd, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> X = R.cast<cd>();
   for (int k = 0; k + 1 < n; ++k) {
@@ -121,10 +126,9 @@ Eigen::MatrixXcd solve_shifted_hessenberg(const RowMajorMatrix& H, std::complex<
       X.row(k + 1) -= mult * X.row(k);
     }
   }
-  for (int k = n - 1; k >= 0; --k) {
-    if (k + 1 < n) X.row(k) -= T.row(k).tail(n - k - 1) * X.bottomRows(n - k - 1);
-    X.row(k) /= T(k, k);
-  }
+  // back substitution with the upper triangle left by the elimination (Eigen's blocked triangular
+  // solve: a row-by-row product with the 2-5 columns of X was a quarter of squeal's time)
+  T.triangularView<Eigen::Upper>().solveInPlace(X);
   return X;
 }
 

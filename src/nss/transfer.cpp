@@ -141,6 +141,16 @@ CreepMatrix LinearContactModel::creep_coefficients_laplace(std::complex<double> 
   return *f * creepage_sampling_factor(s * dt_, sampling_);
 }
 
+std::pair<CreepMatrix, LoadVector> LinearContactModel::coefficients_laplace(std::complex<double> s) const {
+  if (!series().creep.empty() || !has_normal_load_input())  // the series (cheap), or no g
+    return {creep_coefficients_laplace(s), normal_load_coefficients_laplace(s)};
+  const std::complex<double> z = std::exp(-s * dt_);
+  CreepMatrix f;
+  LoadVector g;
+  hessenberg_at(z, &f, &g);  // as the two calls take them, in one solve
+  return {f * creepage_sampling_factor(s * dt_, sampling_), g};
+}
+
 LoadVector LinearContactModel::normal_load_coefficients_laplace(std::complex<double> s) const {
   if (!has_normal_load_input()) return LoadVector::Zero();
   const std::complex<double> z = std::exp(-s * dt_);

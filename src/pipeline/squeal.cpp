@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
 #include "noise/kalker_linear.hpp"
+#include "pipeline/squeal_hertz_wheels.hpp"
 #include "pipeline/statespace.hpp"
 
 namespace rollnoise::pipeline {
@@ -57,8 +58,8 @@ noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean) {
   // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
   const std::shared_ptr<const noise::ContactTransfer> contact = mean.transfer();
   loop.rest = [=](dynamics::cdouble s) {
-    const Eigen::Vector3cd g = coupled ? contact->load(s) : Eigen::Vector3cd::Zero();
-    const Eigen::Matrix3cd f = contact->creep(s);
+    const auto [f, g] = coupled ? contact->creep_and_load(s)
+                                : std::make_pair(contact->creep(s), Eigen::Vector3cd::Zero().eval());
     return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
                               rail(s) +
                               noise::contact_receptance_laplace(s, kN, V, f, g));
@@ -75,7 +76,14 @@ SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::Stabili
     if (m.frequency >= nc.band_min && m.frequency <= nc.band_max) in_band.push_back(m.frequency);
   if (in_band.empty())
     throw InputError("noise.band_max", "squeal: no wheel mode between noise.band_min and noise.band_max");
-  r.mean = curve_mean_contact(c, nc, squeal_contact_options(nc, in_band));
+  // the leading outer wheel's contact (squeal_hertz_wheels.hpp: its per-wheel Hertz state when the
+  // per-wheel run computes those, so that both describe one contact)
+  CurvePlacement p = resolve_curve(c, nc);
+  r.curve_case = p.contact;
+  r.mean_is_leading_outer_wheel = has_hertz_wheel_states(p, nc);
+  if (r.mean_is_leading_outer_wheel) p = leading_outer_placement(p, nc);
+  r.mean = solve_mean_contact(std::move(p.contact), std::move(p.curve),
+                              squeal_contact_options(nc, in_band));
   // Falling friction: the contact's own stability was checked (no Markov parameters to prove it)
   r.contact_spectral_radius = r.mean.spectral_radius();
   if (r.mean.model()) check_contact_stability(r.mean.spectral_radius(), r.mean.model()->time_step());

@@ -24,8 +24,15 @@
 namespace rollnoise::pipeline {
 
 struct SquealResult {
-  /// as run: curve state, placed case, patch, k_N, steady state, model and the contact's transfer
+  /// as run: curve state, placed case, patch, k_N, steady state, model and the contact's transfer;
+  /// the leading outer wheel's (a Hertzian case with per-wheel states: its own Hertz state with the
+  /// load transfer, pipeline/squeal_hertz_wheels.hpp)
   MeanContact mean;
+  /// The case as the curve placed it (resolve_curve: the static wheel load Q), from which the
+  /// per-wheel Hertz states of squeal_wheelsets start.
+  ContactCase curve_case;
+  /// `mean` is the per-wheel run's leading outer wheel state (has_hertz_wheel_states): reused there.
+  bool mean_is_leading_outer_wheel = false;
   bool coupled = false;                 ///< g in the loop (noise.normal_coupling and slip elements)
   double min_sigma = 0.0;               ///< the contact series converge for Re s above this (1/s)
   std::vector<noise::ModeRoot> roots;   ///< route 2, one per wheel mode in the band
@@ -39,7 +46,9 @@ struct SquealResult {
 };
 
 /// The whole command (with the NSS model; with noise.contact_model = "kalker" the contact is
-/// Kalker's constant f, g = 0). InputError (noise.band_max) when no mode lies in the band or the band
+/// Kalker's constant f, g = 0). The contact is the leading outer wheel's: the curve's state, or in a
+/// Hertzian case whose per-wheel states squeal_wheelsets computes (noise.squeal_wheelsets = "on")
+/// that wheel's Hertz state with the load transfer, the same as /squeal/wheels/leading_outer's. InputError (noise.band_max) when no mode lies in the band or the band
 /// exceeds the grid's Nyquist limit.
 /// route2 = false: everything but route 2's roots (`--route 1`).
 SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options = {},

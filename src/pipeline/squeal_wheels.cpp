@@ -35,7 +35,7 @@ std::vector<SquealWheelContact> squeal_wheel_contacts(const SquealResult& r, con
         out.push_back({flange->wheel, flange->position(),
                        wheel_mean_contact(r.mean.contact(), *flange, o), true});
   } else if (curve.estimated && !r.mean.contact().profiles) {
-    out = hertz_squeal_wheels(r.mean.contact(), nc, o);
+    out = hertz_squeal_wheels(r.curve_case, nc, o, r.mean_is_leading_outer_wheel ? &r.mean : nullptr);
   }
   return out;
 }

@@ -5,6 +5,7 @@
 // the growth of its own recursion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -73,6 +74,27 @@ TEST(LaplaceCoefficients, MarkovSeriesEqualsTheHessenbergFormOffTheAxis) {
     std::printf("s = %g%+gi: f %.2e, g %.2e\n", s.real(), s.imag(), ef, eg);
     EXPECT_LT(ef, 1e-7);
     EXPECT_LT(eg, 1e-7);
+  }
+}
+
+TEST(LaplaceCoefficients, BothAtOnceEqualTheTwoCallsWithAndWithoutMarkovParameters) {
+  // coefficients_laplace (squeal's loop: f and g at every s) takes both from one Hessenberg solve
+  // without Markov parameters (falling friction), the series with them: the same values as the two
+  // calls to rounding (1e-13 relative: the solve's columns are eliminated by the same row
+  // operations; only the blocked back substitution may round differently).
+  const contact::Creepage mean{0.001, 0.001, -0.053};
+  for (const contact::FallingFriction law :
+       {contact::FallingFriction{}, contact::FallingFriction{0.5, 4.0}}) {
+    const auto m = model(mean, law, contact::CreepageSampling::average);
+    for (const cd s : {cd(300.0, 2.0 * M_PI * 900.0), cd(-200.0, 2.0 * M_PI * 1500.0)}) {
+      const auto [f, g] = m.coefficients_laplace(s);
+      const nss::CreepMatrix f2 = m.creep_coefficients_laplace(s);
+      const nss::LoadVector g2 = m.normal_load_coefficients_laplace(s);
+      EXPECT_LE((f - f2).norm(), 1e-13 * f2.norm()) << s;
+      // g (dimensionless in x, y) is a sum of terms of O(mu) that cancel to ~1e-15 at some s here:
+      // rounding relative to the terms, 1e-13 of max(|g|, 1)
+      EXPECT_LE((g - g2).norm(), 1e-13 * std::max(g2.norm(), 1.0)) << s;
+    }
   }
 }
 

@@ -102,3 +102,41 @@ TEST(HertzWheels, InnerWheelsCreepagesMirrorTheOuterWheelsInItsOwnFrame) {
 }
 
 }  // namespace
+
+namespace {
+
+// With per-wheel Hertz states (noise.squeal_wheelsets = "on") the top-level squeal contact is the
+// leading outer wheel's state from the estimate with the load transfer, the same case the
+// per-wheel run solves for that wheel (bit for bit: one function builds both); without them the
+// case's own state (static load Q, the estimate without load transfer).
+TEST(HertzWheels, TopLevelSquealContactIsTheLeadingOuterWheelsStateWithTheLoadTransfer) {
+  const io::NoiseInputs in = squeal_150m();
+  const pipeline::CurvePlacement p = pipeline::resolve_curve(in.contact, in.noise);
+  ASSERT_TRUE(pipeline::has_hertz_wheel_states(p, in.noise)) << "squeal_150m ships them on";
+  const pipeline::CurvePlacement q = pipeline::leading_outer_placement(p, in.noise);
+  const auto wheels = pipeline::hertz_curve_wheels(p.contact, in.noise);
+  const noise::HertzWheel& lo = find(wheels, noise::WheelId::leading_outer);
+  const pipeline::ContactCase c = pipeline::hertz_wheel_case(p.contact, lo);
+  EXPECT_EQ(q.contact.normal_force, c.normal_force);
+  EXPECT_EQ(q.contact.a, c.a);
+  EXPECT_EQ(q.contact.b, c.b);
+  EXPECT_EQ(q.contact.grid.dx, c.grid.dx);
+  EXPECT_EQ(q.contact.grid.dy, c.grid.dy);
+  EXPECT_EQ(q.contact.creepage.xi_x, c.creepage.xi_x);
+  EXPECT_EQ(q.contact.creepage.xi_y, c.creepage.xi_y);
+  EXPECT_EQ(q.contact.creepage.phi, c.creepage.phi);
+  EXPECT_EQ(q.curve.position.wheel_shift_y, lo.position.wheel_shift_y);
+  EXPECT_EQ(q.curve.position.contact_angle, lo.position.contact_angle);
+  // the curve setup's estimate is the one with the load transfer: its contact point is the wheel's
+  EXPECT_EQ(q.curve.curving.position().wheel_shift_y, lo.position.wheel_shift_y);
+  EXPECT_EQ(q.curve.curving.leading.lateral, lo.lateral);
+  // the load transfer is in it: N_w = N (Q + dQ) / Q, dQ = 2 Q h_d h_cg / s^2 (K4), 1e-12 relative
+  const double Q = p.contact.normal_force, dQ = 2.0 * Q * 0.08 * 1.5 / (1.5 * 1.5);
+  EXPECT_NEAR(q.contact.normal_force, Q + dQ, 1e-12 * Q);
+  // without the per-wheel run the top level keeps the case's state
+  const io::NoiseInputs off = squeal_150m({"noise.squeal_wheelsets=\"off\""});
+  EXPECT_FALSE(pipeline::has_hertz_wheel_states(pipeline::resolve_curve(off.contact, off.noise),
+                                                off.noise));
+}
+
+}  // namespace
