@@ -12,17 +12,20 @@
 #include <algorithm>
 #include <ctime>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "contact/steady_rolling.hpp"
 #include "dynamics/track.hpp"
+#include "dynamics/wheel_fe.hpp"
 #include "geometry/s1002.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/case_reader.hpp"
 #include "io/contact_case.hpp"
 #include "io/noise_case.hpp"
 #include "io/profile_file.hpp"
+#include "io/wheel_fe_case.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
@@ -95,7 +98,9 @@ BENCHMARK(SteadyHertzPaper)->Unit(benchmark::kMillisecond)->Iterations(10);
 // the steady Hertz case (bar: <= 5) and the four-wheel case over the single-wheel case (bar:
 // <= 2.5), the median of 3 runs each; the second ratio also for cases/curve_300m_table.toml (the
 // mode table instead of the FE wheel; in-process the FE wheel's modes are computed once per
-// process, so the FE ratios here exclude them, unlike the commands'). Counters: the ratios, the
+// process, so the FE ratios here exclude them, unlike the commands'; the FE modes of the case's
+// wheel are timed alone, dynamics::wheel_fe_modes, and `single_with_fe_modes_over_steady` adds
+// them to the single wheel, as the command pays them). Counters: the ratios, the
 // CPU seconds, the grid (elements of the leading outer wheel's patch, of the Hertz patch) and the
 // frequency count.
 double cpu_seconds(const std::function<void()>& run) {
@@ -119,9 +124,16 @@ void SpeedBarsCurve300m(benchmark::State& state) {
       io::CaseReader::from_file(source_path("cases/curve_300m_table.toml"), {});
   const io::CaseReader one_table =
       io::CaseReader::from_file(source_path("cases/curve_300m_table.toml"), kSingleWheel);
+  io::InputProblems problems;
+  const std::optional<io::WheelFeCase> fe = io::read_wheel_fe_case(one, problems);
+  if (!fe) state.SkipWithError("cases/curve_300m.toml has no FE wheel");
   double t4 = 0, t1 = 0, th = 0, t4_table = 0, t1_table = 0, elements = 0, frequencies = 0,
-         hertz_elements = 0;
+         hertz_elements = 0, t_modes = 0, dofs = 0;
   for (auto _ : state) {
+    t_modes = cpu_seconds([&] {
+      const dynamics::WheelFeModes w = dynamics::wheel_fe_modes(fe->section, fe->options);
+      dofs = 3.0 * w.mesh.nodes.size();
+    });
     t4_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(four_table)); });
     t1_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(one_table)); });
     t4 = cpu_seconds([&] {
@@ -136,13 +148,17 @@ void SpeedBarsCurve300m(benchmark::State& state) {
     th = cpu_seconds([&] { hertz_elements = run_steady_hertz(hertz); });
   }
   state.counters["single_over_steady"] = t1 / th;
+  state.counters["single_with_fe_modes_over_steady"] = (t1 + t_modes) / th;
   state.counters["four_over_single"] = t4 / t1;
+  state.counters["four_over_single_with_fe_modes"] = (t4 + t_modes) / (t1 + t_modes);
   state.counters["four_over_single_table"] = t4_table / t1_table;
   state.counters["four_table_cpu_s"] = t4_table;
   state.counters["single_table_cpu_s"] = t1_table;
   state.counters["four_cpu_s"] = t4;
   state.counters["single_cpu_s"] = t1;
   state.counters["steady_cpu_s"] = th;
+  state.counters["fe_modes_cpu_s"] = t_modes;
+  state.counters["fe_dofs_per_order"] = dofs;
   state.counters["elements"] = elements;
   state.counters["hertz_elements"] = hertz_elements;
   state.counters["frequencies"] = frequencies;

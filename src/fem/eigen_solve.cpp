@@ -1,13 +1,13 @@
 #include "fem/eigen_solve.hpp"
 
-#include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "core/errors.hpp"
 
@@ -42,8 +42,7 @@ class PatternLdlt {
     }
     ldlt_.factorize(a);
   }
-  Eigen::ComputationInfo info() const { return ldlt_.info(); }
-  Eigen::VectorXd solve(const Eigen::Map<const Eigen::VectorXd>& x) const { return ldlt_.solve(x); }
+  const Eigen::SimplicialLDLT<SpMat>& factors() const { return ldlt_; }
 
  private:
   bool same_pattern(const SpMat& a) const {
@@ -56,32 +55,52 @@ class PatternLdlt {
   std::vector<SpMat::StorageIndex> outer_, inner_;
 };
 
-// (K - sigma M)^{-1} for Spectra's shift-invert mode by a sparse LDL^T factorisation (K - sigma M
-// is symmetric positive definite for sigma below the lowest eigenvalue): the operator interface of
-// Spectra::SymShiftInvert, with Eigen's SimplicialLDLT (AMD ordering) in place of its SparseLU.
-class ShiftInvertLdlt {
+// Shift-invert in standard form. With P (K - sigma M) P^T = L D L^T (sparse LDL^T, AMD ordering
+// P; D > 0 for sigma below the lowest eigenvalue) and W = P^T L^{-T} D^{-1/2},
+//   K x = lambda M x,  x = W y   <=>   C y = mu y,  C = W^T M W,  mu = 1 / (lambda - sigma),
+// since W^T (K - sigma M) W = I. C is symmetric positive definite, so the Lanczos recursion runs
+// in the Euclidean inner product: one M product and one pair of triangular solves per step, where
+// the generalised shift-invert form (operator (K - sigma M)^{-1} M, M inner products) needs an M
+// product for every inner product and norm of the recursion and its re-orthogonalisation (Ericsson
+// & Ruhe, Math. Comp. 35 (1980) 1251-1268, Sec. 2: the spectral transformation with the
+// factorisation's triangular factor). Eigenvectors: x = W y (then x^T M x = mu for |y| = 1).
+class ShiftInvertStandardForm {
  public:
   using Scalar = double;
-  ShiftInvertLdlt(const SpMat& k, const SpMat& m, PatternLdlt& ldlt) : k_(k), m_(m), ldlt_(ldlt) {}
-  Eigen::Index rows() const { return k_.rows(); }
-  Eigen::Index cols() const { return k_.cols(); }
-  void set_shift(double sigma) {
-    SpMat a = k_ - sigma * m_;
+  ShiftInvertStandardForm(const SpMat& k, const SpMat& m, double sigma, PatternLdlt& ldlt)
+      : m_(m), ldlt_(ldlt) {
+    SpMat a = k - sigma * m;
     a.makeCompressed();
     ldlt_.factorize(a);
-    if (ldlt_.info() != Eigen::Success)
+    const auto& f = ldlt_.factors();
+    if (f.info() != Eigen::Success || !(f.vectorD().minCoeff() > 0.0))
       throw NumericalError("LDL^T factorisation of K - sigma M failed (shift " +
                            std::to_string(sigma) + ")");
+    d_inv_sqrt_ = f.vectorD().cwiseSqrt().cwiseInverse();
   }
+  Eigen::Index rows() const { return m_.rows(); }
+  Eigen::Index cols() const { return m_.cols(); }
+  // y -> C y = D^{-1/2} L^{-1} P M P^T L^{-T} D^{-1/2} y
   void perform_op(const double* x, double* y) const {
-    Eigen::Map<Eigen::VectorXd>(y, rows()) =
-        ldlt_.solve(Eigen::Map<const Eigen::VectorXd>(x, rows()));
+    const auto& f = ldlt_.factors();
+    Eigen::VectorXd z = d_inv_sqrt_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x, rows()));
+    f.matrixU().solveInPlace(z);
+    Eigen::VectorXd w = f.permutationP() * (m_ * (f.permutationPinv() * z));
+    f.matrixL().solveInPlace(w);
+    Eigen::Map<Eigen::VectorXd>(y, rows()) = d_inv_sqrt_.cwiseProduct(w);
+  }
+  // x = W y for the columns y
+  Eigen::MatrixXd to_shapes(const Eigen::MatrixXd& y) const {
+    const auto& f = ldlt_.factors();
+    Eigen::MatrixXd z = d_inv_sqrt_.asDiagonal() * y;
+    f.matrixU().solveInPlace(z);
+    return f.permutationPinv() * z;
   }
 
  private:
-  const SpMat& k_;
   const SpMat& m_;
   PatternLdlt& ldlt_;
+  Eigen::VectorXd d_inv_sqrt_;
 };
 
 // The converged Ritz pairs, ascending.
@@ -106,6 +125,7 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& k, const 
   const int n = static_cast<int>(k.rows());
   // Shift below zero: K - sigma M is positive definite even with rigid-body modes.
   const double sigma = -std::pow(2 * 3.14159265358979323846 * 10.0, 2);
+  std::optional<ShiftInvertStandardForm> op;  // factorised once, for every nev tried
   for (int nev = std::min(expected >= 0 ? expected + 2 : 8, n);; nev = std::min(2 * nev, n)) {
     // dense: cheaper than Lanczos with most of the spectrum, and for all modes (omega_max infinite)
     if (nev > n / 2 || n < 60 || !std::isfinite(lambda_max)) {
@@ -115,23 +135,19 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& k, const 
         throw NumericalError("dense generalised eigen solve of the FE model failed");
       return {dense.eigenvalues(), dense.eigenvectors()};
     }
-    using Op = ShiftInvertLdlt;
-    using BOp = Spectra::SparseSymMatProd<double>;
-    Op op(k, m, ldlt);
-    BOp bop(m);
     // Krylov dimension: 2 nev + 1 and at least 13 (measured on the 920 mm wheel, 8787 DOFs, n =
     // 0..10: the fewest operator applications; bench/wheel_fe_bench.cpp)
     const int ncv = std::min(n, std::max(2 * nev + 1, 13));
-    Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, nev, ncv,
-                                                                                  sigma);
+    if (!op) op.emplace(k, m, sigma, ldlt);
+    Spectra::SymEigsSolver<ShiftInvertStandardForm> solver(*op, nev, ncv);
     solver.init();
-    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+    solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
     if (solver.info() != Spectra::CompInfo::Successful)
       throw NumericalError("Spectra shift-invert Lanczos did not converge (" + std::to_string(nev) +
                            " modes, " + std::to_string(n) + " DOFs)");
-    const Eigen::VectorXd lambda = solver.eigenvalues();
+    const Eigen::VectorXd lambda = sigma + solver.eigenvalues().cwiseInverse().array();
     if (lambda.maxCoeff() > lambda_max || nev == n - 1)
-      return ascending(lambda, solver.eigenvectors());
+      return ascending(lambda, op->to_shapes(solver.eigenvectors()));
   }
 }
 

@@ -1,6 +1,8 @@
 // The lowest modes of K phi = omega^2 M phi (K, M symmetric, M positive definite, K positive
 // definite once the fixed DOFs are removed) by Spectra's sparse shift-invert Lanczos (Debian
-// libspectra-dev): all modes with omega <= omega_max, mass-normalised.
+// libspectra-dev), in standard form with the LDL^T factors of K - sigma M (Euclidean inner
+// products: no M product in the Lanczos recursion): all modes with omega <= omega_max,
+// mass-normalised.
 #pragma once
 
 #include <Eigen/Dense>
