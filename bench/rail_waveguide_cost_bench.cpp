@@ -4,10 +4,10 @@
 //
 // RailWaveguideCurveCost/b: b = 0 the former basis (RailReduction{}: modes below 20 kHz and the
 // static responses at the same seven wavenumbers), b = 1 the loop's (near_field_reduction()).
-// Counters: `dofs` n of the section, `coordinates` m of each contact point's Ritz basis (largest
-// of the four), `modes_s` the one-off section modes per rail model, `basis_s` one point's basis,
-// `per_frequency_ms` one frequency (the m x m wavenumber eigenproblem, Eq. W5, and the 4 x 4 of
-// Eq. W4), averaged over 100 Hz - 5 kHz; `direct_points` the frequencies computed directly on
+// Counters (CPU time): `dofs` n of the section, `coordinates` m of each contact point's Ritz basis
+// (largest of the four), `modes_s` the one-off section modes per rail model, `basis_s` one point's
+// basis, `per_frequency_ms` one frequency (the m x m wavenumber eigenproblem, Eq. W5, and the 4 x 4
+// of Eq. W4), averaged over 100 Hz - 5 kHz; `direct_points` the frequencies computed directly on
 // curve_300m's 864 (24 per octave, the rest interpolated); `case_rail_s` = modes_s + 4 x (basis_s
 // + direct_points x per_frequency_ms), the rail's share of `rollnoise noise
 // cases/curve_300m_waveguide.toml` (four contact points, each wheel's loop alone); `err_dB` the
@@ -16,8 +16,9 @@
 //   build/rollnoise_bench --benchmark_filter=RailWaveguideCurveCost
 #include <benchmark/benchmark.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <utility>
 #include <vector>
 
@@ -30,8 +31,9 @@ using namespace rollnoise;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// CPU seconds of this process (the machine is shared: wall time says little).
+double cpu_seconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 // curve_300m's contact points (offset on the rail profile, contact angle) of the four wheels.
@@ -46,9 +48,9 @@ void RailWaveguideCurveCost(benchmark::State& state) {
                             t.sleeper_spacing});
   const dynamics::RailReduction reduction =
       state.range(0) == 0 ? dynamics::RailReduction{} : dynamics::near_field_reduction();
-  auto t0 = std::chrono::steady_clock::now();
+  double t0 = cpu_seconds();
   const dynamics::RailReductionModes modes = full.reduction_modes(reduction);
-  const double modes_s = seconds_since(t0);
+  const double modes_s = cpu_seconds() - t0;
   std::vector<Eigen::MatrixXd> loads;
   for (const auto& [offset, angle] : kContacts)
     loads.push_back(full.patch_loads(
@@ -59,16 +61,16 @@ void RailWaveguideCurveCost(benchmark::State& state) {
   double basis_s = 0.0, per_frequency_s = 0.0;
   int coordinates = 0;
   for (auto _ : state) {
-    t0 = std::chrono::steady_clock::now();
+    t0 = cpu_seconds();
     const dynamics::RailWaveguide r = full.reduced(reduction, loads.front(), modes);
-    basis_s = seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
+    basis_s = cpu_seconds() - t0;
+    t0 = cpu_seconds();
     for (int i = 0; i < direct_points; ++i) {
       const double f = 100.0 * std::pow(50.0, double(i) / (direct_points - 1));
       benchmark::DoNotOptimize(
           r.contact_receptance(r.waves(2.0 * M_PI * f), loads.front(), loads.front(), 0.0));
     }
-    per_frequency_s = seconds_since(t0) / direct_points;
+    per_frequency_s = (cpu_seconds() - t0) / direct_points;
   }
   double err_db = 0.0;
   for (double f : {300.0, 1000.0, 2000.0, 3400.0, 4900.0}) {
@@ -79,7 +81,8 @@ void RailWaveguideCurveCost(benchmark::State& state) {
       const dynamics::Receptance4 a = full.contact_receptance(wf, L, L, 0.0),
                                   b = r.contact_receptance(r.waves(2.0 * M_PI * f), L, L, 0.0);
       for (int i = 0; i < 4; ++i)
-        err_db = std::max(err_db, std::abs(20.0 * std::log10(std::abs(b(i, i)) / std::abs(a(i, i)))));
+        err_db =
+            std::max(err_db, std::abs(20.0 * std::log10(std::abs(b(i, i)) / std::abs(a(i, i)))));
     }
   }
   state.counters["dofs"] = full.dofs();
