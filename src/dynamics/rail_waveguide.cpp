@@ -232,6 +232,13 @@ Eigen::MatrixXd static_support(const FullMatrices& f, const std::optional<FootSu
 
 }  // namespace
 
+RailReduction near_field_reduction() {
+  RailReduction r;
+  r.max_frequency = 12000.0;
+  r.static_wavenumbers = {0.0, 100.0, 400.0, 1200.0};
+  return r;
+}
+
 RailReductionModes RailWaveguide::reduction_modes(const RailReduction& reduction) const {
   if (reduction.wavenumbers.empty() || !(reduction.max_frequency > 0.0))
     throw InputError("rail_reduction", "at least one wavenumber and a positive cut-off frequency");
@@ -272,14 +279,18 @@ RailWaveguide RailWaveguide::reduced(const RailReduction& reduction, const Eigen
     split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
   const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
   std::vector<Eigen::VectorXd> vectors;
-  for (std::size_t i = 0; i < reduction.wavenumbers.size(); ++i) {
-    const double k = reduction.wavenumbers[i];
+  auto add_static_responses = [&](double k) {
     const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
-    for (const Eigen::VectorXd& v : modes.modes[i]) vectors.push_back(v);
     const Eigen::LDLT<Eigen::MatrixXd> static_solve(K + shift * f.m);
     const Eigen::MatrixXd u = static_solve.solve(split);
     for (int j = 0; j < u.cols(); ++j) vectors.push_back(u.col(j));
+  };
+  const bool statics_with_modes = reduction.static_wavenumbers.empty();
+  for (std::size_t i = 0; i < reduction.wavenumbers.size(); ++i) {
+    for (const Eigen::VectorXd& v : modes.modes[i]) vectors.push_back(v);
+    if (statics_with_modes) add_static_responses(reduction.wavenumbers[i]);
   }
+  for (double k : reduction.static_wavenumbers) add_static_responses(k);
   const Eigen::VectorXi p = axial_first(nn);
   Eigen::MatrixXd cx(nn, vectors.size()), cs(2 * nn, vectors.size());
   for (std::size_t j = 0; j < vectors.size(); ++j) {

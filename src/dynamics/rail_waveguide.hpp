@@ -103,7 +103,14 @@ struct RailReduction {
   /// Real wavenumbers (rad/m) at which the free cross-section modes are taken.
   std::vector<double> wavenumbers{0.0, 10.0, 25.0, 50.0, 100.0, 200.0, 400.0};
   double max_frequency = 20000.0;  ///< modes with natural frequency up to this (Hz)
+  /// Real wavenumbers (rad/m) of the static responses to the loads; empty: `wavenumbers`.
+  std::vector<double> static_wavenumbers;
 };
+
+/// The contact points' basis of the continuous waveguide in the loop (docs/models.md Sec. 2.5b):
+/// the modes below 12 kHz at RailReduction's seven wavenumbers and the static responses to the
+/// loads at 0, 100, 400 and 1200 rad/m (the last for the near field of a 10 mm patch).
+RailReduction near_field_reduction();
 
 /// The load-independent part of the Ritz basis: per wavenumber of a RailReduction the free
 /// cross-section modes up to its max_frequency (RailWaveguide::reduction_modes), computed once

@@ -49,13 +49,13 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
       full_(full_model(track, options)),
-      modes_(full_.reduction_modes(options.reduction)),
+      modes_(full_.reduction_modes(options.contact_reduction)),
       rail_(full_) {
   if (options.grid_per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
   loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
                              Eigen::Vector2d(0.0, 1.0), options.head_bottom);
-  rail_ = full_.reduced(options.reduction, loads_, modes_);
+  rail_ = full_.reduced(options.contact_reduction, loads_, modes_);
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
@@ -135,7 +135,7 @@ std::shared_ptr<const WaveguideRailModel::Station> WaveguideRailModel::station(
                                                    options_.head_bottom);
   }
   return std::make_shared<const Station>(
-      Station{full_.reduced(options_.reduction, loads, modes_), std::move(loads)});
+      Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
 }
 
 std::vector<Receptance4> WaveguideRailModel::between(

@@ -47,7 +47,10 @@ struct WaveguideRailOptions {
   double patch_half_width = 0.01;         ///< load patch radius around the crown (m)
   double head_bottom = kUic60HeadBottom;  ///< z of the head's underside (m), for the spin
   double poisson_ratio = 0.3;             ///< nu (-); E, rho, eta from the track's rail
+  /// The discretely supported waveguide's basis (waveguide_discrete_support.hpp).
   RailReduction reduction;
+  /// The continuous waveguide's basis at the crown and the contacts (WaveguideRailModel).
+  RailReduction contact_reduction = near_field_reduction();
   /// contact_receptances(): points per octave of the grid computed directly (0: every
   /// frequency directly).
   int grid_per_octave = 24;
