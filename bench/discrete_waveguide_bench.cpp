@@ -23,8 +23,8 @@ using namespace rollnoise;
 namespace {
 
 const dynamics::DiscreteWaveguideRailModel& rail() {
-  static const dynamics::DiscreteWaveguideRailModel r(dynamics::uic60_ballasted(),
-                                                      dynamics::WaveguideRailOptions{}, 0.3);
+  static const dynamics::WaveguideRailOptions options;  // a named value: GCC 12 warns of the temporary
+  static const dynamics::DiscreteWaveguideRailModel r(dynamics::uic60_ballasted(), options, 0.3);
   return r;
 }
 
