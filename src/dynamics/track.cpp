@@ -5,19 +5,10 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "dynamics/frequency_argument.hpp"
 #include "linalg/toeplitz_solve.hpp"
 
 namespace rollnoise::dynamics {
-namespace {
-
-double checked_omega(double frequency) {
-  if (!(frequency > 0.0) || !std::isfinite(frequency))
-    throw InputError("frequency", "track receptance needs a positive, finite frequency, got " +
-                                      std::to_string(frequency) + " Hz");
-  return angular(frequency);
-}
-
-}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Support

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "dynamics/frequency_argument.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/mesh.hpp"
 
@@ -250,18 +251,6 @@ std::vector<Receptance4> DiscreteWaveguideRailModel::between(
 
 namespace {
 
-cdouble checked_omega(double frequency) {
-  if (!std::isfinite(frequency) || !(frequency > 0.0))
-    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
-  return cdouble(angular(frequency), 0.0);
-}
-
-cdouble checked_laplace(cdouble s) {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  return cdouble(0.0, -1.0) * s;  // i omega = s
-}
-
 // The pairs of set k of `sets` as (point a, point b, x_a, x_b), and their indices in `pairs`.
 std::vector<std::tuple<int, int, double, double>> pairs_of_set(
     const RailPointSets& sets, const std::vector<RailContactPair>& pairs, int k,
@@ -281,7 +270,7 @@ std::vector<std::tuple<int, int, double, double>> pairs_of_set(
 
 std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs, bool) const {
-  for (double f : frequencies) checked_omega(f);
+  for (double f : frequencies) checked_complex_omega(f);
   const RailPointSets sets = rail_point_sets(pairs);
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
                                             std::vector<Receptance6>(pairs.size()));
@@ -290,7 +279,7 @@ std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transf
     std::vector<std::size_t> which;
     const auto within = pairs_of_set(sets, pairs, static_cast<int>(k), which);
     for (std::size_t i = 0; i < frequencies.size(); ++i) {
-      const std::vector<Receptance4> r = between(*st, checked_omega(frequencies[i]), within);
+      const std::vector<Receptance4> r = between(*st, checked_complex_omega(frequencies[i]), within);
       for (std::size_t j = 0; j < which.size(); ++j) {
         const RailContactPair& pair = pairs[which[j]];
         out[i][which[j]] =
@@ -331,11 +320,11 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
                                                          double offset_b, double angle_b,
                                                          double x_b) const {
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
-  if (a == b) return between(*station({a}), checked_omega(frequency), {{0, 0, x_a, x_b}}).front();
+  if (a == b) return between(*station({a}), checked_complex_omega(frequency), {{0, 0, x_a, x_b}}).front();
   const bool ordered = a < b;  // the points sorted, as rail_point_sets gives them
   const std::shared_ptr<const Station> st =
       station(ordered ? std::vector{a, b} : std::vector{b, a});
-  return between(*st, checked_omega(frequency), {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
+  return between(*st, checked_complex_omega(frequency), {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
       .front();
 }
 
@@ -344,7 +333,7 @@ Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance(double frequency) const {
-  return at(checked_omega(frequency));
+  return at(checked_complex_omega(frequency));
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance_laplace(cdouble s) const {
@@ -360,7 +349,7 @@ std::vector<Receptance4> DiscreteWaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
   std::vector<Receptance4> out;
   for (const Eigen::MatrixXcd& h :
-       parts_.rail.transfers(checked_omega(frequency), parts_.crown, pairs))
+       parts_.rail.transfers(checked_complex_omega(frequency), parts_.crown, pairs))
     out.push_back(h);
   return out;
 }

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "dynamics/frequency_argument.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/mesh.hpp"
 
@@ -154,18 +155,6 @@ std::vector<Receptance4> WaveguideRailModel::between(
 }
 
 namespace {
-
-cdouble checked_complex_omega(double frequency) {
-  if (!std::isfinite(frequency) || !(frequency > 0.0))
-    throw InputError("frequency", "rail receptance needs a finite frequency > 0 Hz");
-  return cdouble(angular(frequency), 0.0);
-}
-
-cdouble checked_laplace(cdouble s) {
-  if (!std::isfinite(s.real()) || !std::isfinite(s.imag()) || s == 0.0)
-    throw InputError("frequency", "track receptance needs a finite, non-zero Laplace variable s");
-  return cdouble(0.0, -1.0) * s;  // i omega = s
-}
 
 // The pairs' points grouped into the sets that are coupled (a pair joins its two points): each
 // set gets one Ritz basis, so a point asked for alone has the basis it has in the single-contact
