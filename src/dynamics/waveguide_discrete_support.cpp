@@ -270,7 +270,7 @@ std::vector<std::tuple<int, int, double, double>> pairs_of_set(
 
 std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs, bool) const {
-  for (double f : frequencies) checked_complex_omega(f);
+  for (double f : frequencies) checked_omega(f);
   const RailPointSets sets = rail_point_sets(pairs);
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
                                             std::vector<Receptance6>(pairs.size()));
@@ -279,7 +279,8 @@ std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transf
     std::vector<std::size_t> which;
     const auto within = pairs_of_set(sets, pairs, static_cast<int>(k), which);
     for (std::size_t i = 0; i < frequencies.size(); ++i) {
-      const std::vector<Receptance4> r = between(*st, checked_complex_omega(frequencies[i]), within);
+      const std::vector<Receptance4> r =
+          between(*st, checked_complex_omega(frequencies[i]), within);
       for (std::size_t j = 0; j < which.size(); ++j) {
         const RailContactPair& pair = pairs[which[j]];
         out[i][which[j]] =
@@ -320,11 +321,13 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
                                                          double offset_b, double angle_b,
                                                          double x_b) const {
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
-  if (a == b) return between(*station({a}), checked_complex_omega(frequency), {{0, 0, x_a, x_b}}).front();
+  if (a == b)
+    return between(*station({a}), checked_complex_omega(frequency), {{0, 0, x_a, x_b}}).front();
   const bool ordered = a < b;  // the points sorted, as rail_point_sets gives them
   const std::shared_ptr<const Station> st =
       station(ordered ? std::vector{a, b} : std::vector{b, a});
-  return between(*st, checked_complex_omega(frequency), {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
+  return between(*st, checked_complex_omega(frequency),
+                 {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
       .front();
 }
 

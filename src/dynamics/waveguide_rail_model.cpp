@@ -109,7 +109,8 @@ Eigen::Vector2d outline_contact_point(const std::vector<Eigen::Vector2d>& outlin
     const double t = dy != 0.0 ? std::clamp((offset_y - e.a.x()) / dy, 0.0, 1.0) : 0.5;
     consider(e.a + t * (e.b - e.a), std::abs(contact_angle - e.angle));
     if (i + 1 < top.size() && top[i + 1].a == e.b) {
-      const double lo = std::min(e.angle, top[i + 1].angle), hi = std::max(e.angle, top[i + 1].angle);
+      const double lo = std::min(e.angle, top[i + 1].angle),
+                   hi = std::max(e.angle, top[i + 1].angle);
       if (contact_angle >= lo && contact_angle <= hi) consider(e.b, 0.0);
     }
   }
@@ -122,19 +123,7 @@ Eigen::Vector2d WaveguideRailModel::contact_point(double offset_y, double contac
 
 std::shared_ptr<const WaveguideRailModel::Station> WaveguideRailModel::station(
     const Points& points) const {
-  Eigen::MatrixXd loads(full_.dofs(), 4 * static_cast<int>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto [offset_y, angle] = points[i];
-    if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
-      throw NumericalError("waveguide rail: a contact needs a finite offset and |angle| < pi/2, "
-                           "got " + std::to_string(offset_y) + " m, " + std::to_string(angle) +
-                           " rad");
-    // The contact frame's normal (-sin gamma, cos gamma) in (y, z): noise::contact_frame.
-    const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));
-    loads.middleCols(4 * i, 4) = full_.patch_loads(contact_point(offset_y, angle),
-                                                   options_.patch_half_width, normal,
-                                                   options_.head_bottom);
-  }
+  Eigen::MatrixXd loads = contact_point_loads(full_, outline_, options_, points);
   return std::make_shared<const Station>(
       Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
 }
@@ -201,8 +190,7 @@ PointSets point_sets(const std::vector<RailContactPair>& pairs) {
 std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_octave) {
   if (frequencies.empty() || per_octave <= 0) return {};
   const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
-  const int intervals =
-      std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))));
+  const int intervals = std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))));
   if (intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) return {};
   std::vector<double> grid(intervals + 1);
   for (int i = 0; i <= intervals; ++i)
@@ -215,7 +203,7 @@ std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_
 std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
-  for (double f : frequencies) checked_complex_omega(f);
+  for (double f : frequencies) checked_omega(f);
   const PointSets sets = point_sets(pairs);
   const std::vector<double> grid =
       interpolate ? direct_grid(frequencies, options_.grid_per_octave) : std::vector<double>{};
@@ -284,28 +272,28 @@ Receptance4 WaveguideRailModel::line_transfer_laplace(cdouble s, double x_respon
 
 Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,
                                                    double contact_angle) const {
-  return between(*station({{offset_y, contact_angle}}), checked_complex_omega(frequency), {{0, 0, 0.0}})
+  return between(*station({{offset_y, contact_angle}}), checked_complex_omega(frequency),
+                 {{0, 0, 0.0}})
       .front();
 }
 
 Receptance4 WaveguideRailModel::contact_receptance_laplace(cdouble s, double offset_y,
                                                            double contact_angle) const {
-  return between(*station({{offset_y, contact_angle}}), checked_laplace(s), {{0, 0, 0.0}})
-      .front();
+  return between(*station({{offset_y, contact_angle}}), checked_laplace(s), {{0, 0, 0.0}}).front();
 }
 
-Receptance4 WaveguideRailModel::contact_transfer(double frequency, double offset_a,
-                                                 double angle_a, double offset_b, double angle_b,
-                                                 double x) const {
+Receptance4 WaveguideRailModel::contact_transfer(double frequency, double offset_a, double angle_a,
+                                                 double offset_b, double angle_b, double x) const {
   // one basis per unordered pair: (b, a) at -x is the transpose of (a, b) at x
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
-  if (b < a) return contact_transfer(frequency, offset_b, angle_b, offset_a, angle_a, -x).transpose();
+  if (b < a)
+    return contact_transfer(frequency, offset_b, angle_b, offset_a, angle_a, -x).transpose();
   return between(*station({a, b}), checked_complex_omega(frequency), {{0, 1, x}}).front();
 }
 
-Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offset_a,
-                                                         double angle_a, double offset_b,
-                                                         double angle_b, double x) const {
+Receptance4 WaveguideRailModel::contact_transfer_laplace(cdouble s, double offset_a, double angle_a,
+                                                         double offset_b, double angle_b,
+                                                         double x) const {
   const std::pair<double, double> a(offset_a, angle_a), b(offset_b, angle_b);
   if (b < a)
     return contact_transfer_laplace(s, offset_b, angle_b, offset_a, angle_a, -x).transpose();
