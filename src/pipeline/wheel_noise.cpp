@@ -26,13 +26,21 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
   } else {
     in.model = kalker_coefficients(m.contact(), frequency.size());
   }
-  const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, w.position());
   out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed, in.model,
                                                    in.normal_coupling);
   out.position = w.position();
-  out.loop = noise::solve_loop(structures, out.contact_receptance);
+  // The bogie loop replaces the wheel's loop alone (its rail point receptance at 864 frequencies
+  // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 10).
+  if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
+    out.loop = wheel_loop_alone(out, nc, spectra);
   return out;
+}
+
+noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
+                                   const noise::StructureSpectra& spectra) {
+  const noise::StructuralReceptances structures =
+      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, w.position);
+  return noise::solve_loop(structures, w.contact_receptance);
 }
 
 std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,

@@ -29,7 +29,10 @@ struct WheelNoise {
   MeanContact mean;
   contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
   int adhesion_elements = 0, slip_elements = 0;
-  noise::LoopResult loop;   ///< the main variant (with g when normal_coupling), the wheel alone
+  /// The main variant (with g when normal_coupling), the wheel alone. Under the bogie loop
+  /// (noise.contact_coupling = "bogie") only the leading outer wheel's (the main run's); the
+  /// others' are not computed (the bogie loop replaces them; wheel_loop_alone gives them).
+  noise::LoopResult loop;
   /// alpha_c of the main loop per frequency (contact frame) and the contact position it ran at:
   /// what the loop with several contacts takes (pipeline/bogie_noise.hpp).
   std::vector<noise::Receptance4> contact_receptance;
@@ -38,11 +41,16 @@ struct WheelNoise {
 };
 
 /// The loop of each wheel but the leading outer one (the main run's), on the shared spectra at
-/// `frequency`. `base`: the case as read (placed or not); InputError naming noise.band_max when a
+/// `frequency` (its loop alone only without the bogie loop, WheelNoise::loop). `base`: the case as read (placed or not); InputError naming noise.band_max when a
 /// wheel's grid cannot resolve the frequencies.
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
                        const noise::StructureSpectra& spectra,
                        const std::vector<double>& frequency);
+
+/// The wheel's single-contact loop alone (its structures at its contact position from the shared
+/// spectra, its contact receptance): WheelNoise::loop.
+noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
+                                   const noise::StructureSpectra& spectra);
 
 /// alpha_c of the main loop: with g when `normal_coupling` and the model has one (as
 /// noise::solve_loop_variants's main variant).

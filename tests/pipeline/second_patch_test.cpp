@@ -92,7 +92,11 @@ TEST_F(SecondPatch, WithoutCouplingTheTreadContactsAreTheirSingleLoopsAndThePatc
   ASSERT_EQ(alone.sources(), 2);
   double worst = 0.0, patch = 0.0;
   for (int a = 0; a < 2; ++a) {
-    const noise::LoopResult& single = r_->wheels[a].loop;
+    // under the bogie loop only the main run's wheel keeps its loop alone (WheelNoise::loop)
+    const noise::LoopResult single =
+        r_->wheels[a].loop.frequency.empty()
+            ? pipeline::wheel_loop_alone(r_->wheels[a], in_->noise, *r_->spectra)
+            : r_->wheels[a].loop;
     const noise::LoopResult set = noise::contact_response(alone, a, a);
     for (std::size_t k = 0; k < single.frequency.size(); ++k) {
       worst = std::max(worst, relative_difference(set.force[k], single.force[k]));
