@@ -30,7 +30,7 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
                                                    in.normal_coupling);
   out.position = w.position();
   // The bogie loop replaces the wheel's loop alone (its rail point receptance at 864 frequencies
-  // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 10).
+  // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 8).
   if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
     out.loop = wheel_loop_alone(out, nc, spectra);
   return out;

@@ -3,7 +3,9 @@
 // ALONE on its own contact state (noise/wheel_contact.hpp): its patch, normal stiffness, steady
 // rolling, linear model, f(w) and g(w), the structures at its contact position and its band levels.
 // The wheel and rail spectra are shared (one structure_spectra for all wheels); the leading outer
-// wheel is the main run's (not repeated).
+// wheel is the main run's (not repeated). Under the bogie loop (noise.contact_coupling = "bogie",
+// pipeline/bogie_noise.hpp) a wheel's loop alone is not computed: the coupled loop takes its
+// contact receptance instead.
 #pragma once
 
 #include <array>
