@@ -26,8 +26,8 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
   } else {
     in.model = kalker_coefficients(m.contact(), frequency.size());
   }
-  out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed, in.model,
-                                                   in.normal_coupling);
+  out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed,
+                                                   in.model, in.normal_coupling);
   out.position = w.position();
   // The bogie loop replaces the wheel's loop alone (its rail point receptance at 864 frequencies
   // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 8).

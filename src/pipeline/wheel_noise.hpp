@@ -43,8 +43,9 @@ struct WheelNoise {
 };
 
 /// The loop of each wheel but the leading outer one (the main run's), on the shared spectra at
-/// `frequency` (its loop alone only without the bogie loop, WheelNoise::loop). `base`: the case as read (placed or not); InputError naming noise.band_max when a
-/// wheel's grid cannot resolve the frequencies.
+/// `frequency` (its loop alone only without the bogie loop, WheelNoise::loop). `base`: the case as
+/// read (placed or not); InputError naming noise.band_max when a wheel's grid cannot resolve the
+/// frequencies.
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
                        const noise::StructureSpectra& spectra,
                        const std::vector<double>& frequency);
