@@ -202,7 +202,8 @@ class RailWaveguide {
   Eigen::MatrixXd project(const Eigen::MatrixXd& f) const;
   Eigen::MatrixXd nodal_loads(const Eigen::VectorXd& weights, const Eigen::Vector2d& normal,
                               double head_bottom) const;
-  void apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs);
+  /// `identity`: vx, vs are identities (the unreduced model; the projection is skipped).
+  void apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs, bool identity = false);
 };
 
 /// The bottom of the UIC60 head (z of the head's underside at its side, m) for contact_loads.
