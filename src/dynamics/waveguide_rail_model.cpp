@@ -52,7 +52,7 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       full_(full_model(track, options)),
       modes_(full_.reduction_modes(options.contact_reduction)),
       rail_(full_) {
-  if (options.grid_per_octave < 0)
+  if (options.sampling.per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
   loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
                              Eigen::Vector2d(0.0, 1.0), options.head_bottom);
@@ -185,30 +185,17 @@ PointSets point_sets(const std::vector<RailContactPair>& pairs) {
   return out;
 }
 
-// The direct grid of contact_transfers: grid_per_octave points per octave from the lowest to the
-// highest frequency (both included); empty if every frequency is to be computed directly.
-std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_octave) {
-  if (frequencies.empty() || per_octave <= 0) return {};
-  const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
-  const int intervals = std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))));
-  if (intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) return {};
-  std::vector<double> grid(intervals + 1);
-  for (int i = 0; i <= intervals; ++i)
-    grid[i] = i == intervals ? *hi : *lo * std::pow(*hi / *lo, double(i) / intervals);
-  return grid;
-}
-
 }  // namespace
 
 std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
   for (double f : frequencies) checked_omega(f);
+  if (frequencies.empty()) return {};
   const PointSets sets = point_sets(pairs);
-  const std::vector<double> grid =
-      interpolate ? direct_grid(frequencies, options_.grid_per_octave) : std::vector<double>{};
-  const std::vector<double>& direct = grid.empty() ? frequencies : grid;
-  // the contact-frame 4x4 of each pair at the direct frequencies, one basis per set of points
+  FrequencySampling sampling = options_.sampling;
+  if (!interpolate) sampling.per_octave = 0;
+  // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
   std::vector<std::vector<Receptance4>> values(pairs.size());
   for (std::size_t s = 0; s < sets.points.size(); ++s) {
     const std::shared_ptr<const Station> st = station(sets.points[s]);
@@ -216,13 +203,11 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     std::vector<std::size_t> which;
     for (std::size_t p = 0; p < pairs.size(); ++p)
       if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
-    for (double f : direct) {
-      const std::vector<Receptance4> r = between(*st, checked_complex_omega(f), within);
-      for (std::size_t i = 0; i < which.size(); ++i) values[which[i]].push_back(r[i]);
-    }
+    std::vector<std::vector<Receptance4>> v = sample_receptances(
+        frequencies,
+        [&](double f) { return between(*st, checked_complex_omega(f), within); }, sampling);
+    for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
-  if (!grid.empty())
-    for (auto& v : values) v = interpolate_receptances(grid, v, frequencies);
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
                                             std::vector<Receptance6>(pairs.size()));
   for (std::size_t k = 0; k < frequencies.size(); ++k)

@@ -24,9 +24,9 @@
 //
 // The load is a uniform traction over the boundary within `patch_half_width` of the point (not a
 // nodal point force, whose receptance grows as the mesh is refined), and the response is the same
-// average (reciprocal). contact_transfers() on a grid of many frequencies computes them on a
-// logarithmic grid of `grid_per_octave` points per octave and interpolates
-// (cubic Hermite in ln f, each entry; docs/models.md Sec. 2.5b gives the error).
+// average (reciprocal). contact_transfers() on a grid of many frequencies computes them directly
+// on an adaptively chosen part of it and interpolates the rest (cubic Hermite in ln f, each entry;
+// waveguide_frequency_sampling.hpp; docs/models.md Sec. 2.5b gives the error).
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +37,7 @@
 
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
+#include "dynamics/waveguide_frequency_sampling.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -51,9 +52,9 @@ struct WaveguideRailOptions {
   RailReduction reduction;
   /// The continuous waveguide's basis at the crown and the contacts (WaveguideRailModel).
   RailReduction contact_reduction = near_field_reduction();
-  /// contact_receptances(): points per octave of the grid computed directly (0: every
-  /// frequency directly).
-  int grid_per_octave = 24;
+  /// contact_transfers() on a grid: the frequencies computed directly, the others interpolated
+  /// (waveguide_frequency_sampling.hpp; per_octave = 0: every frequency directly).
+  FrequencySampling sampling;
 };
 
 class WaveguideRailModel : public RailModel {
@@ -71,8 +72,8 @@ class WaveguideRailModel : public RailModel {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  /// At the contacts themselves (header comment); interpolated on grid_per_octave points per
-  /// octave when `interpolate` and the grid is finer than that.
+  /// At the contacts themselves (header comment); sampled as options.sampling says (the rest
+  /// interpolated) when `interpolate`, else every frequency directly.
   std::vector<std::vector<Receptance6>> contact_transfers(
       const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
       bool interpolate = true) const override;
