@@ -50,17 +50,24 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
       full_(full_model(track, options)),
-      modes_(full_.reduction_modes(options.contact_reduction)),
-      rail_(full_) {
+      modes_(full_.reduction_modes(options.contact_reduction)) {
   if (options.sampling.per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
-  loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
-                             Eigen::Vector2d(0.0, 1.0), options.head_bottom);
-  rail_ = full_.reduced(options.contact_reduction, loads_, modes_);
+}
+
+const WaveguideRailModel::Station& WaveguideRailModel::crown() const {
+  std::call_once(crown_->once, [this] {
+    Eigen::MatrixXd loads = full_.patch_loads(crown_of(full_.mesh()), options_.patch_half_width,
+                                              Eigen::Vector2d(0.0, 1.0), options_.head_bottom);
+    crown_->station = std::make_shared<const Station>(
+        Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
+  });
+  return *crown_->station;
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
-  return rail_.contact_receptance(rail_.waves(omega), loads_, loads_, 0.0);
+  const Station& c = crown();
+  return c.model.contact_receptance(c.model.waves(omega), c.loads, c.loads, 0.0);
 }
 
 Receptance4 WaveguideRailModel::receptance(double frequency) const {
@@ -242,17 +249,19 @@ RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
 
 std::vector<Receptance4> WaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
-  const RailWaves w = rail_.waves(checked_complex_omega(frequency));
+  const Station& c = crown();
+  const RailWaves w = c.model.waves(checked_complex_omega(frequency));
   std::vector<Receptance4> out;
   for (const auto& [xr, xe] : pairs)
-    out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
+    out.push_back(c.model.contact_receptance(w, c.loads, c.loads, xr - xe));
   return out;
 }
 
 Receptance4 WaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
                                                       double x_load) const {
-  return rail_.contact_receptance(rail_.waves(checked_laplace(s)), loads_, loads_,
-                                  x_response - x_load);
+  const Station& c = crown();
+  return c.model.contact_receptance(c.model.waves(checked_laplace(s)), c.loads, c.loads,
+                                    x_response - x_load);
 }
 
 Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,

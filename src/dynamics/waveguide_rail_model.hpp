@@ -31,6 +31,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <mutex>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -97,9 +98,10 @@ class WaveguideRailModel : public RailModel {
   /// The point (y, z) (m) of the outline where a contact at (offset_y, contact_angle) is loaded.
   Eigen::Vector2d contact_point(double offset_y, double contact_angle) const;
 
-  const RailWaveguide& waveguide() const { return rail_; }
+  /// The crown's reduced model (built on first use: the loop at the contacts does not need it).
+  const RailWaveguide& waveguide() const { return crown().model; }
   /// The load (and response) distributions at the crown, dofs() x 4 (Receptance4 order).
-  const Eigen::MatrixXd& crown_loads() const { return loads_; }
+  const Eigen::MatrixXd& crown_loads() const { return crown().loads; }
 
  private:
   /// Loaded points of the section (contacts, (offset, angle) each), their reduced model and loads
@@ -110,13 +112,19 @@ class WaveguideRailModel : public RailModel {
     Eigen::MatrixXd loads;
   };
 
+  /// The crown's station, built once on first use (thread-safe; shared by copies).
+  struct LazyCrown {
+    std::once_flag once;
+    std::shared_ptr<const Station> station;
+  };
+
   WaveguideRailOptions options_;
   std::vector<Eigen::Vector2d> outline_;
   RailWaveguide full_;          // the unreduced model, for the contacts' bases
   RailReductionModes modes_;    // its section modes, the load-independent part of every basis
-  RailWaveguide rail_;          // the crown's reduced model
-  Eigen::MatrixXd loads_;
+  std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
+  const Station& crown() const;
   Receptance4 at(cdouble omega) const;
   std::shared_ptr<const Station> station(const Points& points) const;
   /// The contact-frame 4x4 of every pair at omega, the pairs given as (point a, point b, x_a -
