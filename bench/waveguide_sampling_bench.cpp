@@ -4,7 +4,7 @@
 // one, at curve_300m's four contact points.
 //
 // WaveguideSampling/p/t: starting grid p points per octave, Eq. (F1) tolerance t x 1e-4 (t = 0:
-// the fixed grid of p per octave, no refinement); the default waveguide (UIC60, 30 mm mesh: 225
+// the fixed grid of p per octave, no refinement; the loop's: 4/300); the default waveguide (UIC60, 30 mm mesh: 225
 // nodes, n = 675; near_field_reduction(): m = 86; 10 mm patch) on the 864 frequencies of
 // curve_300m (1/3-octave bands 100 Hz - 5 kHz, 48 per band). The direct values of all 864
 // frequencies are computed once per point (~5 s each, not timed) and the sampler reads them, so
@@ -13,15 +13,26 @@
 // difference of a diagonal term from the direct value (narrow band), `err_rel` the largest Eq.
 // (F1) error over the grid, `err_band_dB` the largest error of a 1/3-octave band level of a
 // diagonal term (mean |R_ii|^2 over the band's 48 samples, as the loop's bands average).
-//   build/rollnoise_bench --benchmark_filter=WaveguideSampling
+//
+// WaveguideCaseRailCost/a: what the rail of `rollnoise noise cases/curve_300m_waveguide.toml`
+// (four contact points, each wheel's loop alone) costs, computed as the loop computes it, CPU
+// time: the section modes once (`modes_s`), per point its Ritz basis (`bases_s`, the four) and the
+// sampled frequencies (a = 0: the fixed grid of 24 per octave, as before; a = 1: the loop's
+// adaptive sampling), each one m x m wavenumber eigenproblem and Eq. W4 (`evaluations` summed over
+// the points, `per_frequency_ms`); `case_rail_s` the whole (iteration CPU time).
+//   build/rollnoise_bench --benchmark_filter='WaveguideSampling|WaveguideCaseRailCost'
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_section.hpp"
+#include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
+#include "fem/mesh.hpp"
 #include "dynamics/waveguide_frequency_sampling.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "noise/bands.hpp"
@@ -101,13 +112,66 @@ void WaveguideSampling(benchmark::State& state) {
 }
 BENCHMARK(WaveguideSampling)
     ->Args({24, 0})
-    ->Args({6, 1000})
+    ->Args({12, 0})
+    ->Args({4, 1000})
     ->Args({4, 500})
     ->Args({4, 300})
     ->Args({4, 100})
-    ->Args({3, 300})
-    ->Args({2, 300})
+    ->Args({6, 300})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
+
+// CPU seconds of this process (the machine is shared: wall time says little).
+double sampling_cpu_seconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
+
+void WaveguideCaseRailCost(benchmark::State& state) {
+  const dynamics::TrackParameters t = dynamics::uic60_ballasted();
+  dynamics::WaveguideRailOptions o;  // the loop's: 30 mm mesh, 10 mm patch, near-field basis
+  if (state.range(0) == 0) o.sampling = {24, 0.0};
+  const std::vector<double>& f = sampling_grid();
+  double modes_s = 0.0, bases_s = 0.0, frequencies_s = 0.0;
+  int evaluations = 0, dofs = 0, coordinates = 0;
+  for (auto _ : state) {
+    double t0 = sampling_cpu_seconds();
+    const dynamics::RailWaveguide full(
+        fem::mesh_polygon(dynamics::uic60_outline(), o.mesh_size), dynamics::rail_material(t, 0.3),
+        dynamics::FootSupport{t.vertical_support, t.lateral_support, t.longitudinal_support,
+                              t.sleeper_spacing});
+    const dynamics::RailReductionModes modes = full.reduction_modes(o.contact_reduction);
+    modes_s = sampling_cpu_seconds() - t0;
+    bases_s = frequencies_s = 0.0;
+    evaluations = 0;
+    for (const auto& point : kSamplingContacts) {
+      t0 = sampling_cpu_seconds();
+      const Eigen::MatrixXd loads =
+          dynamics::contact_point_loads(full, dynamics::uic60_outline(), o, {point});
+      const dynamics::RailWaveguide r = full.reduced(o.contact_reduction, loads, modes);
+      const double t1 = sampling_cpu_seconds();
+      bases_s += t1 - t0;
+      int points = 0;
+      benchmark::DoNotOptimize(dynamics::sample_receptances(
+          f,
+          [&](double fq) {
+            return std::vector<dynamics::Receptance4>{
+                r.contact_receptance(r.waves(2.0 * M_PI * fq), loads, loads, 0.0)};
+          },
+          o.sampling, &points));
+      frequencies_s += sampling_cpu_seconds() - t1;
+      evaluations += points;
+      dofs = full.dofs();
+      coordinates = std::max(coordinates, r.coordinates());
+    }
+  }
+  state.counters["dofs"] = dofs;
+  state.counters["coordinates"] = coordinates;
+  state.counters["modes_s"] = modes_s;
+  state.counters["bases_s"] = bases_s;
+  state.counters["evaluations"] = evaluations;
+  state.counters["per_frequency_ms"] = 1e3 * frequencies_s / evaluations;
+  state.counters["case_rail_s"] = modes_s + bases_s + frequencies_s;
+}
+BENCHMARK(WaveguideCaseRailCost)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

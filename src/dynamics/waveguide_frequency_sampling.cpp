@@ -13,14 +13,15 @@ namespace rollnoise::dynamics {
 
 namespace {
 
-// Eq. (F1): the largest entry of |a - b| against sqrt(|b_ii| |b_jj|) (the Frobenius norm of b
-// where a diagonal term vanishes).
-double sampling_error(const Receptance4& a, const Receptance4& b) {
+// Eq. (F1): the largest entry of |a - b| against sqrt(|sa_ii| |sb_jj|) (the Frobenius norm of b
+// where that vanishes).
+double sampling_error(const Receptance4& a, const Receptance4& b, const Receptance4& sa,
+                      const Receptance4& sb) {
   double err = 0.0;
   const double scale = b.norm();
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      const double d = std::sqrt(std::abs(b(i, i)) * std::abs(b(j, j)));
+      const double d = std::sqrt(std::abs(sa(i, i)) * std::abs(sb(j, j)));
       const double s = d > 0.0 ? d : scale;
       if (s > 0.0) err = std::max(err, std::abs(a(i, j) - b(i, j)) / s);
     }
@@ -59,7 +60,8 @@ int split_sample(const std::vector<double>& x, int a, int b) {
 std::vector<std::vector<Receptance4>> sample_receptances(
     const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
-    const FrequencySampling& sampling, int* evaluations) {
+    const FrequencySampling& sampling, int* evaluations,
+    const std::vector<std::pair<int, int>>& scales) {
   std::vector<double> f = frequencies;  // the distinct frequencies, ascending
   std::sort(f.begin(), f.end());
   f.erase(std::unique(f.begin(), f.end()), f.end());
@@ -103,9 +105,13 @@ std::vector<std::vector<Receptance4>> sample_receptances(
     std::vector<std::pair<int, std::vector<Receptance4>>> added;
     for (std::size_t k = 0; k < open.size(); ++k) {
       added.emplace_back(mid[k], evaluate(f[mid[k]]));
+      const std::vector<Receptance4>& direct = added.back().second;
       double err = 0.0;
-      for (std::size_t p = 0; p < pairs; ++p)
-        err = std::max(err, sampling_error(predicted[p][k], added.back().second.at(p)));
+      for (std::size_t p = 0; p < pairs; ++p) {
+        const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+        err = std::max(err, sampling_error(predicted[p][k], direct.at(p), direct.at(sa),
+                                           direct.at(sb)));
+      }
       if (err <= sampling.tolerance) continue;
       for (const auto& [a, b] : {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
         if (b - a >= 2) still_open.emplace_back(a, b);

@@ -11,10 +11,12 @@
 // compared with the interpolation of the samples of the pass before; where the difference exceeds
 // `tolerance`
 //
-//   max_ij |R_ij^interp - R_ij| / sqrt(|R_ii| |R_jj|)                                        (F1)
+//   max_ij |R_ij^interp - R_ij| / sqrt(|S_a,ii| |S_b,jj|)                                    (F1)
 //
-// (every entry against the geometric mean of its row's and column's diagonal terms, so the small
-// couplings count on the scale of the point receptances, not their own) the two halves stay open,
+// (every entry of a pair (a, b) against the geometric mean of the point receptances' diagonal
+// terms of its two points, S_a = R_aa at x = 0, so the small couplings and the transfers between
+// distant points count on the scale of the point receptances, not their own; for a point
+// receptance S_a = S_b = R) the two halves stay open,
 // else they close. The new sample joins the samples either way. Refinement ends where an interval
 // holds no grid frequency inside: there every frequency is computed directly, as near a wave's
 // cut-on (the 1/sqrt(f - f_c) onset, smoothed only by the steel's loss), which no smooth
@@ -24,6 +26,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "dynamics/receptance.hpp"
@@ -40,11 +43,14 @@ struct FrequencySampling {
 };
 
 /// The values of every pair (`evaluate(f)` returns one 4x4 per pair, always as many) at each of
-/// `frequencies` (Hz, > 0, any order, repeats allowed): per pair, per frequency. `evaluations`,
-/// if given, receives the number of direct evaluations.
+/// `frequencies` (Hz, > 0, any order, repeats allowed): per pair, per frequency. `scales`: per
+/// pair the indices of the two values whose diagonals are S_a and S_b of Eq. (F1) (the point
+/// receptances of its two points); empty: each pair its own. `evaluations`, if given, receives the
+/// number of direct evaluations.
 std::vector<std::vector<Receptance4>> sample_receptances(
     const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
-    const FrequencySampling& sampling, int* evaluations = nullptr);
+    const FrequencySampling& sampling, int* evaluations = nullptr,
+    const std::vector<std::pair<int, int>>& scales = {});
 
 }  // namespace rollnoise::dynamics

@@ -210,9 +210,24 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     std::vector<std::size_t> which;
     for (std::size_t p = 0; p < pairs.size(); ++p)
       if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
+    // Eq. (F1)'s scales: each point's receptance (a, a, 0), appended where not asked for
+    const std::size_t asked = within.size();
+    auto point_value = [&](int a) {
+      const std::tuple<int, int, double> key(a, a, 0.0);
+      const auto it = std::find(within.begin(), within.end(), key);
+      if (it != within.end()) return static_cast<int>(it - within.begin());
+      within.push_back(key);
+      return static_cast<int>(within.size()) - 1;
+    };
+    std::vector<std::pair<int, int>> scales;
+    for (std::size_t i = 0; i < asked; ++i) {
+      const int a = std::get<0>(within[i]), b = std::get<1>(within[i]);
+      const int sa = point_value(a), sb = point_value(b);
+      scales.emplace_back(sa, sb);
+    }
     std::vector<std::vector<Receptance4>> v = sample_receptances(
-        frequencies,
-        [&](double f) { return between(*st, checked_complex_omega(f), within); }, sampling);
+        frequencies, [&](double f) { return between(*st, checked_complex_omega(f), within); },
+        sampling, nullptr, scales);
     for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
