@@ -220,6 +220,10 @@ void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd
 
 namespace {
 
+// The static responses' shift (rad/s)^2 (the free rail's rigid modes at k = 0: K + shift M is
+// positive definite).
+const double kStaticShift = std::pow(2.0 * M_PI * 10.0, 2);
+
 // The support's static stiffness on the full model's nodal degrees of freedom.
 Eigen::MatrixXd static_support(const FullMatrices& f, const std::optional<FootSupport>& support,
                                int nn) {
@@ -305,6 +309,13 @@ RailReductionModes RailWaveguide::reduction_modes(const RailReduction& reduction
   RailReductionModes out;
   for (double k : reduction.wavenumbers)
     out.modes.push_back(section_modes_below(mass, f.k0 + k * f.k1 + k * k * f.k2 + ks, lambda_max));
+  // the static solves' factors, the same for every set of loads
+  for (double k : reduction.static_wavenumbers.empty() ? reduction.wavenumbers
+                                                       : reduction.static_wavenumbers) {
+    out.static_factors.emplace_back(f.k0 + k * f.k1 + k * k * f.k2 + ks + kStaticShift * f.m);
+    if (out.static_factors.back().info() != Eigen::Success)
+      throw NumericalError("rail waveguide: the static stiffness is not positive definite");
+  }
   return out;
 }
 
@@ -327,12 +338,15 @@ RailWaveguide RailWaveguide::reduced(const RailReduction& reduction, const Eigen
   Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
   for (int i = 0; i < n; ++i)
     split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
-  const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
   std::vector<Eigen::VectorXd> vectors;
+  std::size_t statics = 0;  // static wavenumbers done (the factors of `modes` in this order)
   auto add_static_responses = [&](double k) {
-    const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
-    const Eigen::LDLT<Eigen::MatrixXd> static_solve(K + shift * f.m);
-    const Eigen::MatrixXd u = static_solve.solve(split);
+    const Eigen::MatrixXd u =
+        statics < modes.static_factors.size()
+            ? modes.static_factors[statics].solve(split)
+            : Eigen::LLT<Eigen::MatrixXd>(f.k0 + k * f.k1 + k * k * f.k2 + ks + kStaticShift * f.m)
+                  .solve(split);
+    ++statics;
     for (int j = 0; j < u.cols(); ++j) vectors.push_back(u.col(j));
   };
   const bool statics_with_modes = reduction.static_wavenumbers.empty();

@@ -63,6 +63,7 @@
 // (the evanescent waves of high order, dropped with the high modes) keeps its flexibility.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -117,6 +118,9 @@ RailReduction near_field_reduction();
 /// per model and passed to reduced() for each set of loads.
 struct RailReductionModes {
   std::vector<std::vector<Eigen::VectorXd>> modes;  ///< per wavenumber, full nodal vectors
+  /// Cholesky factors of K(k) + shift M at each wavenumber of the static responses (the
+  /// static_wavenumbers, or the wavenumbers if those are empty), for reduced()'s static solves.
+  std::vector<Eigen::LLT<Eigen::MatrixXd>> static_factors;
 };
 
 class RailWaveguide {
