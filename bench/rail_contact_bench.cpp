@@ -82,9 +82,9 @@ void RailContactGrid(benchmark::State& state) {
   state.counters["err_band_dB"] = err_band_db;
   const double hi = curve_grid().back(), lo = curve_grid().front();
   state.counters["frequencies"] = static_cast<double>(d.size());
-  state.counters["points"] =
-      o.sampling.per_octave > 0 ? std::ceil(o.sampling.per_octave * std::log2(hi / lo)) + 1
-                                : d.size();
+  state.counters["points"] = o.sampling.per_octave > 0
+                                 ? std::ceil(o.sampling.per_octave * std::log2(hi / lo)) + 1
+                                 : d.size();
   state.counters["err_dB"] = err_db;
   state.counters["err_rel"] = err_rel;
 }

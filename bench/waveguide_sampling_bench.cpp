@@ -4,13 +4,13 @@
 // one, at curve_300m's four contact points.
 //
 // WaveguideSampling/p/t: starting grid p points per octave, Eq. (F1) tolerance t x 1e-4 (t = 0:
-// the fixed grid of p per octave, no refinement; the loop's: 4/300); the default waveguide (UIC60, 30 mm mesh: 225
-// nodes, n = 675; near_field_reduction(): m = 86; 10 mm patch) on the 864 frequencies of
-// curve_300m (1/3-octave bands 100 Hz - 5 kHz, 48 per band). The direct values of all 864
-// frequencies are computed once per point (~5 s each, not timed) and the sampler reads them, so
-// the counters are the sampler's alone: `evaluations` direct frequencies summed over the four
-// points (the eigenproblems the case solves), `max_points` of one point, `err_dB` the largest |dB|
-// difference of a diagonal term from the direct value (narrow band), `err_rel` the largest Eq.
+// the fixed grid of p per octave, no refinement; the loop's: 4/300); the default waveguide (UIC60,
+// 30 mm mesh: 225 nodes, n = 675; near_field_reduction(): m = 86; 10 mm patch) on the 864
+// frequencies of curve_300m (1/3-octave bands 100 Hz - 5 kHz, 48 per band). The direct values of
+// all 864 frequencies are computed once per point (~5 s each, not timed) and the sampler reads
+// them, so the counters are the sampler's alone: `evaluations` direct frequencies summed over the
+// four points (the eigenproblems the case solves), `max_points` of one point, `err_dB` the largest
+// |dB| difference of a diagonal term from the direct value (narrow band), `err_rel` the largest Eq.
 // (F1) error over the grid, `err_band_dB` the largest error of a 1/3-octave band level of a
 // diagonal term (mean |R_ii|^2 over the band's 48 samples, as the loop's bands average).
 //
@@ -32,9 +32,9 @@
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
-#include "fem/mesh.hpp"
 #include "dynamics/waveguide_frequency_sampling.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
+#include "fem/mesh.hpp"
 #include "noise/bands.hpp"
 
 using namespace rollnoise;
@@ -87,8 +87,8 @@ void WaveguideSampling(benchmark::State& state) {
       for (std::size_t k = 0; k < f.size(); ++k) {
         const dynamics::Receptance4 e = r[k] - d[k];
         for (int i = 0; i < 4; ++i) {
-          err_db = std::max(err_db, std::abs(20.0 * std::log10(std::abs(r[k](i, i)) /
-                                                                std::abs(d[k](i, i)))));
+          err_db = std::max(
+              err_db, std::abs(20.0 * std::log10(std::abs(r[k](i, i)) / std::abs(d[k](i, i)))));
           for (int j = 0; j < 4; ++j)
             err_rel = std::max(err_rel, std::abs(e(i, j)) /
                                             std::sqrt(std::abs(d[k](i, i)) * std::abs(d[k](j, j))));

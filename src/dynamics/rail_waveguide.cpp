@@ -96,8 +96,7 @@ RailWaveguide::RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial
       throw InputError("rail_support", "sleeper spacing must be > 0");
   }
   const int nn = static_cast<int>(mesh_.nodes.size());
-  apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn),
-              true);
+  apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn), true);
 }
 
 namespace {
@@ -274,8 +273,8 @@ std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixX
   // vl below the lowest eigenvalue (Gershgorin bound of T), vu = lambda_max
   double lowest = 0.0;
   for (int i = 0; i < n; ++i)
-    lowest = std::min(lowest, d(i) - (i > 0 ? std::abs(e(i - 1)) : 0.0) -
-                                  (i + 1 < n ? std::abs(e(i)) : 0.0));
+    lowest = std::min(
+        lowest, d(i) - (i > 0 ? std::abs(e(i - 1)) : 0.0) - (i + 1 < n ? std::abs(e(i)) : 0.0));
   const double vl = lowest - 1.0 - 1e-6 * std::abs(lowest), vu = lambda_max, abstol = 0.0;
   const int one = 1;
   int found = 0, info = 0;
@@ -289,7 +288,7 @@ std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixX
     throw NumericalError("rail waveguide: cross-section eigensolver failed (LAPACK dstevx, info " +
                          std::to_string(info) + ")");
   Eigen::MatrixXd modes = tri.matrixQ() * Z.leftCols(found);  // eigenvectors of C
-  modes = mass.matrixU().solve(modes);                         // phi = L^{-T} z
+  modes = mass.matrixU().solve(modes);                        // phi = L^{-T} z
   std::vector<Eigen::VectorXd> out;
   for (int j = 0; j < found; ++j) out.push_back(modes.col(j));
   return out;

@@ -32,8 +32,8 @@ double sampling_error(const Receptance4& a, const Receptance4& b, const Receptan
 // of `x` = ln f (sorted, distinct), each the nearest grid point, both ends included.
 std::vector<int> starting_samples(const std::vector<double>& x, int per_octave) {
   const int n = static_cast<int>(x.size());
-  const int intervals = std::max(
-      3, static_cast<int>(std::ceil(per_octave * (x.back() - x.front()) / std::log(2.0))));
+  const int intervals =
+      std::max(3, static_cast<int>(std::ceil(per_octave * (x.back() - x.front()) / std::log(2.0))));
   std::vector<int> out;
   for (int i = 0; i <= intervals; ++i) {
     const double target = x.front() + (x.back() - x.front()) * i / intervals;
@@ -109,11 +109,12 @@ std::vector<std::vector<Receptance4>> sample_receptances(
       double err = 0.0;
       for (std::size_t p = 0; p < pairs; ++p) {
         const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
-        err = std::max(err, sampling_error(predicted[p][k], direct.at(p), direct.at(sa),
-                                           direct.at(sb)));
+        err = std::max(err,
+                       sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
       }
       if (err <= sampling.tolerance) continue;
-      for (const auto& [a, b] : {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
+      for (const auto& [a, b] :
+           {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
         if (b - a >= 2) still_open.emplace_back(a, b);
     }
     for (auto& s : added) samples.emplace(s.first, std::move(s.second));

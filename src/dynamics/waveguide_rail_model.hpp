@@ -75,9 +75,9 @@ class WaveguideRailModel : public RailModel {
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
   /// At the contacts themselves (header comment); sampled as options.sampling says (the rest
   /// interpolated) when `interpolate`, else every frequency directly.
-  std::vector<std::vector<Receptance6>> contact_transfers(
-      const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
-      bool interpolate = true) const override;
+  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
+                                                          const std::vector<RailContactPair>& pairs,
+                                                          bool interpolate = true) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
@@ -91,10 +91,10 @@ class WaveguideRailModel : public RailModel {
   /// a's contact frame per unit force of b in b's frame (Eq. W4 with both points' loads in one
   /// Ritz basis). contact_transfer(f, a, a, 0) = contact_receptance(f, a) up to the basis (the
   /// pair's basis is richer); contact_transfer(f, a, b, x) = contact_transfer(f, b, a, -x)^T.
-  Receptance4 contact_transfer(double frequency, double offset_a, double angle_a,
-                               double offset_b, double angle_b, double x) const;
-  Receptance4 contact_transfer_laplace(cdouble s, double offset_a, double angle_a,
-                                       double offset_b, double angle_b, double x) const;
+  Receptance4 contact_transfer(double frequency, double offset_a, double angle_a, double offset_b,
+                               double angle_b, double x) const;
+  Receptance4 contact_transfer_laplace(cdouble s, double offset_a, double angle_a, double offset_b,
+                                       double angle_b, double x) const;
   /// The point (y, z) (m) of the outline where a contact at (offset_y, contact_angle) is loaded.
   Eigen::Vector2d contact_point(double offset_y, double contact_angle) const;
 
@@ -120,8 +120,8 @@ class WaveguideRailModel : public RailModel {
 
   WaveguideRailOptions options_;
   std::vector<Eigen::Vector2d> outline_;
-  RailWaveguide full_;          // the unreduced model, for the contacts' bases
-  RailReductionModes modes_;    // its section modes, the load-independent part of every basis
+  RailWaveguide full_;        // the unreduced model, for the contacts' bases
+  RailReductionModes modes_;  // its section modes, the load-independent part of every basis
   std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
   const Station& crown() const;

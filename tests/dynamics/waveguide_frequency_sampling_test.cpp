@@ -31,8 +31,9 @@ std::vector<double> sampling_test_grid() {
 rd::Receptance4 sampling_test_receptance(double f, double f0, double fc) {
   const double eta = 0.02;
   const cd resonance = 1e-9 / (1.0 - (f / f0) * (f / f0) + cd(0.0, eta));
-  const cd onset = fc > 0.0 ? 2e-10 / std::sqrt(cd(1.0 - (f / fc) * (f / fc), (f / fc) * (f / fc) * eta))
-                            : cd(0.0);
+  const cd onset = fc > 0.0
+                       ? 2e-10 / std::sqrt(cd(1.0 - (f / fc) * (f / fc), (f / fc) * (f / fc) * eta))
+                       : cd(0.0);
   rd::Receptance4 r;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
@@ -45,8 +46,8 @@ double sampling_test_error(const rd::Receptance4& a, const rd::Receptance4& b) {
   double e = 0.0;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
-      e = std::max(e, std::abs(a(i, j) - b(i, j)) /
-                          std::sqrt(std::abs(b(i, i)) * std::abs(b(j, j))));
+      e = std::max(e,
+                   std::abs(a(i, j) - b(i, j)) / std::sqrt(std::abs(b(i, i)) * std::abs(b(j, j))));
   return e;
 }
 
