@@ -37,7 +37,7 @@ const std::vector<double>& curve_grid() {
 const std::vector<dynamics::Receptance4>& direct() {
   static const std::vector<dynamics::Receptance4> r = [] {
     dynamics::WaveguideRailOptions o;
-    o.grid_per_octave = 0;
+    o.sampling.per_octave = 0;
     const dynamics::WaveguideRailModel rail(dynamics::uic60_ballasted(), o);
     return rail.contact_receptances(curve_grid(), kOffset, kAngle);
   }();
@@ -46,7 +46,7 @@ const std::vector<dynamics::Receptance4>& direct() {
 
 void RailContactGrid(benchmark::State& state) {
   dynamics::WaveguideRailOptions o;
-  o.grid_per_octave = static_cast<int>(state.range(0));
+  o.sampling = {static_cast<int>(state.range(0)), 0.0};  // the fixed grid, no refinement
   std::vector<dynamics::Receptance4> r;
   for (auto _ : state) {
     const dynamics::WaveguideRailModel rail(dynamics::uic60_ballasted(), o);
@@ -82,8 +82,9 @@ void RailContactGrid(benchmark::State& state) {
   state.counters["err_band_dB"] = err_band_db;
   const double hi = curve_grid().back(), lo = curve_grid().front();
   state.counters["frequencies"] = static_cast<double>(d.size());
-  state.counters["points"] =
-      o.grid_per_octave > 0 ? std::ceil(o.grid_per_octave * std::log2(hi / lo)) + 1 : d.size();
+  state.counters["points"] = o.sampling.per_octave > 0
+                                 ? std::ceil(o.sampling.per_octave * std::log2(hi / lo)) + 1
+                                 : d.size();
   state.counters["err_dB"] = err_db;
   state.counters["err_rel"] = err_rel;
 }

@@ -96,7 +96,7 @@ RailWaveguide::RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial
       throw InputError("rail_support", "sleeper spacing must be > 0");
   }
   const int nn = static_cast<int>(mesh_.nodes.size());
-  apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn));
+  apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn), true);
 }
 
 namespace {
@@ -186,15 +186,20 @@ Eigen::MatrixXd orthonormal_span(Eigen::MatrixXd columns) {
 
 }  // namespace
 
-void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs) {
+void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs,
+                                bool identity) {
   const FullMatrices f = assemble_full(mesh_, material_, support_);
   const int nn = static_cast<int>(mesh_.nodes.size()), mx = static_cast<int>(vx.cols()),
             m = mx + static_cast<int>(vs.cols());
   const Eigen::VectorXi p = axial_first(nn);
-  Eigen::MatrixXd V = Eigen::MatrixXd::Zero(3 * nn, m);  // in the axial-first order
-  V.topLeftCorner(nn, mx) = vx;
-  V.bottomRightCorner(2 * nn, m - mx) = vs;
+  Eigen::MatrixXd V;  // in the axial-first order (the unreduced model: none, V^T K V = K)
+  if (!identity) {
+    V = Eigen::MatrixXd::Zero(3 * nn, m);
+    V.topLeftCorner(nn, mx) = vx;
+    V.bottomRightCorner(2 * nn, m - mx) = vs;
+  }
   auto project = [&](const Eigen::MatrixXd& k) -> Eigen::MatrixXd {
+    if (identity) return k(p, p);
     return V.transpose() * k(p, p) * V;
   };
   k0_ = project(f.k0);
@@ -213,6 +218,10 @@ void RailWaveguide::apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd
 }
 
 namespace {
+
+// The static responses' shift (rad/s)^2 (the free rail's rigid modes at k = 0: K + shift M is
+// positive definite).
+const double kStaticShift = std::pow(2.0 * M_PI * 10.0, 2);
 
 // The support's static stiffness on the full model's nodal degrees of freedom.
 Eigen::MatrixXd static_support(const FullMatrices& f, const std::optional<FootSupport>& support,
@@ -239,21 +248,72 @@ RailReduction near_field_reduction() {
   return r;
 }
 
+namespace {
+
+// LAPACK's dstevx: selected eigenpairs of a symmetric tridiagonal matrix by bisection and inverse
+// iteration (Anderson et al., LAPACK Users' Guide, 3rd ed. 1999, Sec. 2.4.4).
+extern "C" void dstevx_(const char* jobz, const char* range, const int* n, double* d, double* e,
+                        const double* vl, const double* vu, const int* il, const int* iu,
+                        const double* abstol, int* m, double* w, double* z, const int* ldz,
+                        double* work, int* iwork, int* ifail, int* info);
+
+// The modes K phi = lambda M phi with lambda <= lambda_max, M-orthonormal, ascending; `mass` the
+// Cholesky factor M = L L^T. As the dense generalized solver (C = L^{-1} K L^{-T} = Q T Q^T,
+// Householder tridiagonalization; Golub & Van Loan, Matrix Computations, 4th ed. 2013, Sec. 8.3
+// and 8.7.2) but only the wanted eigenvectors of T, by bisection and inverse iteration, instead of
+// all of them by the QL iteration: the section has ~45 modes below 12 kHz of n = 675.
+std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixXd>& mass,
+                                                 const Eigen::MatrixXd& K, double lambda_max) {
+  const int n = static_cast<int>(K.rows());
+  Eigen::MatrixXd C = mass.matrixL().solve(K);
+  C = mass.matrixL().solve(C.transpose()).transpose();
+  const Eigen::Tridiagonalization<Eigen::MatrixXd> tri(C);
+  Eigen::VectorXd d = tri.diagonal(), e(std::max(1, n - 1));
+  if (n > 1) e.head(n - 1) = tri.subDiagonal();
+  // vl below the lowest eigenvalue (Gershgorin bound of T), vu = lambda_max
+  double lowest = 0.0;
+  for (int i = 0; i < n; ++i)
+    lowest = std::min(
+        lowest, d(i) - (i > 0 ? std::abs(e(i - 1)) : 0.0) - (i + 1 < n ? std::abs(e(i)) : 0.0));
+  const double vl = lowest - 1.0 - 1e-6 * std::abs(lowest), vu = lambda_max, abstol = 0.0;
+  const int one = 1;
+  int found = 0, info = 0;
+  Eigen::VectorXd w(n);
+  Eigen::MatrixXd Z(n, n);
+  std::vector<double> work(5 * n);
+  std::vector<int> iwork(5 * n), ifail(n);
+  dstevx_("V", "V", &n, d.data(), e.data(), &vl, &vu, &one, &one, &abstol, &found, w.data(),
+          Z.data(), &n, work.data(), iwork.data(), ifail.data(), &info);
+  if (info != 0)
+    throw NumericalError("rail waveguide: cross-section eigensolver failed (LAPACK dstevx, info " +
+                         std::to_string(info) + ")");
+  Eigen::MatrixXd modes = tri.matrixQ() * Z.leftCols(found);  // eigenvectors of C
+  modes = mass.matrixU().solve(modes);                        // phi = L^{-T} z
+  std::vector<Eigen::VectorXd> out;
+  for (int j = 0; j < found; ++j) out.push_back(modes.col(j));
+  return out;
+}
+
+}  // namespace
+
 RailReductionModes RailWaveguide::reduction_modes(const RailReduction& reduction) const {
   if (reduction.wavenumbers.empty() || !(reduction.max_frequency > 0.0))
     throw InputError("rail_reduction", "at least one wavenumber and a positive cut-off frequency");
   const FullMatrices f = assemble_full(mesh_, material_, support_);
   const Eigen::MatrixXd ks = static_support(f, support_, static_cast<int>(mesh_.nodes.size()));
   const double lambda_max = std::pow(2.0 * M_PI * reduction.max_frequency, 2);
+  const Eigen::LLT<Eigen::MatrixXd> mass(f.m);  // the same at every wavenumber
+  if (mass.info() != Eigen::Success)
+    throw NumericalError("rail waveguide: the section's mass matrix is not positive definite");
   RailReductionModes out;
-  for (double k : reduction.wavenumbers) {
-    const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, f.m);
-    if (es.info() != Eigen::Success)
-      throw NumericalError("rail waveguide: cross-section eigensolver failed (reduction)");
-    out.modes.emplace_back();
-    for (int j = 0; j < es.eigenvalues().size() && es.eigenvalues()(j) <= lambda_max; ++j)
-      out.modes.back().push_back(es.eigenvectors().col(j));
+  for (double k : reduction.wavenumbers)
+    out.modes.push_back(section_modes_below(mass, f.k0 + k * f.k1 + k * k * f.k2 + ks, lambda_max));
+  // the static solves' factors, the same for every set of loads
+  for (double k : reduction.static_wavenumbers.empty() ? reduction.wavenumbers
+                                                       : reduction.static_wavenumbers) {
+    out.static_factors.emplace_back(f.k0 + k * f.k1 + k * k * f.k2 + ks + kStaticShift * f.m);
+    if (out.static_factors.back().info() != Eigen::Success)
+      throw NumericalError("rail waveguide: the static stiffness is not positive definite");
   }
   return out;
 }
@@ -277,12 +337,15 @@ RailWaveguide RailWaveguide::reduced(const RailReduction& reduction, const Eigen
   Eigen::MatrixXd split = Eigen::MatrixXd::Zero(n, 2 * loads.cols());
   for (int i = 0; i < n; ++i)
     split.row(i).segment(i % 3 == 0 ? 0 : loads.cols(), loads.cols()) = loads.row(i);
-  const double shift = std::pow(2.0 * M_PI * 10.0, 2);  // the free rail's rigid modes at k = 0
   std::vector<Eigen::VectorXd> vectors;
+  std::size_t statics = 0;  // static wavenumbers done (the factors of `modes` in this order)
   auto add_static_responses = [&](double k) {
-    const Eigen::MatrixXd K = f.k0 + k * f.k1 + k * k * f.k2 + ks;
-    const Eigen::LDLT<Eigen::MatrixXd> static_solve(K + shift * f.m);
-    const Eigen::MatrixXd u = static_solve.solve(split);
+    const Eigen::MatrixXd u =
+        statics < modes.static_factors.size()
+            ? modes.static_factors[statics].solve(split)
+            : Eigen::LLT<Eigen::MatrixXd>(f.k0 + k * f.k1 + k * k * f.k2 + ks + kStaticShift * f.m)
+                  .solve(split);
+    ++statics;
     for (int j = 0; j < u.cols(); ++j) vectors.push_back(u.col(j));
   };
   const bool statics_with_modes = reduction.static_wavenumbers.empty();

@@ -63,6 +63,7 @@
 // (the evanescent waves of high order, dropped with the high modes) keeps its flexibility.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -117,6 +118,9 @@ RailReduction near_field_reduction();
 /// per model and passed to reduced() for each set of loads.
 struct RailReductionModes {
   std::vector<std::vector<Eigen::VectorXd>> modes;  ///< per wavenumber, full nodal vectors
+  /// Cholesky factors of K(k) + shift M at each wavenumber of the static responses (the
+  /// static_wavenumbers, or the wavenumbers if those are empty), for reduced()'s static solves.
+  std::vector<Eigen::LLT<Eigen::MatrixXd>> static_factors;
 };
 
 class RailWaveguide {
@@ -202,7 +206,8 @@ class RailWaveguide {
   Eigen::MatrixXd project(const Eigen::MatrixXd& f) const;
   Eigen::MatrixXd nodal_loads(const Eigen::VectorXd& weights, const Eigen::Vector2d& normal,
                               double head_bottom) const;
-  void apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs);
+  /// `identity`: vx, vs are identities (the unreduced model; the projection is skipped).
+  void apply_basis(const Eigen::MatrixXd& vx, const Eigen::MatrixXd& vs, bool identity = false);
 };
 
 /// The bottom of the UIC60 head (z of the head's underside at its side, m) for contact_loads.

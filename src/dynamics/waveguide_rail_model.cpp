@@ -50,17 +50,24 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
       full_(full_model(track, options)),
-      modes_(full_.reduction_modes(options.contact_reduction)),
-      rail_(full_) {
-  if (options.grid_per_octave < 0)
+      modes_(full_.reduction_modes(options.contact_reduction)) {
+  if (options.sampling.per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
-  loads_ = full_.patch_loads(crown_of(full_.mesh()), options.patch_half_width,
-                             Eigen::Vector2d(0.0, 1.0), options.head_bottom);
-  rail_ = full_.reduced(options.contact_reduction, loads_, modes_);
+}
+
+const WaveguideRailModel::Station& WaveguideRailModel::crown() const {
+  std::call_once(crown_->once, [this] {
+    Eigen::MatrixXd loads = full_.patch_loads(crown_of(full_.mesh()), options_.patch_half_width,
+                                              Eigen::Vector2d(0.0, 1.0), options_.head_bottom);
+    crown_->station = std::make_shared<const Station>(
+        Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
+  });
+  return *crown_->station;
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
-  return rail_.contact_receptance(rail_.waves(omega), loads_, loads_, 0.0);
+  const Station& c = crown();
+  return c.model.contact_receptance(c.model.waves(omega), c.loads, c.loads, 0.0);
 }
 
 Receptance4 WaveguideRailModel::receptance(double frequency) const {
@@ -185,30 +192,17 @@ PointSets point_sets(const std::vector<RailContactPair>& pairs) {
   return out;
 }
 
-// The direct grid of contact_transfers: grid_per_octave points per octave from the lowest to the
-// highest frequency (both included); empty if every frequency is to be computed directly.
-std::vector<double> direct_grid(const std::vector<double>& frequencies, int per_octave) {
-  if (frequencies.empty() || per_octave <= 0) return {};
-  const auto [lo, hi] = std::minmax_element(frequencies.begin(), frequencies.end());
-  const int intervals = std::max(3, static_cast<int>(std::ceil(per_octave * std::log2(*hi / *lo))));
-  if (intervals + 1 >= static_cast<int>(frequencies.size()) || !(*hi > *lo)) return {};
-  std::vector<double> grid(intervals + 1);
-  for (int i = 0; i <= intervals; ++i)
-    grid[i] = i == intervals ? *hi : *lo * std::pow(*hi / *lo, double(i) / intervals);
-  return grid;
-}
-
 }  // namespace
 
 std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
   for (double f : frequencies) checked_omega(f);
+  if (frequencies.empty()) return {};
   const PointSets sets = point_sets(pairs);
-  const std::vector<double> grid =
-      interpolate ? direct_grid(frequencies, options_.grid_per_octave) : std::vector<double>{};
-  const std::vector<double>& direct = grid.empty() ? frequencies : grid;
-  // the contact-frame 4x4 of each pair at the direct frequencies, one basis per set of points
+  FrequencySampling sampling = options_.sampling;
+  if (!interpolate) sampling.per_octave = 0;
+  // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
   std::vector<std::vector<Receptance4>> values(pairs.size());
   for (std::size_t s = 0; s < sets.points.size(); ++s) {
     const std::shared_ptr<const Station> st = station(sets.points[s]);
@@ -216,13 +210,26 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     std::vector<std::size_t> which;
     for (std::size_t p = 0; p < pairs.size(); ++p)
       if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
-    for (double f : direct) {
-      const std::vector<Receptance4> r = between(*st, checked_complex_omega(f), within);
-      for (std::size_t i = 0; i < which.size(); ++i) values[which[i]].push_back(r[i]);
+    // Eq. (F1)'s scales: each point's receptance (a, a, 0), appended where not asked for
+    const std::size_t asked = within.size();
+    auto point_value = [&](int a) {
+      const std::tuple<int, int, double> key(a, a, 0.0);
+      const auto it = std::find(within.begin(), within.end(), key);
+      if (it != within.end()) return static_cast<int>(it - within.begin());
+      within.push_back(key);
+      return static_cast<int>(within.size()) - 1;
+    };
+    std::vector<std::pair<int, int>> scales;
+    for (std::size_t i = 0; i < asked; ++i) {
+      const int a = std::get<0>(within[i]), b = std::get<1>(within[i]);
+      const int sa = point_value(a), sb = point_value(b);
+      scales.emplace_back(sa, sb);
     }
+    std::vector<std::vector<Receptance4>> v = sample_receptances(
+        frequencies, [&](double f) { return between(*st, checked_complex_omega(f), within); },
+        sampling, nullptr, scales);
+    for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
-  if (!grid.empty())
-    for (auto& v : values) v = interpolate_receptances(grid, v, frequencies);
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
                                             std::vector<Receptance6>(pairs.size()));
   for (std::size_t k = 0; k < frequencies.size(); ++k)
@@ -257,17 +264,19 @@ RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
 
 std::vector<Receptance4> WaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
-  const RailWaves w = rail_.waves(checked_complex_omega(frequency));
+  const Station& c = crown();
+  const RailWaves w = c.model.waves(checked_complex_omega(frequency));
   std::vector<Receptance4> out;
   for (const auto& [xr, xe] : pairs)
-    out.push_back(rail_.contact_receptance(w, loads_, loads_, xr - xe));
+    out.push_back(c.model.contact_receptance(w, c.loads, c.loads, xr - xe));
   return out;
 }
 
 Receptance4 WaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
                                                       double x_load) const {
-  return rail_.contact_receptance(rail_.waves(checked_laplace(s)), loads_, loads_,
-                                  x_response - x_load);
+  const Station& c = crown();
+  return c.model.contact_receptance(c.model.waves(checked_laplace(s)), c.loads, c.loads,
+                                    x_response - x_load);
 }
 
 Receptance4 WaveguideRailModel::contact_receptance(double frequency, double offset_y,

@@ -24,19 +24,21 @@
 //
 // The load is a uniform traction over the boundary within `patch_half_width` of the point (not a
 // nodal point force, whose receptance grows as the mesh is refined), and the response is the same
-// average (reciprocal). contact_transfers() on a grid of many frequencies computes them on a
-// logarithmic grid of `grid_per_octave` points per octave and interpolates
-// (cubic Hermite in ln f, each entry; docs/models.md Sec. 2.5b gives the error).
+// average (reciprocal). contact_transfers() on a grid of many frequencies computes them directly
+// on an adaptively chosen part of it and interpolates the rest (cubic Hermite in ln f, each entry;
+// waveguide_frequency_sampling.hpp; docs/models.md Sec. 2.5b gives the error).
 #pragma once
 
 #include <Eigen/Core>
 #include <memory>
+#include <mutex>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
+#include "dynamics/waveguide_frequency_sampling.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -51,9 +53,9 @@ struct WaveguideRailOptions {
   RailReduction reduction;
   /// The continuous waveguide's basis at the crown and the contacts (WaveguideRailModel).
   RailReduction contact_reduction = near_field_reduction();
-  /// contact_receptances(): points per octave of the grid computed directly (0: every
-  /// frequency directly).
-  int grid_per_octave = 24;
+  /// contact_transfers() on a grid: the frequencies computed directly, the others interpolated
+  /// (waveguide_frequency_sampling.hpp; per_octave = 0: every frequency directly).
+  FrequencySampling sampling;
 };
 
 class WaveguideRailModel : public RailModel {
@@ -71,11 +73,11 @@ class WaveguideRailModel : public RailModel {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  /// At the contacts themselves (header comment); interpolated on grid_per_octave points per
-  /// octave when `interpolate` and the grid is finer than that.
-  std::vector<std::vector<Receptance6>> contact_transfers(
-      const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
-      bool interpolate = true) const override;
+  /// At the contacts themselves (header comment); sampled as options.sampling says (the rest
+  /// interpolated) when `interpolate`, else every frequency directly.
+  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
+                                                          const std::vector<RailContactPair>& pairs,
+                                                          bool interpolate = true) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
@@ -89,16 +91,17 @@ class WaveguideRailModel : public RailModel {
   /// a's contact frame per unit force of b in b's frame (Eq. W4 with both points' loads in one
   /// Ritz basis). contact_transfer(f, a, a, 0) = contact_receptance(f, a) up to the basis (the
   /// pair's basis is richer); contact_transfer(f, a, b, x) = contact_transfer(f, b, a, -x)^T.
-  Receptance4 contact_transfer(double frequency, double offset_a, double angle_a,
-                               double offset_b, double angle_b, double x) const;
-  Receptance4 contact_transfer_laplace(cdouble s, double offset_a, double angle_a,
-                                       double offset_b, double angle_b, double x) const;
+  Receptance4 contact_transfer(double frequency, double offset_a, double angle_a, double offset_b,
+                               double angle_b, double x) const;
+  Receptance4 contact_transfer_laplace(cdouble s, double offset_a, double angle_a, double offset_b,
+                                       double angle_b, double x) const;
   /// The point (y, z) (m) of the outline where a contact at (offset_y, contact_angle) is loaded.
   Eigen::Vector2d contact_point(double offset_y, double contact_angle) const;
 
-  const RailWaveguide& waveguide() const { return rail_; }
+  /// The crown's reduced model (built on first use: the loop at the contacts does not need it).
+  const RailWaveguide& waveguide() const { return crown().model; }
   /// The load (and response) distributions at the crown, dofs() x 4 (Receptance4 order).
-  const Eigen::MatrixXd& crown_loads() const { return loads_; }
+  const Eigen::MatrixXd& crown_loads() const { return crown().loads; }
 
  private:
   /// Loaded points of the section (contacts, (offset, angle) each), their reduced model and loads
@@ -109,13 +112,19 @@ class WaveguideRailModel : public RailModel {
     Eigen::MatrixXd loads;
   };
 
+  /// The crown's station, built once on first use (thread-safe; shared by copies).
+  struct LazyCrown {
+    std::once_flag once;
+    std::shared_ptr<const Station> station;
+  };
+
   WaveguideRailOptions options_;
   std::vector<Eigen::Vector2d> outline_;
-  RailWaveguide full_;          // the unreduced model, for the contacts' bases
-  RailReductionModes modes_;    // its section modes, the load-independent part of every basis
-  RailWaveguide rail_;          // the crown's reduced model
-  Eigen::MatrixXd loads_;
+  RailWaveguide full_;        // the unreduced model, for the contacts' bases
+  RailReductionModes modes_;  // its section modes, the load-independent part of every basis
+  std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
+  const Station& crown() const;
   Receptance4 at(cdouble omega) const;
   std::shared_ptr<const Station> station(const Points& points) const;
   /// The contact-frame 4x4 of every pair at omega, the pairs given as (point a, point b, x_a -

@@ -1,0 +1,139 @@
+#include "dynamics/waveguide_frequency_sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <utility>
+
+#include "core/errors.hpp"
+#include "dynamics/waveguide_rail_model.hpp"
+
+namespace rollnoise::dynamics {
+
+namespace {
+
+// Eq. (F1): the largest entry of |a - b| against sqrt(|sa_ii| |sb_jj|) (the Frobenius norm of b
+// where that vanishes).
+double sampling_error(const Receptance4& a, const Receptance4& b, const Receptance4& sa,
+                      const Receptance4& sb) {
+  double err = 0.0;
+  const double scale = b.norm();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double d = std::sqrt(std::abs(sa(i, i)) * std::abs(sb(j, j)));
+      const double s = d > 0.0 ? d : scale;
+      if (s > 0.0) err = std::max(err, std::abs(a(i, j) - b(i, j)) / s);
+    }
+  return err;
+}
+
+// The indices of the starting grid: per octave `per_octave` points from the lowest to the highest
+// of `x` = ln f (sorted, distinct), each the nearest grid point, both ends included.
+std::vector<int> starting_samples(const std::vector<double>& x, int per_octave) {
+  const int n = static_cast<int>(x.size());
+  const int intervals =
+      std::max(3, static_cast<int>(std::ceil(per_octave * (x.back() - x.front()) / std::log(2.0))));
+  std::vector<int> out;
+  for (int i = 0; i <= intervals; ++i) {
+    const double target = x.front() + (x.back() - x.front()) * i / intervals;
+    int j = static_cast<int>(std::lower_bound(x.begin(), x.end(), target) - x.begin());
+    if (j >= n) j = n - 1;
+    if (j > 0 && target - x[j - 1] < x[j] - target) --j;
+    if (out.empty() || out.back() != j) out.push_back(j);
+  }
+  return out;
+}
+
+// The grid point strictly between samples a and b nearest the point a third of the way in ln f
+// (b - a >= 2). Not the midpoint: there the Hermite interpolant's error from equal slope errors at
+// both ends cancels (h10(1/2) = -h11(1/2)), so a midpoint check would miss it.
+int split_sample(const std::vector<double>& x, int a, int b) {
+  const double target = x[a] + (x[b] - x[a]) / 3.0;
+  int j = static_cast<int>(std::lower_bound(x.begin() + a, x.begin() + b, target) - x.begin());
+  if (j > a + 1 && target - x[j - 1] < x[j] - target) --j;
+  return std::clamp(j, a + 1, b - 1);
+}
+
+}  // namespace
+
+std::vector<std::vector<Receptance4>> sample_receptances(
+    const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, int* evaluations,
+    const std::vector<std::pair<int, int>>& scales) {
+  std::vector<double> f = frequencies;  // the distinct frequencies, ascending
+  std::sort(f.begin(), f.end());
+  f.erase(std::unique(f.begin(), f.end()), f.end());
+  if (!f.empty() && !(f.front() > 0.0))
+    throw NumericalError("sample_receptances: frequencies must be > 0 Hz");
+  const int n = static_cast<int>(f.size());
+  std::vector<double> x(n);
+  for (int i = 0; i < n; ++i) x[i] = std::log(f[i]);
+  std::map<int, std::vector<Receptance4>> samples;  // grid index -> every pair's value
+  auto sample = [&](int i) { samples.emplace(i, evaluate(f[i])); };
+  std::vector<int> start;
+  if (sampling.per_octave > 0 && n > 4) start = starting_samples(x, sampling.per_octave);
+  if (start.empty() || start.size() + 1 >= static_cast<std::size_t>(n)) {
+    start.resize(n);  // as many samples as frequencies: every one directly
+    for (int i = 0; i < n; ++i) start[i] = i;
+  }
+  for (int i : start) sample(i);
+  std::size_t pairs = samples.empty() ? 0 : samples.begin()->second.size();
+  // The interpolation of the current samples, per pair, at grid points `at`.
+  auto interpolated = [&](const std::vector<int>& at) {
+    std::vector<double> grid, where;
+    for (const auto& s : samples) grid.push_back(f[s.first]);
+    for (int i : at) where.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> out(pairs);
+    for (std::size_t p = 0; p < pairs; ++p) {
+      std::vector<Receptance4> v;
+      for (const auto& s : samples) v.push_back(s.second.at(p));
+      out[p] = interpolate_receptances(grid, v, where);
+    }
+    return out;
+  };
+  std::vector<std::pair<int, int>> open;
+  if (sampling.tolerance > 0.0 && samples.size() < static_cast<std::size_t>(n))
+    for (std::size_t i = 0; i + 1 < start.size(); ++i)
+      if (start[i + 1] - start[i] >= 2) open.emplace_back(start[i], start[i + 1]);
+  while (!open.empty()) {  // one pass: every open interval's midpoint against the samples before
+    std::vector<int> mid;
+    for (const auto& [a, b] : open) mid.push_back(split_sample(x, a, b));
+    const std::vector<std::vector<Receptance4>> predicted = interpolated(mid);
+    std::vector<std::pair<int, int>> still_open;
+    std::vector<std::pair<int, std::vector<Receptance4>>> added;
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      added.emplace_back(mid[k], evaluate(f[mid[k]]));
+      const std::vector<Receptance4>& direct = added.back().second;
+      double err = 0.0;
+      for (std::size_t p = 0; p < pairs; ++p) {
+        const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+        err = std::max(err,
+                       sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
+      }
+      if (err <= sampling.tolerance) continue;
+      for (const auto& [a, b] :
+           {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
+        if (b - a >= 2) still_open.emplace_back(a, b);
+    }
+    for (auto& s : added) samples.emplace(s.first, std::move(s.second));
+    open = std::move(still_open);
+  }
+  if (evaluations) *evaluations = static_cast<int>(samples.size());
+  // every requested frequency: its sample, or the interpolation of the samples
+  std::vector<std::vector<Receptance4>> out(pairs);
+  const bool all = samples.size() == static_cast<std::size_t>(n);
+  std::vector<int> every(n);
+  for (int i = 0; i < n; ++i) every[i] = i;
+  const std::vector<std::vector<Receptance4>> values =
+      all ? std::vector<std::vector<Receptance4>>{} : interpolated(every);
+  for (double fq : frequencies) {
+    const int i = static_cast<int>(std::lower_bound(f.begin(), f.end(), fq) - f.begin());
+    for (std::size_t p = 0; p < pairs; ++p)
+      out[p].push_back(all ? samples.at(i).at(p) : values[p][i]);
+  }
+  return out;
+}
+
+}  // namespace rollnoise::dynamics

@@ -1,0 +1,56 @@
+// Sampling the waveguide rail's receptances on a frequency grid with fewer direct evaluations
+// (each one m x m wavenumber eigenproblem, rail_waveguide.hpp Eq. W5): the values are computed
+// directly on a subset of the grid and interpolated by cubic Hermite in ln f
+// (interpolate_receptances, waveguide_rail_model.hpp) at the others.
+//
+// The subset is chosen adaptively (docs/models.md Sec. 2.5b, "The frequency grid"): a starting
+// grid of `per_octave` points per octave (grid frequencies nearest to it, both ends included),
+// then, pass by pass, every open interval between two neighbouring samples gets its point a third
+// of the way in ln f (the nearest grid frequency strictly inside; not the midpoint, where the
+// Hermite interpolant's error from equal slope errors at both ends cancels) evaluated directly and
+// compared with the interpolation of the samples of the pass before; where the difference exceeds
+// `tolerance`
+//
+//   max_ij |R_ij^interp - R_ij| / sqrt(|S_a,ii| |S_b,jj|)                                    (F1)
+//
+// (every entry of a pair (a, b) against the geometric mean of the point receptances' diagonal
+// terms of its two points, S_a = R_aa at x = 0, so the small couplings and the transfers between
+// distant points count on the scale of the point receptances, not their own; for a point
+// receptance S_a = S_b = R) the two halves stay open,
+// else they close. The new sample joins the samples either way. Refinement ends where an interval
+// holds no grid frequency inside: there every frequency is computed directly, as near a wave's
+// cut-on (the 1/sqrt(f - f_c) onset, smoothed only by the steel's loss), which no smooth
+// interpolant resolves (the classic adaptive bisection with an interpolation error estimate: de
+// Boor, A Practical Guide to Splines, 2001, Ch. XII; Press et al., Numerical Recipes, 3rd ed.
+// 2007, Sec. 4.7 for the same idea in quadrature).
+#pragma once
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "dynamics/receptance.hpp"
+
+namespace rollnoise::dynamics {
+
+/// How contact_transfers samples a frequency grid (WaveguideRailOptions).
+struct FrequencySampling {
+  /// Starting grid, points per octave (0: every frequency directly).
+  int per_octave = 4;
+  /// Eq. (F1)'s bound for closing an interval; <= 0: no refinement (the starting grid alone, as
+  /// the fixed grid of 24 per octave was before).
+  double tolerance = 0.03;
+};
+
+/// The values of every pair (`evaluate(f)` returns one 4x4 per pair, always as many) at each of
+/// `frequencies` (Hz, > 0, any order, repeats allowed): per pair, per frequency. `scales`: per
+/// pair the indices of the two values whose diagonals are S_a and S_b of Eq. (F1) (the point
+/// receptances of its two points); empty: each pair its own. `evaluations`, if given, receives the
+/// number of direct evaluations.
+std::vector<std::vector<Receptance4>> sample_receptances(
+    const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, int* evaluations = nullptr,
+    const std::vector<std::pair<int, int>>& scales = {});
+
+}  // namespace rollnoise::dynamics

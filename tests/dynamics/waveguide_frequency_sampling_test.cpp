@@ -1,0 +1,137 @@
+// Checks of the adaptive frequency sampling of the waveguide rail's receptances
+// (dynamics/waveguide_frequency_sampling.hpp) on analytic receptance-like functions: a damped
+// resonance (smooth in ln f) and a wave's cut-on (the 1/sqrt(f - f_c) onset of a waveguide's
+// point receptance, smoothed by a loss factor), on the noise case's kind of grid (1/3-octave bands
+// 100 Hz - 5 kHz, 48 samples per band: 864 frequencies).
+#include "dynamics/waveguide_frequency_sampling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+namespace rd = rollnoise::dynamics;
+using cd = std::complex<double>;
+
+namespace {
+
+// 1/3-octave bands from 100 Hz to 5 kHz, 48 logarithmically spaced samples per band.
+std::vector<double> sampling_test_grid() {
+  std::vector<double> f;
+  const double lo = 100.0 / std::pow(2.0, 1.0 / 6.0), per = std::log(2.0) / 3.0 / 48.0;
+  for (int i = 0; i < 18 * 48; ++i) f.push_back(lo * std::exp((i + 0.5) * per));
+  return f;
+}
+
+// A 4x4 with a damped resonance at f0 (loss eta) on the diagonal and coupled off-diagonal terms,
+// plus, if fc > 0, a cut-on at fc: 1 / sqrt(1 - (f / fc)^2 (1 - i eta)) (a propagating wave above
+// fc, evanescent below).
+rd::Receptance4 sampling_test_receptance(double f, double f0, double fc) {
+  const double eta = 0.02;
+  const cd resonance = 1e-9 / (1.0 - (f / f0) * (f / f0) + cd(0.0, eta));
+  const cd onset = fc > 0.0
+                       ? 2e-10 / std::sqrt(cd(1.0 - (f / fc) * (f / fc), (f / fc) * (f / fc) * eta))
+                       : cd(0.0);
+  rd::Receptance4 r;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      r(i, j) = (i == j ? 1.0 : 0.2 / (1.0 + i + j)) * (resonance * (1.0 + 0.3 * i) + onset);
+  return r;
+}
+
+// Eq. (F1): the largest entry error against the geometric mean of its diagonal terms.
+double sampling_test_error(const rd::Receptance4& a, const rd::Receptance4& b) {
+  double e = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      e = std::max(e,
+                   std::abs(a(i, j) - b(i, j)) / std::sqrt(std::abs(b(i, i)) * std::abs(b(j, j))));
+  return e;
+}
+
+}  // namespace
+
+// A smooth resonance: a small part of the grid is computed, and the interpolation of the rest is
+// within the tolerance everywhere (the check's estimate is of the coarser interpolant, so
+// the final error is smaller than the tolerance); a tighter tolerance computes more and errs less.
+TEST(WaveguideFrequencySampling, SmoothReceptanceWithinToleranceOnAFewSamples) {
+  const std::vector<double> f = sampling_test_grid();
+  auto evaluate = [](double fq) {
+    return std::vector<rd::Receptance4>{sampling_test_receptance(fq, 250.0, 0.0)};
+  };
+  double previous_error = 1.0;
+  int previous_points = 0;
+  for (double tolerance : {1e-1, 1e-2, 1e-3}) {
+    int points = 0;
+    const std::vector<rd::Receptance4> r =
+        rd::sample_receptances(f, evaluate, {6, tolerance}, &points).front();
+    ASSERT_EQ(r.size(), f.size());
+    double error = 0.0;
+    for (std::size_t k = 0; k < f.size(); ++k)
+      error = std::max(error, sampling_test_error(r[k], evaluate(f[k]).front()));
+    EXPECT_LT(error, tolerance) << "tolerance " << tolerance;
+    EXPECT_LT(error, previous_error);
+    EXPECT_GT(points, previous_points);
+    EXPECT_LT(points, static_cast<int>(f.size()) / 3) << "tolerance " << tolerance;
+    previous_error = error, previous_points = points;
+  }
+}
+
+// A cut-on inside the grid: the sampling refines down to the grid there (every frequency near f_c
+// is computed), and the error stays within the tolerance where the fixed grid of 24 per octave
+// (the former sampling) is off by more than 10 times as much.
+TEST(WaveguideFrequencySampling, RefinesToTheGridAtACutOn) {
+  const std::vector<double> f = sampling_test_grid();
+  const double fc = 3400.0;
+  std::vector<double> evaluated;
+  auto evaluate = [&](double fq) {
+    evaluated.push_back(fq);
+    return std::vector<rd::Receptance4>{sampling_test_receptance(fq, 250.0, fc)};
+  };
+  int points = 0;
+  const double tolerance = 1e-2;
+  const std::vector<rd::Receptance4> r =
+      rd::sample_receptances(f, evaluate, {6, tolerance}, &points).front();
+  EXPECT_EQ(points, static_cast<int>(evaluated.size()));
+  const auto above = std::lower_bound(f.begin(), f.end(), fc);
+  for (auto it = above - 2; it != above + 2; ++it)
+    EXPECT_NE(std::find(evaluated.begin(), evaluated.end(), *it), evaluated.end())
+        << "grid frequency " << *it << " Hz next to the cut-on not computed";
+  evaluated.clear();
+  int fixed_points = 0;
+  const std::vector<rd::Receptance4> fixed =
+      rd::sample_receptances(f, evaluate, {24, 0.0}, &fixed_points).front();
+  double error = 0.0, fixed_error = 0.0;
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    const rd::Receptance4 d = sampling_test_receptance(f[k], 250.0, fc);
+    error = std::max(error, sampling_test_error(r[k], d));
+    fixed_error = std::max(fixed_error, sampling_test_error(fixed[k], d));
+  }
+  EXPECT_LT(error, tolerance);
+  EXPECT_GT(fixed_error, 10.0 * error);
+  EXPECT_LT(points, static_cast<int>(f.size()) / 2);
+}
+
+// per_octave = 0: every frequency computed directly, in any order and with repeats, and the values
+// returned in the order asked, for every pair.
+TEST(WaveguideFrequencySampling, EveryFrequencyDirectlyInTheOrderAsked) {
+  const std::vector<double> f = {800.0, 120.0, 800.0, 3000.0, 450.0, 120.0};
+  int calls = 0;
+  auto evaluate = [&](double fq) {
+    ++calls;
+    return std::vector<rd::Receptance4>{sampling_test_receptance(fq, 250.0, 0.0),
+                                        2.0 * sampling_test_receptance(fq, 900.0, 0.0)};
+  };
+  int points = 0;
+  const std::vector<std::vector<rd::Receptance4>> r =
+      rd::sample_receptances(f, evaluate, {0, 1e-3}, &points);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(points, 4);
+  EXPECT_EQ(calls, 4);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    EXPECT_EQ(r[0][k], sampling_test_receptance(f[k], 250.0, 0.0));
+    EXPECT_EQ(r[1][k], 2.0 * sampling_test_receptance(f[k], 900.0, 0.0));
+  }
+}
