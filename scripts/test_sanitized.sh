@@ -7,9 +7,9 @@
 #   ROLLNOISE_JOBS=1        parallel jobs of the build and of ctest (default: nproc)
 #   ROLLNOISE_SANITIZE_ALL=1  also the excluded tests below (12.5 more CPU minutes)
 #
-# Build: the libraries and the program as a unity build (CMakeLists.txt, ROLLNOISE_UNITY_BUILD: about
-# half their compile time; `bash scripts/check_unity_names.sh` finds file-local names that clash
-# within a layer in 2 min), -O1 (the usual sanitizer level) with line tables only (-g1: the reports keep file:line and
+# Build: the libraries, the program and the test programs as a unity build (CMakeLists.txt,
+# ROLLNOISE_UNITY_BUILD: about half their compile time; `bash scripts/check_unity_names.sh --all`
+# finds file-local names that clash within a layer or a test folder in ~6 min), -O1 (the usual sanitizer level) with line tables only (-g1: the reports keep file:line and
 # inlined frames, and a file compiles about a third faster than with -g); no -DNDEBUG, so Eigen's
 # index assertions are on, and _GLIBCXX_ASSERTIONS checks std::vector indices within the capacity,
 # which AddressSanitizer cannot see. No benchmarks. Any sanitizer report ends its process with

@@ -17,7 +17,7 @@ using namespace rollnoise::cli_test;
 namespace {
 
 // The paper's case on coarse grids (a margin for them), two frequencies.
-const std::string kCoarse =
+const std::string kCoarseExtrapolation =
     " --set grid.nx=14 --set grid.ny=10 --set grid.scale=1.25 --set 'frequency.list=[1000.0, 5000.0]'";
 
 }  // namespace
@@ -26,7 +26,7 @@ TEST(CreepExtrapolate, BadGridFactorsAreRefusedNamingTheOptionBeforeAnythingRuns
   const auto out = temp_dir() / "extrapolate_bad.h5";
   const std::string before = file_contents(paper_case());
   for (const char* grids : {"1", "2,1", "1,1", "0,1", "1,1.5,2,3", "1,abc", "0.2,1"}) {
-    const auto r = run("creep " + paper_case() + kCoarse + " --extrapolate-grids " + grids + " -o " + out.string());
+    const auto r = run("creep " + paper_case() + kCoarseExtrapolation + " --extrapolate-grids " + grids + " -o " + out.string());
     EXPECT_EQ(r.status, 2) << grids << ": " << r.output;
     EXPECT_NE(r.output.find("--extrapolate-grids"), std::string::npos) << grids << ": " << r.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << grids;
@@ -37,7 +37,7 @@ TEST(CreepExtrapolate, BadGridFactorsAreRefusedNamingTheOptionBeforeAnythingRuns
 TEST(CreepExtrapolate, AFrequencyAboveTheNyquistLimitNamesTheFrequencyKey) {
   const auto out = temp_dir() / "extrapolate_nyquist.h5";
   // 14 x 10 over +-1.25 a: Nyquist V/(2 dx) = 5.4 kHz
-  const auto r = run("creep " + paper_case() + kCoarse + " --set 'frequency.list=[1000.0, 6000.0]' --extrapolate -o " +
+  const auto r = run("creep " + paper_case() + kCoarseExtrapolation + " --set 'frequency.list=[1000.0, 6000.0]' --extrapolate -o " +
                      out.string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("frequency.list"), std::string::npos) << r.output;
@@ -47,7 +47,7 @@ TEST(CreepExtrapolate, AFrequencyAboveTheNyquistLimitNamesTheFrequencyKey) {
 
 TEST(CreepExtrapolate, WritesTheExtrapolatedCoefficientsWithTheirErrorsAndTheGrids) {
   const auto out = temp_dir() / "extrapolate.h5";
-  const auto r = run("creep " + paper_case() + kCoarse + " --extrapolate-grids 1,1.5 -q -o " + out.string());
+  const auto r = run("creep " + paper_case() + kCoarseExtrapolation + " --extrapolate-grids 1,1.5 -q -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const rollnoise::io::Hdf5Reader h5(out.string());
   ASSERT_TRUE(h5.ok());

@@ -19,7 +19,7 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-std::vector<double> read_doubles(hid_t file, const char* path, std::string* units) {
+std::vector<double> read_doubles_and_units(hid_t file, const char* path, std::string* units) {
   const hid_t set = H5Dopen2(file, path, H5P_DEFAULT);
   if (set < 0) return {};
   const hid_t space = H5Dget_space(set);
@@ -85,14 +85,14 @@ TEST(TransientCommand, ExcitationPhaseIsReadAndWrittenInRadians) {
   const hid_t file = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   std::string units;
-  const auto ph = read_doubles(file, "/transient/excitation/phase", &units);
+  const auto ph = read_doubles_and_units(file, "/transient/excitation/phase", &units);
   EXPECT_EQ(units, "rad");
   ASSERT_EQ(ph.size(), 3u);
   EXPECT_EQ(ph[1], phase);
-  const auto mean = read_doubles(file, "/transient/excitation/mean", &units);
-  const auto t = read_doubles(file, "/transient/time", &units);
+  const auto mean = read_doubles_and_units(file, "/transient/excitation/mean", &units);
+  const auto t = read_doubles_and_units(file, "/transient/time", &units);
   EXPECT_EQ(units, "s");
-  const auto xi = read_doubles(file, "/transient/creepage", &units);
+  const auto xi = read_doubles_and_units(file, "/transient/creepage", &units);
   H5Fclose(file);
   ASSERT_EQ(mean.size(), 3u);
   ASSERT_GT(t.size(), 3u);

@@ -12,18 +12,14 @@
 #include <string>
 
 #include "cli_support.hpp"
+#include "support/test_helpers.hpp"
 
 namespace fs = std::filesystem;
 using namespace rollnoise::cli_test;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using rollnoise::test_support::slurp;
 
 bool any_file_starting_with(const fs::path& dir, const std::string& stem) {
   for (const auto& e : fs::directory_iterator(dir))

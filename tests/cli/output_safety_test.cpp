@@ -26,6 +26,7 @@
 #include "cli_support.hpp"
 #include "io/case_schema.hpp"
 #include "io/output_files.hpp"
+#include "support/test_helpers.hpp"
 
 extern char** environ;
 
@@ -34,12 +35,7 @@ using namespace rollnoise::cli_test;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using rollnoise::test_support::slurp;
 
 // The paper's Hertzian case copied into `d` as c.toml.
 fs::path copy_case(const fs::path& d) {

@@ -8,26 +8,22 @@
 
 #include "cli_support.hpp"
 #include "io/hdf5_reader.hpp"
+#include "support/test_helpers.hpp"
 
 using namespace rollnoise::cli_test;
 
 namespace {
 
 std::string hertz_curve() { return source_file("cases/curve_300m_hertz.toml"); }
-const char* kCoarse = " --set grid.nx=12 --set grid.ny=10 --set grid.scale=1.3 --set 'track.support=\"continuous\"'";
+const char* kCoarseSqueal = " --set grid.nx=12 --set grid.ny=10 --set grid.scale=1.3 --set 'track.support=\"continuous\"'";
 
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using rollnoise::test_support::slurp;
 
 }  // namespace
 
 TEST(SquealCli, WritesTheSquealDatasetsAndASummaryLine) {
   const auto out = temp_dir() / "squeal_ok.h5";
-  const auto r = run("squeal " + hertz_curve() + kCoarse + " --set noise.band_max=2500 -o " + out.string());
+  const auto r = run("squeal " + hertz_curve() + kCoarseSqueal + " --set noise.band_max=2500 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("squeal: 0 unstable of"), std::string::npos) << r.output;
   const rollnoise::io::Hdf5Reader h(out.string());
@@ -43,7 +39,7 @@ TEST(SquealCli, WritesTheSquealDatasetsAndASummaryLine) {
   }
   EXPECT_TRUE(h.numbers("/squeal/contact/normal_stiffness").has_value());
   EXPECT_TRUE(h.attribute("/squeal", "route").has_value());
-  const auto q = run("squeal " + hertz_curve() + kCoarse + " --set noise.band_max=2500 -q -o " + out.string());
+  const auto q = run("squeal " + hertz_curve() + kCoarseSqueal + " --set noise.band_max=2500 -q -o " + out.string());
   ASSERT_EQ(q.status, 0) << q.output;
   EXPECT_EQ(q.output.find("squeal:"), std::string::npos) << q.output;
 }
@@ -54,7 +50,7 @@ TEST(SquealCli, NoModeInTheBandOrAboveNyquistIsAnInputErrorWithoutAFile) {
                                  std::string(" --set rolling.speed=3")}) {  // modes above Nyquist
     const auto out = temp_dir() / "squeal_fault.h5";
     std::filesystem::remove(out);
-    const auto r = run("squeal " + hertz_curve() + kCoarse + set + " -o " + out.string());
+    const auto r = run("squeal " + hertz_curve() + kCoarseSqueal + set + " -o " + out.string());
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("noise.band_max"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(out));

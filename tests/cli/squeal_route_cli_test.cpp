@@ -13,14 +13,14 @@ using namespace rollnoise::cli_test;
 namespace {
 
 std::string curve() { return source_file("cases/curve_300m_hertz.toml"); }
-const char* kCoarse =
+const char* kCoarseRoutes =
     " --set grid.nx=12 --set grid.ny=10 --set grid.scale=1.3 --set 'track.support=\"continuous\"' --set noise.band_max=2000";
 
 }  // namespace
 
 TEST(SquealRouteCli, BothRoutesWriteRouteOneBesideRouteTwoAndTheirAgreement) {
   const auto out = temp_dir() / "squeal_routes.h5";
-  const auto r = run("squeal " + curve() + kCoarse + " -o " + out.string());
+  const auto r = run("squeal " + curve() + kCoarseRoutes + " -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("route agreement:"), std::string::npos) << r.output;
   const rollnoise::io::Hdf5Reader h(out.string());
@@ -42,7 +42,7 @@ TEST(SquealRouteCli, BothRoutesWriteRouteOneBesideRouteTwoAndTheirAgreement) {
 
 TEST(SquealRouteCli, RouteOneAloneFillsTheSquealDatasets) {
   const auto out = temp_dir() / "squeal_route1.h5";
-  const auto r = run("squeal " + curve() + kCoarse + " --route 1 -q -o " + out.string());
+  const auto r = run("squeal " + curve() + kCoarseRoutes + " --route 1 -q -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const rollnoise::io::Hdf5Reader h(out.string());
   ASSERT_TRUE(h.ok());
@@ -57,7 +57,7 @@ TEST(SquealRouteCli, AnUnknownRouteIsAnErrorWithoutAFile) {
   const std::string before = file_contents(curve());
   const auto out = temp_dir() / "squeal_route_fault.h5";
   std::filesystem::remove(out);
-  const auto r = run("squeal " + curve() + kCoarse + " --route 3 -o " + out.string());
+  const auto r = run("squeal " + curve() + kCoarseRoutes + " --route 3 -o " + out.string());
   EXPECT_NE(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("--route"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));

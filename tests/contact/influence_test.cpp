@@ -8,12 +8,13 @@
 
 #include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
+#include "paper_case.hpp"
 
 using namespace rollnoise::contact;
 
-namespace {
+using rollnoise::testing::kSteel;  // E = 210 GPa, nu = 0.28
 
-const Material kSteel{210e9, 0.28};
+namespace {
 
 // Point-load kernels of the displacement difference (Johnson 1985, Eqs. 3.19, 3.86a):
 // Boussinesq zz, Cerruti xx, yy, xy, for quasi-identical bodies.

@@ -7,13 +7,12 @@
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "core/errors.hpp"
+#include "paper_case.hpp"
 #include "reference_data.hpp"
 
 using namespace rollnoise::contact;
 
-namespace {
-const Material kSteel{210e9, 0.28};
-}
+using rollnoise::testing::kSteel;  // E = 210 GPa, nu = 0.28
 
 TEST(Hertz, CurvaturesAndApproachOfThePaperCaseMatchCONTACT) {
   // tests/data/contact/README.md: A1 = 1.08718e-3 /mm, B1 = 1.71987e-3 /mm, approach 0.104176 mm.

@@ -29,4 +29,6 @@ inline const contact::ContactPatch& paper_patch(const std::string& grid = "coars
   return *p;
 }
 
+inline const contact::ContactPatch& coarse_patch() { return paper_patch("coarse"); }
+
 }  // namespace rollnoise::testing

@@ -20,10 +20,6 @@ using namespace rollnoise::testing;
 
 namespace {
 
-const ContactPatch& coarse_patch() {
-  return paper_patch("coarse");
-}
-
 TransientRolling with_normal_load(const ContactPatch& patch) {
   TransientRolling r(patch.influence, patch.normal.pn, kMu, kSpeed, 0.0);
   r.set_normal_problem(patch.undeformed_distance, kN);

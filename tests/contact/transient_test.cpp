@@ -21,12 +21,6 @@ using rollnoise::testing::num;
 using rollnoise::testing::read_csv;
 using namespace rollnoise::testing;
 
-namespace {
-
-const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
-
-}  // namespace
-
 TEST(TransientRolling, ConstantCreepageFromZeroTractionsConvergesToSteadyRolling) {
   const ContactPatch& patch = coarse_patch();
   const Creepage c{0.001, 0.001, -0.053};

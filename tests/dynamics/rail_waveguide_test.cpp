@@ -13,6 +13,7 @@
 #include "dynamics/rail_section.hpp"
 #include "dynamics/track.hpp"
 #include "fem/mesh.hpp"
+#include "support/test_helpers.hpp"
 
 namespace rd = rollnoise::dynamics;
 namespace rf = rollnoise::fem;
@@ -20,9 +21,7 @@ using cd = std::complex<double>;
 
 namespace {
 
-double db(cd z) {
-  return 20.0 * std::log10(std::abs(z));
-}
+using rollnoise::test_support::db;
 
 rd::RailMaterial steel(double eta) {
   rd::RailMaterial m;

@@ -17,15 +17,14 @@
 
 #include "core/errors.hpp"
 #include "linalg/toeplitz_solve.hpp"
+#include "support/test_helpers.hpp"
 
 namespace rd = rollnoise::dynamics;
 using cd = std::complex<double>;
 
 namespace {
 
-double db(cd z) {
-  return 20.0 * std::log10(std::abs(z));
-}
+using rollnoise::test_support::db;
 
 rd::BeamSection euler_bernoulli(rd::BeamSection s) {
   s.timoshenko = false;

@@ -17,15 +17,14 @@
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "fem/mesh.hpp"
+#include "support/test_helpers.hpp"
 
 namespace rd = rollnoise::dynamics;
 using cd = std::complex<double>;
 
 namespace {
 
-double db(cd z) {
-  return 20.0 * std::log10(std::abs(z));
-}
+using rollnoise::test_support::db;
 
 // 40 mm mesh (as the continuous model's tests), the default reduction.
 rd::WaveguideRailOptions coarse() {

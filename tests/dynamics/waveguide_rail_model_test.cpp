@@ -15,6 +15,7 @@
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
 #include "fem/mesh.hpp"
+#include "support/test_helpers.hpp"
 
 namespace rd = rollnoise::dynamics;
 namespace rf = rollnoise::fem;
@@ -22,9 +23,7 @@ using cd = std::complex<double>;
 
 namespace {
 
-double db(cd z) {
-  return 20.0 * std::log10(std::abs(z));
-}
+using rollnoise::test_support::db;
 
 rd::RailWaveguide supported_uic60(double h) {
   const rd::TrackParameters t = rd::uic60_ballasted();

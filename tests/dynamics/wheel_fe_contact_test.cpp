@@ -15,16 +15,14 @@
 #include "dynamics/wheel_fe.hpp"
 #include "fem/triangle6.hpp"
 #include "io/wheel_section_file.hpp"
+#include "support/test_inputs.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::dynamics;
 
 namespace {
 
-WheelSection default_section() {
-  return io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) +
-                                "/models/wheel/wheel_920mm_section.csv");
-}
+using rollnoise::test_support::default_section;
 
 // The static compliance of order n at tread position s by a direct solve K_n u = f (bore clamped):
 // the 3x3 map from a unit load on (U_r, U_theta, U_z) at the tread point to (U_r, U_theta, U_z)

@@ -12,16 +12,14 @@
 
 #include "core/errors.hpp"
 #include "io/wheel_section_file.hpp"
+#include "support/test_inputs.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::dynamics;
 
 namespace {
 
-WheelSection default_section() {
-  return io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) +
-                                "/models/wheel/wheel_920mm_section.csv");
-}
+using rollnoise::test_support::default_section;
 
 // The lowest mode of order n in a family with the given nodal circles, or nullptr.
 const WheelFeMode* find(const WheelFeModes& w, int n, ModeFamily f, int circles) {

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "fem/axisymmetric.hpp"
 #include "fem/eigen_solve.hpp"
 #include "fem/mesh.hpp"
@@ -19,7 +20,7 @@ using namespace rollnoise::fem;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using rollnoise::kPi;
 
 // Value, first and second derivative (by x) of one of J_n, Y_n (kind 0, 1) or I_n, K_n (2, 3).
 Eigen::Vector3d bessel(int kind, int n, double x) {

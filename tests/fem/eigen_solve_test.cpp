@@ -16,6 +16,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "fem/axisymmetric.hpp"
 #include "fem/mesh.hpp"
 
@@ -23,7 +24,7 @@ using namespace rollnoise::fem;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using rollnoise::kPi;
 constexpr double kFmax = 4000.0;  // Hz
 
 struct Problem {

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/constants.hpp"
 #include "dynamics/wheel_fe.hpp"
 #include "fem/eigen_solve.hpp"
 #include "fem/mesh.hpp"
@@ -22,7 +23,7 @@ using namespace rollnoise::fem;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using rollnoise::kPi;
 
 std::vector<Eigen::Vector2d> rectangle(double r0, double r1, double z0, double z1) {
   return {{r0, z0}, {r1, z0}, {r1, z1}, {r0, z1}};

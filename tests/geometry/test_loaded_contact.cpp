@@ -15,13 +15,14 @@
 
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
+#include "support/test_inputs.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::geometry;
 
 namespace {
 
-const std::string kProfiles = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/";
+using rollnoise::test_support::kProfiles;
 const std::string kContactOut =
     std::string(ROLLNOISE_TEST_DATA) + "/contact/C1_u3/u3_vert_d2.out";
 

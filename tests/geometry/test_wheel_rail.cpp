@@ -14,13 +14,14 @@
 #include "geometry/profile.hpp"
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
+#include "support/test_inputs.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::geometry;
 
 namespace {
 
-const std::string kProfiles = std::string(ROLLNOISE_SOURCE_DIR) + "/models/profiles/";
+using rollnoise::test_support::kProfiles;
 constexpr double kWheelLoad = 98.1e3;  // 20 t per wheelset: 98.1 kN per wheel
 
 WheelRailPair s1002_on_uic60() {

@@ -22,7 +22,7 @@ namespace {
 using namespace rollnoise;
 namespace fs = std::filesystem;
 
-fs::path temp_file(const std::string& name, const std::string& text) {
+fs::path rail_section_temp_file(const std::string& name, const std::string& text) {
   const fs::path dir =
       fs::temp_directory_path() / ("rollnoise_rail_section_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -32,7 +32,7 @@ fs::path temp_file(const std::string& name, const std::string& text) {
 
 // The InputError's key and message of reading `text` as a rail section file.
 std::pair<std::string, std::string> error_of(const std::string& text) {
-  const fs::path p = temp_file("bad.csv", text);
+  const fs::path p = rail_section_temp_file("bad.csv", text);
   try {
     io::read_rail_section(p.string());
   } catch (const InputError& e) {
@@ -84,7 +84,7 @@ TEST(RailSectionFile, OrientationClosingPointAndOffsetDoNotChangeTheSection) {
     const auto& p = built_in[i % built_in.size()];
     text += std::to_string(1e3 * p.x()) + "," + std::to_string(1e3 * p.y() + 30.0) + "\n";
   }
-  const auto read = io::read_rail_section(temp_file("cw.csv", text).string());
+  const auto read = io::read_rail_section(rail_section_temp_file("cw.csv", text).string());
   ASSERT_EQ(read.size(), built_in.size());
   const auto sa = dynamics::section_properties(fem::mesh_polygon(read, 0.04));
   const auto sb = dynamics::section_properties(fem::mesh_polygon(built_in, 0.04));
@@ -109,5 +109,5 @@ TEST(RailSectionFile, BadFileNamesTheLineAndField) {
   EXPECT_NE(what.find("no area"), std::string::npos) << what;
   std::tie(key, what) = error_of("");
   EXPECT_NE(what.find("no header"), std::string::npos) << what;
-  fs::remove_all(temp_file("x", "").parent_path());
+  fs::remove_all(rail_section_temp_file("x", "").parent_path());
 }

@@ -17,7 +17,7 @@ namespace {
 using namespace rollnoise;
 namespace fs = std::filesystem;
 
-fs::path temp_file(const std::string& name) {
+fs::path tread_shapes_temp_path(const std::string& name) {
   const fs::path dir =
       fs::temp_directory_path() / ("rollnoise_tread_shapes_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -38,7 +38,7 @@ TEST(TreadShapesFile, ExportedFeModesImportToTheSameReceptance) {
       dynamics::wheel_fe_modes(io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) +
                                                       "/models/wheel/wheel_920mm_section.csv"),
                                o);
-  const fs::path path = temp_file("shapes.csv");
+  const fs::path path = tread_shapes_temp_path("shapes.csv");
   io::write_tread_shapes(path.string(), "--csv", fe).commit();
   const auto back = io::read_tread_shapes(path.string());
   ASSERT_EQ(back.modes.size(), fe.modes.size());
@@ -73,7 +73,7 @@ TEST(TreadShapesFile, BadFilesNameLineAndField) {
       {"s,u\n", ":1: expected the header"},
   };
   for (const auto& [text, expected] : cases) {
-    const fs::path path = temp_file("bad.csv");
+    const fs::path path = tread_shapes_temp_path("bad.csv");
     std::ofstream(path) << text;
     try {
       io::read_tread_shapes(path.string());

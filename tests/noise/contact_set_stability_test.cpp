@@ -16,7 +16,7 @@ namespace {
 using namespace noise_test;
 using cd = std::complex<double>;
 
-rn::ContactPoint point(int side, double shift, double offset, double angle) {
+rn::ContactPoint wheelset_point(int side, double shift, double offset, double angle) {
   rn::ContactPoint c;
   c.side = side;
   c.position.wheel_shift_y = shift;
@@ -45,7 +45,8 @@ rn::LaplaceLoop single_loop(const rn::ContactPoint& c, const rd::RailModel& rail
 struct Wheelset {
   rn::ConstantTransfer kalker =
       rn::ConstantTransfer::kalker(kA, kB, material().shear_modulus(), material().nu);
-  std::vector<rn::ContactPoint> points{point(1, -8e-3, -6e-3, 0.35), point(-1, 2e-3, 3e-3, 0.03)};
+  std::vector<rn::ContactPoint> points{wheelset_point(1, -8e-3, -6e-3, 0.35),
+                                       wheelset_point(-1, 2e-3, 3e-3, 0.03)};
   rd::RailModel rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3};
   std::vector<rn::SquealContact> contacts() const {
     std::vector<rn::SquealContact> c;
@@ -98,7 +99,7 @@ TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
 // root decays (Re s < 0; no tolerance) and converged; each root's wheel shares add to 1.
 TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive) {
   Wheelset w;
-  w.points.push_back(point(1, -30e-3, -25e-3, 1.2));  // the flange patch of the outer wheel
+  w.points.push_back(wheelset_point(1, -30e-3, -25e-3, 1.2));  // the flange patch of the outer wheel
   const rn::ContactSetLaplaceLoop loop =
       rn::contact_set_laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false);
   const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());

@@ -27,4 +27,14 @@ inline const std::shared_ptr<const rn::ProfileCurvingTable>& s1002_uic60_table()
   return t;
 }
 
+// The names the curve-state tests use for them.
+inline constexpr double kQ = kCurveQ;  // static wheel load (N)
+inline constexpr double kV = kCurveV;  // m/s
+inline const std::shared_ptr<const rollnoise::geometry::WheelRailPair>& pair() {
+  return s1002_uic60();
+}
+inline const std::shared_ptr<const rn::ProfileCurvingTable>& table() {
+  return s1002_uic60_table();
+}
+
 }  // namespace noise_test

@@ -22,12 +22,6 @@ namespace rg = rollnoise::geometry;
 
 namespace {
 
-constexpr double kQ = kCurveQ;  // static wheel load (N)
-constexpr double kV = kCurveV;
-
-const std::shared_ptr<const rg::WheelRailPair>& pair() { return s1002_uic60(); }
-const std::shared_ptr<const rn::ProfileCurvingTable>& table() { return s1002_uic60_table(); }
-
 rn::CurveStateInput input(double radius, double cant_deficiency, double mu = 0.3) {
   rn::CurveStateInput in;
   in.pair = pair();

@@ -22,10 +22,12 @@
 #include "nss/linear_model.hpp"
 
 using namespace rollnoise;
-using namespace rollnoise::testing;
 using noise::cdouble;
 
 TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
+  // the paper's case (block scope: noise_fixture.hpp's kSpeed and kN are another case's)
+  using rollnoise::testing::kMu, rollnoise::testing::kN, rollnoise::testing::kSpeed;
+  using rollnoise::testing::paper_patch;
   const auto& patch = paper_patch("coarse");
   const contact::Creepage mean{0.0, 0.05, 0.0};  // full slip along y, no spin
   const contact::FallingFriction law{0.5, 2.0};  // A, B (s/m)

@@ -29,7 +29,7 @@ namespace {
 // lands on the same outline point as the tread contact: the UIC60 outline's gauge-corner vertex
 // carries every normal from 0.49 to 1.23 rad, dynamics::outline_contact_point; the two patches are
 // then one point and the rail block is singular.)
-std::vector<rn::ContactPoint> bogie_contacts() {
+std::vector<rn::ContactPoint> waveguide_bogie_contacts() {
   return {point(0, 1, -5e-3, -0.0366, 0.524, 0.3), point(0, -1, 2e-3, -1e-3, 0.02, 0.3),
           point(1, 1, 1e-3, -0.01, 0.1, 2.8), point(1, -1, 0.0, 2e-3, 0.025, 2.8),
           point(0, 1, -30e-3, -0.036, 1.25, 0.3)};
@@ -76,7 +76,7 @@ void expect_reciprocal_and_passive(const rd::RailModel& rail, double f,
 // (dissipation >= -1e-10 of its largest eigenvalue), with its cross terms present.
 TEST(WaveguideBogie, AssembledReceptanceIsReciprocalAndPassive) {
   for (double f : {500.0, 2000.0})
-    expect_reciprocal_and_passive(continuous_rail(), f, bogie_contacts());
+    expect_reciprocal_and_passive(continuous_rail(), f, waveguide_bogie_contacts());
 }
 
 // The same on discrete supports (N = 10), the four wheels and the flange patch, 500 Hz and 1.5 kHz:
@@ -86,7 +86,7 @@ TEST(WaveguideBogie, AssembledReceptanceIsReciprocalAndPassive) {
 // singular).
 TEST(WaveguideBogie, AssembledReceptanceOnDiscreteSupportsIsReciprocalAndPassive) {
   for (double f : {500.0, 1500.0})
-    expect_reciprocal_and_passive(discrete_rail(), f, bogie_contacts());
+    expect_reciprocal_and_passive(discrete_rail(), f, waveguide_bogie_contacts());
 }
 
 // With every cross term off, each contact's forces and velocities equal the single-contact loop's
@@ -95,7 +95,7 @@ TEST(WaveguideBogie, AssembledReceptanceOnDiscreteSupportsIsReciprocalAndPassive
 TEST(WaveguideBogie, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
   const std::vector<double> f = {300.0, 1200.0, 3500.0};
   // the leading outer wheel at the gauge corner, its flange patch, the trailing inner wheel
-  const std::vector<rn::ContactPoint> all = bogie_contacts();
+  const std::vector<rn::ContactPoint> all = waveguide_bogie_contacts();
   const std::vector<rn::ContactPoint> cs = {all[0], all[4], all[3]};
   const rd::WaveguideRailModel& rail = continuous_rail();
   const rn::ContactSetStructures s =

@@ -23,16 +23,6 @@ using rn::WheelId;
 
 namespace {
 
-constexpr double kQ = kCurveQ;  // static wheel load (N)
-constexpr double kV = kCurveV;
-
-const std::shared_ptr<const rg::WheelRailPair>& pair() {
-  return s1002_uic60();
-}
-const std::shared_ptr<const rn::ProfileCurvingTable>& table() {
-  return s1002_uic60_table();
-}
-
 rn::WheelContactInput wheel_input(WheelId id, double u, double psi, double inv_R) {
   rn::WheelContactInput in;
   in.pair = pair();

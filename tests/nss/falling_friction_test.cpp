@@ -14,6 +14,7 @@
 #include "linalg/harmonic_fit.hpp"
 #include "nss/falling_friction.hpp"
 #include "nss/linear_model.hpp"
+#include "support/test_helpers.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::contact;
@@ -21,25 +22,24 @@ using namespace rollnoise::testing;
 
 namespace {
 
-const ContactPatch& coarse() { return paper_patch("coarse"); }
-
 TangentialSolution steady(const Creepage& c, const FallingFriction& f) {
-  return solve_steady_rolling(coarse().influence, coarse().normal.pn, {kMu, kSpeed, c, 0.0, f});
+  return solve_steady_rolling(coarse_patch().influence, coarse_patch().normal.pn,
+                              {kMu, kSpeed, c, 0.0, f});
 }
 
 Eigen::Vector3d forces(const Creepage& c, const FallingFriction& f) {
   const auto s = steady(c, f);
-  const auto F = total_forces(coarse().grid, s.px, s.py);
+  const auto F = total_forces(coarse_patch().grid, s.px, s.py);
   return {F.Fx, F.Fy, F.Mz};
 }
 
 nss::LinearContactModel model(const Creepage& c, const FallingFriction& f) {
   // CONTACT's sampling: the tests below step the solvers at t_k themselves.
-  return nss::LinearContactModel(coarse(), steady(c, f),
+  return nss::LinearContactModel(coarse_patch(), steady(c, f),
                                  {kMu, kSpeed, 0.0, f, nss::LinearSolver::automatic, contact::CreepageSampling::contact});
 }
 
-double relative(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) { return (a - b).norm() / b.norm(); }
+using rollnoise::test_support::relative;
 
 }  // namespace
 
@@ -135,7 +135,7 @@ TEST(FallingFrictionModel, UnsteadySolverResponseToSmallHarmonicCreepageEqualsTh
   // at 500 Hz and 1 kHz; B = 4 s/m, where the contact is stable (docs/falling_friction.md Sec. 3: beyond,
   // the transient step stalls and the linear recursion grows). The falling branch changes f by
   // more than the error allowed.
-  const ContactPatch& p = coarse();
+  const ContactPatch& p = coarse_patch();
   const Creepage mean{0.001, 0.001, -0.053};
   const FallingFriction law{0.5, 4.0};
   const auto s = steady(mean, law);
@@ -190,8 +190,8 @@ TEST(FallingFrictionModel, FullSlipAlongSlipEntryTendsToTheRigidPointContactLimi
   const auto s = steady(mean, law);
   double w = 0.0, dv2 = 0.0;
   const double v0 = kSpeed * std::abs(mean.xi_y);
-  for (int k = 0; k < coarse().grid.size(); ++k) {
-    const double pn = coarse().normal.pn[k];
+  for (int k = 0; k < coarse_patch().grid.size(); ++k) {
+    const double pn = coarse_patch().normal.pn[k];
     if (!(pn > 0.0)) continue;
     w += pn;
     dv2 += pn * std::pow(std::hypot(s.sx[k], s.sy[k]) - v0, 2);

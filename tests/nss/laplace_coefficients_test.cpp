@@ -12,6 +12,7 @@
 #include "../contact/paper_case.hpp"
 #include "contact/steady_rolling.hpp"
 #include "nss/linear_model.hpp"
+#include "support/test_helpers.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::testing;
@@ -19,21 +20,15 @@ using cd = std::complex<double>;
 
 namespace {
 
-const contact::ContactPatch& coarse() {
-  return paper_patch("coarse");
-}
-
 nss::LinearContactModel model(const contact::Creepage& c, const contact::FallingFriction& f,
                               contact::CreepageSampling sampling) {
-  const auto steady = contact::solve_steady_rolling(coarse().influence, coarse().normal.pn,
-                                                    {kMu, kSpeed, c, 0.0, f});
-  return nss::LinearContactModel(coarse(), steady,
+  const auto steady = contact::solve_steady_rolling(
+      coarse_patch().influence, coarse_patch().normal.pn, {kMu, kSpeed, c, 0.0, f});
+  return nss::LinearContactModel(coarse_patch(), steady,
                                  {kMu, kSpeed, 0.0, f, nss::LinearSolver::automatic, sampling});
 }
 
-double relative(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b) {
-  return (a - b).norm() / b.norm();
-}
+using rollnoise::test_support::relative;
 
 }  // namespace
 

@@ -31,8 +31,6 @@ namespace {
 // creepage sampling (tests/nss/creepage_sampling_test.cpp has the midstep ones).
 constexpr auto kContactSampling = CreepageSampling::contact;
 
-const ContactPatch& coarse_patch() { return paper_patch("coarse"); }
-
 TangentialForces steady_forces(const Creepage& c, double spin_offset = 0.0) {
   const ContactPatch& p = coarse_patch();
   const auto s = solve_steady_rolling(p.influence, p.normal.pn, {kMu, kSpeed, c, spin_offset});

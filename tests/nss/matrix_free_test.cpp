@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "../contact/paper_case.hpp"
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
 #include "contact/steady_rolling.hpp"
@@ -18,7 +19,8 @@ using namespace rollnoise::contact;
 
 namespace {
 
-constexpr double kMu = 0.3, kV = 13.8888888888889;
+using rollnoise::testing::kMu;                     // 0.3
+constexpr double kV = rollnoise::testing::kSpeed;  // 50 km/h (m/s)
 
 // The paper's ellipse (a = 7.18 mm, b = 5.29 mm, N = 98.1 kN) on an nx x ny grid.
 ContactPatch patch(int nx, int ny) {

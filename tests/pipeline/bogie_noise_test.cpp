@@ -25,7 +25,7 @@ io::NoiseInputs read_case(const std::string& name, const std::vector<std::string
       io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/" + name, o));
 }
 
-double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
+double difference_relative_to_first(const noise::Vector4c& a, const noise::Vector4c& b) {
   return (a - b).norm() / std::max(a.norm(), 1e-300);
 }
 
@@ -51,9 +51,11 @@ TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
     const noise::LoopResult& single = r.wheels[a].loop;
     const noise::LoopResult set = noise::contact_response(alone, a, a);
     for (std::size_t k = 0; k < single.frequency.size(); ++k) {
-      worst = std::max(worst, relative_difference(set.force[k], single.force[k]));
-      worst = std::max(worst, relative_difference(set.wheel_velocity[k], single.wheel_velocity[k]));
-      worst = std::max(worst, relative_difference(set.rail_velocity[k], single.rail_velocity[k]));
+      worst = std::max(worst, difference_relative_to_first(set.force[k], single.force[k]));
+      worst = std::max(worst, difference_relative_to_first(set.wheel_velocity[k],
+                                                           single.wheel_velocity[k]));
+      worst = std::max(worst, difference_relative_to_first(set.rail_velocity[k],
+                                                           single.rail_velocity[k]));
     }
     for (std::size_t j = 0; j < bands[a].centre.size(); ++j)
       for (int i = 0; i < 4; ++i)

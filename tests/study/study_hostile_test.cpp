@@ -19,7 +19,7 @@ using rollnoise::cli_test::run;
 
 namespace {
 
-fs::path folder(const std::string& name) {
+fs::path hostile_folder(const std::string& name) {
   const fs::path d = rollnoise::cli_test::temp_dir() / ("hostile_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
@@ -55,7 +55,7 @@ void replace_in(const fs::path& p, const std::string& from, const std::string& t
 }  // namespace
 
 TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreComputedAgain) {
-  const fs::path d = folder("stale");
+  const fs::path d = hostile_folder("stale");
   copy_base(d);
   std::ofstream(d / "s.toml")
       << "base = \"base.toml\"\noutput = \"out\"\n[axes]\n\"curve.radius\" = [300.0, 500.0]\n";
@@ -86,7 +86,7 @@ TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreCo
 }
 
 TEST(StudyRuns, ASecondRunOnTheSameFolderIsRefusedNamingTheFirst) {
-  const fs::path d = folder("lock");
+  const fs::path d = hostile_folder("lock");
   // the 34 x 25 grid and 48 samples per band: about 0.2 s per case, 2 s for the study
   std::ofstream(d / "s.toml")
       << "base = \"" << ROLLNOISE_SOURCE_DIR
@@ -120,7 +120,7 @@ TEST(StudyRuns, ASecondRunOnTheSameFolderIsRefusedNamingTheFirst) {
 }
 
 TEST(StudyRuns, AStudyWhoseCasesAllFailExitsOne) {
-  const fs::path d = folder("all_fail");
+  const fs::path d = hostile_folder("all_fail");
   std::ofstream(d / "s.toml") << "base = \"" << ROLLNOISE_SOURCE_DIR
                               << "/tests/data/study/curve_small.toml\"\noutput = \"out\"\n[axes]\n"
                                  "\"friction.mu\" = [-0.2, -0.3]\n";
@@ -132,7 +132,7 @@ TEST(StudyRuns, AStudyWhoseCasesAllFailExitsOne) {
 }
 
 TEST(StudyRuns, CollectRefusesAFolderAsItsOutputBeforeReadingTheCases) {
-  const fs::path d = folder("collect_folder");
+  const fs::path d = hostile_folder("collect_folder");
   std::ofstream(d / "s.toml") << "base = \"" << ROLLNOISE_SOURCE_DIR
                               << "/tests/data/study/curve_small.toml\"\noutput = \"out\"\n[axes]\n"
                                  "\"friction.mu\" = [0.3]\n";

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/study_file.hpp"
 #include "pipeline/study_plan.hpp"
+#include "support/test_inputs.hpp"
 
 using namespace rollnoise;
 using pipeline::Axis;
@@ -45,7 +46,7 @@ std::string write_file(const std::string& name, const std::string& text) {
   return p.string();
 }
 
-std::string base_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/tests/data/study/curve_small.toml"; }
+using rollnoise::test_support::study_base_case;
 
 }  // namespace
 
@@ -146,7 +147,7 @@ TEST(StudyPlan, SlurmArrayWithAStepGivesEveryTaskItsOwnShard) {
 }
 
 TEST(StudyFile, AxesKeepTheOrderWrittenAndAcceptRangesListsAndDottedKeys) {
-  const std::string f = write_file("order.toml", "base = \"" + base_case() + "\"\noutput = \"out\"\n[axes]\n"
+  const std::string f = write_file("order.toml", "base = \"" + study_base_case() + "\"\noutput = \"out\"\n[axes]\n"
                                    "\"rolling.speed\" = { from = 15.0, to = 30.0, count = 4 }\n"
                                    "curve.radius = [300.0, 500]\n"
                                    "\"friction.mu\" = { from = 0.1, to = 0.4, count = 3, scale = \"log\" }\n"
@@ -166,7 +167,7 @@ TEST(StudyFile, AxesKeepTheOrderWrittenAndAcceptRangesListsAndDottedKeys) {
 }
 
 TEST(StudyFile, MistakesAreInputErrorsNamingTheKey) {
-  const std::string b = "base = \"" + base_case() + "\"\n";
+  const std::string b = "base = \"" + study_base_case() + "\"\n";
   const std::vector<std::pair<std::string, std::string>> bad = {
       {b + "[axes]\n\"curve.radiuss\" = [300.0]\n", "axes.\"curve.radiuss\""},
       {b + "[axes]\n\"curve.radius\" = []\n", "axes.\"curve.radius\""},

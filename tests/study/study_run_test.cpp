@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "../cli/cli_support.hpp"
+#include "support/test_inputs.hpp"
 
 namespace fs = std::filesystem;
 using rollnoise::cli_test::run;
@@ -43,7 +44,7 @@ std::map<std::string, std::string> datasets(const std::string& path) {
   return out;
 }
 
-std::string base_case() { return std::string(ROLLNOISE_SOURCE_DIR) + "/tests/data/study/curve_small.toml"; }
+using rollnoise::test_support::study_base_case;
 
 // A folder of its own for each test.
 fs::path folder(const std::string& name) {
@@ -60,7 +61,7 @@ fs::path write(const fs::path& p, const std::string& text) {
 
 // 12 cases over two axes: 6 radii (each its own curve state) x 2 wheel roughness spectra (sharing it).
 std::string twelve_case_study(const std::string& output) {
-  return "base = \"" + base_case() + "\"\noutput = \"" + output + "\"\n[axes]\n" +
+  return "base = \"" + study_base_case() + "\"\noutput = \"" + output + "\"\n[axes]\n" +
          "\"curve.radius\" = { from = 200.0, to = 700.0, count = 6 }\n" +
          "\"roughness.wheel\" = [\"cast-iron\", \"disc-braked\"]\n";
 }
@@ -86,7 +87,7 @@ TEST(Study, TwelveCasesWithTwoWorkersEqualTheSingleRunsBitForBit) {
     const std::string single = (d / ("single_" + std::to_string(k) + ".h5")).string();
     char set[128];
     std::snprintf(set, sizeof set, "--set curve.radius=%.1f --set roughness.wheel=%s", radius, wheel[k % 2]);
-    ASSERT_EQ(run("noise " + base_case() + " " + set + " -o " + single + " -q").status, 0);
+    ASSERT_EQ(run("noise " + study_base_case() + " " + set + " -o " + single + " -q").status, 0);
     const auto a = datasets(case_file(d / "out", k)), b = datasets(single);
     ASSERT_GT(b.size(), 30u);
     ASSERT_EQ(a.size(), b.size()) << "case " << k;
@@ -129,7 +130,7 @@ TEST(Study, ThreeShardsUnderGnuParallelPlusCollectEqualTheLocalRun) {
 TEST(Study, AKilledStudyResumesWithoutRecomputingFinishedCases) {
   const fs::path d = folder("resume");
   // the 34 x 25 grid and 48 samples per band: about 0.2 s per case, slow enough to stop midway
-  const fs::path study = write(d / "study.toml", "base = \"" + base_case() + "\"\noutput = \"out\"\n[axes]\n" +
+  const fs::path study = write(d / "study.toml", "base = \"" + study_base_case() + "\"\noutput = \"out\"\n[axes]\n" +
                                                      "\"curve.radius\" = { from = 200.0, to = 1300.0, count = 12 }\n" +
                                                      "\"grid.nx\" = [34]\n\"grid.ny\" = [25]\n"
                                                      "\"noise.points_per_band\" = [48]\n");
@@ -173,7 +174,7 @@ TEST(Study, AKilledStudyResumesWithoutRecomputingFinishedCases) {
 
 TEST(Study, AFailingCaseIsRecordedWithItsErrorAndTheOthersComplete) {
   const fs::path d = folder("failing");
-  const fs::path study = write(d / "study.toml", "base = \"" + base_case() + "\"\noutput = \"out\"\n[axes]\n" +
+  const fs::path study = write(d / "study.toml", "base = \"" + study_base_case() + "\"\noutput = \"out\"\n[axes]\n" +
                                                      "\"friction.mu\" = [0.3, -0.2, 0.4]\n");
   const auto r = run("study " + study.string() + " -j 2 -q");
   ASSERT_EQ(r.status, 1) << "a study with a failed case is no success (issue 30):\n" << r.output;

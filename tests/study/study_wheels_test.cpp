@@ -43,7 +43,7 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
-std::string base_case() {
+std::string wheels_base_case() {
   return std::string(ROLLNOISE_SOURCE_DIR) + "/tests/data/study/curve_small_wheels.toml";
 }
 
@@ -53,7 +53,7 @@ std::string base_case() {
 TEST(StudyWheels, CollectedPerWheelColumnsEqualTheCaseFilesBandLevels) {
   const fs::path d = rollnoise::cli_test::fresh_dir("study_wheels");
   const fs::path study = d / "study.toml";
-  std::ofstream(study) << "base = \"" << base_case() << "\"\noutput = \"out\"\n[axes]\n"
+  std::ofstream(study) << "base = \"" << wheels_base_case() << "\"\noutput = \"out\"\n[axes]\n"
                        << "\"roughness.wheel\" = [\"cast-iron\", \"disc-braked\"]\n";
   const auto r = run("study " + study.string() + " -j 1 -q");
   ASSERT_EQ(r.status, 0) << r.output;
