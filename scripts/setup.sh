@@ -17,7 +17,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 BUILD_TYPE=${1:-Release}
 # A fresh build/ is a unity build (CMakeLists.txt, ROLLNOISE_UNITY_BUILD: each folder's sources
-# compiled in batches of 8, about half the CPU time of a cold build). Only the first configure sets
+# compiled in batches of 8, about a third less CPU for a cold build). Only the first configure sets
 # it: a build/ reconfigured with -DROLLNOISE_UNITY_BUILD=OFF (one file recompiled per edit) keeps
 # that setting here.
 unity=()
