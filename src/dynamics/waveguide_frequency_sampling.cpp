@@ -97,7 +97,7 @@ std::vector<std::vector<Receptance4>> sample_receptances(
   if (sampling.tolerance > 0.0 && samples.size() < static_cast<std::size_t>(n))
     for (std::size_t i = 0; i + 1 < start.size(); ++i)
       if (start[i + 1] - start[i] >= 2) open.emplace_back(start[i], start[i + 1]);
-  while (!open.empty()) {  // one pass: every open interval's midpoint against the samples before
+  while (!open.empty()) {  // one pass: every open interval's third point against the samples before
     std::vector<int> mid;
     for (const auto& [a, b] : open) mid.push_back(split_sample(x, a, b));
     const std::vector<std::vector<Receptance4>> predicted = interpolated(mid);
