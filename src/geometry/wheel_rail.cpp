@@ -314,9 +314,14 @@ WheelsetPose WheelRailPair::equilibrium(const WheelsetPosition& position) const 
 // ---------------------------------------------------------------------------------------------
 ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& position, Side side,
                              const ContactOptions& options) {
+  return find_contact_at_pose(pair, pair.equilibrium(position), side, options);
+}
+
+ContactGeometry find_contact_at_pose(const WheelRailPair& pair, const WheelsetPose& pose, Side side,
+                                     const ContactOptions& options) {
   ContactGeometry c;
   c.side = side;
-  c.pose = pair.equilibrium(position);
+  c.pose = pose;
   c.local_pose = side == Side::Right ? c.pose : c.pose.mirrored();
   double s = 0.0;
   pair.minimum_gap(c.local_pose, &s);
@@ -328,6 +333,7 @@ ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& 
   c.wheel_s = s;
   c.contact_angle = std::atan(-pair.rail_slope(p.y));
   c.rolling_radius = p.radius;
+  if (!options.curvatures) return c;
   c.rail_curvature = pair.rail().curvature(c.rail_y, options.curvature_window);
   c.wheel_curvature = pair.wheel().curvature(s, options.curvature_window);
   c.A = strip_at(pair, c, 0.0).k / (2.0 * c.rolling_radius);

@@ -140,6 +140,9 @@ class WheelRailPair {
 struct ContactOptions {
   /// Half-width (m) of the least-squares window for the lateral curvatures at the contact point.
   double curvature_window = 1e-3;
+  /// false: the contact point, its angle and rolling radius only (rail_curvature,
+  /// wheel_curvature, A and B left at 0), as a profile table needs them.
+  bool curvatures = true;
 };
 
 /// The contact point of one wheel and the local geometry there. For Side::Left all track
@@ -167,6 +170,10 @@ struct ContactGeometry {
 /// Find the contact point of the wheel on `side` for the wheelset position.
 ContactGeometry find_contact(const WheelRailPair& pair, const WheelsetPosition& position,
                              Side side = Side::Right, const ContactOptions& options = {});
+/// The same for the wheelset already in its equilibrium pose (`pair.equilibrium(position)`): both
+/// sides of one position share it (the roll iteration is most of a contact search).
+ContactGeometry find_contact_at_pose(const WheelRailPair& pair, const WheelsetPose& pose, Side side,
+                                     const ContactOptions& options = {});
 
 /// Lateral undeformed distance g(y_c) (m) between the wheel and rail cross-sections along the
 /// contact normal, at the tangent-plane coordinate y_c (m) from the contact point; a large value

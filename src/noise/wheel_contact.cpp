@@ -69,8 +69,9 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   w.wheel = in.wheel;
   w.lateral = in.lateral;
   w.yaw = in.yaw;
-  w.contact = geometry::find_contact(pair, {in.lateral, in.yaw}, side);
-  w.other_rolling_radius = geometry::find_contact(pair, {in.lateral, in.yaw}, other).rolling_radius;
+  const geometry::WheelsetPose pose = pair.equilibrium({in.lateral, in.yaw});  // both wheels'
+  w.contact = geometry::find_contact_at_pose(pair, pose, side);
+  w.other_rolling_radius = geometry::find_contact_at_pose(pair, pose, other).rolling_radius;
   const double kappa = outer ? in.inverse_radius : -in.inverse_radius;
   w.creepage_given = in.creepage.has_value();
   w.creepage = in.creepage ? *in.creepage

@@ -383,10 +383,14 @@ ProfileCurvingTable profile_curving_table(const geometry::WheelRailPair& pair, d
   bool flanging = false;
   for (int k = -n; k <= n; ++k) {
     const double u = k * step;
+    // both wheels' contact points (no curvatures: the table does not keep them) in one pose
+    const geometry::WheelsetPose pose = pair.equilibrium({u, 0.0});
+    geometry::ContactOptions point_only;
+    point_only.curvatures = false;
     const geometry::ContactGeometry outer =
-        geometry::find_contact(pair, {u, 0.0}, geometry::Side::Right);
+        geometry::find_contact_at_pose(pair, pose, geometry::Side::Right, point_only);
     const geometry::ContactGeometry inner =
-        geometry::find_contact(pair, {u, 0.0}, geometry::Side::Left);
+        geometry::find_contact_at_pose(pair, pose, geometry::Side::Left, point_only);
     t.lateral.push_back(u);
     t.rolling_radius_difference.push_back(outer.rolling_radius - inner.rolling_radius);
     t.contact_angle.push_back(outer.contact_angle);

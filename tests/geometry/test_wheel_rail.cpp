@@ -255,6 +255,38 @@ TEST(WheelRailGeometry, LateralDisplacementGivesConicityAndMirrorSymmetry) {
   EXPECT_NEAR(mirrored.pose.roll, -right.pose.roll, 1e-12);
 }
 
+// Both wheels of one wheelset position share its equilibrium pose: the search from the pose
+// (find_contact_at_pose, what the profile table and the wheel contacts use to solve the roll
+// iteration once per position) finds the same contact as the search from the position, to the
+// bit; without curvatures the point, angle and radius are the same and the curvatures are left 0.
+TEST(WheelRailGeometry, ContactFromTheSharedPoseEqualsTheSearchFromThePosition) {
+  const WheelRailPair pair = s1002_on_uic60();
+  ContactOptions point_only;
+  point_only.curvatures = false;
+  for (const double u : {-4e-3, 0.0, 2.5e-3, 7e-3})  // 7 mm: on the flange
+    for (const Side side : {Side::Right, Side::Left}) {
+      const ContactGeometry full = find_contact(pair, {u, 2e-3}, side);
+      const WheelsetPose pose = pair.equilibrium({u, 2e-3});
+      const ContactGeometry shared = find_contact_at_pose(pair, pose, side);
+      EXPECT_EQ(shared.rolling_radius, full.rolling_radius);
+      EXPECT_EQ(shared.contact_angle, full.contact_angle);
+      EXPECT_EQ(shared.wheel_s, full.wheel_s);
+      EXPECT_EQ(shared.rail_y, full.rail_y);
+      EXPECT_EQ(shared.A, full.A);
+      EXPECT_EQ(shared.B, full.B);
+      EXPECT_EQ(shared.pose.roll, full.pose.roll);
+      const ContactGeometry point = find_contact_at_pose(pair, pose, side, point_only);
+      EXPECT_EQ(point.rolling_radius, full.rolling_radius);
+      EXPECT_EQ(point.contact_angle, full.contact_angle);
+      EXPECT_EQ(point.wheel_s, full.wheel_s);
+      EXPECT_EQ(point.rail_y, full.rail_y);
+      EXPECT_NE(full.A, 0.0);
+      EXPECT_EQ(point.A, 0.0);
+      EXPECT_EQ(point.B, 0.0);
+      EXPECT_EQ(point.rail_curvature, 0.0);
+    }
+}
+
 // Beyond the flange clearance (about 6 mm for this pair) the contact jumps to the flange: a
 // contact angle above 60° (S1002's flange flank is at 70°), a rolling radius over 475 mm.
 TEST(WheelRailGeometry, LargeLateralDisplacementGivesFlangeContact) {
