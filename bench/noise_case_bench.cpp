@@ -28,6 +28,7 @@
 #include "io/wheel_fe_case.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/noise_pipeline.hpp"
+#include "vehicle/curving.hpp"
 
 using namespace rollnoise;
 
@@ -175,6 +176,29 @@ void MinimumGapS1002Uic60(benchmark::State& state) {
   state.counters["samples"] = static_cast<double>(pair.wheel_table().s.size());
 }
 BENCHMARK(MinimumGapS1002Uic60)->Unit(benchmark::kMicrosecond);
+
+// The curving estimate's profile table of S1002 on UIC60 (lateral -10..10 mm in 0.1 mm steps: 201
+// positions, both wheels' contacts at each): `shared_pose` as built (one roll iteration per
+// position, the contact points without curvatures), `two_searches` the table's work before
+// 2026-11-26 (a full contact search per wheel, each with its own roll iteration and curvatures).
+void ProfileCurvingTableS1002Uic60(benchmark::State& state) {
+  const geometry::WheelRailPair pair(
+      io::read_profile(source_path("models/profiles/MBench_S1002_v3.prw")),
+      io::read_profile(source_path("models/profiles/MBench_UIC60_v3.prr")));
+  const bool shared_pose = state.range(0) == 1;
+  for (auto _ : state) {
+    if (shared_pose) {
+      benchmark::DoNotOptimize(noise::profile_curving_table(pair, 0.010, 0.1e-3));
+      continue;
+    }
+    for (int k = -100; k <= 100; ++k) {
+      benchmark::DoNotOptimize(geometry::find_contact(pair, {k * 0.1e-3, 0.0}, geometry::Side::Right));
+      benchmark::DoNotOptimize(geometry::find_contact(pair, {k * 0.1e-3, 0.0}, geometry::Side::Left));
+    }
+  }
+  state.counters["positions"] = 201;
+}
+BENCHMARK(ProfileCurvingTableS1002Uic60)->ArgName("shared_pose")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // The vertical point receptance of the UIC60 ballasted track at mid-span (N = 60: 121 supports)
 // at one frequency.
