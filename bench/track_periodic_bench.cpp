@@ -21,8 +21,8 @@ void DiscreteRailGrid(benchmark::State& state) {
   const dynamics::TrackParameters t = dynamics::uic60_ballasted();
   const auto solution = state.range(1) == 0 ? dynamics::DiscreteSupportSolution::kPeriodic
                                             : dynamics::DiscreteSupportSolution::kTruncated;
-  const dynamics::DiscretelySupportedRail vertical(t.vertical, t.vertical_support,
-                                                   t.sleeper_spacing, t.supports_each_side, solution);
+  const dynamics::DiscretelySupportedRail vertical(
+      t.vertical, t.vertical_support, t.sleeper_spacing, t.supports_each_side, solution);
   const dynamics::DiscretelySupportedRail lateral(t.lateral, t.lateral_support, t.sleeper_spacing,
                                                   t.supports_each_side, solution);
   std::vector<std::pair<double, double>> pairs = {{0.3, 0.3}};

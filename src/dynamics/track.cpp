@@ -261,8 +261,8 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r,
     // decaying multipliers followed from Re omega up to omega in steps of 0.5 % of Re omega in
     // Im omega (each the one of mu, 1/mu nearest the previous step's; track_periodic.hpp P1).
     const double wr = omega.real();
-    const int steps = std::clamp(
-        static_cast<int>(std::ceil(omega.imag() / (0.005 * std::abs(wr)))), 1, 64);
+    const int steps =
+        std::clamp(static_cast<int>(std::ceil(omega.imag() / (0.005 * std::abs(wr)))), 1, 64);
     PeriodicallySupportedBeam track(InfiniteBeam(rail_, wr, 0.0), support_.dynamic_stiffness(wr),
                                     spacing_);
     for (int step = 1; step <= steps; ++step) {

@@ -17,14 +17,19 @@ cdouble decaying_multiplier(cdouble eta) {
 }
 
 // mu^n for an integer n >= 0.
-cdouble power(cdouble mu, long n) { return n == 0 ? cdouble(1.0) : std::pow(mu, static_cast<int>(n)); }
+cdouble power(cdouble mu, long n) {
+  return n == 0 ? cdouble(1.0) : std::pow(mu, static_cast<int>(n));
+}
 
 }  // namespace
 
 PeriodicallySupportedBeam::PeriodicallySupportedBeam(const InfiniteBeam& free_rail, cdouble K,
                                                      double spacing,
                                                      const PeriodicallySupportedBeam* reference)
-    : free_(free_rail), amp_(free_rail.wave_amplitudes()), L_(spacing), k_(free_rail.wavenumbers()) {
+    : free_(free_rail),
+      amp_(free_rail.wave_amplitudes()),
+      L_(spacing),
+      k_(free_rail.wavenumbers()) {
   const cdouble I(0.0, 1.0);
   const auto& A = amp_.wF;
   // P1: eta^2 + b eta + c = 0, alpha_j = K A_j (z_j - 1/z_j).

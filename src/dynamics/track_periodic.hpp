@@ -26,8 +26,9 @@
 //     In row n of the system the lattice sums of these give terms in mu_q^n, which vanish by
 //     S(mu_q) = 0, and terms in z_j^n, which must cancel the load's z_j^n; for n >= 1 and n <= 0
 //     (rows divided by z_j^{|n|}) that is, for j = 1, 2,
-//       A_j [ -sum_q a_q / (mu_q - z_j) + sum_q c_q / (1 - z_j mu_q) ] = -e^{ i k_j x_e} (A_j F + B_j M)
-//       A_j [  sum_q a_q / (1 - z_j mu_q) - sum_q c_q / (mu_q - z_j) ] = -e^{i k_j (L - x_e)} (A_j F - B_j M),
+//       A_j [ -sum_q a_q / (mu_q - z_j) + sum_q c_q / (1 - z_j mu_q) ] = -e^{ i k_j x_e} (A_j F +
+//       B_j M) A_j [  sum_q a_q / (1 - z_j mu_q) - sum_q c_q / (mu_q - z_j) ] = -e^{i k_j (L -
+//       x_e)} (A_j F - B_j M),
 //     four equations for (a_1, a_2, c_1, c_2) per load column (a 4x4 LU per frequency).
 // P3. Response (Eq. 2 of track.hpp, the infinite sum): (w, psi)(x_r) = G(x_r - x_e) u +
 //     sum_m (g_wF, -g_wM)(x_r - x_m) R_m, each wave j summed over the sleepers: the few between

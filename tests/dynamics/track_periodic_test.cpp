@@ -35,8 +35,8 @@ rd::DiscretelySupportedRail beam_rail(bool vertical, rd::DiscreteSupportSolution
 
 // Point receptances over a sleeper, mid-span and at an arbitrary position, and transfers over
 // 0.6 m (one span), 1.5 m and 3.6 m from an arbitrary position.
-const std::vector<std::pair<double, double>> kPairs = {
-    {0.0, 0.0}, {0.3, 0.3}, {0.17, 0.17}, {0.17, 0.77}, {1.67, 0.17}, {0.41, 4.01}};
+const std::vector<std::pair<double, double>> kPairs = {{0.0, 0.0},   {0.3, 0.3},   {0.17, 0.17},
+                                                       {0.17, 0.77}, {1.67, 0.17}, {0.41, 4.01}};
 
 // The largest |mu| of the two decaying Floquet waves at omega (real, or complex continued from
 // Re omega in one step, enough for the small Im omega used here).
@@ -79,7 +79,8 @@ TEST(PeriodicTrack, IsTheLimitOfTheTruncatedSolveAsSupportsGrow) {
       const auto exact = beam_rail(vertical, rd::DiscreteSupportSolution::kPeriodic);
       const auto cut = beam_rail(vertical, rd::DiscreteSupportSolution::kTruncated, n);
       for (const double f : freqs) {
-        const double bound = truncation_bound(slowest_multiplier(vertical, 2.0 * M_PI * f), n, 1e-10);
+        const double bound =
+            truncation_bound(slowest_multiplier(vertical, 2.0 * M_PI * f), n, 1e-10);
         const std::vector<Eigen::Matrix2cd> a = exact.transfers(f, kPairs);
         const std::vector<Eigen::Matrix2cd> b = cut.transfers(f, kPairs);
         for (std::size_t p = 0; p < kPairs.size(); ++p) {
@@ -112,7 +113,8 @@ TEST(PeriodicTrack, ComplexFrequencyEqualsTheConvergedTruncatedContinuation) {
         const cd omega = 2.0 * M_PI * f * cd(1.0, zeta);
         const double bound = truncation_bound(slowest_multiplier(vertical, omega), n, 1e-9);
         for (const auto& [xr, xe] : pairs)
-          EXPECT_LE(relative(cut.transfer_at(omega, xr, xe), exact.transfer_at(omega, xr, xe)), bound)
+          EXPECT_LE(relative(cut.transfer_at(omega, xr, xe), exact.transfer_at(omega, xr, xe)),
+                    bound)
               << "vertical " << vertical << ", f = " << f << " Hz, zeta " << zeta << ", x = " << xr
               << ", " << xe;
       }

@@ -340,15 +340,15 @@ TEST(DiscreteTrack, TransfersOfSeveralPairsEqualEachPairsTransferToTheBit) {
       {0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}, {2.8, 0.3}, {0.0, 0.0}};
   for (const auto solution :
        {rd::DiscreteSupportSolution::kTruncated, rd::DiscreteSupportSolution::kPeriodic})
-  for (double f : {63.0, 850.0, 4100.0}) {
-    const rd::DiscretelySupportedRail rail(t.vertical, t.vertical_support, t.sleeper_spacing,
-                                           t.supports_each_side, solution);
-    const std::vector<Eigen::Matrix2cd> h = rail.transfers(f, pairs);
-    ASSERT_EQ(h.size(), pairs.size());
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      EXPECT_EQ(h[p], rail.transfer(f, pairs[p].first, pairs[p].second))
-          << "f = " << f << " Hz, pair " << p;
-  }
+    for (double f : {63.0, 850.0, 4100.0}) {
+      const rd::DiscretelySupportedRail rail(t.vertical, t.vertical_support, t.sleeper_spacing,
+                                             t.supports_each_side, solution);
+      const std::vector<Eigen::Matrix2cd> h = rail.transfers(f, pairs);
+      ASSERT_EQ(h.size(), pairs.size());
+      for (std::size_t p = 0; p < pairs.size(); ++p)
+        EXPECT_EQ(h[p], rail.transfer(f, pairs[p].first, pairs[p].second))
+            << "f = " << f << " Hz, pair " << p;
+    }
 }
 
 // Levinson's recursion needs regular leading principal submatrices: with a singular one (t = (1,
