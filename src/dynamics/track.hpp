@@ -23,12 +23,18 @@
 //
 //   H(x_r, x_e) = G(x_r - x_e) - B_r^T (A + K^{-1} I)^{-1} B_e,                              (2)
 //
-// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T). The infinite periodic track is
-// truncated to the 2N + 1 supports nearest the load; beyond them the rail is free. Waves reflected
-// at the ends of the supported stretch return attenuated by the track decay over 2 N L (N = 60: 72
-// m of track); the tests check convergence in N.
+// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T).
 //
-// Solution of (2). S = A + K^{-1} I is a complex symmetric Toeplitz matrix (A_nm depends on
+// The infinite periodic track (the default, DiscreteSupportSolution::kPeriodic): Eq. (2) with all
+// the supports n = ... -1, 0, 1 ..., solved exactly by the Floquet waves of the periodic rail in
+// O(1) per frequency and pair (track_periodic.hpp; Mead 1970/1996, Heckl 2002).
+//
+// The truncated track (kTruncated, kept for tests and comparisons): the 2N + 1 supports nearest
+// the load; beyond them the rail is free. Waves reflected at the ends of the supported stretch
+// return attenuated by |mu|^{2N} (mu the slowest decaying Floquet wave; N = 60: 72 m of track),
+// so it tends to the periodic solution as N grows (tests/dynamics/track_periodic_test.cpp).
+//
+// Solution of the truncated (2). S = A + K^{-1} I is a complex symmetric Toeplitz matrix (A_nm depends on
 // |n - m| only, as the supports are periodic), so S^{-1} B_e is found by Levinson's recursion in
 // O(m^2) operations, m = 2N + 1 (linalg/toeplitz_solve.hpp; Golub & Van Loan, Matrix Computations,
 // 4th ed., Alg. 4.7.2), instead of a dense LU in O(m^3): the same truncated model, equal to the
