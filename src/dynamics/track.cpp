@@ -1,11 +1,13 @@
 #include "dynamics/track.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "core/errors.hpp"
 #include "dynamics/frequency_argument.hpp"
+#include "dynamics/track_periodic.hpp"
 #include "linalg/toeplitz_solve.hpp"
 
 namespace rollnoise::dynamics {
@@ -92,8 +94,13 @@ Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& sup
 }
 
 DiscretelySupportedRail::DiscretelySupportedRail(const BeamSection& rail, const Support& support,
-                                                 double sleeper_spacing, int supports_each_side)
-    : rail_(rail), support_(support), spacing_(sleeper_spacing), n_(supports_each_side) {
+                                                 double sleeper_spacing, int supports_each_side,
+                                                 DiscreteSupportSolution solution)
+    : rail_(rail),
+      support_(support),
+      spacing_(sleeper_spacing),
+      n_(supports_each_side),
+      solution_(solution) {
   rail_.validate("rail");
   support_.validate("support");
   if (!(spacing_ > 0.0)) throw InputError("sleeper_spacing", "sleeper_spacing must be positive");
@@ -130,6 +137,13 @@ Eigen::Matrix2cd DiscretelySupportedRail::solve(const InfiniteBeam& free_rail, c
 std::vector<Eigen::Matrix2cd> DiscretelySupportedRail::solve_pairs(
     const InfiniteBeam& free_rail, cdouble K, const std::vector<std::pair<double, double>>& pairs,
     bool dense) const {
+  if (solution_ == DiscreteSupportSolution::kPeriodic) {  // real frequency or Im omega <= 0
+    const PeriodicallySupportedBeam track(free_rail, K, spacing_);
+    std::vector<Eigen::Matrix2cd> H;
+    H.reserve(pairs.size());
+    for (const auto& [x_r, x_e] : pairs) H.push_back(track.transfer(x_r, x_e));
+    return H;
+  }
   const int m = 2 * n_ + 1;
   const Eigen::Index np = static_cast<Eigen::Index>(pairs.size());
 
@@ -185,9 +199,9 @@ RailModel::RailModel(const TrackParameters& track, TrackSupport support, double 
       support_(support),
       x_(contact_position),
       vertical_(track.vertical, track.vertical_support, track.sleeper_spacing,
-                track.supports_each_side),
+                track.supports_each_side, track.discrete_solution),
       lateral_(track.lateral, track.lateral_support, track.sleeper_spacing,
-               track.supports_each_side) {
+               track.supports_each_side, track.discrete_solution) {
   if (!std::isfinite(x_)) throw InputError("track.position", "contact position must be finite");
 }
 
@@ -242,6 +256,25 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r,
   // along the supported stretch and S is singular to round-off (condition 1e24-1e30 at 8 kHz and
   // 5 % damping with N = 60). There the dense LU with pivoting is kept as it was (its result is
   // not reliable either: docs/performance.md); elsewhere Levinson's O(m^2) solve.
+  if (solution_ == DiscreteSupportSolution::kPeriodic && omega.imag() > 0.0) {
+    // The periodic solution has no ends to reflect from: its closed forms are continued, the
+    // decaying multipliers followed from Re omega up to omega in steps of 0.5 % of Re omega in
+    // Im omega (each the one of mu, 1/mu nearest the previous step's; track_periodic.hpp P1).
+    const double wr = omega.real();
+    const int steps =
+        std::clamp(static_cast<int>(std::ceil(omega.imag() / (0.005 * std::abs(wr)))), 1, 64);
+    PeriodicallySupportedBeam track(InfiniteBeam(rail_, wr, 0.0), support_.dynamic_stiffness(wr),
+                                    spacing_);
+    for (int step = 1; step <= steps; ++step) {
+      const cdouble w(wr, omega.imag() * step / steps);
+      track = PeriodicallySupportedBeam(InfiniteBeam(rail_, w, 0.0, 0.0),
+                                        support_.dynamic_stiffness(w), spacing_, &track);
+    }
+    const Eigen::Matrix2cd H = track.transfer(x_r, x_e);
+    if (!H.allFinite())
+      throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
+    return H;
+  }
   const Eigen::Matrix2cd H = solve(InfiniteBeam(rail_, omega, 0.0, 0.0),
                                    support_.dynamic_stiffness(omega), x_r, x_e, omega.imag() > 0.0);
   if (!H.allFinite())

@@ -23,12 +23,18 @@
 //
 //   H(x_r, x_e) = G(x_r - x_e) - B_r^T (A + K^{-1} I)^{-1} B_e,                              (2)
 //
-// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T). The infinite periodic track is
-// truncated to the 2N + 1 supports nearest the load; beyond them the rail is free. Waves reflected
-// at the ends of the supported stretch return attenuated by the track decay over 2 N L (N = 60: 72
-// m of track); the tests check convergence in N.
+// reciprocal by construction (H(x_e, x_r) = H(x_r, x_e)^T).
 //
-// Solution of (2). S = A + K^{-1} I is a complex symmetric Toeplitz matrix (A_nm depends on
+// The infinite periodic track (the default, DiscreteSupportSolution::kPeriodic): Eq. (2) with all
+// the supports n = ... -1, 0, 1 ..., solved exactly by the Floquet waves of the periodic rail in
+// O(1) per frequency and pair (track_periodic.hpp; Mead 1970/1996, Heckl 2002).
+//
+// The truncated track (kTruncated, kept for tests and comparisons): the 2N + 1 supports nearest
+// the load; beyond them the rail is free. Waves reflected at the ends of the supported stretch
+// return attenuated by |mu|^{2N} (mu the slowest decaying Floquet wave; N = 60: 72 m of track),
+// so it tends to the periodic solution as N grows (tests/dynamics/track_periodic_test.cpp).
+//
+// Solution of the truncated (2). S = A + K^{-1} I is a complex symmetric Toeplitz matrix (A_nm depends on
 // |n - m| only, as the supports are periodic), so S^{-1} B_e is found by Levinson's recursion in
 // O(m^2) operations, m = 2N + 1 (linalg/toeplitz_solve.hpp; Golub & Van Loan, Matrix Computations,
 // 4th ed., Alg. 4.7.2), instead of a dense LU in O(m^3): the same truncated model, equal to the
@@ -66,6 +72,11 @@ struct Support {
   void validate(const std::string& prefix) const;
 };
 
+/// How the discrete-support rail (DiscretelySupportedRail) solves Eq. (2): the infinite periodic
+/// track exactly by its Floquet waves (track_periodic.hpp; the default), or the truncated system of
+/// 2N + 1 supports (N = supports_each_side), kept for tests and comparisons.
+enum class DiscreteSupportSolution { kPeriodic, kTruncated };
+
 /// A ballasted track: the rail in both planes of bending and the supports in the three directions.
 struct TrackParameters {
   BeamSection vertical;  ///< bending in the x-z plane (I about the horizontal axis)
@@ -75,7 +86,10 @@ struct TrackParameters {
   Support longitudinal_support;  ///< pad shear / sleeper / ballast in x
   double sleeper_spacing = 0.6;  ///< L (m)
   double head_height = 0.0;      ///< running surface above the vertical-bending neutral axis (m)
-  int supports_each_side = 60;   ///< N of the discrete model (2N + 1 supports)
+  int supports_each_side = 60;   ///< N of a truncated discrete model (2N + 1 supports): the
+                                 ///< waveguide rail's, and the beam rail's if kTruncated
+  /// The beam rail's solution of Eq. (2) (not a case key: the truncated one is for comparisons).
+  DiscreteSupportSolution discrete_solution = DiscreteSupportSolution::kPeriodic;
 
   void validate() const;
 };
@@ -88,24 +102,26 @@ TrackParameters uic60_ballasted();
 Eigen::Matrix2cd continuous_transfer(const BeamSection& rail, const Support& support,
                                      double sleeper_spacing, double frequency, double x);
 
-/// Rail on discrete supports at x_n = n L, Eq. (2).
+/// Rail on discrete supports at x_n = n L, Eq. (2): the infinite periodic track exactly
+/// (kPeriodic, track_periodic.hpp), or truncated to 2N + 1 supports (kTruncated).
 class DiscretelySupportedRail {
  public:
   DiscretelySupportedRail(const BeamSection& rail, const Support& support, double sleeper_spacing,
-                          int supports_each_side);
+                          int supports_each_side,
+                          DiscreteSupportSolution solution = DiscreteSupportSolution::kPeriodic);
 
   /// (w, psi) at x_response per (F, M) at x_load; positions along the rail measured from a sleeper
-  /// (x = 0 over a sleeper, x = L/2 at mid-span). The 2N + 1 supports are centred on the midpoint
-  /// of the two positions.
+  /// (x = 0 over a sleeper, x = L/2 at mid-span). Truncated: the 2N + 1 supports are centred on
+  /// the midpoint of the two positions.
   Eigen::Matrix2cd transfer(double frequency, double x_response, double x_load) const;
 
   /// Point receptance matrix at x.
   Eigen::Matrix2cd point(double frequency, double x) const { return transfer(frequency, x, x); }
 
-  /// transfer(frequency, x_r, x_e) for several (x_r, x_e) pairs at one frequency, each with its
-  /// own window of supports (centred on its midpoint) as transfer() has it, but with one Levinson
-  /// recursion on S serving all of them (S depends on the frequency only): equal to transfer()
-  /// per pair to the last bit, unless the recursion's residual check sends them to the dense LU.
+  /// transfer(frequency, x_r, x_e) for several (x_r, x_e) pairs at one frequency: the periodic
+  /// solution's Floquet multipliers and 4x4 LU (or, truncated, one Levinson recursion on S, each
+  /// pair with its own window of supports) serve all of them: equal to transfer() per pair to the
+  /// last bit (truncated: unless the recursion's residual check sends them to the dense LU).
   std::vector<Eigen::Matrix2cd> transfers(double frequency,
                                           const std::vector<std::pair<double, double>>& pairs) const;
 
@@ -114,6 +130,7 @@ class DiscretelySupportedRail {
   Eigen::Matrix2cd transfer_at(cdouble omega, double x_response, double x_load) const;
 
   int supports_each_side() const { return n_; }
+  DiscreteSupportSolution solution() const { return solution_; }
 
  private:
   /// Eq. (2) for the free rail and the support stiffness K at one (real or complex) frequency.
@@ -129,6 +146,7 @@ class DiscretelySupportedRail {
   Support support_;
   double spacing_;
   int n_;
+  DiscreteSupportSolution solution_;
 };
 
 enum class TrackSupport { kContinuous, kDiscrete };

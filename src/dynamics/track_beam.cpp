@@ -67,6 +67,17 @@ Eigen::Matrix2cd InfiniteBeam::transfer(double x) const {
   return G;
 }
 
+InfiniteBeam::WaveAmplitudes InfiniteBeam::wave_amplitudes() const {
+  const cdouble I(0.0, 1.0);
+  WaveAmplitudes a;
+  for (int j = 0; j < 2; ++j) {
+    const cdouble k = k_[j];
+    a.wF[j] = -I * (d2_ * k * k + d0_) * inv_dp_[j];
+    a.wM[j] = g_ * k * inv_dp_[j];
+  }
+  return a;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The closed forms at a complex omega (docs/squeal.md Sec. 2); the real frequency is omega + 0i.
 // ---------------------------------------------------------------------------------------------

@@ -85,6 +85,16 @@ class InfiniteBeam {
   /// count x round-off (|e^{-i k step}| <= 1).
   Eigen::MatrixX2cd deflection_rows(double x0, double step, int count) const;
 
+  /// The amplitudes of the two waves in the deflection row of transfer(x), x != 0:
+  ///   g_wF(x) = sum_j wF[j] e^{-i k_j |x|},   g_wM(x) = sgn(x) sum_j wM[j] e^{-i k_j |x|},
+  /// wF_j = -i (d2 k_j^2 + d0) / P'(k_j), wM_j = g k_j / P'(k_j) (the residues above; g_psiF =
+  /// -g_wM by reciprocity). wM[0] + wM[1] = 0 (g_wM is continuous at 0). Used by the periodic
+  /// rail's lattice sums (track_periodic.hpp).
+  struct WaveAmplitudes {
+    std::array<cdouble, 2> wF, wM;
+  };
+  WaveAmplitudes wave_amplitudes() const;
+
   /// Point receptance w/F at the load.
   cdouble point_receptance() const { return transfer(0.0)(0, 0); }
 

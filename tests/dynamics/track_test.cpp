@@ -260,9 +260,10 @@ TEST(DiscreteTrack, TransferReceptanceIsReciprocal) {
 TEST(DiscreteTrack, ConvergesWithNumberOfSupports) {
   const rd::TrackParameters t = rd::uic60_ballasted();
   const double L = t.sleeper_spacing;
-  const rd::DiscretelySupportedRail coarse(t.vertical, t.vertical_support, L, 10);
-  const rd::DiscretelySupportedRail medium(t.vertical, t.vertical_support, L, 40);
-  const rd::DiscretelySupportedRail fine(t.vertical, t.vertical_support, L, 80);
+  const auto cut = rd::DiscreteSupportSolution::kTruncated;
+  const rd::DiscretelySupportedRail coarse(t.vertical, t.vertical_support, L, 10, cut);
+  const rd::DiscretelySupportedRail medium(t.vertical, t.vertical_support, L, 40, cut);
+  const rd::DiscretelySupportedRail fine(t.vertical, t.vertical_support, L, 80, cut);
   double err_coarse = 0.0, err_medium = 0.0;
   for (double f = 100.0; f < 5000.0; f *= 1.1) {
     for (double x : {0.0, 0.5 * L}) {
@@ -299,7 +300,7 @@ TEST(DiscreteTrack, ToeplitzSolveEqualsDenseLuOfEq2ToRoundOff) {
   for (const bool vertical : {true, false}) {
     const rd::BeamSection& b = vertical ? t.vertical : t.lateral;
     const rd::Support& sup = vertical ? t.vertical_support : t.lateral_support;
-    const rd::DiscretelySupportedRail rail(b, sup, L, n);
+    const rd::DiscretelySupportedRail rail(b, sup, L, n, rd::DiscreteSupportSolution::kTruncated);
     // point receptances over a sleeper and mid-span, and the transfer over the wheelbase 2.5 m
     const double positions[3][2] = {{0.0, 0.0}, {0.3, 0.3}, {0.3, 2.8}};
     for (double f = 20.0; f < 8000.0; f *= 1.37) {
@@ -331,20 +332,23 @@ TEST(DiscreteTrack, ToeplitzSolveEqualsDenseLuOfEq2ToRoundOff) {
 
 // Several pairs at one frequency through one Toeplitz recursion (DiscretelySupportedRail::
 // transfers, the contact set's rail) equal each pair's own transfer() to the bit: the recursion
-// treats its columns independently and each pair keeps its own window of supports.
+// treats its columns independently and each pair keeps its own window of supports; the periodic
+// solution (track_periodic.hpp) shares its multipliers and 4x4 LU between the pairs, likewise.
 TEST(DiscreteTrack, TransfersOfSeveralPairsEqualEachPairsTransferToTheBit) {
   const rd::TrackParameters t = rd::uic60_ballasted();
-  const rd::DiscretelySupportedRail rail(t.vertical, t.vertical_support, t.sleeper_spacing,
-                                         t.supports_each_side);
   const std::vector<std::pair<double, double>> pairs = {
       {0.3, 0.3}, {0.3, 2.8}, {2.8, 2.8}, {2.8, 0.3}, {0.0, 0.0}};
-  for (double f : {63.0, 850.0, 4100.0}) {
-    const std::vector<Eigen::Matrix2cd> h = rail.transfers(f, pairs);
-    ASSERT_EQ(h.size(), pairs.size());
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      EXPECT_EQ(h[p], rail.transfer(f, pairs[p].first, pairs[p].second))
-          << "f = " << f << " Hz, pair " << p;
-  }
+  for (const auto solution :
+       {rd::DiscreteSupportSolution::kTruncated, rd::DiscreteSupportSolution::kPeriodic})
+    for (double f : {63.0, 850.0, 4100.0}) {
+      const rd::DiscretelySupportedRail rail(t.vertical, t.vertical_support, t.sleeper_spacing,
+                                             t.supports_each_side, solution);
+      const std::vector<Eigen::Matrix2cd> h = rail.transfers(f, pairs);
+      ASSERT_EQ(h.size(), pairs.size());
+      for (std::size_t p = 0; p < pairs.size(); ++p)
+        EXPECT_EQ(h[p], rail.transfer(f, pairs[p].first, pairs[p].second))
+            << "f = " << f << " Hz, pair " << p;
+    }
 }
 
 // Levinson's recursion needs regular leading principal submatrices: with a singular one (t = (1,
