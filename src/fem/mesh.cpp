@@ -1,9 +1,8 @@
-// mesh_polygon through gmsh's C++ API (gmsh 4.8, Debian libgmsh-dev): built-in geometry kernel,
-// Frontal-Delaunay triangles, second order with straight mid-side nodes. gmsh keeps one global
-// model, so calls are serialised by a mutex and each call initialises and finalises the library.
+// mesh_polygon through gmsh's C API (gmsh 4.8, Debian libgmsh-dev), loaded at the first mesh
+// (fem/gmsh_library.hpp): built-in geometry kernel, Frontal-Delaunay triangles, second order with
+// straight mid-side nodes. gmsh keeps one global model, so calls are serialised by a mutex and
+// each call initialises and finalises the library.
 #include "fem/mesh.hpp"
-
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "fem/gmsh_library.hpp"
 
 namespace rollnoise::fem {
 namespace {
@@ -79,43 +79,101 @@ struct GmshMesh {
   std::vector<std::vector<std::size_t>> line_nodes;  // per segment: 3 per line (end, end, mid)
 };
 
-GmshMesh run_gmsh(const std::vector<Eigen::Vector2d>& outline, double h) {
-  GmshMesh out;
-  gmsh::initialize(0, nullptr, false);
-  try {
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 0);
-    gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay
-    gmsh::option::setNumber("Mesh.ElementOrder", 2);
-    gmsh::option::setNumber("Mesh.SecondOrderLinear", 1);  // mid-side nodes on straight edges
-    gmsh::option::setNumber("Mesh.CharacteristicLengthMax", h);
-    gmsh::model::add("section");
-    const int n = static_cast<int>(outline.size());
-    std::vector<int> points, lines;
-    for (const auto& p : outline)
-      points.push_back(gmsh::model::geo::addPoint(p.x(), p.y(), 0.0, h));
-    for (int i = 0; i < n; ++i)
-      lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % n]));
-    const int loop = gmsh::model::geo::addCurveLoop(lines);
-    gmsh::model::geo::addPlaneSurface({loop});
-    gmsh::model::geo::synchronize();
-    gmsh::model::mesh::generate(2);
-    gmsh::model::mesh::setOrder(2);
-    std::vector<double> parametric;
-    gmsh::model::mesh::getNodes(out.node_tags, out.coords, parametric, -1, -1, false, false);
-    std::vector<std::size_t> element_tags;
-    gmsh::model::mesh::getElementsByType(9, element_tags,
-                                         out.triangle_nodes);  // 9: 6-node triangle
-    for (int i = 0; i < n; ++i) {
-      std::vector<std::size_t> tags, nodes;
-      gmsh::model::mesh::getElementsByType(8, tags, nodes, lines[i]);  // 8: 3-node line
-      out.line_nodes.push_back(nodes);
-    }
-  } catch (...) {
-    gmsh::finalize();
-    throw NumericalError("gmsh failed to mesh the section outline");
+// Throws NumericalError when the gmsh call `call` reported failure (ierr != 0).
+void check_gmsh_call(int ierr, const char* call) {
+  if (ierr != 0)
+    throw NumericalError(std::string("gmsh failed to mesh the section outline (") + call + ")");
+}
+
+// Copies an array gmsh allocated into a vector and frees it (null when gmsh allocated none).
+template <class T>
+std::vector<T> take_gmsh_array(const GmshApi& api, T* data, std::size_t n) {
+  std::vector<T> v(data, data + (data ? n : 0));
+  api.free(data);
+  return v;
+}
+
+// Fills `out` from gmsh's mesh of the (synchronised) model; lines: the outline's curve tags.
+void read_gmsh_mesh(const GmshApi& api, const std::vector<int>& lines, GmshMesh& out) {
+  int ierr = 0;
+  std::size_t *tags = nullptr, *nodes = nullptr;
+  double *coords = nullptr, *parametric = nullptr;
+  std::size_t n_tags = 0, n_nodes = 0, n_coords = 0, n_parametric = 0;
+  api.mesh_get_nodes(&tags, &n_tags, &coords, &n_coords, &parametric, &n_parametric, -1, -1, 0, 0,
+                     &ierr);
+  out.node_tags = take_gmsh_array(api, tags, n_tags);
+  out.coords = take_gmsh_array(api, coords, n_coords);
+  take_gmsh_array(api, parametric, n_parametric);
+  check_gmsh_call(ierr, "getNodes");
+  // 9: 6-node triangle, over all surfaces (tag -1), in one task.
+  api.mesh_get_elements_by_type(9, &tags, &n_tags, &nodes, &n_nodes, -1, 0, 1, &ierr);
+  take_gmsh_array(api, tags, n_tags);
+  out.triangle_nodes = take_gmsh_array(api, nodes, n_nodes);
+  check_gmsh_call(ierr, "getElementsByType");
+  for (const int line : lines) {
+    // 8: 3-node line, on this outline segment.
+    api.mesh_get_elements_by_type(8, &tags, &n_tags, &nodes, &n_nodes, line, 0, 1, &ierr);
+    take_gmsh_array(api, tags, n_tags);
+    out.line_nodes.push_back(take_gmsh_array(api, nodes, n_nodes));
+    check_gmsh_call(ierr, "getElementsByType");
   }
-  gmsh::finalize();
+}
+
+// Builds the outline's plane surface in gmsh's built-in kernel and meshes it; returns the curve
+// tags of the outline's segments.
+std::vector<int> mesh_outline_in_gmsh(const GmshApi& api,
+                                      const std::vector<Eigen::Vector2d>& outline, double h) {
+  int ierr = 0;
+  const auto set_option = [&](const char* name, double value) {
+    api.option_set_number(name, value, &ierr);
+    check_gmsh_call(ierr, name);
+  };
+  set_option("General.Terminal", 0);
+  set_option("General.Verbosity", 0);
+  set_option("Mesh.Algorithm", 6);  // Frontal-Delaunay
+  set_option("Mesh.ElementOrder", 2);
+  set_option("Mesh.SecondOrderLinear", 1);  // mid-side nodes on straight edges
+  set_option("Mesh.CharacteristicLengthMax", h);
+  api.model_add("section", &ierr);
+  check_gmsh_call(ierr, "model::add");
+  const int n = static_cast<int>(outline.size());
+  std::vector<int> points, lines;
+  for (const auto& p : outline) {
+    points.push_back(api.geo_add_point(p.x(), p.y(), 0.0, h, -1, &ierr));
+    check_gmsh_call(ierr, "geo::addPoint");
+  }
+  for (int i = 0; i < n; ++i) {
+    lines.push_back(api.geo_add_line(points[i], points[(i + 1) % n], -1, &ierr));
+    check_gmsh_call(ierr, "geo::addLine");
+  }
+  int loop = api.geo_add_curve_loop(lines.data(), lines.size(), -1, 0, &ierr);
+  check_gmsh_call(ierr, "geo::addCurveLoop");
+  api.geo_add_plane_surface(&loop, 1, -1, &ierr);
+  check_gmsh_call(ierr, "geo::addPlaneSurface");
+  api.geo_synchronize(&ierr);
+  check_gmsh_call(ierr, "geo::synchronize");
+  api.mesh_generate(2, &ierr);
+  check_gmsh_call(ierr, "mesh::generate");
+  api.mesh_set_order(2, &ierr);
+  check_gmsh_call(ierr, "mesh::setOrder");
+  return lines;
+}
+
+// One gmsh session (initialize ... finalize) meshing the outline.
+GmshMesh run_gmsh(const std::vector<Eigen::Vector2d>& outline, double h) {
+  const GmshApi& api = gmsh_library();  // loads libgmsh at the first mesh of the process
+  GmshMesh out;
+  int ierr = 0;
+  api.initialize(0, nullptr, 0, &ierr);  // no argv, no configuration files
+  try {
+    check_gmsh_call(ierr, "initialize");
+    read_gmsh_mesh(api, mesh_outline_in_gmsh(api, outline, h), out);
+  } catch (...) {
+    api.finalize(&ierr);
+    throw;
+  }
+  api.finalize(&ierr);
+  check_gmsh_call(ierr, "finalize");
   return out;
 }
 

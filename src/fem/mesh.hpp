@@ -1,6 +1,6 @@
 // Plane meshes of 6-node (quadratic) triangles for cross-sections: the wheel section in (r, z), the
-// rail section in (y, z). Meshing goes through gmsh's C++ API in memory (no files, no terminal
-// output).
+// rail section in (y, z). Meshing goes through gmsh's C API in memory (no files, no terminal
+// output); libgmsh is loaded at the first mesh of the process (fem/gmsh_library.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -21,9 +21,10 @@ struct QuadraticTriangleMesh {
 };
 
 /// Meshes the closed polygon `outline` (either orientation, last point not repeated) with target
-/// element size h (m) through gmsh's C++ API (in memory, no files, terminal output off). Mid-side
+/// element size h (m) through gmsh's C API (in memory, no files, terminal output off). Mid-side
 /// nodes lie at the middle of straight edges. Throws InputError (key "outline") on a
-/// self-intersecting or degenerate outline or h <= 0, NumericalError if gmsh fails.
+/// self-intersecting or degenerate outline or h <= 0, NumericalError if gmsh fails,
+/// std::runtime_error if libgmsh cannot be loaded (gmsh_library()).
 QuadraticTriangleMesh mesh_polygon(const std::vector<Eigen::Vector2d>& outline, double h);
 
 /// Signed area of a closed polygon (positive when counter-clockwise), shoelace formula.
