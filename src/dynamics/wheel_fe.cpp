@@ -104,43 +104,47 @@ ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape) {
 
 namespace {
 
-// The modes of every order n = 0 .. n_max, as one solver going up in n finds them: each order's
-// count of modes is the guess for the next one's (fem::LowestModesSolver::solve's `expected`, which
-// sets the Lanczos size and so the modes' last bits). On one thread exactly that chain. On several,
-// two parallel passes: (1) each order's count by inertia (count_below), (2) each order solved with
-// the count of the order below as its guess; then every order whose guess differs from the count
-// its predecessor actually found is solved again in order (none on the shipped wheels), so the
-// modes are bit-identical to the chain's. One solver (factorisation) per thread.
+// Orders first .. last - 1 as one solver going up in n finds them: each order's count of modes is
+// the guess for the next one's (fem::LowestModesSolver::solve's `expected`, which sets the Lanczos
+// size and so the modes' last bits), starting from `guess`.
+void solve_chain(const fem::AxisymmetricOrders& orders, fem::LowestModesSolver& solver,
+                 std::size_t first, std::size_t last, int guess, std::vector<fem::Modes>& modes) {
+  for (std::size_t n = first; n < last; ++n) {
+    const auto km = orders.matrices(static_cast<int>(n));
+    modes[n] = solver.solve(km.stiffness, km.mass, guess);
+    guess = static_cast<int>(modes[n].omega.size());
+  }
+}
+
+// The modes of every order n = 0 .. n_max as the chain over all orders finds them (solve_chain
+// from n = 0, guess unknown), bit for bit. On T threads the orders are cut into T consecutive
+// blocks, one chain each (one solver, i.e. factorisation, per thread); a block's first guess, the
+// count of the order below it, is found by inertia (count_below: one more numeric factorisation
+// per block, not per order). A block whose first guess differs from the count the block below
+// actually found is solved again after it (none on the shipped wheels).
 std::vector<fem::Modes> order_modes(const fem::AxisymmetricOrders& orders,
                                     const std::vector<int>& fixed, double omega_max, int n_max,
                                     int threads) {
   const std::size_t count = static_cast<std::size_t>(n_max) + 1;
   std::vector<fem::Modes> modes(count);
-  const int workers = std::min<int>(resolved_threads(threads), static_cast<int>(count));
+  const int blocks = std::min<int>(resolved_threads(threads), static_cast<int>(count));
   std::vector<std::unique_ptr<fem::LowestModesSolver>> solvers;
-  for (int t = 0; t < workers; ++t)
+  for (int t = 0; t < blocks; ++t)
     solvers.push_back(std::make_unique<fem::LowestModesSolver>(fixed, omega_max));
-  if (workers <= 1) {
-    int previous_count = -1;
-    for (std::size_t n = 0; n < count; ++n) {
-      const auto km = orders.matrices(static_cast<int>(n));
-      modes[n] = solvers[0]->solve(km.stiffness, km.mass, previous_count);
-      previous_count = static_cast<int>(modes[n].omega.size());
+  std::vector<std::size_t> start(blocks + 1);  // block t: orders start[t] .. start[t + 1] - 1
+  for (int t = 0; t <= blocks; ++t) start[t] = count * t / blocks;
+  std::vector<int> guess(blocks, -1);
+  parallel_for(blocks, blocks, [&](std::size_t t, int worker) {
+    fem::LowestModesSolver& solver = *solvers[worker];
+    if (t > 0) {
+      const auto below = orders.matrices(static_cast<int>(start[t] - 1));
+      guess[t] = solver.count_below(below.stiffness, below.mass);
     }
-    return modes;
-  }
-  std::vector<fem::AxisymmetricMatrices> km(count);
-  std::vector<int> guess(count, -1);  // guess[n]: the count of order n - 1
-  parallel_for(count, workers, [&](std::size_t n, int worker) {
-    km[n] = orders.matrices(static_cast<int>(n));
-    if (n + 1 < count) guess[n + 1] = solvers[worker]->count_below(km[n].stiffness, km[n].mass);
+    solve_chain(orders, solver, start[t], start[t + 1], guess[t], modes);
   });
-  parallel_for(count, workers, [&](std::size_t n, int worker) {
-    modes[n] = solvers[worker]->solve(km[n].stiffness, km[n].mass, guess[n]);
-  });
-  for (std::size_t n = 1; n < count; ++n) {
-    const int found = static_cast<int>(modes[n - 1].omega.size());
-    if (guess[n] != found) modes[n] = solvers[0]->solve(km[n].stiffness, km[n].mass, found);
+  for (int t = 1; t < blocks; ++t) {
+    const int found = static_cast<int>(modes[start[t] - 1].omega.size());
+    if (guess[t] != found) solve_chain(orders, *solvers[0], start[t], start[t + 1], found, modes);
   }
   return modes;
 }
