@@ -93,17 +93,22 @@ class FurtherWheels {
  public:
   FurtherWheels(const NoiseCase& nc, int threads) : nc_(nc), threads_(threads) {}
 
+  // Each task also finds its wheel's contact state (noise::bogie_wheel_contacts of that wheel
+  // alone: the wheels' states are independent given the curve state).
   void start(const MeanContact& main, const std::vector<double>& frequency) {
     base_ = main.contact();
+    curve_ = main.curve();
     frequency_ = frequency;
-    for (const noise::WheelContact& w : curve_wheels(main.curve(), nc_)) {
-      order_.push_back(w.wheel == noise::WheelId::leading_outer ? -1 : int(states_.size()));
-      if (w.wheel == noise::WheelId::leading_outer) main_state_ = w;
-      else states_.push_back(w);
+    for (noise::WheelId id : curve_wheel_ids(curve_, nc_)) {
+      order_.push_back(id == noise::WheelId::leading_outer ? -1 : int(ids_.size()));
+      if (id == noise::WheelId::leading_outer) main_state_ = curve_.state->wheel;
+      else ids_.push_back(id);
     }
-    results_.resize(states_.size());
-    pool_ = std::make_unique<TaskPool>(states_.size(), threads_, [this](std::size_t i, int) {
-      results_[i] = wheel_contact_noise(base_, nc_, states_[i], frequency_);
+    results_.resize(ids_.size());
+    pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t i, int) {
+      const noise::WheelContact w =
+          noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
+      results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
     });
   }
 
@@ -144,10 +149,11 @@ class FurtherWheels {
   const NoiseCase& nc_;
   int threads_;
   ContactCase base_;
+  CurveSetup curve_;
   std::vector<double> frequency_;
   noise::WheelContact main_state_;
-  std::vector<noise::WheelContact> states_;
-  std::vector<int> order_;  // curve.wheels: index into states_, -1 the main wheel
+  std::vector<noise::WheelId> ids_;  // the further wheels
+  std::vector<int> order_;  // curve.wheels: index into ids_, -1 the main wheel
   std::vector<WheelNoise> results_;
   std::unique_ptr<TaskPool> pool_;  // last: joined before the members its tasks use go
 };
