@@ -160,8 +160,9 @@ class FurtherWheels {
 
 using MeanContactHook = std::function<void(const MeanContact&, const std::vector<double>&)>;
 
-NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                           const MeanContactHook& on_mean_contact);
+// run_noise_loop, calling `on_mean_contact` as soon as the main wheel's mean contact exists.
+NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
+                                 const MeanContactHook& on_mean_contact);
 
 }  // namespace
 
@@ -173,10 +174,10 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const bool parallel = threads > 1 && listed_wheel_count(nc) > 1;
   if (parallel && c.threads >= 0 && c.threads <= nss::kMaxThreads) c.threads = 1;
   FurtherWheels further(nc, parallel ? threads : 1);
-  NoiseResult r = run_noise_loop(std::move(c), nc, reuse,
-                                 [&](const MeanContact& m, const std::vector<double>& frequency) {
-                                   further.start(m, frequency);
-                                 });
+  NoiseResult r = noise_loop_with_hook(
+      std::move(c), nc, reuse,
+      [&](const MeanContact& m, const std::vector<double>& frequency) { further.start(m, frequency); });
+  // r.seconds_wheels: what the wheels took after the main wheel's loop (their work overlaps it)
   const auto t1 = Clock::now();
   r.wheels = further.finish(r, *r.spectra);
   r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
@@ -190,13 +191,13 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
 }
 
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
-  return run_noise_loop(std::move(c), nc, reuse, {});
+  return noise_loop_with_hook(std::move(c), nc, reuse, {});
 }
 
 namespace {
 
-NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                           const MeanContactHook& on_mean_contact) {
+NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
+                                 const MeanContactHook& on_mean_contact) {
   const auto t0 = Clock::now();
   NoiseResult r;
   r.axis = band_axis(c, nc);  // 1, the sizes before any work
