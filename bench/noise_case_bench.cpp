@@ -10,6 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <functional>
 #include <optional>
@@ -94,25 +95,51 @@ void SteadyHertzPaper(benchmark::State& state) {
 }
 BENCHMARK(SteadyHertzPaper)->Unit(benchmark::kMillisecond)->Iterations(10);
 
-// Issue 25's two speed bars in-process (CPU time of this process, std::clock, so without the
-// process start-up that `perf stat` of the commands includes): the single-wheel noise case over
-// the steady Hertz case (bar: <= 5) and the four-wheel case over the single-wheel case (bar:
-// <= 2.5), the median of 3 runs each; the second ratio also for cases/curve_300m_table.toml (the
-// mode table instead of the FE wheel; in-process the FE wheel's modes are computed once per
-// process, so the FE ratios here exclude them, unlike the commands'; the FE modes of the case's
-// wheel are timed alone, dynamics::wheel_fe_modes, and `single_with_fe_modes_over_steady` adds
-// them to the single wheel, as the command pays them). Counters: the ratios, the
-// CPU seconds, the grid (elements of the leading outer wheel's patch, of the Hertz patch) and the
+// Issue 25's two speed bars in-process (no process start-up, which `perf stat` of the commands
+// includes): the single-wheel noise case over the steady Hertz case (bar: <= 5) and the four-wheel
+// case over the single-wheel case (bar: <= 2.5), the median of 3 runs each; the second ratio also
+// for cases/curve_300m_table.toml (the mode table instead of the FE wheel; in-process the FE
+// wheel's modes are computed once per process, so the FE ratios here exclude them, unlike the
+// commands'; the FE modes of the case's wheel are timed alone, dynamics::wheel_fe_modes, and
+// `single_with_fe_modes_over_steady` adds them to the single wheel, as the command pays them).
+// The bars are wall time (the further wheels and the FE wheel's orders run on solver.threads
+// threads, 0 = the hardware's: the counters ending in _wall); CPU time (std::clock: all threads of
+// the process, the work) is printed beside it, its ratios without a suffix. Counters: the ratios,
+// the seconds, the grid (elements of the leading outer wheel's patch, of the Hertz patch) and the
 // frequency count.
-double cpu_seconds(const std::function<void()>& run) {
-  std::vector<double> t;
+struct Seconds {
+  double cpu = 0, wall = 0;
+};
+
+Seconds timed(const std::function<void()>& run) {
+  std::vector<double> cpu, wall;
   for (int i = 0; i < 3; ++i) {
     const std::clock_t c0 = std::clock();
+    const auto w0 = std::chrono::steady_clock::now();
     run();
-    t.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
+    cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
   }
-  std::sort(t.begin(), t.end());
-  return t[1];
+  std::sort(cpu.begin(), cpu.end());
+  std::sort(wall.begin(), wall.end());
+  return {cpu[1], wall[1]};
+}
+
+// The bars' ratios and the seconds, from CPU (`suffix` "") or wall times ("_wall").
+void bar_counters(benchmark::State& state, const std::string& suffix, double t4, double t1,
+                  double th, double t4_table, double t1_table, double t_modes) {
+  state.counters["single_over_steady" + suffix] = t1 / th;
+  state.counters["single_with_fe_modes_over_steady" + suffix] = (t1 + t_modes) / th;
+  state.counters["four_over_single" + suffix] = t4 / t1;
+  state.counters["four_over_single_with_fe_modes" + suffix] = (t4 + t_modes) / (t1 + t_modes);
+  state.counters["four_over_single_table" + suffix] = t4_table / t1_table;
+  const std::string unit = suffix.empty() ? "_cpu_s" : "_wall_s";
+  state.counters["four_table" + unit] = t4_table;
+  state.counters["single_table" + unit] = t1_table;
+  state.counters["four" + unit] = t4;
+  state.counters["single" + unit] = t1;
+  state.counters["steady" + unit] = th;
+  state.counters["fe_modes" + unit] = t_modes;
 }
 
 void SpeedBarsCurve300m(benchmark::State& state) {
@@ -128,43 +155,35 @@ void SpeedBarsCurve300m(benchmark::State& state) {
   io::InputProblems problems;
   const std::optional<io::WheelFeCase> fe = io::read_wheel_fe_case(one, problems);
   if (!fe) state.SkipWithError("cases/curve_300m.toml has no FE wheel");
-  double t4 = 0, t1 = 0, th = 0, t4_table = 0, t1_table = 0, elements = 0, frequencies = 0,
-         hertz_elements = 0, t_modes = 0, dofs = 0;
+  Seconds t4, t1, th, t4_table, t1_table, t_modes;
+  double elements = 0, frequencies = 0, hertz_elements = 0, dofs = 0;
   for (auto _ : state) {
-    t_modes = cpu_seconds([&] {
+    t_modes = timed([&] {
       const dynamics::WheelFeModes w = dynamics::wheel_fe_modes(fe->section, fe->options);
       dofs = 3.0 * w.mesh.nodes.size();
     });
-    t4_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(four_table)); });
-    t1_table = cpu_seconds([&] { benchmark::DoNotOptimize(run_curve_300m(one_table)); });
-    t4 = cpu_seconds([&] {
+    t4_table = timed([&] { benchmark::DoNotOptimize(run_curve_300m(four_table)); });
+    t1_table = timed([&] { benchmark::DoNotOptimize(run_curve_300m(one_table)); });
+    t4 = timed([&] {
       const pipeline::NoiseResult r = run_curve_300m(four);
       benchmark::DoNotOptimize(r);
     });
-    t1 = cpu_seconds([&] {
+    t1 = timed([&] {
       const pipeline::NoiseResult r = run_curve_300m(one);
       elements = r.mean.contact().grid.nx * r.mean.contact().grid.ny;
       frequencies = static_cast<double>(r.axis.frequency.size());
     });
-    th = cpu_seconds([&] { hertz_elements = run_steady_hertz(hertz); });
+    th = timed([&] { hertz_elements = run_steady_hertz(hertz); });
   }
-  state.counters["single_over_steady"] = t1 / th;
-  state.counters["single_with_fe_modes_over_steady"] = (t1 + t_modes) / th;
-  state.counters["four_over_single"] = t4 / t1;
-  state.counters["four_over_single_with_fe_modes"] = (t4 + t_modes) / (t1 + t_modes);
-  state.counters["four_over_single_table"] = t4_table / t1_table;
-  state.counters["four_table_cpu_s"] = t4_table;
-  state.counters["single_table_cpu_s"] = t1_table;
-  state.counters["four_cpu_s"] = t4;
-  state.counters["single_cpu_s"] = t1;
-  state.counters["steady_cpu_s"] = th;
-  state.counters["fe_modes_cpu_s"] = t_modes;
+  bar_counters(state, "", t4.cpu, t1.cpu, th.cpu, t4_table.cpu, t1_table.cpu, t_modes.cpu);
+  bar_counters(state, "_wall", t4.wall, t1.wall, th.wall, t4_table.wall, t1_table.wall,
+               t_modes.wall);
   state.counters["fe_dofs_per_order"] = dofs;
   state.counters["elements"] = elements;
   state.counters["hertz_elements"] = hertz_elements;
   state.counters["frequencies"] = frequencies;
 }
-BENCHMARK(SpeedBarsCurve300m)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(SpeedBarsCurve300m)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 // One contact search of the S1002 wheel on the UIC60 rail at a yawed, rolled pose.
 void MinimumGapS1002Uic60(benchmark::State& state) {

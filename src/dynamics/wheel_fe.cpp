@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "fem/eigen_solve.hpp"
 
 namespace rollnoise::dynamics {
@@ -100,6 +102,55 @@ ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape) {
   return c == 0 ? ModeFamily::kRadial : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
 }
 
+namespace {
+
+// Orders first .. last - 1 as one solver going up in n finds them: each order's count of modes is
+// the guess for the next one's (fem::LowestModesSolver::solve's `expected`, which sets the Lanczos
+// size and so the modes' last bits), starting from `guess`.
+void solve_chain(const fem::AxisymmetricOrders& orders, fem::LowestModesSolver& solver,
+                 std::size_t first, std::size_t last, int guess, std::vector<fem::Modes>& modes) {
+  for (std::size_t n = first; n < last; ++n) {
+    const auto km = orders.matrices(static_cast<int>(n));
+    modes[n] = solver.solve(km.stiffness, km.mass, guess);
+    guess = static_cast<int>(modes[n].omega.size());
+  }
+}
+
+// The modes of every order n = 0 .. n_max as the chain over all orders finds them (solve_chain
+// from n = 0, guess unknown), bit for bit. On T threads the orders are cut into T consecutive
+// blocks, one chain each (one solver, i.e. factorisation, per thread); a block's first guess, the
+// count of the order below it, is found by inertia (count_below: one more numeric factorisation
+// per block, not per order). A block whose first guess differs from the count the block below
+// actually found is solved again after it (none on the shipped wheels).
+std::vector<fem::Modes> order_modes(const fem::AxisymmetricOrders& orders,
+                                    const std::vector<int>& fixed, double omega_max, int n_max,
+                                    int threads) {
+  const std::size_t count = static_cast<std::size_t>(n_max) + 1;
+  std::vector<fem::Modes> modes(count);
+  const int blocks = std::min<int>(resolved_threads(threads), static_cast<int>(count));
+  std::vector<std::unique_ptr<fem::LowestModesSolver>> solvers;
+  for (int t = 0; t < blocks; ++t)
+    solvers.push_back(std::make_unique<fem::LowestModesSolver>(fixed, omega_max));
+  std::vector<std::size_t> start(blocks + 1);  // block t: orders start[t] .. start[t + 1] - 1
+  for (int t = 0; t <= blocks; ++t) start[t] = count * t / blocks;
+  std::vector<int> guess(blocks, -1);
+  parallel_for(blocks, blocks, [&](std::size_t t, int worker) {
+    fem::LowestModesSolver& solver = *solvers[worker];
+    if (t > 0) {
+      const auto below = orders.matrices(static_cast<int>(start[t] - 1));
+      guess[t] = solver.count_below(below.stiffness, below.mass);
+    }
+    solve_chain(orders, solver, start[t], start[t + 1], guess[t], modes);
+  });
+  for (int t = 1; t < blocks; ++t) {
+    const int found = static_cast<int>(modes[start[t] - 1].omega.size());
+    if (guess[t] != found) solve_chain(orders, *solvers[0], start[t], start[t + 1], found, modes);
+  }
+  return modes;
+}
+
+}  // namespace
+
 WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options) {
   check_options(section, options);
   WheelFeModes w;
@@ -112,34 +163,36 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
   std::vector<fem::MeshPoint> tread_points;
   for (std::size_t i = 0; i < w.tread_s.size(); ++i)
     tread_points.push_back(fem::locate(w.mesh, {w.tread_r[i], w.tread_s[i]}, 1e-4));
-  // one solver for all n: the orders share the mesh's sparsity pattern (one symbolic analysis),
-  // and each order's count of modes is the guess for the next one's
-  fem::LowestModesSolver solver(fixed, 2 * kPi * options.f_max);
+  // one solver per thread for all n: the orders share the mesh's sparsity pattern (one symbolic
+  // analysis per solver)
   const fem::AxisymmetricOrders orders(w.mesh, options.material);
-  int previous_count = -1;
-  for (int n = 0; n <= options.n_max; ++n) {
-    const auto km = orders.matrices(n);
-    if (n == 0)
-      w.mass = Eigen::VectorXd::Ones(km.mass.rows())
-                   .dot(km.mass * Eigen::VectorXd::Ones(km.mass.rows())) /
-               3.0;
-    const auto modes = solver.solve(km.stiffness, km.mass, previous_count);
-    previous_count = static_cast<int>(modes.omega.size());
-    for (int j = 0; j < modes.omega.size(); ++j) {
+  {
+    const auto m0 = orders.matrices(0).mass;
+    w.mass = Eigen::VectorXd::Ones(m0.rows()).dot(m0 * Eigen::VectorXd::Ones(m0.rows())) / 3.0;
+  }
+  const std::vector<fem::Modes> modes =
+      order_modes(orders, fixed, 2 * kPi * options.f_max, options.n_max, options.threads);
+  // each order's tread shapes, families and nodal circles (independent: in parallel too)
+  std::vector<std::vector<WheelFeMode>> per_order(modes.size());
+  parallel_for(modes.size(), resolved_threads(options.threads), [&](std::size_t n, int) {
+    const fem::Modes& on = modes[n];
+    for (int j = 0; j < on.omega.size(); ++j) {
       WheelFeMode m;
-      m.frequency = modes.omega(j) / (2 * kPi);
-      m.n = n;
+      m.frequency = on.omega(j) / (2 * kPi);
+      m.n = static_cast<int>(n);
       m.tread_shape.resize(w.tread_s.size(), 3);
       for (std::size_t i = 0; i < w.tread_s.size(); ++i)
         m.tread_shape.row(i) =
-            fem::displacement_at(w.mesh, modes.shapes.col(j), tread_points[i]).transpose();
+            fem::displacement_at(w.mesh, on.shapes.col(j), tread_points[i]).transpose();
       m.family = tread_family(m.tread_shape);
       const int c = m.family == ModeFamily::kRadial ? 0 : (m.family == ModeFamily::kAxial ? 2 : 1);
-      m.nodal_circles = sign_changes(w.mesh, modes.shapes.col(j), line, c);
-      m.dofs = modes.shapes.col(j);
-      w.modes.push_back(std::move(m));
+      m.nodal_circles = sign_changes(w.mesh, on.shapes.col(j), line, c);
+      m.dofs = on.shapes.col(j);
+      per_order[n].push_back(std::move(m));
     }
-  }
+  });
+  for (auto& order : per_order)
+    for (WheelFeMode& m : order) w.modes.push_back(std::move(m));
   return w;
 }
 

@@ -34,6 +34,9 @@ struct WheelFeOptions {
   int n_max = 10;                   ///< highest number of nodal diameters
   double f_max = 6000.0;            ///< highest natural frequency kept (Hz)
   double tread_spacing = 1e-3;      ///< spacing of the tread samples in s (m)
+  /// Threads for the orders n (solver.threads: 0 = one per hardware thread, at most 4). The modes
+  /// do not depend on it (bit-identical).
+  int threads = 0;
 };
 
 enum class ModeFamily { kAxial, kRadial, kCircumferential };

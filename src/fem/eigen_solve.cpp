@@ -162,13 +162,40 @@ LowestModesSolver::LowestModesSolver(std::vector<int> fixed, double omega_max)
 
 LowestModesSolver::~LowestModesSolver() = default;
 
-Modes LowestModesSolver::solve(const SpMat& stiffness, const SpMat& mass, int expected) {
-  const int ndof = static_cast<int>(stiffness.rows());
-  std::vector<int> index(ndof, 0);
-  for (int d : fixed_) index.at(d) = -1;
+namespace {
+
+// index[dof]: the free DOF's number, -1 at the fixed ones; returns the count of free DOFs.
+int free_index(int ndof, const std::vector<int>& fixed, std::vector<int>& index) {
+  index.assign(ndof, 0);
+  for (int d : fixed) index.at(d) = -1;
   int nfree = 0;
   for (int& i : index)
     if (i >= 0) i = nfree++;
+  return nfree;
+}
+
+}  // namespace
+
+SpMat LowestModesSolver::restricted(const SpMat& a) const {
+  std::vector<int> index;
+  const int nfree = free_index(static_cast<int>(a.rows()), fixed_, index);
+  return restrict_to(a, index, nfree);
+}
+
+int LowestModesSolver::count_below(const SpMat& stiffness, const SpMat& mass) {
+  SpMat a = restricted(stiffness) - omega_max_ * omega_max_ * restricted(mass);
+  a.makeCompressed();
+  PatternLdlt& ldlt = factorisation_->ldlt;
+  ldlt.factorize(a);
+  const Eigen::VectorXd& d = ldlt.factors().vectorD();
+  if (ldlt.factors().info() != Eigen::Success || (d.array() == 0.0).any()) return -1;
+  return static_cast<int>((d.array() < 0.0).count());  // Sylvester: inertia(A) = inertia(D)
+}
+
+Modes LowestModesSolver::solve(const SpMat& stiffness, const SpMat& mass, int expected) {
+  const int ndof = static_cast<int>(stiffness.rows());
+  std::vector<int> index;
+  const int nfree = free_index(ndof, fixed_, index);
   const SpMat k = restrict_to(stiffness, index, nfree), m = restrict_to(mass, index, nfree);
   const double lambda_max = omega_max_ * omega_max_;
   const auto [lambda, vectors] = solve_reduced(k, m, lambda_max, expected, factorisation_->ldlt);

@@ -25,6 +25,7 @@ struct Modes {
 /// two (8 when unknown) and doubles until one mode exceeds omega_max. The sparse LDL^T's symbolic
 /// analysis (AMD ordering, elimination tree) is done once for the pattern and reused by every
 /// problem with the same pattern (re-done when it differs): per problem one numeric factorisation.
+/// One solver per thread (it holds the factorisation): the orders n may run on several.
 class LowestModesSolver {
  public:
   LowestModesSolver(std::vector<int> fixed, double omega_max);
@@ -37,8 +38,17 @@ class LowestModesSolver {
   Modes solve(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
               int expected = -1);
 
+  /// The number of eigenvalues omega^2 < omega_max^2 of the same problem without solving it, by
+  /// Sylvester's law of inertia: the negative pivots of the LDL^T of K - omega_max^2 M (free DOFs;
+  /// one numeric factorisation on the shared symbolic analysis, no pivoting). -1 when the
+  /// factorisation meets a zero pivot. A guess of solve()'s mode count (equal to it unless an
+  /// eigenvalue lies within round-off of omega_max^2): what lets the orders n run in parallel.
+  int count_below(const Eigen::SparseMatrix<double>& stiffness,
+                  const Eigen::SparseMatrix<double>& mass);
+
  private:
   struct Factorisation;
+  Eigen::SparseMatrix<double> restricted(const Eigen::SparseMatrix<double>& a) const;
   std::vector<int> fixed_;
   double omega_max_;
   std::unique_ptr<Factorisation> factorisation_;

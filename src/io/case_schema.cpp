@@ -87,7 +87,9 @@ const std::vector<KeySpec>& case_schema() {
       {"solver.threads", T::Integer, "0", "-",
        "threads of the linear NSS model (creep, noise, squeal, validate): the columns of a block "
        "(FFT products, PCG solves) are shared out among them; 0 = one per hardware thread, at most 4. "
-       "The results do not depend on it",
+       "A noise run with several curve.wheels runs the wheels' contacts (patch, steady state, NSS "
+       "model) in parallel on them instead (each model then on one), and the FE wheel's orders n "
+       "too. The results do not depend on it (bit-identical)",
        {}, 0, {}, 4},
       {"solver.normal_tolerance", T::PositiveReal, "1e-12", "-",
        "normal solver: relative change of the pressure"},

@@ -88,6 +88,8 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
   });
   problems.check([&] { c.options.n_max = static_cast<int>(r.integer("wheel.n_max")); });
   problems.check([&] { c.options.f_max = r.real("wheel.f_max"); });
+  // the orders' threads (not in the id: the modes do not depend on them)
+  problems.check([&] { c.options.threads = static_cast<int>(r.integer("solver.threads")); });
   char text[200];
   std::snprintf(text, sizeof text, ", E %.17g, nu %.17g, rho %.17g, h %.17g, n_max %d, f_max %.17g",
                 m.youngs_modulus, m.poisson_ratio, m.density, c.options.mesh_size, c.options.n_max,

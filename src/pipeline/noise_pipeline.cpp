@@ -2,20 +2,19 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 #include "contact/normal_solver.hpp"
 #include "contact/steady_rolling.hpp"
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
+#include "core/task_pool.hpp"
 #include "noise/contact_receptance.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/roughness.hpp"
 
 namespace rollnoise::pipeline {
-namespace {
-
-
-}  // namespace
 
 noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n) {
   noise::ContactCoefficients k = noise::constant_coefficients(
@@ -77,17 +76,60 @@ std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCa
 
 namespace {
 
-// curve.wheels: every wheel's contact state, and its loop alone; the leading outer wheel is the
-// main run's (its state, patch, loop), the others run on the shared spectra.
-std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, const noise::StructureSpectra& spectra) {
-  std::vector<WheelNoise> out;
-  for (const noise::WheelContact& w : curve_wheels(r.mean.curve(), nc)) {
-    if (w.wheel != noise::WheelId::leading_outer) {
-      out.push_back(wheel_noise(r.mean.contact(), nc, w, spectra, r.axis.frequency));
-      continue;
+// How many wheels curve.wheels names (as listed_wheel_ids, without its checks): more than one
+// runs the further wheels in parallel.
+std::size_t listed_wheel_count(const NoiseCase& nc) {
+  if (!nc.wheels.empty()) return nc.wheels.size();
+  return nc.curve_radius > 0.0 ? noise::kAllWheels.size() : 1;
+}
+
+// The wheels of curve.wheels other than the leading outer one (the main run's): their contact
+// work (wheel_contact_noise: mean contact, NSS model, f(w), g(w)) on a pool of `threads`, started
+// as soon as the main wheel's mean contact exists (the cases are placed from it), so that the
+// pool's background threads work on them while the caller finishes the main wheel's loop; finish()
+// lets the caller join in. Each wheel is one task with its result at its index: the results do not
+// depend on the thread count. An exception of a wheel reaches finish()'s caller (TaskPool).
+class FurtherWheels {
+ public:
+  FurtherWheels(const NoiseCase& nc, int threads) : nc_(nc), threads_(threads) {}
+
+  // Each task also finds its wheel's contact state (noise::bogie_wheel_contacts of that wheel
+  // alone: the wheels' states are independent given the curve state).
+  void start(const MeanContact& main, const std::vector<double>& frequency) {
+    base_ = main.contact();
+    curve_ = main.curve();
+    frequency_ = frequency;
+    for (noise::WheelId id : curve_wheel_ids(curve_, nc_)) {
+      order_.push_back(id == noise::WheelId::leading_outer ? -1 : int(ids_.size()));
+      if (id == noise::WheelId::leading_outer) main_state_ = curve_.state->wheel;
+      else ids_.push_back(id);
     }
+    results_.resize(ids_.size());
+    pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t i, int) {
+      const noise::WheelContact w =
+          noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
+      results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
+    });
+  }
+
+  // Every wheel in the order of curve.wheels, the main one from the run; the loops alone (without
+  // the bogie loop) on the shared spectra, in parallel too.
+  std::vector<WheelNoise> finish(const NoiseResult& r, const noise::StructureSpectra& spectra) {
+    if (pool_) pool_->finish();
+    if (nc_.contact_coupling != NoiseCase::ContactCoupling::kBogie)
+      parallel_for(results_.size(), threads_, [&](std::size_t i, int) {
+        results_[i].loop = wheel_loop_alone(results_[i], nc_, spectra);
+      });
+    std::vector<WheelNoise> out;
+    for (int k : order_)
+      out.push_back(k >= 0 ? std::move(results_[k]) : main_wheel(r));
+    return out;
+  }
+
+ private:
+  WheelNoise main_wheel(const NoiseResult& r) const {
     WheelNoise m;
-    m.state = w;
+    m.state = main_state_;
     m.mean = r.mean;
     m.mean_force = r.mean_force;
     if (r.mean.model()) {
@@ -96,23 +138,48 @@ std::vector<WheelNoise> wheel_loops(const NoiseResult& r, const NoiseCase& nc, c
     }
     m.loop = r.variants.main;
     const noise::ContactCoefficients model =
-        nc.use_nss ? noise::ContactCoefficients{r.creep, r.load}
-                   : kalker_coefficients(r.mean.contact(), r.axis.frequency.size());
+        nc_.use_nss ? noise::ContactCoefficients{r.creep, r.load}
+                    : kalker_coefficients(r.mean.contact(), r.axis.frequency.size());
     m.contact_receptance = main_contact_receptance(r.axis.frequency, r.mean.normal_stiffness(),
-                                                   r.mean.contact().speed, model, nc.normal_coupling);
+                                                   r.mean.contact().speed, model, nc_.normal_coupling);
     m.position = r.mean.curve().position;
-    out.push_back(std::move(m));
+    return m;
   }
-  return out;
-}
+
+  const NoiseCase& nc_;
+  int threads_;
+  ContactCase base_;
+  CurveSetup curve_;
+  std::vector<double> frequency_;
+  noise::WheelContact main_state_;
+  std::vector<noise::WheelId> ids_;  // the further wheels
+  std::vector<int> order_;  // curve.wheels: index into ids_, -1 the main wheel
+  std::vector<WheelNoise> results_;
+  std::unique_ptr<TaskPool> pool_;  // last: joined before the members its tasks use go
+};
+
+using MeanContactHook = std::function<void(const MeanContact&, const std::vector<double>&)>;
+
+// run_noise_loop, calling `on_mean_contact` as soon as the main wheel's mean contact exists.
+NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
+                                 const MeanContactHook& on_mean_contact);
 
 }  // namespace
 
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const auto t0 = Clock::now();
-  NoiseResult r = run_noise_loop(std::move(c), nc, reuse);
+  // solver.threads: the wheels share the threads, so each wheel's model (the main one's too) runs
+  // on one while there are several (the model checks the key's range itself)
+  const int threads = resolved_threads(c.threads, nss::kMaxThreads);
+  const bool parallel = threads > 1 && listed_wheel_count(nc) > 1;
+  if (parallel && c.threads >= 0 && c.threads <= nss::kMaxThreads) c.threads = 1;
+  FurtherWheels further(nc, parallel ? threads : 1);
+  NoiseResult r = noise_loop_with_hook(
+      std::move(c), nc, reuse,
+      [&](const MeanContact& m, const std::vector<double>& frequency) { further.start(m, frequency); });
+  // r.seconds_wheels: what the wheels took after the main wheel's loop (their work overlaps it)
   const auto t1 = Clock::now();
-  r.wheels = wheel_loops(r, nc, *r.spectra);
+  r.wheels = further.finish(r, *r.spectra);
   r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
@@ -123,8 +190,14 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   return r;
 }
 
-
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
+  return noise_loop_with_hook(std::move(c), nc, reuse, {});
+}
+
+namespace {
+
+NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
+                                 const MeanContactHook& on_mean_contact) {
   const auto t0 = Clock::now();
   NoiseResult r;
   r.axis = band_axis(c, nc);  // 1, the sizes before any work
@@ -134,6 +207,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   MeanContactOptions options = noise_contact_options(nc, freq);
   options.with_model = true;
   r.mean = curve_mean_contact(c, nc, options);
+  if (on_mean_contact) on_mean_contact(r.mean, freq);  // the further wheels from here on
   const ContactCase& cc = r.mean.contact();
   const nss::LinearContactModel& model = *r.mean.model();
   r.creep = model.creep_coefficients(freq);
@@ -171,6 +245,8 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
   r.seconds_total = seconds_since(t0);
   return r;
 }
+
+}  // namespace
 
 void add_bands(NoiseResult& r, const NoiseCase& nc) {
   // 5. roughness and bands

@@ -10,6 +10,16 @@ namespace rollnoise::pipeline {
 WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
                        const noise::StructureSpectra& spectra,
                        const std::vector<double>& frequency) {
+  WheelNoise out = wheel_contact_noise(base, nc, w, frequency);
+  // The bogie loop replaces the wheel's loop alone (its rail point receptance at 864 frequencies
+  // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 8).
+  if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
+    out.loop = wheel_loop_alone(out, nc, spectra);
+  return out;
+}
+
+WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
+                               const noise::WheelContact& w, const std::vector<double>& frequency) {
   WheelNoise out;
   out.state = w;
   out.mean = wheel_mean_contact(base, w, noise_contact_options(nc, frequency));
@@ -29,10 +39,6 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
   out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed,
                                                    in.model, in.normal_coupling);
   out.position = w.position();
-  // The bogie loop replaces the wheel's loop alone (its rail point receptance at 864 frequencies
-  // was a quarter of a partial-adhesion wheel's cost, docs/performance.md Sec. 8).
-  if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
-    out.loop = wheel_loop_alone(out, nc, spectra);
   return out;
 }
 

@@ -50,6 +50,12 @@ WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise
                        const noise::StructureSpectra& spectra,
                        const std::vector<double>& frequency);
 
+/// wheel_noise without the loop alone (WheelNoise::loop empty): the wheel's contact work (mean
+/// contact, NSS model, f(w), g(w), contact receptance), which needs no spectra. Independent of the
+/// other wheels: run_noise runs the further wheels' on a pool of threads.
+WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
+                               const noise::WheelContact& w, const std::vector<double>& frequency);
+
 /// The wheel's single-contact loop alone (its structures at its contact position from the shared
 /// spectra, its contact receptance): WheelNoise::loop.
 noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,

@@ -1,0 +1,85 @@
+// A few independent tasks on a small pool of std::threads (the further wheels of a noise run, the
+// orders n of the FE wheel): task(i, worker) for i = 0 .. n-1, each index exactly once, taken in
+// increasing order by whichever thread is free. `worker` (0 .. workers-1) names the thread, for
+// per-thread scratch (a solver with its own factorisation); 0 is the caller's. A task writes its
+// result by index, so the results do not depend on the number of threads.
+//
+// The background threads start at construction; the caller may do other work and then calls
+// finish(), which takes the remaining tasks on the caller's thread, joins the others and rethrows
+// the exception of the LOWEST index that threw (the one a serial loop would have thrown first).
+// The destructor without finish() (the caller's own work threw) lets no further task start and
+// joins.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace rollnoise {
+
+/// Threads for a `solver.threads` value: itself when > 0, else the hardware's; 1 to `most`.
+inline int resolved_threads(int threads, int most = 4) {
+  const int t = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  return std::clamp(t, 1, most);
+}
+
+class TaskPool {
+ public:
+  using Task = std::function<void(std::size_t index, int worker)>;
+
+  /// Starts min(workers, n) - 1 background threads (none for workers <= 1: all on finish()).
+  TaskPool(std::size_t n, int workers, Task task)
+      : n_(n), task_(std::move(task)), errors_(n) {
+    const int threads = static_cast<int>(std::min<std::size_t>(std::max(workers, 1), std::max<std::size_t>(n, 1)));
+    for (int w = 1; w < threads; ++w) threads_.emplace_back([this, w] { run(w); });
+  }
+  ~TaskPool() {
+    stop_ = true;
+    join();
+  }
+  TaskPool(const TaskPool&) = delete;
+  TaskPool& operator=(const TaskPool&) = delete;
+
+  /// The remaining tasks on the caller's thread (worker 0), then the join; rethrows.
+  void finish() {
+    run(0);
+    join();
+    for (const std::exception_ptr& e : errors_)
+      if (e) std::rethrow_exception(e);
+  }
+
+ private:
+  void run(int worker) {
+    for (std::size_t i = next_++; i < n_ && !stop_; i = next_++) {
+      try {
+        task_(i, worker);
+      } catch (...) {
+        errors_[i] = std::current_exception();
+      }
+    }
+  }
+  void join() {
+    for (std::thread& t : threads_)
+      if (t.joinable()) t.join();
+  }
+
+  std::size_t n_;
+  Task task_;
+  std::vector<std::exception_ptr> errors_;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<bool> stop_{false};
+  std::vector<std::thread> threads_;
+};
+
+/// task(i, worker) for i = 0 .. n-1 on `workers` threads (the caller's one of them); rethrows as
+/// TaskPool::finish.
+inline void parallel_for(std::size_t n, int workers, const TaskPool::Task& task) {
+  TaskPool(n, workers, task).finish();
+}
+
+}  // namespace rollnoise

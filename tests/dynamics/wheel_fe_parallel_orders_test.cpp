@@ -1,0 +1,71 @@
+// The FE wheel's orders n on several threads (dynamics::wheel_fe_modes, WheelFeOptions::threads):
+// the inertia count of each order equals the number of modes its eigen solve finds, and the modes
+// on 2 and 3 threads are bit-identical to the serial chain's (each order's count the guess of the
+// next). The 920 mm section on a coarse mesh (20 mm, modes to 3 kHz, n = 0..6): cheap.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "core/constants.hpp"
+#include "dynamics/wheel_fe.hpp"
+#include "fem/eigen_solve.hpp"
+#include "support/test_inputs.hpp"
+
+using namespace rollnoise;
+using namespace rollnoise::dynamics;
+
+namespace {
+
+WheelFeOptions coarse_options(int threads) {
+  WheelFeOptions o;
+  o.mesh_size = 0.02;
+  o.f_max = 3000.0;
+  o.n_max = 6;
+  o.threads = threads;
+  return o;
+}
+
+}  // namespace
+
+// Sylvester's law of inertia: the negative pivots of LDL^T(K - omega_max^2 M) count the modes
+// below omega_max; exactly the count the shift-invert Lanczos keeps, order by order (tolerance:
+// none, integers).
+TEST(WheelFeParallelOrders, InertiaCountEqualsModesFound) {
+  const WheelSection section = test_support::default_section();
+  const WheelFeOptions o = coarse_options(1);
+  const WheelFeModes w = wheel_fe_modes(section, o);
+  const fem::AxisymmetricOrders orders(w.mesh, o.material);
+  std::vector<int> fixed;
+  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
+    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
+  fem::LowestModesSolver solver(fixed, 2 * rollnoise::kPi * o.f_max);
+  for (int n = 0; n <= o.n_max; ++n) {
+    const auto km = orders.matrices(n);
+    const int counted = solver.count_below(km.stiffness, km.mass);
+    const int found = static_cast<int>(solver.solve(km.stiffness, km.mass).omega.size());
+    EXPECT_EQ(counted, found) << "order n = " << n;
+    std::printf("  n = %d: %d modes below %.0f Hz, inertia count %d\n", n, found, o.f_max, counted);
+  }
+}
+
+// The modes (frequencies, orders, families, nodal circles, full DOF vectors) on 2 and 3 threads
+// equal the serial ones bit for bit.
+TEST(WheelFeParallelOrders, ModesDoNotDependOnThreads) {
+  const WheelSection section = test_support::default_section();
+  const WheelFeModes serial = wheel_fe_modes(section, coarse_options(1));
+  ASSERT_GT(serial.modes.size(), 10u);
+  for (int threads : {2, 3}) {
+    const WheelFeModes parallel = wheel_fe_modes(section, coarse_options(threads));
+    ASSERT_EQ(parallel.modes.size(), serial.modes.size()) << threads << " threads";
+    EXPECT_EQ(parallel.mass, serial.mass);
+    for (std::size_t j = 0; j < serial.modes.size(); ++j) {
+      const WheelFeMode &a = serial.modes[j], &b = parallel.modes[j];
+      EXPECT_EQ(a.frequency, b.frequency) << "mode " << j << ", " << threads << " threads";
+      EXPECT_EQ(a.n, b.n);
+      EXPECT_EQ(a.family, b.family);
+      EXPECT_EQ(a.nodal_circles, b.nodal_circles);
+      EXPECT_TRUE(a.dofs == b.dofs) << "mode " << j << ", " << threads << " threads";
+      EXPECT_TRUE(a.tread_shape == b.tread_shape) << "mode " << j;
+    }
+  }
+}
