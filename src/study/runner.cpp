@@ -37,6 +37,9 @@ struct Shared {
   std::atomic<long> next_group{0}, done{0}, failed{0};
   std::atomic<long> loops_computed{0}, loops_reused{0}, spectra_computed{0}, spectra_reused{0};
   std::atomic<long> current[kMaxWorkers];  ///< the case each worker is running, -1: none
+  /// Several worker processes share the cores: a case whose solver.threads is automatic (0) runs
+  /// on one thread (its wheels one after the other) instead of one per core in every worker.
+  bool one_thread_per_case = false;
 };
 
 class SharedCounters {
@@ -90,6 +93,7 @@ void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::Stud
     try {
       const io::CaseReader reader = io::CaseReader::from_file(plan.base, pipeline::overrides(plan, c));
       io::NoiseInputs in = io::read_noise_inputs(reader);
+      if (shared.one_thread_per_case && in.contact.threads == 0) in.contact.threads = 1;
       pipeline::NoiseResult r;
       if (loop) {
         r = *loop;  // the same inputs up to the roughness (reuse_groups): the same stages 1-4 and wheels
@@ -288,6 +292,7 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
   const int workers = int(std::min<long>({long(std::max(1, o.workers)), long(groups.size()), long(kMaxWorkers)}));
 
   SharedCounters shared(workers > 1);
+  shared.get().one_thread_per_case = workers > 1;
   auto report = [&] {
     if (o.progress) o.progress(shared.get().done + shared.get().failed, total);
   };
