@@ -10,11 +10,11 @@
 #include <cmath>
 #include <sstream>
 #include <string>
-#include <thread>
 
 #include "contact/element_operator.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "nss/linear_model_parts.hpp"
 
 namespace rollnoise::nss {
@@ -32,8 +32,7 @@ LinearContactModel::LinearContactModel(const contact::ContactPatch& patch,
   if (in.threads < 0 || in.threads > kMaxThreads)
     throw InputError("solver.threads", "must be 0 (one per hardware thread) to " + std::to_string(kMaxThreads) +
                                            ", not " + std::to_string(in.threads));
-  threads_ = in.threads > 0 ? in.threads
-                            : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, kMaxThreads);
+  threads_ = resolved_threads(in.threads, kMaxThreads);
   const contact::Grid& g = patch.grid;
   el_ = contact::sweep_order(g, patch.normal.pn);
   const std::vector<double> mu_bar = freeze_elements(patch, mean, in);

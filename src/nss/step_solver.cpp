@@ -1,10 +1,9 @@
 #include "nss/step_solver.hpp"
 
 #include <algorithm>
-#include <exception>
-#include <thread>
 
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "linalg/cholesky_solve.hpp"
 
 namespace rollnoise::nss {
@@ -16,25 +15,9 @@ StepSolver::StepSolver(const OperatorFactory& make, int threads) {
 StepSolver::~StepSolver() = default;
 
 void StepSolver::for_columns(Eigen::Index n, const std::function<void(const OperatorSet&, Eigen::Index)>& f) const {
-  const int T = static_cast<int>(std::min<Eigen::Index>(static_cast<Eigen::Index>(lanes_.size()), n));
-  if (T <= 1) {
-    for (Eigen::Index j = 0; j < n; ++j) f(lanes_.front(), j);
-    return;
-  }
-  std::vector<std::exception_ptr> error(T);
-  auto run = [&](int t) {
-    try {
-      for (Eigen::Index j = t; j < n; j += T) f(lanes_[t], j);
-    } catch (...) {
-      error[t] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < T; ++t) pool.emplace_back(run, t);
-  run(0);
-  for (auto& th : pool) th.join();
-  for (const auto& e : error)
-    if (e) std::rethrow_exception(e);
+  // one lane (operator set) per thread: the thread's own FFT buffers; the columns are independent
+  parallel_for(static_cast<std::size_t>(n), static_cast<int>(lanes_.size()),
+               [&](std::size_t j, int worker) { f(lanes_[worker], static_cast<Eigen::Index>(j)); });
 }
 
 Eigen::MatrixXd StepSolver::apply_K1(const Eigen::MatrixXd& X) const {
