@@ -74,7 +74,7 @@ int smooth_size(int n) {
 class FftImpl final : public HalfSpaceOperator::Impl {
  public:
   FftImpl(const Grid& g, Problem problem, const ToeplitzKernel& t)
-      : g_(g), Nx_(smooth_size(2 * g.nx - 1)), Ny_(smooth_size(2 * g.ny - 1)), fft_(Ny_, Nx_) {
+      : g_(g), Nx_(smooth_size(2 * g.nx - 1)), Ny_(smooth_size(2 * g.ny - 1)), fft_(Ny_, Nx_, g.ny) {
     n = g_.size();
     ncomp = problem == Problem::Normal ? 1 : 2;
     backend = Backend::Fft;
@@ -82,9 +82,12 @@ class FftImpl final : public HalfSpaceOperator::Impl {
     for (int c = 1; c < ncomp; ++c) spec_[c] = fft_.spectrum_array();
     out_ = fft_.spectrum_array();
 
-    // Kernel spectra, scaled by 1/(Nx Ny) so that the unnormalised inverse transform is exact.
-    const size_t nreal = fft_.real_size(), ncplx = fft_.spectrum_size();
-    double* real = fft_.real();
+    // Kernel spectra, scaled by 1/(Nx Ny) so that the unnormalised inverse transform is exact. The
+    // kernel fills rows of both ends of the padded array (offsets -(ny-1)..ny-1): the whole 2-D
+    // transform, once; the products in apply() transform only the ny rows that hold tractions.
+    const linalg::RealFft whole(Ny_, Nx_);
+    const size_t nreal = whole.real_size(), ncplx = whole.spectrum_size();
+    double* real = whole.real();
     const auto comps = blocks(problem);
     kernel_.assign(comps.size(), std::vector<std::complex<double>>(ncplx));
     for (size_t b = 0; b < comps.size(); ++b) {
@@ -98,8 +101,8 @@ class FftImpl final : public HalfSpaceOperator::Impl {
           real[static_cast<size_t>(m) * Nx_ + l] = t(comps[b], di, dj) / nreal;
         }
       }
-      fft_.forward();
-      std::copy(fft_.spectrum(), fft_.spectrum() + ncplx, kernel_[b].begin());
+      whole.forward();
+      std::copy(whole.spectrum(), whole.spectrum() + ncplx, kernel_[b].begin());
     }
   }
   /// Replace the tangential kernel spectra by the inverse of the 2 x 2 symbol in every bin, its
@@ -129,7 +132,8 @@ class FftImpl final : public HalfSpaceOperator::Impl {
     const size_t ncplx = fft_.spectrum_size();
     double* real = fft_.real();
     for (int c = 0; c < ncomp; ++c) {  // forward transforms of each traction component
-      std::fill(real, real + fft_.real_size(), 0.0);
+      // Rows j >= ny are zero padding, which the zero-padded transform neither reads nor needs.
+      std::fill(real, real + static_cast<size_t>(g_.ny) * Nx_, 0.0);
       for (int j = 0; j < g_.ny; ++j)
         for (int i = 0; i < g_.nx; ++i)
           real[static_cast<size_t>(j) * Nx_ + i] = p[c * n + g_.index(i, j)];
@@ -138,11 +142,8 @@ class FftImpl final : public HalfSpaceOperator::Impl {
     std::complex<double>* out = out_.data();
     for (int a = 0; a < ncomp; ++a) {
       std::fill(out, out + ncplx, 0.0);
-      for (int b = 0; b < ncomp; ++b) {
-        const auto& K = kernel_[a * ncomp + b];
-        const std::complex<double>* P = spectrum(b);
-        for (size_t k = 0; k < ncplx; ++k) out[k] += K[k] * P[k];
-      }
+      for (int b = 0; b < ncomp; ++b)
+        multiply_add(kernel_[a * ncomp + b].data(), spectrum(b), out, ncplx);
       fft_.backward(out);
       for (int j = 0; j < g_.ny; ++j)
         for (int i = 0; i < g_.nx; ++i)
@@ -153,9 +154,23 @@ class FftImpl final : public HalfSpaceOperator::Impl {
  private:
   std::complex<double>* spectrum(int c) const { return c == 0 ? fft_.spectrum() : spec_[c].data(); }
 
+  // out_k += K_k P_k on n bins, the complex product written out in real arithmetic: std::complex's
+  // operator* also checks for NaN (C99 Annex G) on every product, which keeps the loop from
+  // vectorising; the kernel and the tractions are finite here.
+  static void multiply_add(const std::complex<double>* K, const std::complex<double>* P,
+                           std::complex<double>* out, size_t n) {
+    const double* k = reinterpret_cast<const double*>(K);
+    const double* p = reinterpret_cast<const double*>(P);
+    double* o = reinterpret_cast<double*>(out);
+    for (size_t i = 0; i < 2 * n; i += 2) {
+      o[i] += k[i] * p[i] - k[i + 1] * p[i + 1];
+      o[i + 1] += k[i] * p[i + 1] + k[i + 1] * p[i];
+    }
+  }
+
   Grid g_;
   int Nx_ = 0, Ny_ = 0;
-  linalg::RealFft fft_;  // r2c halves the last (x) dimension: Ny rows of Nx/2 + 1 bins
+  linalg::RealFft fft_;  // zero-padded in y (ny of Ny rows); r2c halves x: Ny rows of Nx/2 + 1 bins
   std::vector<linalg::FftArray<std::complex<double>>> spec_;  // per traction component (c > 0)
   linalg::FftArray<std::complex<double>> out_;  // product spectrum
   std::vector<std::vector<std::complex<double>>> kernel_;

@@ -50,6 +50,14 @@ class RealFft {
   explicit RealFft(int n);
   /// 2-D: ny rows of nx real values (x fastest), ny rows of nx/2 + 1 bins (r2c halves x).
   RealFft(int ny, int nx);
+  /// 2-D with zero padding in y: forward() reads only the first `rows` rows of real() (the others
+  /// are taken as zero and never read), backward() writes only the first `rows` rows of real() (the
+  /// others are left as they were). The transform is computed by dimension: r2c along x on the
+  /// `rows` rows that are not zero, c2c along y on the nx/2 + 1 columns; the inverse c2c along y,
+  /// then c2r along x on the `rows` rows wanted. Same transform as RealFft(ny, nx) up to round-off,
+  /// with ny - rows of the ny row transforms skipped each way (the circulant embedding of a Toeplitz
+  /// operator, contact/halfspace_operator.cpp, has rows = ny / 2 about). 0 < rows <= ny.
+  RealFft(int ny, int nx, int rows);
   ~RealFft();
   RealFft(RealFft&&) noexcept;
   RealFft& operator=(RealFft&&) noexcept;
