@@ -285,6 +285,12 @@ const std::vector<KeySpec>& case_schema() {
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
+      {"noise.band_refinement", T::Integer, "0", "-",
+       "levels of narrow-band lines added where the band's lines do not resolve a peak of the "
+       "response (neighbouring |H|^2 differing by more than 3 dB), each level cutting such a "
+       "line's cell in three; the band levels use them, the narrow-band outputs stay on the "
+       "case's lines (docs/noise_loop.md Sec. 6.1); 0: off",
+       {}, 0, "", 8},
       // limits (pipeline/limits.hpp; docs/conventions.md, Limits)
       {"limits.memory", T::PositiveReal, memory_default, "B",
        "memory a run may use, estimated before allocating (default: half the physical memory of this machine)"},

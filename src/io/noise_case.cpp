@@ -186,6 +186,7 @@ void read_roughness_and_loop(const CaseReader& r, InputProblems& problems, Noise
     if (c.band_max < c.band_min) r.fail("noise.band_max", "must not be below noise.band_min");
   });
   problems.check([&] { c.points_per_band = static_cast<int>(r.integer("noise.points_per_band")); });
+  problems.check([&] { c.band_refinement = static_cast<int>(r.integer("noise.band_refinement")); });
 }
 
 }  // namespace

@@ -185,6 +185,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
         bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
   r.seconds_wheels = seconds_since(t1);
+  if (nc.band_refinement > 0) r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc));
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
   return r;
@@ -221,24 +222,10 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
   const std::shared_ptr<const noise::StructureSpectra> spectra =
       reuse ? reuse->spectra(nc, freq)
             : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, freq));
-  const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, *nc.rail, *spectra, r.mean.curve().position);
   r.seconds_structures = seconds_since(t1);
-  using Baseline = NoiseCase::Baseline;
-  noise::LoopVariantsInput in;
-  in.normal_stiffness = r.mean.normal_stiffness();
-  in.speed = cc.speed;
-  in.normal_coupling = nc.normal_coupling;
-  const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
-  const noise::ContactCoefficients kalker = kalker_needed ? kalker_coefficients(cc, freq.size()) : noise::ContactCoefficients{};
-  in.model = nc.use_nss ? noise::ContactCoefficients{r.creep, r.load} : kalker;
-  if (nc.compare == Baseline::kQuasiSteady)  // the same mean state, frequency-independent
-    in.baseline = noise::quasi_steady_coefficients(r.f0, r.g0, freq.size());
-  else if (nc.compare == Baseline::kKalker && nc.use_nss)
-    in.baseline = kalker;
-  r.coupled = nc.normal_coupling && !in.model.load.empty();
-  r.variants = noise::solve_loop_variants(structures, in);
-  r.baseline_name = nc.compare == Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
+  r.variants = loop_variants(r, nc, *spectra, freq, r.creep, r.load);
+  r.coupled = nc.normal_coupling && nc.use_nss && !r.load.empty();
+  r.baseline_name = nc.compare == NoiseCase::Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
   r.mean_force = contact::total_forces(r.mean.patch().grid, r.mean.steady().px, r.mean.steady().py);
   r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
   r.spectra = spectra;
@@ -247,6 +234,29 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
 }
 
 }  // namespace
+
+noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
+                                  const noise::StructureSpectra& spectra,
+                                  const std::vector<double>& freq,
+                                  const std::vector<nss::CreepMatrix>& creep,
+                                  const std::vector<nss::LoadVector>& load) {
+  using Baseline = NoiseCase::Baseline;
+  const ContactCase& cc = r.mean.contact();
+  const noise::StructuralReceptances structures =
+      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, r.mean.curve().position);
+  noise::LoopVariantsInput in;
+  in.normal_stiffness = r.mean.normal_stiffness();
+  in.speed = cc.speed;
+  in.normal_coupling = nc.normal_coupling;
+  const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
+  const noise::ContactCoefficients kalker = kalker_needed ? kalker_coefficients(cc, freq.size()) : noise::ContactCoefficients{};
+  in.model = nc.use_nss ? noise::ContactCoefficients{creep, load} : kalker;
+  if (nc.compare == Baseline::kQuasiSteady)  // the same mean state, frequency-independent
+    in.baseline = noise::quasi_steady_coefficients(r.f0, r.g0, freq.size());
+  else if (nc.compare == Baseline::kKalker && nc.use_nss)
+    in.baseline = kalker;
+  return noise::solve_loop_variants(structures, in);
+}
 
 void add_bands(NoiseResult& r, const NoiseCase& nc) {
   // 5. roughness and bands
@@ -257,21 +267,29 @@ void add_bands(NoiseResult& r, const NoiseCase& nc) {
   filter.b = cc.b;
   const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, cc.speed, filter);
   const std::vector<double>& centres = r.axis.centres;
-  r.bands = noise::band_levels(r.variants.main, centres, roughness);
+  // The band means on the refined lines where noise.band_refinement added some (band_lines.hpp).
+  const noise::LoopVariants& variants = r.refined ? r.refined->variants : r.variants;
+  r.bands = noise::band_levels(variants.main, centres, roughness);
   const std::vector<double> rough_levels = roughness.levels(centres);
-  if (r.variants.has_uncoupled()) {
-    r.uncoupled_bands = noise::band_levels(r.variants.uncoupled, centres, rough_levels);
+  if (variants.has_uncoupled()) {
+    r.uncoupled_bands = noise::band_levels(variants.uncoupled, centres, rough_levels);
     r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
   }
-  if (r.variants.has_baseline()) r.baseline_bands = noise::band_levels(r.variants.baseline, centres, rough_levels);
+  if (variants.has_baseline()) r.baseline_bands = noise::band_levels(variants.baseline, centres, rough_levels);
   if (r.bogie) {
-    const std::vector<noise::BandLevels> b = bogie_bands(*r.bogie, r.wheels, nc, centres, r.patches);
+    const noise::ContactSetLoopResult& loop = r.refined ? *r.refined->bogie : *r.bogie;
+    const std::vector<noise::BandLevels> b = bogie_bands(loop, r.wheels, nc, centres, r.patches);
     for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
     for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].bands = b[r.wheels.size() + k];
     return;
   }
-  for (WheelNoise& w : r.wheels)
-    w.bands = w.state.wheel == noise::WheelId::leading_outer ? r.bands : wheel_bands(w, nc, centres);
+  for (std::size_t i = 0; i < r.wheels.size(); ++i) {
+    WheelNoise& w = r.wheels[i];
+    if (w.state.wheel == noise::WheelId::leading_outer)
+      w.bands = r.bands;
+    else
+      w.bands = wheel_bands(w, r.refined ? r.refined->wheel_loops[i] : w.loop, nc, centres);
+  }
 }
 
 ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {

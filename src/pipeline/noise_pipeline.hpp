@@ -32,6 +32,7 @@
 #include "pipeline/curve_setup.hpp"
 #include "pipeline/mean_contact.hpp"
 #include "pipeline/noise_case.hpp"
+#include "pipeline/band_lines.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/wheel_noise.hpp"
 
@@ -85,6 +86,9 @@ struct NoiseResult {
   /// contact; pipeline/bogie_noise.hpp), its loop alone, and with `bogie` its coupled levels
   /// (contact wheels.size() + k of the bogie loop).
   std::vector<WheelNoise> patches;
+  /// noise.band_refinement > 0: the loops on the case's lines and the lines added for the band
+  /// means (band_lines.hpp); null without refinement. The band levels are taken from these.
+  std::shared_ptr<const RefinedLoops> refined;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
 };
 
@@ -112,6 +116,17 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 /// one run_noise_loop result, then add_bands with each case's NoiseCase.
 void add_bands(NoiseResult& r, const NoiseCase& nc);
 
+/// Stage 4's loop variants at `freq` (the main wheel's f and g there, `creep` and `load`; the
+/// wheel and rail spectra there): what run_noise_loop solves on the case's lines.
+noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
+                                  const noise::StructureSpectra& spectra,
+                                  const std::vector<double>& freq,
+                                  const std::vector<nss::CreepMatrix>& creep,
+                                  const std::vector<nss::LoadVector>& load);
+/// noise.band_refinement: the loops of `r` (its variants, the bogie loop or the wheels' loops
+/// alone) on the case's lines plus the lines each refinement level adds (noise/band_refinement.hpp),
+/// at most nc.band_refinement levels.
+RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc);
 /// The whole pipeline for a read noise case (stages 1-5), and the loop of every wheel of
 /// curve.wheels (pipeline/wheel_noise.hpp).
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);

@@ -25,21 +25,24 @@ WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
   out.mean = wheel_mean_contact(base, w, noise_contact_options(nc, frequency));
   const MeanContact& m = out.mean;
   out.mean_force = contact::total_forces(m.patch().grid, m.steady().px, m.steady().py);
-  noise::LoopVariantsInput in;
-  in.normal_stiffness = m.normal_stiffness();
-  in.speed = m.contact().speed;
-  in.normal_coupling = nc.normal_coupling;
   if (nc.use_nss) {
     out.adhesion_elements = m.model()->adhesion_elements();
     out.slip_elements = m.model()->slip_elements();
-    in.model = {m.model()->creep_coefficients(frequency), m.model()->normal_load_coefficients(frequency)};
-  } else {
-    in.model = kalker_coefficients(m.contact(), frequency.size());
   }
-  out.contact_receptance = main_contact_receptance(frequency, in.normal_stiffness, in.speed,
-                                                   in.model, in.normal_coupling);
+  out.contact_receptance = wheel_contact_receptance(out, nc, frequency);
   out.position = w.position();
   return out;
+}
+
+std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
+                                                         const std::vector<double>& frequency) {
+  const MeanContact& m = w.mean;
+  const noise::ContactCoefficients model =
+      nc.use_nss ? noise::ContactCoefficients{m.model()->creep_coefficients(frequency),
+                                              m.model()->normal_load_coefficients(frequency)}
+                 : kalker_coefficients(m.contact(), frequency.size());
+  return main_contact_receptance(frequency, m.normal_stiffness(), m.contact().speed, model,
+                                 nc.normal_coupling);
 }
 
 noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
@@ -58,15 +61,15 @@ std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double
   return noise::contact_receptances(frequency, normal_stiffness, speed, model.creep);
 }
 
-noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,
-                              const std::vector<double>& centres) {
+noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
+                              const NoiseCase& nc, const std::vector<double>& centres) {
   noise::ContactFilter filter;
   filter.model = nc.filter;
   filter.a = w.mean.contact().a;
   filter.b = w.mean.contact().b;
   const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, w.mean.contact().speed,
                                           filter);
-  return noise::band_levels(w.loop, centres, roughness);
+  return noise::band_levels(loop, centres, roughness);
 }
 
 }  // namespace rollnoise::pipeline

@@ -61,6 +61,9 @@ WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
 noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
                                    const noise::StructureSpectra& spectra);
 
+/// The wheel's alpha_c (as wheel_contact_noise computes it) at other frequencies.
+std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
+                                                         const std::vector<double>& frequency);
 /// alpha_c of the main loop: with g when `normal_coupling` and the model has one (as
 /// noise::solve_loop_variants's main variant).
 std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,
@@ -68,8 +71,9 @@ std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double
                                                         const noise::ContactCoefficients& model,
                                                         bool normal_coupling);
 
-/// The band levels of a wheel's loop (its contact filter's semi-axes, the case's roughness).
-noise::BandLevels wheel_bands(const WheelNoise& w, const NoiseCase& nc,
-                              const std::vector<double>& centres);
+/// The band levels of a wheel's loop (w.loop, or its lines refined: noise.band_refinement) with
+/// its contact filter's semi-axes and the case's roughness.
+noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
+                              const NoiseCase& nc, const std::vector<double>& centres);
 
 }  // namespace rollnoise::pipeline

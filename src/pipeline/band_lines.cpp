@@ -1,0 +1,98 @@
+// noise.band_refinement: the loops on the lines the band means need (docs/noise_loop.md Sec. 6.1).
+#include <algorithm>
+
+#include "noise/band_refinement.hpp"
+#include "noise/wheel_contact.hpp"
+#include "pipeline/band_lines.hpp"
+#include "pipeline/noise_pipeline.hpp"
+
+namespace rollnoise::pipeline {
+
+namespace {
+
+// A wheel's contact at other frequencies: what bogie_loop and wheel_loop_alone read of it.
+WheelNoise contact_at(const WheelNoise& w, const NoiseCase& nc, const std::vector<double>& f) {
+  WheelNoise out;
+  out.state = w.state;
+  out.position = w.position;
+  out.contact_receptance = wheel_contact_receptance(w, nc, f);
+  return out;
+}
+
+std::vector<WheelNoise> contacts_at(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
+                                    const std::vector<double>& f) {
+  std::vector<WheelNoise> out;
+  for (const WheelNoise& w : wheels) out.push_back(contact_at(w, nc, f));
+  return out;
+}
+
+// Every loop of `r` computed at the frequencies f (as run_noise computes them on the case's lines).
+struct LoopsAt {
+  noise::LoopVariants variants;
+  noise::ContactSetLoopResult bogie;
+  std::vector<noise::LoopResult> wheel_loops;
+};
+
+LoopsAt loops_at(const NoiseResult& r, const NoiseCase& nc, const std::vector<double>& f) {
+  LoopsAt out;
+  const noise::StructureSpectra spectra = noise::structure_spectra(*nc.wheel, f);
+  const nss::LinearContactModel& model = *r.mean.model();
+  out.variants = loop_variants(r, nc, spectra, f, model.creep_coefficients(f),
+                               model.normal_load_coefficients(f));
+  if (r.bogie) {
+    out.bogie = bogie_loop(contacts_at(r.wheels, nc, f), nc, f, {}, contacts_at(r.patches, nc, f));
+    return out;
+  }
+  for (const WheelNoise& w : r.wheels)
+    out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer
+                                  ? noise::LoopResult{}
+                                  : wheel_loop_alone(contact_at(w, nc, f), nc, spectra));
+  return out;
+}
+
+void append(std::vector<std::vector<double>>& to, std::vector<std::vector<double>> more) {
+  for (auto& p : more) to.push_back(std::move(p));
+}
+
+}  // namespace
+
+RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc) {
+  // At most 16 times the case's lines in all (768 per band for the default 48): the worst case
+  // of a level is three lines for one.
+  constexpr std::size_t kMaxGrowth = 16;
+  RefinedLoops out;
+  out.variants = r.variants;
+  noise::ContactSetLoopResult bogie = r.bogie ? *r.bogie : noise::ContactSetLoopResult{};
+  if (!r.bogie)
+    for (const WheelNoise& w : r.wheels)
+      out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer ? noise::LoopResult{}
+                                                                                : w.loop);
+  const std::size_t base = r.variants.main.frequency.size();
+  for (int level = 0; level < nc.band_refinement; ++level) {
+    std::vector<std::vector<double>> powers = noise::sampled_powers(out.variants.main);
+    if (out.variants.has_uncoupled()) append(powers, noise::sampled_powers(out.variants.uncoupled));
+    if (out.variants.has_baseline()) append(powers, noise::sampled_powers(out.variants.baseline));
+    if (r.bogie) append(powers, noise::sampled_powers(bogie));
+    for (const auto& loop : out.wheel_loops)
+      if (!loop.frequency.empty()) append(powers, noise::sampled_powers(loop));
+    const std::vector<double>& f = out.variants.main.frequency;
+    const std::vector<double> added = noise::refinement_frequencies(f, powers, r.axis.centres);
+    if (added.empty()) break;
+    if (f.size() + added.size() > kMaxGrowth * base) {
+      out.capped = true;
+      break;
+    }
+    LoopsAt more = loops_at(r, nc, added);
+    out.variants = noise::merged(out.variants, more.variants);
+    if (r.bogie) bogie = noise::merged(bogie, more.bogie);
+    for (std::size_t i = 0; i < out.wheel_loops.size(); ++i)
+      if (!out.wheel_loops[i].frequency.empty())
+        out.wheel_loops[i] = noise::merged(out.wheel_loops[i], more.wheel_loops[i]);
+    ++out.levels;
+    out.added_lines += static_cast<long>(added.size());
+  }
+  if (r.bogie) out.bogie = std::make_shared<const noise::ContactSetLoopResult>(std::move(bogie));
+  return out;
+}
+
+}  // namespace rollnoise::pipeline

@@ -1,0 +1,26 @@
+// noise.band_refinement (docs/noise_loop.md Sec. 6.1): the loop results on the case's lines and on
+// the lines added where those do not resolve a peak of the response (noise/band_refinement.hpp).
+// The band levels are taken from these; the narrow-band outputs stay on the case's lines.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "noise/contact_set_loop.hpp"
+#include "noise/loop.hpp"
+#include "noise/loop_variants.hpp"
+
+namespace rollnoise::pipeline {
+
+struct RefinedLoops {
+  noise::LoopVariants variants;                        ///< the main wheel's loop variants
+  std::shared_ptr<const noise::ContactSetLoopResult> bogie;  ///< null without the bogie loop
+  /// Without the bogie loop: each wheel's loop alone (NoiseResult::wheels order; the leading outer
+  /// wheel's is variants.main).
+  std::vector<noise::LoopResult> wheel_loops;
+  int levels = 0;        ///< refinement levels that added lines
+  long added_lines = 0;  ///< lines added to the case's
+  bool capped = false;   ///< a level would have passed 16 x the case's lines: not taken
+};
+
+}  // namespace rollnoise::pipeline
