@@ -285,7 +285,7 @@ const std::vector<KeySpec>& case_schema() {
       {"noise.band_min", T::PositiveReal, "100.0", "Hz", "lowest 1/3-octave band centre"},
       {"noise.band_max", T::PositiveReal, "5000.0", "Hz", "highest 1/3-octave band centre"},
       {"noise.points_per_band", T::Integer, "48", "-", "narrow-band frequencies per 1/3-octave band", {}, 4},
-      {"noise.band_refinement", T::Integer, "0", "-",
+      {"noise.band_refinement", T::Integer, "6", "-",
        "levels of narrow-band lines added where the band's lines do not resolve a peak of the "
        "response (neighbouring |H|^2 differing by more than 3 dB), each level cutting such a "
        "line's cell in three; the band levels use them, the narrow-band outputs stay on the "

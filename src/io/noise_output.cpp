@@ -22,8 +22,11 @@ void write_bands(Hdf5Writer& w, const std::string& g, const noise::BandLevels& b
   w.write(g + "/centre", b.centre, {nb}, "Hz");
   w.write(g + "/force_level", fl, {nb, 4}, "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
   w.write(g + "/velocity_level", vl, {nb, 2, 4}, "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
-  if (roughness)
+  if (roughness) {
     w.write(g + "/roughness_level", b.roughness_level, {nb}, "dB re 1 um (effective, after the contact filter)");
+    w.write(g + "/lines", b.samples, {nb},
+            "- (narrow-band lines the band mean used: the case's and those noise.band_refinement added)");
+  }
 }
 
 std::vector<std::complex<double>> flatten4(const std::vector<noise::Vector4c>& v) {
@@ -223,7 +226,11 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   w.attribute("/noise", "contact_model", nc.use_nss ? "linear NSS model" : "Kalker's steady linear theory");
   w.attribute("/noise", "normal_coupling", nc.normal_coupling ? "on" : "off");
   w.attribute("/noise", "compare", variants.has_baseline() ? r.baseline_name : "none");
-  w.attribute("/noise", "band_average", "mean of |H|^2 over the narrow-band samples inside each band (docs/noise_loop.md)");
+  w.attribute("/noise", "band_average",
+              r.refined ? "mean of |H|^2 over the narrow-band lines inside each band: the case's (/noise/frequency) and "
+                          "those added where they did not resolve a peak (noise.band_refinement; docs/noise_loop.md Sec. 6.1)"
+                        : "mean of |H|^2 over the narrow-band samples inside each band (docs/noise_loop.md Sec. 6)");
+  w.attribute("/noise", "band_lines_added", static_cast<std::uint64_t>(r.refined ? r.refined->added_lines : 0));
   w.write("/noise/creep/f", flatten(r.creep), {nf, 3, 3}, "f_jk with F~ = -f xi~ + g N~ (N, N m, N m^2), rows Fx, Fy, Mz");
   w.write("/noise/creep/g", flatten(r.load), {nf, 3},
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");

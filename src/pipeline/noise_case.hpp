@@ -68,7 +68,7 @@ struct NoiseCase {
   int points_per_band = 48;
   /// noise.band_refinement: levels of lines added where the case's lines do not resolve a peak
   /// of the response (docs/noise_loop.md Sec. 6.1); 0: the band means on the case's lines only.
-  int band_refinement = 0;
+  int band_refinement = 6;
 };
 
 }  // namespace rollnoise::pipeline
