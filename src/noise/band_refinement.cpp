@@ -59,6 +59,18 @@ std::vector<T> gathered(const std::vector<T>& a, const std::vector<T>& b,
   return out;
 }
 
+// The per-frequency vectors of two loop results (LoopResult, ContactSetLoopResult) in one order.
+template <class Result>
+Result merged_per_frequency(const Result& a, const Result& b) {
+  const auto order = order_of(a.frequency, b.frequency);
+  Result out;
+  out.frequency = gathered(a.frequency, b.frequency, order);
+  out.force = gathered(a.force, b.force, order);
+  out.wheel_velocity = gathered(a.wheel_velocity, b.wheel_velocity, order);
+  out.rail_velocity = gathered(a.rail_velocity, b.rail_velocity, order);
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> refinement_frequencies(const std::vector<double>& f,
@@ -116,15 +128,7 @@ std::vector<std::vector<double>> sampled_powers(const ContactSetLoopResult& r) {
   return out;
 }
 
-LoopResult merged(const LoopResult& a, const LoopResult& b) {
-  const auto order = order_of(a.frequency, b.frequency);
-  LoopResult out;
-  out.frequency = gathered(a.frequency, b.frequency, order);
-  out.force = gathered(a.force, b.force, order);
-  out.wheel_velocity = gathered(a.wheel_velocity, b.wheel_velocity, order);
-  out.rail_velocity = gathered(a.rail_velocity, b.rail_velocity, order);
-  return out;
-}
+LoopResult merged(const LoopResult& a, const LoopResult& b) { return merged_per_frequency(a, b); }
 
 LoopVariants merged(const LoopVariants& a, const LoopVariants& b) {
   LoopVariants out;
@@ -135,12 +139,7 @@ LoopVariants merged(const LoopVariants& a, const LoopVariants& b) {
 }
 
 ContactSetLoopResult merged(const ContactSetLoopResult& a, const ContactSetLoopResult& b) {
-  const auto order = order_of(a.frequency, b.frequency);
-  ContactSetLoopResult out;
-  out.frequency = gathered(a.frequency, b.frequency, order);
-  out.force = gathered(a.force, b.force, order);
-  out.wheel_velocity = gathered(a.wheel_velocity, b.wheel_velocity, order);
-  out.rail_velocity = gathered(a.rail_velocity, b.rail_velocity, order);
+  ContactSetLoopResult out = merged_per_frequency(a, b);
   out.rho = a.rho;
   return out;
 }
