@@ -121,7 +121,7 @@ int run_noise(const CommonOptions& o) {
   if (r.refined)
     std::printf("  band means: %ld lines added in %d refinement levels (noise.band_refinement = %d)%s\n",
                 r.refined->added_lines, r.refined->levels, nc.band_refinement,
-                r.refined->capped ? "; stopped at 16 x the case's lines" : "");
+                r.refined->capped ? "; stopped at 16 x the case's lines or the case's [limits]" : "");
   print_wheels(r);
   if (!nc.notice.empty()) std::fprintf(stderr, "warning: %s\n", nc.notice.c_str());
   std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n",

@@ -4,6 +4,7 @@
 #include "noise/band_refinement.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/band_lines.hpp"
+#include "pipeline/limits.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
 namespace rollnoise::pipeline {
@@ -57,8 +58,9 @@ void append(std::vector<std::vector<double>>& to, std::vector<std::vector<double
 }  // namespace
 
 RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc) {
-  // At most 16 times the case's lines in all (768 per band for the default 48): the worst case
-  // of a level is three lines for one.
+  // At most 16 times the case's lines in all (768 per band for the default 48; the worst case of a
+  // level is three lines for one), and within the case's limits.steps and limits.memory: a level
+  // that would pass them is not taken (the band means keep the lines they have).
   constexpr std::size_t kMaxGrowth = 16;
   RefinedLoops out;
   out.variants = r.variants;
@@ -78,7 +80,10 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc) {
     const std::vector<double>& f = out.variants.main.frequency;
     const std::vector<double> added = noise::refinement_frequencies(f, powers, r.axis.centres);
     if (added.empty()) break;
-    if (f.size() + added.size() > kMaxGrowth * base) {
+    const double total = double(f.size() + added.size());
+    const Limits& limits = r.mean.contact().limits;
+    if (total > double(kMaxGrowth * base) || total > double(limits.steps) ||
+        frequency_bytes(total) > limits.memory_bytes()) {
       out.capped = true;
       break;
     }

@@ -20,7 +20,8 @@ struct RefinedLoops {
   std::vector<noise::LoopResult> wheel_loops;
   int levels = 0;        ///< refinement levels that added lines
   long added_lines = 0;  ///< lines added to the case's
-  bool capped = false;   ///< a level would have passed 16 x the case's lines: not taken
+  /// a level would have passed 16 x the case's lines or the case's limits: not taken
+  bool capped = false;
 };
 
 }  // namespace rollnoise::pipeline
