@@ -70,8 +70,7 @@ void schur_form(Eigen::MatrixXcd& a, Eigen::MatrixXcd& u) {
   zhseqr_("S", "V", &n, &one, &n, a.data(), &n, w.data(), u.data(), &n, &query, &lwork, &info);
   lwork = std::max(1, static_cast<int>(query.real()));
   std::vector<cdouble> work(lwork);
-  zhseqr_("S", "V", &n, &one, &n, a.data(), &n, w.data(), u.data(), &n, work.data(), &lwork,
-          &info);
+  zhseqr_("S", "V", &n, &one, &n, a.data(), &n, w.data(), u.data(), &n, work.data(), &lwork, &info);
   if (info != 0)
     throw NumericalError("rail waveguide: LAPACK zhseqr failed (info = " + std::to_string(info) +
                          ") on the " + std::to_string(n) + " x " + std::to_string(n) +
@@ -88,11 +87,10 @@ Eigen::MatrixXcd principal_sqrt_upper(const Eigen::MatrixXcd& t) {
   for (int j = 0; j < n; ++j) {
     s(j, j) = std::sqrt(t(j, j));
     for (int i = j - 1; i >= 0; --i) {
-      const int len = j - i - 1;
-      const cdouble sum = len > 0 ? cdouble((s.row(i).segment(i + 1, len).transpose().cwiseProduct(
-                                                 s.col(j).segment(i + 1, len)))
-                                                .sum())
-                                  : cdouble(0.0);
+      const int len = j - i - 1;  // sum_{i<l<j} S_il S_lj, without conjugation
+      const cdouble sum = len > 0
+                              ? cdouble(s.row(i).segment(i + 1, len) * s.col(j).segment(i + 1, len))
+                              : cdouble(0.0);
       s(i, j) = (t(i, j) - sum) / (s(i, i) + s(j, j));
     }
   }

@@ -139,7 +139,8 @@ std::vector<Receptance4> WaveguideRailModel::between(
     const Station& s, cdouble omega, const std::vector<std::tuple<int, int, double>>& pairs) const {
   std::vector<Receptance4> out;
   // Point receptances only (each wheel's loop alone): Eq. (W6), no waves.
-  if (std::all_of(pairs.begin(), pairs.end(), [](const auto& p) { return std::get<2>(p) == 0.0; })) {
+  if (std::all_of(pairs.begin(), pairs.end(),
+                  [](const auto& p) { return std::get<2>(p) == 0.0; })) {
     const Eigen::MatrixXcd h = s.model.point_transfer(omega, s.loads, s.loads);
     for (const auto& [a, b, x] : pairs) out.push_back(h.block<4, 4>(4 * a, 4 * b));
     return out;
