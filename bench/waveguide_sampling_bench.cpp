@@ -19,7 +19,9 @@
 // time: the section modes once (`modes_s`), per point its Ritz basis (`bases_s`, the four) and the
 // sampled frequencies (a = 0: the fixed grid of 24 per octave, as before; a = 1: the loop's
 // adaptive sampling), each one m x m wavenumber eigenproblem and Eq. W4 (`evaluations` summed over
-// the points, `per_frequency_ms`); `case_rail_s` the whole (iteration CPU time).
+// the points, `per_frequency_ms`; a = 2: the adaptive sampling with the point receptance by Eq. W6,
+// the Schur form instead of the waves, as the loop computes it since session 38); `case_rail_s`
+// the whole (iteration CPU time).
 //   build/rollnoise_bench --benchmark_filter='WaveguideSampling|WaveguideCaseRailCost'
 #include <benchmark/benchmark.h>
 
@@ -154,8 +156,10 @@ void WaveguideCaseRailCost(benchmark::State& state) {
       benchmark::DoNotOptimize(dynamics::sample_receptances(
           f,
           [&](double fq) {
+            const double w = 2.0 * M_PI * fq;
             return std::vector<dynamics::Receptance4>{
-                r.contact_receptance(r.waves(2.0 * M_PI * fq), loads, loads, 0.0)};
+                state.range(0) == 2 ? dynamics::Receptance4(r.point_transfer(w, loads, loads))
+                                    : r.contact_receptance(r.waves(w), loads, loads, 0.0)};
           },
           o.sampling, &points));
       frequencies_s += sampling_cpu_seconds() - t1;
@@ -172,6 +176,6 @@ void WaveguideCaseRailCost(benchmark::State& state) {
   state.counters["per_frequency_ms"] = 1e3 * frequencies_s / evaluations;
   state.counters["case_rail_s"] = modes_s + bases_s + frequencies_s;
 }
-BENCHMARK(WaveguideCaseRailCost)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(WaveguideCaseRailCost)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

@@ -396,15 +396,11 @@ Eigen::VectorXd RailWaveguide::dispersion(double k, int count) const {
   return f;
 }
 
-RailWaves RailWaveguide::waves(cdouble omega) const {
-  // Eq. (W5): K0, K2, M and the support couple no q_x with q_s, K1 only those; with
-  // phi = (k v, q_s) the quadratic problem becomes the linear pencil in lambda = k^2
-  //   [Ax C; 0 As] z + lambda [Bx 0; C^T Bs] z = 0,  z = (v, q_s),
-  // solved as the standard problem B^{-1} A z = -lambda z (B block-triangular, K2's blocks SPD).
+Eigen::MatrixXcd RailWaveguide::pencil_solve(const Eigen::MatrixXcd& g) const {
+  // B = (1 + i eta) [K2x 0; K1c^T K2s] is block lower-triangular with SPD diagonal blocks:
+  // x_x = K2x^{-1} g_x / (1 + i eta), x_s = K2s^{-1} (g_s / (1 + i eta) - K1c^T x_x).
   const int m = coordinates(), mx = axial_, ms = m - mx;
   const cdouble damp(1.0, material_.loss_factor);
-  const Eigen::MatrixXcd A0 =
-      damp * k0_.cast<cdouble>() - omega * omega * m_.cast<cdouble>() + support_stiffness(omega);
   const Eigen::MatrixXd K1c = k1_.topRightCorner(mx, ms);
   const Eigen::LLT<Eigen::MatrixXd> K2x(k2_.topLeftCorner(mx, mx)),
       K2s(k2_.bottomRightCorner(ms, ms));
@@ -414,12 +410,31 @@ RailWaves RailWaveguide::waves(cdouble omega) const {
     x.imag() = llt.solve(r.imag());
     return x;
   };
+  Eigen::MatrixXcd x(m, g.cols());
+  x.topRows(mx) = solve(K2x, g.topRows(mx)) / damp;
+  x.bottomRows(ms) = solve(K2s, g.bottomRows(ms) / damp - K1c.transpose() * x.topRows(mx));
+  return x;
+}
+
+Eigen::MatrixXcd RailWaveguide::pencil(cdouble omega) const {
+  // Eq. (W5): K0, K2, M and the support couple no q_x with q_s, K1 only those; with
+  // phi = (k v, q_s) the quadratic problem becomes the linear pencil in lambda = k^2
+  //   [Ax C; 0 As] z + lambda [Bx 0; C^T Bs] z = 0,  z = (v, q_s),
+  // solved as the standard problem B^{-1} A z = -lambda z (B block-triangular, K2's blocks SPD).
+  const int m = coordinates(), mx = axial_, ms = m - mx;
+  const cdouble damp(1.0, material_.loss_factor);
+  const Eigen::MatrixXcd A0 =
+      damp * k0_.cast<cdouble>() - omega * omega * m_.cast<cdouble>() + support_stiffness(omega);
   Eigen::MatrixXcd A(m, m);  // rows, columns ordered (v, q_s)
-  A << A0.topLeftCorner(mx, mx), damp * K1c.cast<cdouble>(), Eigen::MatrixXcd::Zero(ms, mx),
-      A0.bottomRightCorner(ms, ms);
-  Eigen::MatrixXcd Y(m, m);
-  Y.topRows(mx) = solve(K2x, A.topRows(mx)) / damp;
-  Y.bottomRows(ms) = solve(K2s, A.bottomRows(ms) / damp - K1c.transpose() * Y.topRows(mx));
+  A << A0.topLeftCorner(mx, mx), damp * k1_.topRightCorner(mx, ms).cast<cdouble>(),
+      Eigen::MatrixXcd::Zero(ms, mx), A0.bottomRightCorner(ms, ms);
+  return pencil_solve(A);
+}
+
+RailWaves RailWaveguide::waves(cdouble omega) const {
+  const int m = coordinates(), mx = axial_, ms = m - mx;
+  const cdouble damp(1.0, material_.loss_factor);
+  Eigen::MatrixXcd Y = pencil(omega);
   Eigen::VectorXcd mu;
   Eigen::MatrixXcd Z;
   eigen_decomposition(std::move(Y), mu, Z);

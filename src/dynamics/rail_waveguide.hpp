@@ -61,6 +61,20 @@
 // unchanged for the projected matrices V^T K_i V, V^T M V, V^T Ks V; loads and responses are
 // projected as V^T f. The basis adds the static responses so that the near field at the load
 // (the evanescent waves of high order, dropped with the high modes) keeps its flexibility.
+//
+// The point receptance (x = 0) without the waves (rail_waveguide_point.cpp): with D = diag(k on
+// the u'_x, 1 on the u_s), Eq. (W5)'s substitution phi = D z is Q(k) D = D (A + k^2 B), so
+// Q(k)^{-1} = D (Y + k^2)^{-1} B^{-1} D^{-1} with Y = B^{-1} A: its u'_x-u_s blocks carry k or
+// 1/k times a function of k^2, are odd in k and integrate to zero over the real k axis, and its
+// diagonal blocks are those of (Y + k^2)^{-1} B^{-1}; G'(0) = (1/2 pi) Int Q(k)^{-1} dk with
+// Int dk / (k^2 + mu) = pi / sqrt(mu) (Re sqrt(mu) > 0) gives
+//
+//   G'(0) = blockdiag( 1/2 Y^{-1/2} B^{-1} ),  Y^{-1/2} the principal inverse square root, (W6)
+//
+// the same roots as Eq. (W4) (k_j = -i sqrt(mu_j), Im k_j < 0, mu_j the eigenvalues of Y), with
+// Y^{1/2} from the Schur form Y = U T U^H (no eigenvectors; Higham, Functions of Matrices, SIAM
+// 2008, Sec. 6.2). It holds while no mu_j lies on the negative real axis (a real k_j: an
+// undamped propagating wave, for which Eq. (W4) takes the group velocity's direction instead).
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -159,6 +173,12 @@ class RailWaveguide {
   Eigen::MatrixXcd transfer(const RailWaves& w, const Eigen::MatrixXd& response,
                             const Eigen::MatrixXd& load, double x) const;
 
+  /// transfer(waves(omega), response, load, 0) by Eq. (W6): the Schur form of Eq. (W5)'s matrix
+  /// instead of its eigenvectors (~the same result to round-off; falls back to the waves at a
+  /// real omega with an undamped propagating wave).
+  Eigen::MatrixXcd point_transfer(cdouble omega, const Eigen::MatrixXd& response,
+                                  const Eigen::MatrixXd& load) const;
+
   /// The nodal load distributions of a contact on the section's boundary at `node` with the
   /// rail's outward normal `normal` (unit, in (y, z)) as the loop's contact frame
   /// (docs/noise_loop.md Sec. 1), columns in Receptance4 order: force along the normal n, force
@@ -202,6 +222,10 @@ class RailWaveguide {
   int axial_ = 0;
 
   Eigen::MatrixXcd support_stiffness(cdouble omega) const;
+  /// Eq. (W5)'s Y = B^{-1} A at omega, rows and columns ordered (v, q_s).
+  Eigen::MatrixXcd pencil(cdouble omega) const;
+  /// B^{-1} g for Eq. (W5)'s B = (1 + i eta) [K2x 0; K1c^T K2s] (block forward substitution).
+  Eigen::MatrixXcd pencil_solve(const Eigen::MatrixXcd& g) const;
   /// V^T f: physical nodal loads (dofs() rows) to generalised ones.
   Eigen::MatrixXd project(const Eigen::MatrixXd& f) const;
   Eigen::MatrixXd nodal_loads(const Eigen::VectorXd& weights, const Eigen::Vector2d& normal,

@@ -67,7 +67,7 @@ const WaveguideRailModel::Station& WaveguideRailModel::crown() const {
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
   const Station& c = crown();
-  return c.model.contact_receptance(c.model.waves(omega), c.loads, c.loads, 0.0);
+  return c.model.point_transfer(omega, c.loads, c.loads);
 }
 
 Receptance4 WaveguideRailModel::receptance(double frequency) const {
@@ -137,9 +137,16 @@ std::shared_ptr<const WaveguideRailModel::Station> WaveguideRailModel::station(
 
 std::vector<Receptance4> WaveguideRailModel::between(
     const Station& s, cdouble omega, const std::vector<std::tuple<int, int, double>>& pairs) const {
+  std::vector<Receptance4> out;
+  // Point receptances only (each wheel's loop alone): Eq. (W6), no waves.
+  if (std::all_of(pairs.begin(), pairs.end(),
+                  [](const auto& p) { return std::get<2>(p) == 0.0; })) {
+    const Eigen::MatrixXcd h = s.model.point_transfer(omega, s.loads, s.loads);
+    for (const auto& [a, b, x] : pairs) out.push_back(h.block<4, 4>(4 * a, 4 * b));
+    return out;
+  }
   const RailWaves w = s.model.waves(omega);
   std::vector<std::pair<double, Eigen::MatrixXcd>> at_x;  // Eq. (W4) per distinct distance
-  std::vector<Receptance4> out;
   for (const auto& [a, b, x] : pairs) {
     auto it =
         std::find_if(at_x.begin(), at_x.end(), [x = x](const auto& e) { return e.first == x; });
