@@ -9,6 +9,7 @@
 #include <numeric>
 #include <optional>
 
+#include "core/assert.hpp"
 #include "core/errors.hpp"
 
 namespace rollnoise::fem {
@@ -55,6 +56,31 @@ class PatternLdlt {
   std::vector<SpMat::StorageIndex> outer_, inner_;
 };
 
+// x := L^{-T} x for the unit lower triangular L of a SimplicialLDLT (strictly lower part stored by
+// columns, compressed, rows ascending; its matrixU() is L^T): backward, x_i -= sum_k L_ki x_k over
+// the stored k > i of column i. The sum is taken in four partial sums added at the end: four
+// independent chains of multiply-adds instead of one (Eigen's solve subtracts term by term, a
+// chain as long as the column whose latency bounds the whole solve). The same terms in another
+// order: the result differs from Eigen's matrixU().solveInPlace by round-off.
+void solve_transposed_unit_lower(const SpMat& l, double* x) {
+  const int* outer = l.outerIndexPtr();
+  const int* inner = l.innerIndexPtr();
+  const double* v = l.valuePtr();
+  for (Eigen::Index i = l.cols() - 1; i >= 0; --i) {
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int k = outer[i];
+    const int end = outer[i + 1];
+    for (; k + 4 <= end; k += 4) {
+      s0 += v[k] * x[inner[k]];
+      s1 += v[k + 1] * x[inner[k + 1]];
+      s2 += v[k + 2] * x[inner[k + 2]];
+      s3 += v[k + 3] * x[inner[k + 3]];
+    }
+    for (; k < end; ++k) s0 += v[k] * x[inner[k]];
+    x[i] -= (s0 + s1) + (s2 + s3);
+  }
+}
+
 // Shift-invert in standard form. With P (K - sigma M) P^T = L D L^T (sparse LDL^T, AMD ordering
 // P; D > 0 for sigma below the lowest eigenvalue) and W = P^T L^{-T} D^{-1/2},
 //   K x = lambda M x,  x = W y   <=>   C y = mu y,  C = W^T M W,  mu = 1 / (lambda - sigma),
@@ -77,17 +103,32 @@ class ShiftInvertStandardForm {
       throw NumericalError("LDL^T factorisation of K - sigma M failed (shift " +
                            std::to_string(sigma) + ")");
     d_inv_sqrt_ = f.vectorD().cwiseSqrt().cwiseInverse();
+    ROLLNOISE_ASSERT(f.matrixL().nestedExpression().isCompressed(), "L of SimplicialLDLT compressed");
+    z_.resize(rows());
+    w_.resize(rows());
   }
   Eigen::Index rows() const { return m_.rows(); }
   Eigen::Index cols() const { return m_.cols(); }
-  // y -> C y = D^{-1/2} L^{-1} P M P^T L^{-T} D^{-1/2} y
+  // y -> C y = D^{-1/2} L^{-1} P M P^T L^{-T} D^{-1/2} y. The middle factor w = P M P^T z in one
+  // pass over M's columns j: (P^T z)_j = z_{p(j)} (p = P's indices), and the entry M_ij goes to
+  // w_{p(i)}; each w_{p(i)} gets the terms of (M P^T z)_i in the same order (ascending j) as the
+  // separate products would sum them, so the values are the same to the bit. Scratch vectors are
+  // the operator's (one operator per solver, i.e. per thread).
   void perform_op(const double* x, double* y) const {
     const auto& f = ldlt_.factors();
-    Eigen::VectorXd z = d_inv_sqrt_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x, rows()));
-    f.matrixU().solveInPlace(z);
-    Eigen::VectorXd w = f.permutationP() * (m_ * (f.permutationPinv() * z));
-    f.matrixL().solveInPlace(w);
-    Eigen::Map<Eigen::VectorXd>(y, rows()) = d_inv_sqrt_.cwiseProduct(w);
+    z_ = d_inv_sqrt_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x, rows()));
+    solve_transposed_unit_lower(f.matrixL().nestedExpression(), z_.data());
+    const int* p = f.permutationP().indices().data();
+    const int* outer = m_.outerIndexPtr();
+    const int* inner = m_.innerIndexPtr();
+    const double* value = m_.valuePtr();
+    w_.setZero();
+    for (Eigen::Index j = 0; j < m_.outerSize(); ++j) {
+      const double zj = z_(p[j]);
+      for (int k = outer[j]; k < outer[j + 1]; ++k) w_(p[inner[k]]) += value[k] * zj;
+    }
+    f.matrixL().solveInPlace(w_);
+    Eigen::Map<Eigen::VectorXd>(y, rows()) = d_inv_sqrt_.cwiseProduct(w_);
   }
   // x = W y for the columns y
   Eigen::MatrixXd to_shapes(const Eigen::MatrixXd& y) const {
@@ -98,9 +139,10 @@ class ShiftInvertStandardForm {
   }
 
  private:
-  const SpMat& m_;
+  const SpMat& m_;  // compressed (restrict_to's result)
   PatternLdlt& ldlt_;
   Eigen::VectorXd d_inv_sqrt_;
+  mutable Eigen::VectorXd z_, w_;  // perform_op's scratch
 };
 
 // The converged Ritz pairs, ascending.
