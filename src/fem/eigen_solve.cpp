@@ -146,7 +146,8 @@ class ShiftInvertStandardForm {
       throw NumericalError("LDL^T factorisation of K - sigma M failed (shift " +
                            std::to_string(sigma) + ")");
     d_inv_sqrt_ = f.vectorD().cwiseSqrt().cwiseInverse();
-    ROLLNOISE_ASSERT(f.matrixL().nestedExpression().isCompressed(), "L of SimplicialLDLT compressed");
+    ROLLNOISE_ASSERT(f.matrixL().nestedExpression().isCompressed(),
+                     "L of SimplicialLDLT compressed");
     z_.resize(rows());
     w_.resize(rows());
   }
@@ -202,15 +203,18 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> ascending(const Eigen::VectorXd& lam
 }
 
 // The Lanczos shift, below zero: K - sigma M is positive definite even with rigid-body modes.
-double lanczos_shift() { return -std::pow(2 * 3.14159265358979323846 * 10.0, 2); }
+double lanczos_shift() {
+  return -std::pow(2 * 3.14159265358979323846 * 10.0, 2);
+}
 
 // Eigenpairs (ascending) of the reduced problem (free DOFs: `shifted` = K - sigma M with sigma =
 // lanczos_shift(), M, and K itself made by `stiffness` for the dense path only): Spectra's
 // shift-invert Lanczos for nev modes, nev from the expected count and doubled until one exceeds
 // lambda_max, or a dense solve when the requested count reaches half the problem.
-std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(
-    const SpMat& shifted, const std::function<SpMat()>& stiffness, const SpMat& m,
-    double lambda_max, int expected, PatternLdlt& ldlt) {
+std::pair<Eigen::VectorXd, Eigen::MatrixXd> solve_reduced(const SpMat& shifted,
+                                                          const std::function<SpMat()>& stiffness,
+                                                          const SpMat& m, double lambda_max,
+                                                          int expected, PatternLdlt& ldlt) {
   const int n = static_cast<int>(m.rows());
   const double sigma = lanczos_shift();
   std::optional<ShiftInvertStandardForm> op;  // factorised once, for every nev tried
@@ -293,9 +297,9 @@ Modes LowestModesSolver::solve(const SpMat& stiffness, const SpMat& mass, int ex
     shifted.makeCompressed();
   }
   const double lambda_max = omega_max_ * omega_max_;
-  const auto [lambda, vectors] =
-      solve_reduced(shifted, [&] { return restrict_to(stiffness, index, nfree); }, m, lambda_max,
-                    expected, factorisation_->ldlt);
+  const auto [lambda, vectors] = solve_reduced(
+      shifted, [&] { return restrict_to(stiffness, index, nfree); }, m, lambda_max, expected,
+      factorisation_->ldlt);
   int count = 0;
   while (count < lambda.size() && lambda(count) <= lambda_max) ++count;
   Modes modes;

@@ -141,7 +141,8 @@ dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidW
   // the caller's work runs beside them). The future's last copy joins that thread when the model
   // is destroyed without having used them (an error elsewhere in the case).
   using Later = std::shared_future<std::shared_ptr<const dynamics::WheelFeModes>>;
-  const Later modes = std::async(std::launch::async, [c] { return wheel_fe_modes_once(c); }).share();
+  const Later modes =
+      std::async(std::launch::async, [c] { return wheel_fe_modes_once(c); }).share();
   std::shared_future<std::vector<dynamics::WheelMode>> table =
       std::async(std::launch::deferred, [modes, o] {
         return dynamics::contact_mode_table(*modes.get(), 0.0, o);

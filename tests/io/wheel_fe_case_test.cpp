@@ -156,6 +156,5 @@ TEST(WheelFeCase, ErrorOfTheModesThreadIsThrownAtTheirFirstUse) {
     EXPECT_EQ(e.key(), "wheel.rotation");
   }
   EXPECT_THROW(later.receptance(1000.0), InputError);  // again at every use
-  EXPECT_THROW(io::fe_wheel_model(coarse_fe_case(1, 5000.0), test_wheelset(), nullptr),
-               InputError);
+  EXPECT_THROW(io::fe_wheel_model(coarse_fe_case(1, 5000.0), test_wheelset(), nullptr), InputError);
 }
