@@ -71,11 +71,22 @@ void validate_mode(const WheelMode& m, const std::string& where) {
 // Wheel model
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+
+void validate_modes(const std::vector<WheelMode>& modes) {
+  for (std::size_t n = 0; n < modes.size(); ++n)
+    validate_mode(modes[n], "wheel.modes[" + std::to_string(n) + "]");
+}
+
+}  // namespace
+
 WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes)
-    : wheelset_(wheelset), modes_(std::move(modes)) {
+    : wheelset_(wheelset) {
   wheelset_.validate("wheelset");
-  for (std::size_t n = 0; n < modes_.size(); ++n)
-    validate_mode(modes_[n], "wheel.modes[" + std::to_string(n) + "]");
+  validate_modes(modes);
+  std::promise<std::vector<WheelMode>> ready;
+  ready.set_value(std::move(modes));
+  modes_ = ready.get_future().share();
 }
 
 WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes, ModesAlongTread along_tread)
@@ -83,10 +94,23 @@ WheelModel::WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> mod
   along_tread_ = std::move(along_tread);
 }
 
+WheelModel::WheelModel(const RigidWheelset& wheelset,
+                       std::shared_future<std::vector<WheelMode>> later,
+                       ModesAlongTread along_tread)
+    : wheelset_(wheelset), along_tread_(std::move(along_tread)) {
+  wheelset_.validate("wheelset");
+  // deferred: run once, by the first thread that asks for the modes (the others wait for it)
+  modes_ = std::async(std::launch::deferred, [later = std::move(later)] {
+             std::vector<WheelMode> modes = later.get();
+             validate_modes(modes);
+             return modes;
+           }).share();
+}
+
 std::vector<WheelMode> WheelModel::modes_at(double shift_y) const {
-  if (!along_tread_ || shift_y == 0.0) return modes_;
+  if (!along_tread_ || shift_y == 0.0) return modes();
   std::vector<WheelMode> at = along_tread_(shift_y);
-  if (at.size() != modes_.size())
+  if (at.size() != modes().size())
     throw NumericalError("the wheel's mode table along the tread changed its size");
   for (WheelMode& m : at) m.shape(1) += shift_y * m.shape(3);  // undone by the loop's lever arm
   return at;
@@ -111,7 +135,8 @@ Receptance4 modal_sum(const std::vector<WheelMode>& a, const std::vector<WheelMo
 }
 
 Receptance4 WheelModel::modal_receptance(double frequency) const {
-  return modal_sum(modes_, modes_, frequency);
+  const std::vector<WheelMode>& modes = this->modes();
+  return modal_sum(modes, modes, frequency);
 }
 
 Receptance4 WheelModel::modal_receptance(double frequency, double shift_y) const {

@@ -28,6 +28,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <future>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,12 @@ class WheelModel {
   /// point (same modes, same order as `modes`, the shapes at the shifted point).
   using ModesAlongTread = std::function<std::vector<WheelMode>(double shift_y)>;
   WheelModel(const RigidWheelset& wheelset, std::vector<WheelMode> modes, ModesAlongTread along_tread);
+  /// The same with the table at the reference point arriving later: `later` is being computed on
+  /// another thread (the FE wheel's modes while the case's contact is solved, io/wheel_fe_case.hpp)
+  /// and is waited for, and its modes checked, at the first use of the modes (modes(), the
+  /// receptances, modes_at); an error of its computation is thrown there.
+  WheelModel(const RigidWheelset& wheelset, std::shared_future<std::vector<WheelMode>> later,
+             ModesAlongTread along_tread);
   bool follows_contact() const { return static_cast<bool>(along_tread_); }
 
   /// The table for a contact shifted by shift_y, in the form the loop expects (noise/loop.hpp moves
@@ -106,11 +113,11 @@ class WheelModel {
   Receptance4 modal_cross_receptance(double frequency, double shift_a, double shift_b) const;
 
   const RigidWheelset& wheelset() const { return wheelset_; }
-  const std::vector<WheelMode>& modes() const { return modes_; }
+  const std::vector<WheelMode>& modes() const { return modes_.get(); }
 
  private:
   RigidWheelset wheelset_;
-  std::vector<WheelMode> modes_;
+  std::shared_future<std::vector<WheelMode>> modes_;  // ready, or computed later (see above)
   ModesAlongTread along_tread_;
 };
 

@@ -106,12 +106,21 @@ namespace {
 
 // Orders first .. last - 1 as one solver going up in n finds them: each order's count of modes is
 // the guess for the next one's (fem::LowestModesSolver::solve's `expected`, which sets the Lanczos
-// size and so the modes' last bits), starting from `guess`.
+// size and so the modes' last bits), starting from `guess`. An order whose guess is at most 1 (the
+// high orders, whose lowest mode nears f_max) is first counted by inertia (count_below: one numeric
+// factorisation); when that finds none, it has no mode below f_max and the Lanczos (a factorisation
+// and ~25 operator applications even for no mode) is not run. The shipped 920 mm wheel: n = 9 and
+// 10 (guesses 1 and 0) have none. An order counted non-empty is solved as before.
 void solve_chain(const fem::AxisymmetricOrders& orders, fem::LowestModesSolver& solver,
                  std::size_t first, std::size_t last, int guess, std::vector<fem::Modes>& modes) {
   for (std::size_t n = first; n < last; ++n) {
     const auto km = orders.matrices(static_cast<int>(n));
-    modes[n] = solver.solve(km.stiffness, km.mass, guess);
+    if (guess >= 0 && guess <= 1 && solver.count_below(km.stiffness, km.mass) == 0) {
+      modes[n].omega.resize(0);  // as solve() returns no mode
+      modes[n].shapes = Eigen::MatrixXd::Zero(km.stiffness.rows(), 0);
+    } else {
+      modes[n] = solver.solve(km.stiffness, km.mass, guess);
+    }
     guess = static_cast<int>(modes[n].omega.size());
   }
 }
@@ -193,6 +202,13 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
   });
   for (auto& order : per_order)
     for (WheelFeMode& m : order) w.modes.push_back(std::move(m));
+  return w;
+}
+
+WheelFeModes wheel_fe_tread(const WheelSection& section, const WheelFeOptions& options) {
+  check_options(section, options);
+  WheelFeModes w;
+  sample_tread(section, options.tread_spacing, w);
   return w;
 }
 

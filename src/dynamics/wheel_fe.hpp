@@ -74,6 +74,10 @@ struct WheelFeModes {
 /// or tread segment or options outside their ranges (a contract: io checks them with their keys).
 WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& options);
 
+/// The tread samples of wheel_fe_modes alone (tread_s, tread_r, the same values; no mesh, no
+/// modes): what the contact's radius needs (tread_radius_at) before the modes are computed.
+WheelFeModes wheel_fe_tread(const WheelSection& section, const WheelFeOptions& options);
+
 /// (U_r, U_theta, U_z) of a mode at lateral position s on the tread (linear interpolation between
 /// samples); throws InputError when s is outside the sampled tread.
 Eigen::Vector3d tread_shape_at(const WheelFeModes& w, const WheelFeMode& mode, double s);

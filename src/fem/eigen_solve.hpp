@@ -48,7 +48,6 @@ class LowestModesSolver {
 
  private:
   struct Factorisation;
-  Eigen::SparseMatrix<double> restricted(const Eigen::SparseMatrix<double>& a) const;
   std::vector<int> fixed_;
   double omega_max_;
   std::unique_ptr<Factorisation> factorisation_;

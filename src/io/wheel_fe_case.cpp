@@ -1,10 +1,12 @@
 #include "io/wheel_fe_case.hpp"
 
 #include <cstdio>
+#include <future>
 #include <map>
 #include <mutex>
 
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "io/tread_shapes_file.hpp"
 #include "io/wheel_section_file.hpp"
 
@@ -119,8 +121,9 @@ dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
 
 dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
                                     std::string* id) {
-  const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_fe_modes_once(c);
-  const dynamics::WheelFeContactOptions o = contact_options(c, *modes);
+  // Omega = V / r(0) needs the tread samples only, which do not need the modes
+  const dynamics::WheelFeContactOptions o =
+      contact_options(c, c.imported ? *c.imported : dynamics::wheel_fe_tread(c.section, c.options));
   if (id) {
     const auto& d = o.damping;
     char text[200];
@@ -128,9 +131,25 @@ dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidW
                   d.n1, d.axial, d.radial, d.circumferential, o.spin_speed);
     *id = c.id + text;
   }
-  return dynamics::WheelModel(
-      wheelset, dynamics::contact_mode_table(*modes, 0.0, o),
-      [modes, o](double shift_y) { return dynamics::contact_mode_table(*modes, shift_y, o); });
+  if (c.imported || resolved_threads(c.options.threads) == 1) {  // the modes now, on this thread
+    const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_fe_modes_once(c);
+    return dynamics::WheelModel(
+        wheelset, dynamics::contact_mode_table(*modes, 0.0, o),
+        [modes, o](double shift_y) { return dynamics::contact_mode_table(*modes, shift_y, o); });
+  }
+  // The modes on a thread of their own (gmsh's loading and the meshing and assembly are serial:
+  // the caller's work runs beside them). The future's last copy joins that thread when the model
+  // is destroyed without having used them (an error elsewhere in the case).
+  using Later = std::shared_future<std::shared_ptr<const dynamics::WheelFeModes>>;
+  const Later modes =
+      std::async(std::launch::async, [c] { return wheel_fe_modes_once(c); }).share();
+  std::shared_future<std::vector<dynamics::WheelMode>> table =
+      std::async(std::launch::deferred, [modes, o] {
+        return dynamics::contact_mode_table(*modes.get(), 0.0, o);
+      }).share();
+  return dynamics::WheelModel(wheelset, std::move(table), [modes, o](double shift_y) {
+    return dynamics::contact_mode_table(*modes.get(), shift_y, o);
+  });
 }
 
 }  // namespace rollnoise::io

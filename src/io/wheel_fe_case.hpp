@@ -42,7 +42,12 @@ dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
 /// The wheel model of the case's FE wheel: the rigid wheelset plus the FE modes with n >= 2 (modes
 /// once per wheel) at the reference point s = 0 that follow the contact across the tread
 /// (WheelModel::modes_at), damping and the +-n Omega split (Omega = V / r(0)) as the case says;
-/// `id` receives what the model depends on besides the wheelset.
+/// `id` receives what the model depends on besides the wheelset. With more than one thread
+/// (solver.threads) the FE modes are computed on a thread of their own, started here, while the
+/// caller goes on (a noise run solves its contact meanwhile): the model waits for them at their
+/// first use, and an error of their computation is thrown there (WheelModel's `later` table). On
+/// one thread, and for imported shapes, they are computed here, as before. The modes are the same
+/// either way (the same computation, bit for bit).
 dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
                                     std::string* id);
 

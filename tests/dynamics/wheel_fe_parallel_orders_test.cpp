@@ -69,3 +69,36 @@ TEST(WheelFeParallelOrders, ModesDoNotDependOnThreads) {
     }
   }
 }
+
+// The orders a chain counts by inertia first (guess <= 1) and finds empty are skipped without the
+// Lanczos: the modes of wheel_fe_modes equal, order by order and bit for bit, those of the plain
+// chain that solves every order (each order's count the next one's guess). On the coarse mesh to
+// 2 kHz with n <= 9 the top orders have no mode below f_max, so the skip is exercised (checked).
+TEST(WheelFeParallelOrders, OrdersCountedEmptyByInertiaEqualTheSolvedChain) {
+  const WheelSection section = test_support::default_section();
+  WheelFeOptions o = coarse_options(1);
+  o.f_max = 2000.0;
+  o.n_max = 9;
+  const WheelFeModes w = wheel_fe_modes(section, o);
+  const fem::AxisymmetricOrders orders(w.mesh, o.material);
+  std::vector<int> fixed;
+  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
+    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
+  fem::LowestModesSolver solver(fixed, 2 * rollnoise::kPi * o.f_max);
+  int guess = -1, empty = 0;
+  std::size_t j = 0;  // w.modes: ascending in n, then frequency
+  for (int n = 0; n <= o.n_max; ++n) {
+    const auto km = orders.matrices(n);
+    const fem::Modes chain = solver.solve(km.stiffness, km.mass, guess);
+    guess = static_cast<int>(chain.omega.size());
+    empty += guess == 0;
+    for (int k = 0; k < guess; ++k, ++j) {
+      ASSERT_LT(j, w.modes.size()) << "order n = " << n;
+      EXPECT_EQ(w.modes[j].n, n);
+      EXPECT_EQ(w.modes[j].frequency, chain.omega(k) / (2 * rollnoise::kPi)) << "order n = " << n;
+      EXPECT_TRUE(w.modes[j].dofs == chain.shapes.col(k)) << "order n = " << n;
+    }
+  }
+  EXPECT_EQ(j, w.modes.size());
+  EXPECT_GE(empty, 2);  // orders without a mode below f_max: the inertia skip ran
+}

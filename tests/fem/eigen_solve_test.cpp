@@ -6,6 +6,7 @@
 //    the guess of their count (0, exact, far too many: the count doubles until one exceeds f_max);
 //  - the shapes are the reference's (mass-normalised, |phi^T M phi_ref| = 1 to 1e-6);
 //  - a problem of another pattern through the same solver is analysed afresh and gives its modes;
+//  - K - sigma M merged from the compressed K and M equals the restricted sparse difference (bits);
 //  - fem::AxisymmetricOrders (K_n = c_n (K_0 + n K_1 + n^2 K_2)) equals the direct assembly of each
 //    order to 1e-13 (relative to the largest entry).
 #include "fem/eigen_solve.hpp"
@@ -113,6 +114,29 @@ TEST(LowestModesSolver, AnotherPatternIsAnalysedAfresh) {
   ASSERT_EQ(k.nonZeros(), p.km.stiffness.nonZeros() + 2);
   const Modes again = solver.solve(k, p.km.mass, static_cast<int>(first.omega.size()));
   expect_all_modes_below_fmax(again, dense_lambda(p), 2);
+}
+
+// K - sigma M on the free DOFs is merged from the full K and M in one pass when their storage is
+// compressed, and formed by Eigen's restriction and sparse difference otherwise: the two give the
+// same matrix, so the modes and the inertia count are the same to the bit (tolerance 0); M's
+// pattern lies within K's (like components of coupled nodes), which the merge needs.
+TEST(LowestModesSolver, ShiftedMatrixMergedOnTheFreeDofsEqualsTheRestrictedDifference) {
+  const Problem p = ring(0.04, 0.025, 2);
+  Eigen::SparseMatrix<double> k = p.km.stiffness, m = p.km.mass;
+  ASSERT_TRUE(k.isCompressed() && m.isCompressed());
+  LowestModesSolver merged(p.fixed, 2 * kPi * kFmax);
+  const Modes a = merged.solve(k, m, 3);
+  const int count_a = merged.count_below(k, m);
+  k.uncompress();  // the other path
+  m.uncompress();
+  LowestModesSolver formed(p.fixed, 2 * kPi * kFmax);
+  const Modes b = formed.solve(k, m, 3);
+  const int count_b = formed.count_below(k, m);
+  ASSERT_GT(a.omega.size(), 0);
+  EXPECT_EQ(count_a, a.omega.size());
+  EXPECT_EQ(count_a, count_b);
+  EXPECT_TRUE(a.omega == b.omega);
+  EXPECT_TRUE(a.shapes == b.shapes);
 }
 
 TEST(AxisymmetricOrders, EqualTheDirectAssemblyOfEachOrder) {

@@ -1,5 +1,5 @@
-// The FE wheel's case keys ([wheel] model = "fe", io/wheel_fe_case.hpp): defaults, and bad values
-// reported with the key in the message.
+// The FE wheel's case keys ([wheel] model = "fe", io/wheel_fe_case.hpp): defaults, bad values
+// reported with the key in the message, and the FE wheel model with its modes on their own thread.
 #include "io/wheel_fe_case.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "io/wheel_file.hpp"
 
 namespace {
 
@@ -81,4 +82,79 @@ TEST(WheelFeCase, BadValuesNameTheirKey) {
   // An FE key with the table wheel is a mistake, named.
   EXPECT_NE(read_error({"wheel.mesh_size=0.01"}).find("wheel.mesh_size"), std::string::npos);
   EXPECT_EQ(read_error({"wheel.model=\"table\""}), "");
+}
+
+namespace {
+
+// The FE wheel of a case on a coarse mesh (20 mm, modes to 2999 Hz, n <= 5: an id no other test
+// computes, so that its modes are computed here and not taken from the process's cache), `threads`
+// for its orders and its thread.
+io::WheelFeCase coarse_fe_case(int threads, double rolling_speed) {
+  io::InputProblems problems;
+  auto c = io::read_wheel_fe_case(
+      io::CaseReader::from_string(
+          "[wheel]\nmodel = \"fe\"\nmesh_size = 0.02\nf_max = 2999.0\nn_max = 5\n",
+          std::string(ROLLNOISE_SOURCE_DIR) + "/cases/w.toml"),
+      problems);
+  problems.throw_if_any();
+  c->options.threads = threads;
+  c->rolling_speed = rolling_speed;
+  return *c;
+}
+
+dynamics::RigidWheelset test_wheelset() {
+  return io::read_wheelset(std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheelset_920mm.toml");
+}
+
+void expect_same_table(const std::vector<dynamics::WheelMode>& a,
+                       const std::vector<dynamics::WheelMode>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].frequency, b[k].frequency) << k;
+    EXPECT_EQ(a[k].damping_ratio, b[k].damping_ratio) << k;
+    EXPECT_EQ(a[k].modal_mass, b[k].modal_mass) << k;
+    EXPECT_EQ(a[k].shape, b[k].shape) << k;
+    EXPECT_EQ(a[k].label, b[k].label) << k;
+  }
+}
+
+}  // namespace
+
+// With two threads the case's FE modes are computed on a thread of their own while the caller goes
+// on; the model then holds exactly (bit for bit, tolerance 0) the tables of the modes computed
+// directly on the caller's thread: at the reference point, 5 mm across the tread, and the
+// receptance at 1 kHz.
+TEST(WheelFeCase, ModesOnTheirOwnThreadEqualThoseOfTheCallersThread) {
+  const io::WheelFeCase c = coarse_fe_case(2, 20.0);
+  std::string id;
+  const dynamics::WheelModel later = io::fe_wheel_model(c, test_wheelset(), &id);
+  EXPECT_NE(id.find("f_max 2999"), std::string::npos);
+
+  dynamics::WheelFeOptions serial = c.options;
+  serial.threads = 1;
+  const dynamics::WheelFeModes modes = dynamics::wheel_fe_modes(c.section, serial);
+  const dynamics::WheelFeContactOptions o = io::contact_options(c, modes);
+  EXPECT_GT(o.spin_speed, 0.0);
+  const dynamics::WheelModel now(
+      test_wheelset(), dynamics::contact_mode_table(modes, 0.0, o),
+      [&](double shift_y) { return dynamics::contact_mode_table(modes, shift_y, o); });
+  ASSERT_FALSE(now.modes().empty());
+  expect_same_table(later.modes(), now.modes());
+  expect_same_table(later.modes_at(0.005), now.modes_at(0.005));
+  EXPECT_EQ(later.receptance(1000.0), now.receptance(1000.0));
+}
+
+// An error of the modes' own thread is thrown at their first use, with its type and key; on one
+// thread it is thrown where the model is made (both: n Omega above a natural frequency at 5 km/s).
+TEST(WheelFeCase, ErrorOfTheModesThreadIsThrownAtTheirFirstUse) {
+  const io::WheelFeCase c2 = coarse_fe_case(2, 5000.0);
+  const dynamics::WheelModel later = io::fe_wheel_model(c2, test_wheelset(), nullptr);
+  try {
+    later.modes();
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "wheel.rotation");
+  }
+  EXPECT_THROW(later.receptance(1000.0), InputError);  // again at every use
+  EXPECT_THROW(io::fe_wheel_model(coarse_fe_case(1, 5000.0), test_wheelset(), nullptr), InputError);
 }
