@@ -1,6 +1,7 @@
 // noise.band_refinement: the loops on the lines the band means need (docs/noise_loop.md Sec. 6.1).
 #include <algorithm>
 
+#include "core/task_pool.hpp"
 #include "noise/band_refinement.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/band_lines.hpp"
@@ -57,7 +58,7 @@ void append(std::vector<std::vector<double>>& to, std::vector<std::vector<double
 
 }  // namespace
 
-RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc) {
+RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int threads) {
   // At most 16 times the case's lines in all (768 per band for the default 48; the worst case of a
   // level is three lines for one), and within the case's limits.steps and limits.memory: a level
   // that would pass them is not taken (the band means keep the lines they have).
@@ -87,12 +88,21 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc) {
       out.capped = true;
       break;
     }
-    LoopsAt more = loops_at(r, nc, added);
-    out.variants = noise::merged(out.variants, more.variants);
-    if (r.bogie) bogie = noise::merged(bogie, more.bogie);
-    for (std::size_t i = 0; i < out.wheel_loops.size(); ++i)
-      if (!out.wheel_loops[i].frequency.empty())
-        out.wheel_loops[i] = noise::merged(out.wheel_loops[i], more.wheel_loops[i]);
+    // The added lines in contiguous slices on `threads` threads: every line is computed on its
+    // own (spectra, f and g, the loops), so the result does not depend on the slicing.
+    const std::size_t slices = std::min<std::size_t>(threads, (added.size() + 63) / 64);
+    std::vector<LoopsAt> more(slices);
+    parallel_for(slices, static_cast<int>(slices), [&](std::size_t i, int) {
+      const std::size_t lo = added.size() * i / slices, hi = added.size() * (i + 1) / slices;
+      more[i] = loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi));
+    });
+    for (const LoopsAt& m : more) {
+      out.variants = noise::merged(out.variants, m.variants);
+      if (r.bogie) bogie = noise::merged(bogie, m.bogie);
+      for (std::size_t i = 0; i < out.wheel_loops.size(); ++i)
+        if (!out.wheel_loops[i].frequency.empty())
+          out.wheel_loops[i] = noise::merged(out.wheel_loops[i], m.wheel_loops[i]);
+    }
     ++out.levels;
     out.added_lines += static_cast<long>(added.size());
   }

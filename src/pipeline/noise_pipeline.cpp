@@ -185,7 +185,8 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
         bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
   r.seconds_wheels = seconds_since(t1);
-  if (nc.band_refinement > 0) r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc));
+  if (nc.band_refinement > 0)
+    r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
   add_bands(r, nc);
   r.seconds_total = seconds_since(t0);
   return r;

@@ -125,8 +125,9 @@ noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
                                   const std::vector<nss::LoadVector>& load);
 /// noise.band_refinement: the loops of `r` (its variants, the bogie loop or the wheels' loops
 /// alone) on the case's lines plus the lines each refinement level adds (noise/band_refinement.hpp),
-/// at most nc.band_refinement levels.
-RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc);
+/// at most nc.band_refinement levels; the added lines of a level on `threads` threads (the same
+/// result for any number).
+RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int threads = 1);
 /// The whole pipeline for a read noise case (stages 1-5), and the loop of every wheel of
 /// curve.wheels (pipeline/wheel_noise.hpp).
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
