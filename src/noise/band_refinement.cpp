@@ -44,7 +44,8 @@ std::vector<std::size_t> order_of(const std::vector<double>& a, const std::vecto
   std::vector<std::size_t> idx(a.size() + b.size());
   std::iota(idx.begin(), idx.end(), 0);
   auto freq = [&](std::size_t k) { return k < a.size() ? a[k] : b[k - a.size()]; };
-  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t x, std::size_t y) { return freq(x) < freq(y); });
+  std::stable_sort(idx.begin(), idx.end(),
+                   [&](std::size_t x, std::size_t y) { return freq(x) < freq(y); });
   return idx;
 }
 
@@ -52,7 +53,8 @@ template <class T>
 std::vector<T> gathered(const std::vector<T>& a, const std::vector<T>& b,
                         const std::vector<std::size_t>& order) {
   if (a.empty() && b.empty()) return {};
-  ROLLNOISE_ASSERT(a.size() + b.size() == order.size(), "merged: one entry per frequency is needed");
+  ROLLNOISE_ASSERT(a.size() + b.size() == order.size(),
+                   "merged: one entry per frequency is needed");
   std::vector<T> out;
   out.reserve(order.size());
   for (std::size_t k : order) out.push_back(k < a.size() ? a[k] : b[k - a.size()]);
@@ -128,7 +130,9 @@ std::vector<std::vector<double>> sampled_powers(const ContactSetLoopResult& r) {
   return out;
 }
 
-LoopResult merged(const LoopResult& a, const LoopResult& b) { return merged_per_frequency(a, b); }
+LoopResult merged(const LoopResult& a, const LoopResult& b) {
+  return merged_per_frequency(a, b);
+}
 
 LoopVariants merged(const LoopVariants& a, const LoopVariants& b) {
   LoopVariants out;

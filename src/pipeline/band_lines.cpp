@@ -1,10 +1,11 @@
 // noise.band_refinement: the loops on the lines the band means need (docs/noise_loop.md Sec. 6.1).
+#include "pipeline/band_lines.hpp"
+
 #include <algorithm>
 
 #include "core/task_pool.hpp"
 #include "noise/band_refinement.hpp"
 #include "noise/wheel_contact.hpp"
-#include "pipeline/band_lines.hpp"
 #include "pipeline/limits.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
@@ -69,7 +70,7 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
   if (!r.bogie)
     for (const WheelNoise& w : r.wheels)
       out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer ? noise::LoopResult{}
-                                                                                : w.loop);
+                                                                               : w.loop);
   const std::size_t base = r.variants.main.frequency.size();
   for (int level = 0; level < nc.band_refinement; ++level) {
     std::vector<std::vector<double>> powers = noise::sampled_powers(out.variants.main);

@@ -13,7 +13,7 @@
 namespace rollnoise::pipeline {
 
 struct RefinedLoops {
-  noise::LoopVariants variants;                        ///< the main wheel's loop variants
+  noise::LoopVariants variants;                              ///< the main wheel's loop variants
   std::shared_ptr<const noise::ContactSetLoopResult> bogie;  ///< null without the bogie loop
   /// Without the bogie loop: each wheel's loop alone (NoiseResult::wheels order; the leading outer
   /// wheel's is variants.main).

@@ -1,13 +1,13 @@
 // linalg::RealFft: the 2-D transform of an array zero-padded in y, computed by dimension on the
 // rows that are not zero (RealFft(ny, nx, rows)), equals the whole 2-D transform, and its inverse
 // returns the wanted rows.
+#include "linalg/fft.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <complex>
 #include <random>
-
-#include "linalg/fft.hpp"
 
 using rollnoise::linalg::RealFft;
 
@@ -42,7 +42,8 @@ TEST_P(ZeroPaddedFft, EqualsTheWhole2dTransformAndItsInverseToRoundOff) {
 
   // The inverse (unnormalised): the wanted rows are ny nx times the input; the rest untouched.
   std::vector<double> input(padded.real(), padded.real() + static_cast<std::size_t>(rows) * nx);
-  std::fill(padded.real() + static_cast<std::size_t>(rows) * nx, padded.real() + padded.real_size(), 5.0);
+  std::fill(padded.real() + static_cast<std::size_t>(rows) * nx, padded.real() + padded.real_size(),
+            5.0);
   padded.backward(padded.spectrum());
   double worst = 0.0;
   for (std::size_t k = 0; k < input.size(); ++k)
@@ -52,7 +53,7 @@ TEST_P(ZeroPaddedFft, EqualsTheWhole2dTransformAndItsInverseToRoundOff) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HalfSpaceSizes, ZeroPaddedFft,
-                         ::testing::Values(Sizes{112, 128, 55}, Sizes{64, 64, 32}, Sizes{35, 27, 18},
-                                           Sizes{1, 8, 1}));
+                         ::testing::Values(Sizes{112, 128, 55}, Sizes{64, 64, 32},
+                                           Sizes{35, 27, 18}, Sizes{1, 8, 1}));
 
 }  // namespace

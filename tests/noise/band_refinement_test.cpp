@@ -36,7 +36,8 @@ double fine_band_mean(const Resonance& p, double centre, long n) {
 
 // Refines the lines of band_frequencies(centres, 48) `levels` times, evaluating p exactly at the
 // added lines; returns the lines.
-std::vector<double> refined_lines(const Resonance& p, const std::vector<double>& centres, int levels) {
+std::vector<double> refined_lines(const Resonance& p, const std::vector<double>& centres,
+                                  int levels) {
   std::vector<double> f = rn::band_frequencies(centres, 48);
   for (int level = 0; level < levels; ++level) {
     std::vector<double> values(f.size());
@@ -68,14 +69,16 @@ TEST(BandRefinement, LightlyDampedPeakBetweenTheLinesConvergesToTheBandMean) {
     std::vector<double> uniform = rn::band_frequencies(centres, 48);
     std::vector<double> v(uniform.size());
     for (std::size_t k = 0; k < v.size(); ++k) v[k] = p(uniform[k]);
-    worst_uniform = std::max(worst_uniform, std::abs(rn::band_mean(uniform, v, 1250.0) / reference - 1.0));
+    worst_uniform =
+        std::max(worst_uniform, std::abs(rn::band_mean(uniform, v, 1250.0) / reference - 1.0));
 
     const std::vector<double> f = refined_lines(p, centres, 6);
     std::vector<double> w(f.size());
     for (std::size_t k = 0; k < w.size(); ++k) w[k] = p(f[k]);
     EXPECT_NEAR(rn::band_mean(f, w, 1250.0) / reference, 1.0, 1e-2)
         << "f0 = " << p.f0 << " Hz, " << f.size() << " lines";
-    EXPECT_LT(f.size(), 1000u) << "uniform lines would need ~1e4 (spacing well below the half-power width)";
+    EXPECT_LT(f.size(), 1000u)
+        << "uniform lines would need ~1e4 (spacing well below the half-power width)";
   }
   EXPECT_GT(worst_uniform, 0.1) << "the case's 48 lines alone";
 }

@@ -24,8 +24,8 @@ pipeline::NoiseResult run(const std::vector<std::string>& overrides) {
                                 "wheel.f_max=3000",
                                 "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
   o.insert(o.end(), overrides.begin(), overrides.end());
-  const io::NoiseInputs in = io::read_noise_inputs(io::CaseReader::from_file(
-      std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o));
+  const io::NoiseInputs in = io::read_noise_inputs(
+      io::CaseReader::from_file(std::string(ROLLNOISE_SOURCE_DIR) + "/cases/curve_300m.toml", o));
   return pipeline::run_noise(in.contact, in.noise);
 }
 
@@ -47,7 +47,8 @@ double largest_difference(const pipeline::NoiseResult& a, const pipeline::NoiseR
 // and without the added lines.
 TEST(BandLines, RefinedBandLevelsMatchAFineUniformGridAndLeaveTheNarrowBandAlone) {
   const pipeline::NoiseResult coarse = run({"noise.points_per_band=16", "noise.band_refinement=0"});
-  const pipeline::NoiseResult refined = run({"noise.points_per_band=16", "noise.band_refinement=6"});
+  const pipeline::NoiseResult refined =
+      run({"noise.points_per_band=16", "noise.band_refinement=6"});
   const pipeline::NoiseResult fine = run({"noise.points_per_band=4096", "noise.band_refinement=0"});
   ASSERT_TRUE(refined.refined);
   EXPECT_GT(refined.refined->added_lines, 0);
@@ -59,9 +60,10 @@ TEST(BandLines, RefinedBandLevelsMatchAFineUniformGridAndLeaveTheNarrowBandAlone
   ASSERT_EQ(coarse.variants.main.force.size(), refined.variants.main.force.size());
   for (std::size_t k = 0; k < coarse.variants.main.force.size(); ++k)
     ASSERT_EQ(coarse.variants.main.force[k], refined.variants.main.force[k]) << k;
-  std::printf("  force band levels against 4096 lines per band: 16 lines %.2f dB, refined %.3f dB "
-              "(%ld lines added in %d levels)\n",
-              before, after, refined.refined->added_lines, refined.refined->levels);
+  std::printf(
+      "  force band levels against 4096 lines per band: 16 lines %.2f dB, refined %.3f dB "
+      "(%ld lines added in %d levels)\n",
+      before, after, refined.refined->added_lines, refined.refined->levels);
 }
 
 }  // namespace
