@@ -25,6 +25,14 @@ WheelFeOptions coarse_options(int threads) {
   return o;
 }
 
+// The DOFs held at the bore (what wheel_fe_modes fixes).
+std::vector<int> bore_dofs(const WheelFeModes& w, const WheelSection& section) {
+  std::vector<int> fixed;
+  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
+    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
+  return fixed;
+}
+
 }  // namespace
 
 // Sylvester's law of inertia: the negative pivots of LDL^T(K - omega_max^2 M) count the modes
@@ -35,10 +43,7 @@ TEST(WheelFeParallelOrders, InertiaCountEqualsModesFound) {
   const WheelFeOptions o = coarse_options(1);
   const WheelFeModes w = wheel_fe_modes(section, o);
   const fem::AxisymmetricOrders orders(w.mesh, o.material);
-  std::vector<int> fixed;
-  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
-    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
-  fem::LowestModesSolver solver(fixed, 2 * rollnoise::kPi * o.f_max);
+  fem::LowestModesSolver solver(bore_dofs(w, section), 2 * rollnoise::kPi * o.f_max);
   for (int n = 0; n <= o.n_max; ++n) {
     const auto km = orders.matrices(n);
     const int counted = solver.count_below(km.stiffness, km.mass);
@@ -81,10 +86,7 @@ TEST(WheelFeParallelOrders, OrdersCountedEmptyByInertiaEqualTheSolvedChain) {
   o.n_max = 9;
   const WheelFeModes w = wheel_fe_modes(section, o);
   const fem::AxisymmetricOrders orders(w.mesh, o.material);
-  std::vector<int> fixed;
-  for (int node : fem::nodes_on_segments(w.mesh, section.bore_segments))
-    for (int c = 0; c < 3; ++c) fixed.push_back(3 * node + c);
-  fem::LowestModesSolver solver(fixed, 2 * rollnoise::kPi * o.f_max);
+  fem::LowestModesSolver solver(bore_dofs(w, section), 2 * rollnoise::kPi * o.f_max);
   int guess = -1, empty = 0;
   std::size_t j = 0;  // w.modes: ascending in n, then frequency
   for (int n = 0; n <= o.n_max; ++n) {
