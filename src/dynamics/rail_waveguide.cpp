@@ -287,6 +287,7 @@ std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixX
   if (info != 0)
     throw NumericalError("rail waveguide: cross-section eigensolver failed (LAPACK dstevx, info " +
                          std::to_string(info) + ")");
+  if (found == 0) return {};  // none below lambda_max (high k); Eigen's solve of 0 columns is UB
   Eigen::MatrixXd modes = tri.matrixQ() * Z.leftCols(found);  // eigenvectors of C
   modes = mass.matrixU().solve(modes);                        // phi = L^{-T} z
   std::vector<Eigen::VectorXd> out;
