@@ -127,8 +127,11 @@ Receptance4 modal_sum(const std::vector<WheelMode>& a, const std::vector<WheelMo
   for (std::size_t k = 0; k < a.size(); ++k) {
     const WheelMode& m = a[k];
     const double wn = angular(m.frequency);
-    const cdouble q =
-        1.0 / (m.modal_mass * cdouble(wn * wn - omega * omega, 2.0 * m.damping_ratio * wn * omega));
+    // 1 / (m d), d = wn^2 - w^2 + 2 i zeta wn w, as conj(d) / (m |d|^2): the library's complex
+    // division guards against overflow and NaN (C99 Annex G), which these finite values never need.
+    const double re = wn * wn - omega * omega, im = 2.0 * m.damping_ratio * wn * omega;
+    const double s = 1.0 / (m.modal_mass * (re * re + im * im));
+    const cdouble q(re * s, -im * s);
     H += (m.shape * b[k].shape.transpose()).cast<cdouble>() * q;
   }
   return H;

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "noise/flange_patch.hpp"
-#include "noise/roughness.hpp"
 
 namespace rollnoise::pipeline {
 namespace {
@@ -75,28 +75,37 @@ noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, co
       s, alpha, noise::independent_sources(excited_contacts(wheels.size(), patches.size(), nc)));
 }
 
+std::vector<std::vector<double>> bogie_source_levels(const std::vector<WheelNoise>& wheels,
+                                                     const NoiseCase& nc,
+                                                     const std::vector<double>& centres,
+                                                     const std::vector<WheelNoise>& patches,
+                                                     int threads) {
+  const std::vector<const WheelNoise*> contacts = all_contacts(wheels, patches);
+  const std::vector<bool> excited = excited_contacts(wheels.size(), patches.size(), nc);
+  std::vector<const WheelNoise*> sources;  // source e = the e-th excited contact
+  for (std::size_t a = 0; a < contacts.size(); ++a)
+    if (excited[a]) sources.push_back(contacts[a]);
+  std::vector<std::vector<double>> levels(sources.size());
+  parallel_for(sources.size(), threads, [&](std::size_t e, int) {
+    levels[e] = contact_roughness(nc, sources[e]->mean).levels(centres);
+  });
+  return levels;
+}
+
+std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
+                                           const std::vector<double>& centres,
+                                           const std::vector<std::vector<double>>& source_levels) {
+  std::vector<noise::BandLevels> out;
+  for (int a = 0; a < loop.contacts(); ++a)
+    out.push_back(noise::contact_band_levels(loop, a, centres, source_levels));
+  return out;
+}
+
 std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
                                            const std::vector<WheelNoise>& wheels,
                                            const NoiseCase& nc, const std::vector<double>& centres,
                                            const std::vector<WheelNoise>& patches) {
-  const std::vector<const WheelNoise*> contacts = all_contacts(wheels, patches);
-  const std::vector<bool> excited = excited_contacts(wheels.size(), patches.size(), nc);
-  // source e = the e-th excited contact, with that patch's contact filter
-  std::vector<std::vector<double>> levels;
-  for (std::size_t a = 0; a < contacts.size(); ++a) {
-    if (!excited[a]) continue;
-    noise::ContactFilter filter;
-    filter.model = nc.filter;
-    filter.a = contacts[a]->mean.contact().a;
-    filter.b = contacts[a]->mean.contact().b;
-    levels.push_back(noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness,
-                                             contacts[a]->mean.contact().speed, filter)
-                         .levels(centres));
-  }
-  std::vector<noise::BandLevels> out;
-  for (int a = 0; a < static_cast<int>(contacts.size()); ++a)
-    out.push_back(noise::contact_band_levels(loop, a, centres, levels));
-  return out;
+  return bogie_bands(loop, centres, bogie_source_levels(wheels, nc, centres, patches));
 }
 
 }  // namespace rollnoise::pipeline

@@ -49,8 +49,21 @@ noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, co
                                        const noise::CrossCoupling& cross = {},
                                        const std::vector<WheelNoise>& patches = {});
 
-/// Band levels (M4) of every contact (the wheels, then the patches): each source with its own
-/// contact's filter (a, b) on the case's roughness spectra.
+/// The effective roughness levels in the bands `centres` of each source of bogie_loop (its
+/// excited contacts, in order): each with its own contact's filter (a, b) on the case's roughness
+/// spectra; the contacts shared out on `threads` threads (the filter's band means are quadratures).
+std::vector<std::vector<double>> bogie_source_levels(const std::vector<WheelNoise>& wheels,
+                                                     const NoiseCase& nc,
+                                                     const std::vector<double>& centres,
+                                                     const std::vector<WheelNoise>& patches = {},
+                                                     int threads = 1);
+
+/// Band levels (M4) of every contact (the wheels, then the patches) with the sources' roughness
+/// levels `source_levels` (bogie_source_levels).
+std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
+                                           const std::vector<double>& centres,
+                                           const std::vector<std::vector<double>>& source_levels);
+/// The same with the sources' levels of bogie_source_levels.
 std::vector<noise::BandLevels> bogie_bands(const noise::ContactSetLoopResult& loop,
                                            const std::vector<WheelNoise>& wheels,
                                            const NoiseCase& nc, const std::vector<double>& centres,

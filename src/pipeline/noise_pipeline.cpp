@@ -85,7 +85,7 @@ std::size_t listed_wheel_count(const NoiseCase& nc) {
 
 // The wheels of curve.wheels other than the leading outer one (the main run's): their contact
 // work (wheel_contact_noise: mean contact, NSS model, f(w), g(w)) on a pool of `threads`, started
-// as soon as the main wheel's mean contact exists (the cases are placed from it), so that the
+// as soon as the curve state exists (the cases are placed from it), so that the
 // pool's background threads work on them while the caller finishes the main wheel's loop; finish()
 // lets the caller join in. Each wheel is one task with its result at its index: the results do not
 // depend on the thread count. An exception of a wheel reaches finish()'s caller (TaskPool).
@@ -94,10 +94,11 @@ class FurtherWheels {
   FurtherWheels(const NoiseCase& nc, int threads) : nc_(nc), threads_(threads) {}
 
   // Each task also finds its wheel's contact state (noise::bogie_wheel_contacts of that wheel
-  // alone: the wheels' states are independent given the curve state).
-  void start(const MeanContact& main, const std::vector<double>& frequency) {
-    base_ = main.contact();
-    curve_ = main.curve();
+  // alone: the wheels' states are independent given the curve state). `base`: the main wheel's
+  // case as placed (each wheel's case is placed at its own contact from it: grid, a, b, N).
+  void start(const ContactCase& base, const CurveSetup& curve, const std::vector<double>& frequency) {
+    base_ = base;
+    curve_ = curve;
     frequency_ = frequency;
     for (noise::WheelId id : curve_wheel_ids(curve_, nc_)) {
       order_.push_back(id == noise::WheelId::leading_outer ? -1 : int(ids_.size()));
@@ -105,7 +106,14 @@ class FurtherWheels {
       else ids_.push_back(id);
     }
     results_.resize(ids_.size());
-    pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t i, int) {
+    // The outer wheels first: they carry the load transfer, so their patches are the larger ones
+    // and their models the longest tasks (a long task started last would run on alone).
+    schedule_.resize(ids_.size());
+    for (std::size_t i = 0; i < ids_.size(); ++i) schedule_[i] = i;
+    std::stable_partition(schedule_.begin(), schedule_.end(),
+                          [this](std::size_t i) { return noise::is_outer(ids_[i]); });
+    pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t task, int) {
+      const std::size_t i = schedule_[task];
       const noise::WheelContact w =
           noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
       results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
@@ -154,15 +162,17 @@ class FurtherWheels {
   noise::WheelContact main_state_;
   std::vector<noise::WheelId> ids_;  // the further wheels
   std::vector<int> order_;  // curve.wheels: index into ids_, -1 the main wheel
+  std::vector<std::size_t> schedule_;  // task -> index into ids_ (the order the tasks start in)
   std::vector<WheelNoise> results_;
   std::unique_ptr<TaskPool> pool_;  // last: joined before the members its tasks use go
 };
 
-using MeanContactHook = std::function<void(const MeanContact&, const std::vector<double>&)>;
+using CurveHook = std::function<void(const ContactCase&, const CurveSetup&, const std::vector<double>&)>;
 
-// run_noise_loop, calling `on_mean_contact` as soon as the main wheel's mean contact exists.
+// run_noise_loop, calling `on_curve` with the main wheel's placed case and the curve state as soon
+// as they exist (before the main wheel's mean contact).
 NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                                 const MeanContactHook& on_mean_contact);
+                                 const CurveHook& on_curve);
 
 }  // namespace
 
@@ -176,7 +186,9 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   FurtherWheels further(nc, parallel ? threads : 1);
   NoiseResult r = noise_loop_with_hook(
       std::move(c), nc, reuse,
-      [&](const MeanContact& m, const std::vector<double>& frequency) { further.start(m, frequency); });
+      [&](const ContactCase& base, const CurveSetup& curve, const std::vector<double>& frequency) {
+        further.start(base, curve, frequency);
+      });
   // r.seconds_wheels: what the wheels took after the main wheel's loop (their work overlaps it)
   const auto t1 = Clock::now();
   r.wheels = further.finish(r, *r.spectra);
@@ -187,7 +199,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   r.seconds_wheels = seconds_since(t1);
   if (nc.band_refinement > 0)
     r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
-  add_bands(r, nc);
+  add_bands(r, nc, threads);
   r.seconds_total = seconds_since(t0);
   return r;
 }
@@ -199,7 +211,7 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 namespace {
 
 NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                                 const MeanContactHook& on_mean_contact) {
+                                 const CurveHook& on_curve) {
   const auto t0 = Clock::now();
   NoiseResult r;
   r.axis = band_axis(c, nc);  // 1, the sizes before any work
@@ -208,8 +220,9 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
   // 2.-3. the mean contact (the model always: the quasi-steady baseline and the sweep's f(0), g(0))
   MeanContactOptions options = noise_contact_options(nc, freq);
   options.with_model = true;
-  r.mean = curve_mean_contact(c, nc, options);
-  if (on_mean_contact) on_mean_contact(r.mean, freq);  // the further wheels from here on
+  CurvePlacement placed = resolve_curve(c, nc);  // as curve_mean_contact
+  if (on_curve) on_curve(placed.contact, placed.curve, freq);  // the further wheels from here on
+  r.mean = solve_mean_contact(std::move(placed.contact), std::move(placed.curve), options);
   const ContactCase& cc = r.mean.contact();
   const nss::LinearContactModel& model = *r.mean.model();
   r.creep = model.creep_coefficients(freq);
@@ -259,19 +272,23 @@ noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
   return noise::solve_loop_variants(structures, in);
 }
 
-void add_bands(NoiseResult& r, const NoiseCase& nc) {
+void add_bands(NoiseResult& r, const NoiseCase& nc, int threads) {
   // 5. roughness and bands
-  const ContactCase& cc = r.mean.contact();
-  noise::ContactFilter filter;
-  filter.model = nc.filter;
-  filter.a = cc.a;
-  filter.b = cc.b;
-  const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, cc.speed, filter);
   const std::vector<double>& centres = r.axis.centres;
   // The band means on the refined lines where noise.band_refinement added some (band_lines.hpp).
   const noise::LoopVariants& variants = r.refined ? r.refined->variants : r.variants;
-  r.bands = noise::band_levels(variants.main, centres, roughness);
-  const std::vector<double> rough_levels = roughness.levels(centres);
+  // The sources' effective roughness once each (the contact filter's band means are quadratures):
+  // the leading outer wheel's is the main run's (every wheel is a source: wheel i is source i).
+  std::vector<std::vector<double>> source_levels;
+  if (r.bogie) source_levels = bogie_source_levels(r.wheels, nc, centres, r.patches, threads);
+  const auto main_source = std::find_if(r.wheels.begin(), r.wheels.end(), [](const WheelNoise& w) {
+    return w.state.wheel == noise::WheelId::leading_outer;
+  });
+  const std::vector<double> rough_levels =
+      r.bogie && main_source != r.wheels.end()
+          ? source_levels[static_cast<std::size_t>(main_source - r.wheels.begin())]
+          : contact_roughness(nc, r.mean).levels(centres);
+  r.bands = noise::band_levels(variants.main, centres, rough_levels);
   if (variants.has_uncoupled()) {
     r.uncoupled_bands = noise::band_levels(variants.uncoupled, centres, rough_levels);
     r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
@@ -279,7 +296,7 @@ void add_bands(NoiseResult& r, const NoiseCase& nc) {
   if (variants.has_baseline()) r.baseline_bands = noise::band_levels(variants.baseline, centres, rough_levels);
   if (r.bogie) {
     const noise::ContactSetLoopResult& loop = r.refined ? *r.refined->bogie : *r.bogie;
-    const std::vector<noise::BandLevels> b = bogie_bands(loop, r.wheels, nc, centres, r.patches);
+    const std::vector<noise::BandLevels> b = bogie_bands(loop, centres, source_levels);
     for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
     for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].bands = b[r.wheels.size() + k];
     return;

@@ -113,8 +113,9 @@ class NoiseReuse {
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
 /// Stage 5: the effective roughness (the case's roughness spectra and contact filter) and the band
 /// levels of every loop variant. Cases that differ only in roughness share stages 1-4: a copy of
-/// one run_noise_loop result, then add_bands with each case's NoiseCase.
-void add_bands(NoiseResult& r, const NoiseCase& nc);
+/// one run_noise_loop result, then add_bands with each case's NoiseCase. The contacts' roughness
+/// levels on `threads` threads (the same result for any number).
+void add_bands(NoiseResult& r, const NoiseCase& nc, int threads = 1);
 
 /// Stage 4's loop variants at `freq` (the main wheel's f and g there, `creep` and `load`; the
 /// wheel and rail spectra there): what run_noise_loop solves on the case's lines.

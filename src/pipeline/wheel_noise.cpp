@@ -61,15 +61,17 @@ std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double
   return noise::contact_receptances(frequency, normal_stiffness, speed, model.creep);
 }
 
-noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
-                              const NoiseCase& nc, const std::vector<double>& centres) {
+noise::ContactRoughness contact_roughness(const NoiseCase& nc, const MeanContact& m) {
   noise::ContactFilter filter;
   filter.model = nc.filter;
-  filter.a = w.mean.contact().a;
-  filter.b = w.mean.contact().b;
-  const noise::ContactRoughness roughness(nc.wheel_roughness, nc.rail_roughness, w.mean.contact().speed,
-                                          filter);
-  return noise::band_levels(loop, centres, roughness);
+  filter.a = m.contact().a;
+  filter.b = m.contact().b;
+  return noise::ContactRoughness(nc.wheel_roughness, nc.rail_roughness, m.contact().speed, filter);
+}
+
+noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
+                              const NoiseCase& nc, const std::vector<double>& centres) {
+  return noise::band_levels(loop, centres, contact_roughness(nc, w.mean));
 }
 
 }  // namespace rollnoise::pipeline

@@ -14,6 +14,7 @@
 
 #include "contact/forces.hpp"
 #include "noise/bands.hpp"
+#include "noise/roughness.hpp"
 #include "noise/loop.hpp"
 #include "noise/loop_variants.hpp"
 #include "noise/wheel_contact.hpp"
@@ -73,6 +74,10 @@ std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double
 
 /// The band levels of a wheel's loop (w.loop, or its lines refined: noise.band_refinement) with
 /// its contact filter's semi-axes and the case's roughness.
+/// The effective roughness (the case's wheel and rail roughness, its contact filter on the patch
+/// semi-axes a, b) of the mean contact `m` at its rolling speed: what each contact's bands take.
+noise::ContactRoughness contact_roughness(const NoiseCase& nc, const MeanContact& m);
+
 noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
                               const NoiseCase& nc, const std::vector<double>& centres);
 

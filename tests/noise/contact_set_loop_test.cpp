@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -201,6 +202,36 @@ TEST(ContactSetLoop, BadInputNamesTheKey) {
       rn::contact_set_structures(wheel(), rail, {point(0, 1, 0, 0, 0, 0)}, {100.0});
   EXPECT_EQ(key([&] { rn::solve_contact_set_loop(s, {}, rn::independent_sources({true})); }),
             "contacts");
+}
+
+// solve_contact_set_forces: the equilibrated LU with partial pivoting against a full-pivoting
+// solve of the same equilibrated system (seeded random complex matrix of a bogie's size, 5
+// contacts, entries spread over 12 decades by a diagonal scaling as the loop's receptances): the
+// forces agree to 1e-10 relative; a singular matrix (two equal rows) and a non-finite entry give
+// NumericalError, not forces.
+TEST(ContactSetLoop, ForcesSolveMatchesFullPivotingAndRefusesSingularMatrices) {
+  const Eigen::Index m = 20;
+  std::srand(2026);
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Random(m, m) + 4.0 * Eigen::MatrixXcd::Identity(m, m);
+  Eigen::VectorXd scale(m);
+  for (Eigen::Index i = 0; i < m; ++i) scale(i) = std::pow(10.0, -9.0 + 12.0 * double(i % 4) / 3.0);
+  A = scale.cast<cd>().asDiagonal() * A * scale.cast<cd>().asDiagonal();
+  const Eigen::MatrixXd rho = rn::independent_sources({true, true, false, true, true});
+  const Eigen::MatrixXcd F = rn::solve_contact_set_forces(A, rho);
+  Eigen::MatrixXcd rhs = Eigen::MatrixXcd::Zero(m, rho.cols());
+  for (Eigen::Index a = 0; a < rho.rows(); ++a) rhs.row(4 * a) = -rho.row(a).cast<cd>();
+  // the reference: full pivoting on the same equilibration D A D, D_i = |A_ii|^{-1/2}
+  const Eigen::VectorXd d = A.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXcd D = d.cast<cd>().asDiagonal();
+  const Eigen::MatrixXcd reference = D * (D * A * D).fullPivLu().solve(D * rhs);
+  EXPECT_LT((F - reference).norm(), 1e-10 * reference.norm());
+
+  Eigen::MatrixXcd singular = A;
+  singular.row(7) = singular.row(3);
+  EXPECT_THROW(rn::solve_contact_set_forces(singular, rho), rollnoise::NumericalError);
+  Eigen::MatrixXcd nan = A;
+  nan(2, 5) = cd(std::nan(""), 0.0);
+  EXPECT_THROW(rn::solve_contact_set_forces(nan, rho), rollnoise::NumericalError);
 }
 
 namespace {
