@@ -228,6 +228,12 @@ const std::vector<KeySpec>& case_schema() {
       {"wheel.mesh_size", T::PositiveReal, "0.008", "m", "model = \"fe\": target element size of the section mesh"},
       {"wheel.n_max", T::Integer, "10", "-", "model = \"fe\": highest number of nodal diameters", {}, 0, "", 50},
       {"wheel.f_max", T::PositiveReal, "6000", "Hz", "model = \"fe\": highest natural frequency kept"},
+      {"wheel.mode_cache", T::String, "\"user\"", "-",
+       "model = \"fe\": user: keep the modes along the tread in the user's cache directory "
+       "($ROLLNOISE_CACHE_DIR, else $XDG_CACHE_HOME/rollnoise or ~/.cache/rollnoise) and read them "
+       "in later runs of the same wheel (section file, material, mesh, n_max, f_max) and build; "
+       "off: compute them in every run. ROLLNOISE_CACHE_DIR=off switches it off for every case",
+       {"user", "off"}},
       {"wheel.damping_n0", T::PositiveReal, "1e-3", "-",
        "model = \"fe\": modal damping ratio of the n = 0 modes (Thompson 2009 Ch. 5, solid wheel)"},
       {"wheel.damping_n1", T::PositiveReal, "1e-2", "-",

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
 #include "io/tread_shapes_file.hpp"
+#include "io/wheel_modes_cache.hpp"
 #include "io/wheel_section_file.hpp"
 
 namespace rollnoise::io {
@@ -24,7 +25,7 @@ void check_unused_keys(const CaseReader& r, const std::string& model, InputProbl
   if (model != "fe")
     for (const char* key :
          {"wheel.section", "wheel.bore", "wheel.youngs_modulus", "wheel.poisson_ratio",
-          "wheel.density", "wheel.mesh_size", "wheel.n_max", "wheel.f_max"})
+          "wheel.density", "wheel.mesh_size", "wheel.n_max", "wheel.f_max", "wheel.mode_cache"})
       refuse(key, "\"fe\"");
   if (model == "table")
     for (const char* key :
@@ -90,6 +91,7 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
   });
   problems.check([&] { c.options.n_max = static_cast<int>(r.integer("wheel.n_max")); });
   problems.check([&] { c.options.f_max = r.real("wheel.f_max"); });
+  problems.check([&] { c.mode_cache = r.string("wheel.mode_cache") == "user"; });
   // the orders' threads (not in the id: the modes do not depend on them)
   problems.check([&] { c.options.threads = static_cast<int>(r.integer("solver.threads")); });
   char text[200];
@@ -109,6 +111,24 @@ std::shared_ptr<const dynamics::WheelFeModes> wheel_fe_modes_once(const WheelFeC
   if (!slot)
     slot = std::make_shared<const dynamics::WheelFeModes>(
         dynamics::wheel_fe_modes(c.section, c.options));
+  return slot;
+}
+
+std::shared_ptr<const dynamics::WheelFeModes> wheel_tread_modes(const WheelFeCase& c) {
+  if (c.imported || !c.mode_cache) return wheel_fe_modes_once(c);
+  // one process, one wheel: the first caller reads (or computes and stores) them, the others share
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const dynamics::WheelFeModes>> read;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = read[c.id];
+  if (slot) return slot;
+  const std::optional<std::string> directory = mode_cache_directory();
+  const std::string key = directory ? mode_cache_key(c) : std::string{};
+  if (!key.empty())
+    if (std::optional<dynamics::WheelFeModes> cached = read_cached_modes(*directory, key))
+      return slot = std::make_shared<const dynamics::WheelFeModes>(std::move(*cached));
+  slot = wheel_fe_modes_once(c);
+  if (!key.empty()) write_cached_modes(*directory, key, *slot);
   return slot;
 }
 
@@ -132,7 +152,7 @@ dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidW
     *id = c.id + text;
   }
   if (c.imported || resolved_threads(c.options.threads) == 1) {  // the modes now, on this thread
-    const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_fe_modes_once(c);
+    const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_tread_modes(c);
     return dynamics::WheelModel(
         wheelset, dynamics::contact_mode_table(*modes, 0.0, o),
         [modes, o](double shift_y) { return dynamics::contact_mode_table(*modes, shift_y, o); });
@@ -142,7 +162,7 @@ dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidW
   // is destroyed without having used them (an error elsewhere in the case).
   using Later = std::shared_future<std::shared_ptr<const dynamics::WheelFeModes>>;
   const Later modes =
-      std::async(std::launch::async, [c] { return wheel_fe_modes_once(c); }).share();
+      std::async(std::launch::async, [c] { return wheel_tread_modes(c); }).share();
   std::shared_future<std::vector<dynamics::WheelMode>> table =
       std::async(std::launch::deferred, [modes, o] {
         return dynamics::contact_mode_table(*modes.get(), 0.0, o);

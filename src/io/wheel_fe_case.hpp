@@ -25,6 +25,9 @@ struct WheelFeCase {
   std::string id;
   /// wheel.model = "shapes": the user's modes as read (no section, no FE solve).
   std::shared_ptr<const dynamics::WheelFeModes> imported;
+  /// wheel.mode_cache = "user": the contact path keeps the modes along the tread between runs
+  /// (io/wheel_modes_cache.hpp).
+  bool mode_cache = true;
 };
 
 /// The [wheel] FE keys (model = "fe") or the imported shapes (model = "shapes"); nullopt when
@@ -33,6 +36,11 @@ std::optional<WheelFeCase> read_wheel_fe_case(const CaseReader& r, InputProblems
 
 /// The modes of the case's wheel, computed at the first call for an id and shared afterwards.
 std::shared_ptr<const dynamics::WheelFeModes> wheel_fe_modes_once(const WheelFeCase& c);
+
+/// What the contact path needs of the modes, along the tread: as wheel_fe_modes_once, or, with
+/// c.mode_cache, from the user's mode cache (no mesh and no section shapes then;
+/// io/wheel_modes_cache.hpp), which a computation fills.
+std::shared_ptr<const dynamics::WheelFeModes> wheel_tread_modes(const WheelFeCase& c);
 
 /// The contact options of the case: Omega = V / r0 (r0 the tread radius at s = 0) when the split is
 /// on.
