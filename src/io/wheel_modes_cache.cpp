@@ -100,7 +100,8 @@ std::optional<dynamics::WheelFeModes> parse(const std::string& s, std::size_t at
   w.modes.resize(count);
   for (dynamics::WheelFeMode& m : w.modes) {
     std::int64_t n = 0, family = 0, circles = 0;
-    if (!b.get(m.frequency) || !b.get(n) || !b.get(family) || !b.get(circles) || !b.get(m.damping_ratio))
+    if (!b.get(m.frequency) || !b.get(n) || !b.get(family) || !b.get(circles) ||
+        !b.get(m.damping_ratio))
       return std::nullopt;
     if (family < 0 || family > 2) return std::nullopt;
     m.n = static_cast<int>(n);
@@ -128,8 +129,10 @@ std::optional<std::string> mode_cache_directory() {
     if (std::string(dir) == "off" || std::string(dir).empty()) return std::nullopt;
     return std::string(dir);
   }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/rollnoise";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/rollnoise";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return std::string(xdg) + "/rollnoise";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::string(home) + "/.cache/rollnoise";
   return std::nullopt;
 }
 

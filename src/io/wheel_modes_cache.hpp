@@ -2,11 +2,11 @@
 // mode cache").
 //
 // The modes of an FE wheel depend only on its section, material, mesh and range (n <= n_max,
-// f <= f_max), not on the case's contact; computing them (gmsh's meshing, one sparse eigen solve per
-// order) costs more than a whole single-wheel noise run without them. The contact path needs only
-// what the modes are along the tread (tread samples, frequencies, orders, families, tread shapes,
-// the wheel's mass), so that is what is kept: one binary file per wheel and build of rollnoise in
-// the user's cache directory,
+// f <= f_max), not on the case's contact; computing them (gmsh's meshing, one sparse eigen solve
+// per order) costs more than a whole single-wheel noise run without them. The contact path needs
+// only what the modes are along the tread (tread samples, frequencies, orders, families, tread
+// shapes, the wheel's mass), so that is what is kept: one binary file per wheel and build of
+// rollnoise in the user's cache directory,
 //   $ROLLNOISE_CACHE_DIR (the value "off" switches the cache off for every case), else
 //   $XDG_CACHE_HOME/rollnoise, else $HOME/.cache/rollnoise,
 // named by a 64-bit FNV-1a hash of its key. The key (written into the file and compared in full on

@@ -14,13 +14,13 @@ namespace rollnoise::nss {
 
 namespace {
 
-// sum_j h_j z^j by Horner at z = e^{-i w dt} for each frequency.
+// sum_j h_j z^j by Horner at z = e^{-i w dt} for each frequency (four frequencies per pass).
 template <class Out, class Term>
 std::vector<Out> horner(const std::vector<Term>& h, double dt, const std::vector<double>& frequencies) {
-  std::vector<Out> out;
-  out.reserve(frequencies.size());
-  for (double f : frequencies) out.push_back(linalg::horner<Out>(h, std::polar(1.0, -2.0 * M_PI * f * dt)));
-  return out;
+  std::vector<std::complex<double>> z;
+  z.reserve(frequencies.size());
+  for (double f : frequencies) z.push_back(std::polar(1.0, -2.0 * M_PI * f * dt));
+  return linalg::horner_many<Out>(h, z);
 }
 
 // The Markov series is used at a complex z where its last weighted term is at most this fraction

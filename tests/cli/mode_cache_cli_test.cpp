@@ -23,7 +23,8 @@ std::string coarse_curve(const std::string& out, const std::string& more = "") {
   return source_file("cases/curve_300m.toml") + " -o " + out +
          " -q --set 'curve.wheels=[\"leading_outer\"]' --set noise.band_max=500 --set "
          "noise.points_per_band=4 --set noise.band_refinement=0 --set wheel.mesh_size=0.03 --set "
-         "wheel.n_max=3 --set wheel.f_max=2500.0 " + more;
+         "wheel.n_max=3 --set wheel.f_max=2500.0 " +
+         more;
 }
 
 // ROLLNOISE_CACHE_DIR for the runs of one scope (the suite runs with it "off": CMakeLists.txt).
@@ -34,8 +35,10 @@ class CacheFolder {
     ::setenv("ROLLNOISE_CACHE_DIR", value.c_str(), 1);
   }
   ~CacheFolder() {
-    if (old_) ::setenv("ROLLNOISE_CACHE_DIR", old_->c_str(), 1);
-    else ::unsetenv("ROLLNOISE_CACHE_DIR");
+    if (old_)
+      ::setenv("ROLLNOISE_CACHE_DIR", old_->c_str(), 1);
+    else
+      ::unsetenv("ROLLNOISE_CACHE_DIR");
   }
 
  private:
@@ -62,8 +65,10 @@ TEST(ModeCache, SecondRunReadsTheModesAndWritesTheSameNumbers) {
   const Invocation b = run("noise " + coarse_curve(second.string()));
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_EQ(listing(cache).size(), 1u);
-  EXPECT_EQ(std::filesystem::last_write_time(cache / listing(cache).front()), stored);  // read, not rewritten
-  // the band levels of forces and wheel and rail velocities: the whole loop, the wheel's modes in it
+  EXPECT_EQ(std::filesystem::last_write_time(cache / listing(cache).front()),
+            stored);  // read, not rewritten
+  // the band levels of forces and wheel and rail velocities: the whole loop, the wheel's modes in
+  // it
   for (const char* name : {"/noise/bands/force_level", "/noise/bands/velocity_level",
                            "/noise/wheels/leading_outer/bands/velocity_level"}) {
     const std::vector<double> x = dataset(first, name), y = dataset(second, name);
@@ -78,7 +83,8 @@ TEST(ModeCache, OffInTheCaseOrTheEnvironmentStoresNothing) {
   const auto cache = dir / "cache";
   {
     const CacheFolder folder(cache.string());
-    const Invocation a = run("noise " + coarse_curve((dir / "a.h5").string(), "--set wheel.mode_cache=\\\"off\\\""));
+    const Invocation a =
+        run("noise " + coarse_curve((dir / "a.h5").string(), "--set wheel.mode_cache=\\\"off\\\""));
     ASSERT_EQ(a.status, 0) << a.output;
     EXPECT_FALSE(std::filesystem::exists(cache));
   }
@@ -87,9 +93,9 @@ TEST(ModeCache, OffInTheCaseOrTheEnvironmentStoresNothing) {
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_FALSE(std::filesystem::exists(cache));
   // the key belongs to the FE wheel: with another wheel model it is refused, naming it
-  const Invocation c = run("noise " + source_file("cases/curve_300m.toml") + " -o " +
-                           (dir / "c.h5").string() +
-                           " -q --set wheel.model=\\\"table\\\" --set wheel.mode_cache=\\\"user\\\"");
+  const Invocation c =
+      run("noise " + source_file("cases/curve_300m.toml") + " -o " + (dir / "c.h5").string() +
+          " -q --set wheel.model=\\\"table\\\" --set wheel.mode_cache=\\\"user\\\"");
   EXPECT_NE(c.status, 0);
   EXPECT_NE(c.output.find("wheel.mode_cache"), std::string::npos) << c.output;
 }

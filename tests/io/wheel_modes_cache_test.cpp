@@ -4,6 +4,7 @@
 #include "io/wheel_modes_cache.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -11,7 +12,6 @@
 #include <fstream>
 #include <optional>
 #include <string>
-#include <unistd.h>
 
 #include "io/case_reader.hpp"
 #include "io/input_problems.hpp"
@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 // A fresh scratch folder of this test process (all of them removed when the process ends).
 fs::path scratch(const std::string& name) {
   static const struct Root {
-    fs::path dir = fs::temp_directory_path() / ("rollnoise_modes_cache_" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("rollnoise_modes_cache_" + std::to_string(::getpid()));
     ~Root() {
       std::error_code ec;
       fs::remove_all(dir, ec);
@@ -39,12 +40,13 @@ fs::path scratch(const std::string& name) {
 
 // The default FE wheel case with a coarse mesh and a short range (n <= 3, 2.5 kHz: a few modes).
 io::WheelFeCase coarse_case(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> overrides = {"wheel.model=\"fe\"", "wheel.mesh_size=0.03", "wheel.n_max=3",
-                                        "wheel.f_max=2500.0"};
+  std::vector<std::string> overrides = {"wheel.model=\"fe\"", "wheel.mesh_size=0.03",
+                                        "wheel.n_max=3", "wheel.f_max=2500.0"};
   overrides.insert(overrides.end(), more.begin(), more.end());
   io::InputProblems problems;
   const auto c = io::read_wheel_fe_case(
-      io::CaseReader::from_string("", std::string(ROLLNOISE_SOURCE_DIR) + "/cases/w.toml", overrides),
+      io::CaseReader::from_string("", std::string(ROLLNOISE_SOURCE_DIR) + "/cases/w.toml",
+                                  overrides),
       problems);
   problems.throw_if_any();
   return *c;
@@ -55,7 +57,9 @@ const dynamics::WheelFeModes& computed() {
   return w;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 void expect_bit_identical(const dynamics::WheelFeModes& a, const dynamics::WheelFeModes& b) {
   ASSERT_EQ(a.tread_s.size(), b.tread_s.size());
@@ -104,7 +108,8 @@ TEST(WheelModesCache, AnotherKeyADamagedOrTruncatedFileReadsNothing) {
   const fs::path dir = scratch("damaged");
   const std::string key = io::mode_cache_key(coarse_case());
   ASSERT_TRUE(io::write_cached_modes(dir.string(), key, computed()));
-  EXPECT_FALSE(io::read_cached_modes(dir.string(), io::mode_cache_key(coarse_case({"wheel.n_max=2"}))));
+  EXPECT_FALSE(
+      io::read_cached_modes(dir.string(), io::mode_cache_key(coarse_case({"wheel.n_max=2"}))));
   const std::string file = io::mode_cache_file(dir.string(), key);
   std::string bytes;
   {
@@ -135,18 +140,21 @@ TEST(WheelModesCache, AnotherKeyADamagedOrTruncatedFileReadsNothing) {
 // what does not enter the modes (damping, rotation) leaves it.
 TEST(WheelModesCache, EveryInputOfTheModesChangesTheKey) {
   const std::string base = io::mode_cache_key(coarse_case());
-  for (const char* o : {"wheel.youngs_modulus=2.0e11", "wheel.poisson_ratio=0.29",
-                               "wheel.density=7800.0", "wheel.mesh_size=0.031", "wheel.n_max=4",
-                               "wheel.f_max=2600.0"})
+  for (const char* o :
+       {"wheel.youngs_modulus=2.0e11", "wheel.poisson_ratio=0.29", "wheel.density=7800.0",
+        "wheel.mesh_size=0.031", "wheel.n_max=4", "wheel.f_max=2600.0"})
     EXPECT_NE(io::mode_cache_key(coarse_case({o})), base) << o;
   for (const char* o : {"wheel.damping_radial=1e-3", "wheel.rotation=\"none\""})
     EXPECT_EQ(io::mode_cache_key(coarse_case({o})), base) << o;
 
   // the same outline in another file reads the same key; one changed point does not
   const fs::path dir = scratch("section");
-  const std::string shipped = std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv";
+  const std::string shipped =
+      std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv";
   fs::copy_file(shipped, dir / "copy.csv");
-  EXPECT_EQ(io::mode_cache_key(coarse_case({"wheel.section=\"" + (dir / "copy.csv").string() + "\""})), base);
+  EXPECT_EQ(
+      io::mode_cache_key(coarse_case({"wheel.section=\"" + (dir / "copy.csv").string() + "\""})),
+      base);
   std::string text;
   {
     std::ifstream in(shipped);
@@ -155,7 +163,9 @@ TEST(WheelModesCache, EveryInputOfTheModesChangesTheKey) {
   const std::size_t digit = text.find_last_of("123456789");
   text[digit] = text[digit] == '9' ? '8' : char(text[digit] + 1);
   std::ofstream(dir / "changed.csv") << text;
-  EXPECT_NE(io::mode_cache_key(coarse_case({"wheel.section=\"" + (dir / "changed.csv").string() + "\""})), base);
+  EXPECT_NE(
+      io::mode_cache_key(coarse_case({"wheel.section=\"" + (dir / "changed.csv").string() + "\""})),
+      base);
 }
 
 // The folder: ROLLNOISE_CACHE_DIR ("off": none), else $XDG_CACHE_HOME/rollnoise, else
@@ -173,7 +183,8 @@ TEST(WheelModesCache, FolderFromTheEnvironment) {
   ::setenv("HOME", "/home/someone", 1);
   ::unsetenv("XDG_CACHE_HOME");
   ::unsetenv("ROLLNOISE_CACHE_DIR");
-  EXPECT_EQ(io::mode_cache_directory(), std::optional<std::string>("/home/someone/.cache/rollnoise"));
+  EXPECT_EQ(io::mode_cache_directory(),
+            std::optional<std::string>("/home/someone/.cache/rollnoise"));
   ::setenv("XDG_CACHE_HOME", "/var/cache/u", 1);
   EXPECT_EQ(io::mode_cache_directory(), std::optional<std::string>("/var/cache/u/rollnoise"));
   ::setenv("ROLLNOISE_CACHE_DIR", "/scratch/modes", 1);
@@ -181,6 +192,8 @@ TEST(WheelModesCache, FolderFromTheEnvironment) {
   ::setenv("ROLLNOISE_CACHE_DIR", "off", 1);
   EXPECT_FALSE(io::mode_cache_directory());
   for (const Saved& s : saved)
-    if (s.value) ::setenv(s.name, s.value->c_str(), 1);
-    else ::unsetenv(s.name);
+    if (s.value)
+      ::setenv(s.name, s.value->c_str(), 1);
+    else
+      ::unsetenv(s.name);
 }
