@@ -13,19 +13,31 @@ namespace rollnoise::pipeline {
 
 namespace {
 
-// A wheel's contact at other frequencies: what bogie_loop and wheel_loop_alone read of it.
-WheelNoise contact_at(const WheelNoise& w, const NoiseCase& nc, const std::vector<double>& f) {
+// The f and g of the main run's model at the lines of a level, computed once: its loop variants
+// and its contact in the bogie loop take them.
+struct MainCoefficients {
+  const nss::LinearContactModel* model;
+  noise::ContactCoefficients at;
+};
+
+// A wheel's contact at other frequencies: what bogie_loop and wheel_loop_alone read of it. The
+// contact of the main run's model (the leading outer wheel's tread patch; not its flange patch,
+// which has a model of its own) from `main`.
+WheelNoise contact_at(const WheelNoise& w, const NoiseCase& nc, const std::vector<double>& f,
+                      const MainCoefficients& main) {
   WheelNoise out;
   out.state = w.state;
   out.position = w.position;
-  out.contact_receptance = wheel_contact_receptance(w, nc, f);
+  out.contact_receptance = w.mean.model().get() == main.model
+                               ? wheel_contact_receptance(w, nc, f, main.at)
+                               : wheel_contact_receptance(w, nc, f);
   return out;
 }
 
 std::vector<WheelNoise> contacts_at(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
-                                    const std::vector<double>& f) {
+                                    const std::vector<double>& f, const MainCoefficients& main) {
   std::vector<WheelNoise> out;
-  for (const WheelNoise& w : wheels) out.push_back(contact_at(w, nc, f));
+  for (const WheelNoise& w : wheels) out.push_back(contact_at(w, nc, f, main));
   return out;
 }
 
@@ -40,16 +52,17 @@ LoopsAt loops_at(const NoiseResult& r, const NoiseCase& nc, const std::vector<do
   LoopsAt out;
   const noise::StructureSpectra spectra = noise::structure_spectra(*nc.wheel, f);
   const nss::LinearContactModel& model = *r.mean.model();
-  out.variants = loop_variants(r, nc, spectra, f, model.creep_coefficients(f),
-                               model.normal_load_coefficients(f));
+  const MainCoefficients main{&model, {model.creep_coefficients(f), model.normal_load_coefficients(f)}};
+  out.variants = loop_variants(r, nc, spectra, f, main.at.creep, main.at.load);
   if (r.bogie) {
-    out.bogie = bogie_loop(contacts_at(r.wheels, nc, f), nc, f, {}, contacts_at(r.patches, nc, f));
+    out.bogie = bogie_loop(contacts_at(r.wheels, nc, f, main), nc, f, {},
+                           contacts_at(r.patches, nc, f, main));
     return out;
   }
   for (const WheelNoise& w : r.wheels)
     out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer
                                   ? noise::LoopResult{}
-                                  : wheel_loop_alone(contact_at(w, nc, f), nc, spectra));
+                                  : wheel_loop_alone(contact_at(w, nc, f, main), nc, spectra));
   return out;
 }
 

@@ -36,12 +36,19 @@ WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
 
 std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
                                                          const std::vector<double>& frequency) {
+  if (!nc.use_nss) return wheel_contact_receptance(w, nc, frequency, {});
+  const nss::LinearContactModel& model = *w.mean.model();
+  return wheel_contact_receptance(
+      w, nc, frequency,
+      {model.creep_coefficients(frequency), model.normal_load_coefficients(frequency)});
+}
+
+std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
+                                                         const std::vector<double>& frequency,
+                                                         const noise::ContactCoefficients& nss) {
   const MeanContact& m = w.mean;
-  const noise::ContactCoefficients model =
-      nc.use_nss ? noise::ContactCoefficients{m.model()->creep_coefficients(frequency),
-                                              m.model()->normal_load_coefficients(frequency)}
-                 : kalker_coefficients(m.contact(), frequency.size());
-  return main_contact_receptance(frequency, m.normal_stiffness(), m.contact().speed, model,
+  return main_contact_receptance(frequency, m.normal_stiffness(), m.contact().speed,
+                                 nc.use_nss ? nss : kalker_coefficients(m.contact(), frequency.size()),
                                  nc.normal_coupling);
 }
 

@@ -65,6 +65,11 @@ noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
 /// The wheel's alpha_c (as wheel_contact_noise computes it) at other frequencies.
 std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
                                                          const std::vector<double>& frequency);
+/// The same from the wheel's f and g at `frequency` where the caller has them already (the NSS
+/// model's; with noise.contact_model = "kalker" Kalker's are taken, as wheel_contact_receptance).
+std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
+                                                         const std::vector<double>& frequency,
+                                                         const noise::ContactCoefficients& nss);
 /// alpha_c of the main loop: with g when `normal_coupling` and the model has one (as
 /// noise::solve_loop_variants's main variant).
 std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,
