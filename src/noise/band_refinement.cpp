@@ -49,27 +49,27 @@ std::vector<std::size_t> order_of(const std::vector<double>& a, const std::vecto
   return idx;
 }
 
+// The entries of a and b in `order` (moved: a line's matrices are not copied).
 template <class T>
-std::vector<T> gathered(const std::vector<T>& a, const std::vector<T>& b,
-                        const std::vector<std::size_t>& order) {
+std::vector<T> gathered(std::vector<T>&& a, std::vector<T>&& b, const std::vector<std::size_t>& order) {
   if (a.empty() && b.empty()) return {};
   ROLLNOISE_ASSERT(a.size() + b.size() == order.size(),
                    "merged: one entry per frequency is needed");
   std::vector<T> out;
   out.reserve(order.size());
-  for (std::size_t k : order) out.push_back(k < a.size() ? a[k] : b[k - a.size()]);
+  for (std::size_t k : order) out.push_back(std::move(k < a.size() ? a[k] : b[k - a.size()]));
   return out;
 }
 
 // The per-frequency vectors of two loop results (LoopResult, ContactSetLoopResult) in one order.
 template <class Result>
-Result merged_per_frequency(const Result& a, const Result& b) {
+Result merged_per_frequency(Result&& a, Result&& b) {
   const auto order = order_of(a.frequency, b.frequency);
   Result out;
-  out.frequency = gathered(a.frequency, b.frequency, order);
-  out.force = gathered(a.force, b.force, order);
-  out.wheel_velocity = gathered(a.wheel_velocity, b.wheel_velocity, order);
-  out.rail_velocity = gathered(a.rail_velocity, b.rail_velocity, order);
+  out.frequency = gathered(std::move(a.frequency), std::move(b.frequency), order);
+  out.force = gathered(std::move(a.force), std::move(b.force), order);
+  out.wheel_velocity = gathered(std::move(a.wheel_velocity), std::move(b.wheel_velocity), order);
+  out.rail_velocity = gathered(std::move(a.rail_velocity), std::move(b.rail_velocity), order);
   return out;
 }
 
@@ -130,21 +130,21 @@ std::vector<std::vector<double>> sampled_powers(const ContactSetLoopResult& r) {
   return out;
 }
 
-LoopResult merged(const LoopResult& a, const LoopResult& b) {
-  return merged_per_frequency(a, b);
-}
+LoopResult merged(LoopResult a, LoopResult b) { return merged_per_frequency(std::move(a), std::move(b)); }
 
-LoopVariants merged(const LoopVariants& a, const LoopVariants& b) {
+LoopVariants merged(LoopVariants a, LoopVariants b) {
   LoopVariants out;
-  out.main = merged(a.main, b.main);
-  if (a.has_uncoupled()) out.uncoupled = merged(a.uncoupled, b.uncoupled);
-  if (a.has_baseline()) out.baseline = merged(a.baseline, b.baseline);
+  const bool uncoupled = a.has_uncoupled(), baseline = a.has_baseline();
+  out.main = merged(std::move(a.main), std::move(b.main));
+  if (uncoupled) out.uncoupled = merged(std::move(a.uncoupled), std::move(b.uncoupled));
+  if (baseline) out.baseline = merged(std::move(a.baseline), std::move(b.baseline));
   return out;
 }
 
-ContactSetLoopResult merged(const ContactSetLoopResult& a, const ContactSetLoopResult& b) {
-  ContactSetLoopResult out = merged_per_frequency(a, b);
-  out.rho = a.rho;
+ContactSetLoopResult merged(ContactSetLoopResult a, ContactSetLoopResult b) {
+  Eigen::MatrixXd rho = std::move(a.rho);
+  ContactSetLoopResult out = merged_per_frequency(std::move(a), std::move(b));
+  out.rho = std::move(rho);
   return out;
 }
 

@@ -53,9 +53,10 @@ std::vector<double> refinement_frequencies(const std::vector<double>& f,
 std::vector<std::vector<double>> sampled_powers(const LoopResult& r);
 std::vector<std::vector<double>> sampled_powers(const ContactSetLoopResult& r);
 
-/// The union of two results on disjoint frequencies, sorted by frequency (b's rho is a's).
-LoopResult merged(const LoopResult& a, const LoopResult& b);
-LoopVariants merged(const LoopVariants& a, const LoopVariants& b);
-ContactSetLoopResult merged(const ContactSetLoopResult& a, const ContactSetLoopResult& b);
+/// The union of two results on disjoint frequencies, sorted by frequency (b's rho is a's); the
+/// lines are moved out of a and b (pass std::move where they are not needed any more).
+LoopResult merged(LoopResult a, LoopResult b);
+LoopVariants merged(LoopVariants a, LoopVariants b);
+ContactSetLoopResult merged(ContactSetLoopResult a, ContactSetLoopResult b);
 
 }  // namespace rollnoise::noise

@@ -8,19 +8,29 @@
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 
 namespace rollnoise::noise {
+
+namespace {
+// f(lo, hi) for contiguous slices [lo, hi) of n frequencies on up to `threads` threads (at least
+// 64 frequencies a slice: a thread's start costs about as much as a few lines).
+template <class F>
+void for_frequency_slices(std::size_t n, int threads, const F& f) {
+  const std::size_t slices = std::clamp<std::size_t>((n + 63) / 64, 1, std::max(threads, 1));
+  parallel_for(slices, static_cast<int>(slices), [&](std::size_t i, int) { f(n * i / slices, n * (i + 1) / slices); });
+}
+}  // namespace
 
 ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
                                             const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             const std::vector<double>& frequencies,
-                                            const CrossCoupling& cross) {
+                                            const CrossCoupling& cross, int threads) {
   ContactSetStructures s;
   s.frequency = frequencies;
   s.contacts = contacts;
   s.cross = cross;
-  s.receptance.reserve(frequencies.size());
   for (double f : frequencies)
     if (!(f > 0.0) || !std::isfinite(f))
       throw InputError("frequency", "the noise loop needs positive frequencies");
@@ -29,9 +39,11 @@ ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
   // the rail between the contact points on the whole grid at once (RailModel::contact_transfers)
   const std::vector<std::vector<Receptance6>> rail_pairs =
       rail.contact_transfers(frequencies, contact_set_rail_pairs(contacts, cross).points);
-  for (std::size_t k = 0; k < frequencies.size(); ++k)
-    s.receptance.push_back(
-        contact_set_receptance(wheel, rail_pairs[k], contacts, tables, frequencies[k], cross));
+  s.receptance.resize(frequencies.size());
+  for_frequency_slices(frequencies.size(), threads, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t k = lo; k < hi; ++k)
+      s.receptance[k] = contact_set_receptance(wheel, rail_pairs[k], contacts, tables, frequencies[k], cross);
+  });
   return s;
 }
 
@@ -83,7 +95,7 @@ Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& A, const Eigen
 
 ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& s,
                                             const std::vector<std::vector<Receptance4>>& contact,
-                                            const Eigen::MatrixXd& rho, bool velocities) {
+                                            const Eigen::MatrixXd& rho, bool velocities, int threads) {
   const std::size_t n = s.contacts.size(), nf = s.frequency.size();
   if (contact.size() != n)
     throw InputError("contacts", "noise loop: one contact receptance series per contact is needed");
@@ -96,24 +108,28 @@ ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& s,
   ContactSetLoopResult r;
   r.frequency = s.frequency;
   r.rho = rho;
-  for (std::size_t k = 0; k < nf; ++k) {
-    const ContactSetReceptance& rec = s.receptance[k];
-    Eigen::MatrixXcd A = rec.wheel + rec.rail;  // (M3)
-    for (std::size_t a = 0; a < n; ++a) A.block<4, 4>(4 * a, 4 * a) += contact[a][k];
-    const Eigen::MatrixXcd F = solve_contact_set_forces(A, rho);
-    r.force.push_back(F);
-    if (!velocities) continue;
-    const cdouble iw(0.0, dynamics::angular(s.frequency[k]));
-    const Eigen::MatrixXcd vw = iw * (rec.wheel6 * F), vr = -iw * (rec.rail6 * F);  // 6N x E
-    Eigen::MatrixXcd w4(4 * n, F.cols()), r4(4 * n, F.cols());
-    for (std::size_t a = 0; a < n; ++a)
-      for (int i = 0; i < 4; ++i) {
-        w4.row(4 * a + i) = vw.row(6 * a + kSixOfFour[i]);
-        r4.row(4 * a + i) = vr.row(6 * a + kSixOfFour[i]);
-      }
-    r.wheel_velocity.push_back(w4);
-    r.rail_velocity.push_back(r4);
-  }
+  r.force.resize(nf);
+  if (velocities) r.wheel_velocity.resize(nf), r.rail_velocity.resize(nf);
+  for_frequency_slices(nf, threads, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t k = lo; k < hi; ++k) {
+      const ContactSetReceptance& rec = s.receptance[k];
+      Eigen::MatrixXcd A = rec.wheel + rec.rail;  // (M3)
+      for (std::size_t a = 0; a < n; ++a) A.block<4, 4>(4 * a, 4 * a) += contact[a][k];
+      const Eigen::MatrixXcd F = solve_contact_set_forces(A, rho);
+      r.force[k] = F;
+      if (!velocities) continue;
+      const cdouble iw(0.0, dynamics::angular(s.frequency[k]));
+      const Eigen::MatrixXcd vw = iw * (rec.wheel6 * F), vr = -iw * (rec.rail6 * F);  // 6N x E
+      Eigen::MatrixXcd w4(4 * n, F.cols()), r4(4 * n, F.cols());
+      for (std::size_t a = 0; a < n; ++a)
+        for (int i = 0; i < 4; ++i) {
+          w4.row(4 * a + i) = vw.row(6 * a + kSixOfFour[i]);
+          r4.row(4 * a + i) = vr.row(6 * a + kSixOfFour[i]);
+        }
+      r.wheel_velocity[k] = std::move(w4);
+      r.rail_velocity[k] = std::move(r4);
+    }
+  });
   return r;
 }
 

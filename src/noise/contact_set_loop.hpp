@@ -51,11 +51,14 @@ struct ContactSetStructures {
   std::vector<ContactSetReceptance> receptance;  ///< one per frequency
 };
 
+/// The rail's transfers on the whole grid at once (a rail model may sample the grid); the wheel's
+/// receptances and the assembly per frequency, the frequencies shared out in contiguous slices on
+/// `threads` threads (each frequency computed alone: the same result for any count).
 ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
                                             const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
                                             const std::vector<double>& frequencies,
-                                            const CrossCoupling& cross = {});
+                                            const CrossCoupling& cross = {}, int threads = 1);
 
 /// rho of (M4) with one unit source per contact flagged `excited` (the others: zero rows).
 Eigen::MatrixXd independent_sources(const std::vector<bool>& excited);
@@ -74,10 +77,12 @@ struct ContactSetLoopResult {
 };
 
 /// Solves (M3) at every frequency: `contact[a][k]` is contact a's alpha_c at frequency k (contact
-/// frame, e.g. from contact_receptances(...) with its f, g and k_H); `sources` is rho (N x E).
+/// frame, e.g. from contact_receptances(...) with its f, g and k_H); `sources` is rho (N x E). The
+/// frequencies in contiguous slices on `threads` threads (the same result for any count).
 ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& structures,
                                             const std::vector<std::vector<Receptance4>>& contact,
-                                            const Eigen::MatrixXd& sources, bool velocities = true);
+                                            const Eigen::MatrixXd& sources, bool velocities = true,
+                                            int threads = 1);
 
 /// (M3) at one frequency: F (4N x E) from the assembled total receptance and rho.
 Eigen::MatrixXcd solve_contact_set_forces(const Eigen::MatrixXcd& total,

@@ -110,12 +110,12 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       const std::size_t lo = added.size() * i / slices, hi = added.size() * (i + 1) / slices;
       more[i] = loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi));
     });
-    for (const LoopsAt& m : more) {
-      out.variants = noise::merged(out.variants, m.variants);
-      if (r.bogie) bogie = noise::merged(bogie, m.bogie);
+    for (LoopsAt& m : more) {
+      out.variants = noise::merged(std::move(out.variants), std::move(m.variants));
+      if (r.bogie) bogie = noise::merged(std::move(bogie), std::move(m.bogie));
       for (std::size_t i = 0; i < out.wheel_loops.size(); ++i)
         if (!out.wheel_loops[i].frequency.empty())
-          out.wheel_loops[i] = noise::merged(out.wheel_loops[i], m.wheel_loops[i]);
+          out.wheel_loops[i] = noise::merged(std::move(out.wheel_loops[i]), std::move(m.wheel_loops[i]));
     }
     ++out.levels;
     out.added_lines += static_cast<long>(added.size());

@@ -195,7 +195,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
   if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
     r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
-        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches));
+        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches, threads));
   r.seconds_wheels = seconds_since(t1);
   if (nc.band_refinement > 0)
     r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));

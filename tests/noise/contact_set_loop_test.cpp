@@ -332,3 +332,30 @@ TEST(ContactSetLoop, RailTransferToTheOtherAxleAndRigidWheelsetChangeBandLevels)
   EXPECT_GT(max_fz_rail, 0.1);
   EXPECT_GT(max_fz_wheel, 0.1);
 }
+
+// The frequencies shared out on threads (contiguous slices, each frequency computed alone): the
+// structures and the loop's forces and velocities on 2 and 3 threads equal the serial ones to the
+// last bit (the bogie's five contacts, discrete support, 300 frequencies: several slices).
+TEST(ContactSetLoop, ThreadsGiveTheSerialResultToTheBit) {
+  std::vector<double> f;
+  for (int k = 0; k < 300; ++k) f.push_back(80.0 * std::pow(1.012, k));
+  const std::vector<rn::ContactPoint> cs = bogie_contacts();
+  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
+  const auto alpha = contacts_alpha(f, cs.size());
+  const Eigen::MatrixXd rho = rn::independent_sources({true, true, true, true, false});
+  const rn::ContactSetStructures s1 = rn::contact_set_structures(wheel(), rail, cs, f, {}, 1);
+  const rn::ContactSetLoopResult r1 = rn::solve_contact_set_loop(s1, alpha, rho, true, 1);
+  for (int threads : {2, 3}) {
+    const rn::ContactSetStructures s = rn::contact_set_structures(wheel(), rail, cs, f, {}, threads);
+    const rn::ContactSetLoopResult r = rn::solve_contact_set_loop(s, alpha, rho, true, threads);
+    ASSERT_EQ(s.receptance.size(), f.size());
+    ASSERT_EQ(r.force.size(), f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      EXPECT_TRUE(s.receptance[k].wheel == s1.receptance[k].wheel) << threads << " threads, line " << k;
+      EXPECT_TRUE(s.receptance[k].rail == s1.receptance[k].rail) << threads << " threads, line " << k;
+      EXPECT_TRUE(r.force[k] == r1.force[k]) << threads << " threads, line " << k;
+      EXPECT_TRUE(r.wheel_velocity[k] == r1.wheel_velocity[k]) << threads << " threads, line " << k;
+      EXPECT_TRUE(r.rail_velocity[k] == r1.rail_velocity[k]) << threads << " threads, line " << k;
+    }
+  }
+}
