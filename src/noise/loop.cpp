@@ -113,11 +113,13 @@ StructuralReceptances structural_receptances(const dynamics::WheelModel& wheel,
   StructuralReceptances s;
   s.frequency = spectra.frequency;
   s.position = position;
+  // a wheel that follows the contact (the FE wheel) has its modal part at the contact's position:
+  // its modes' table there once, the modal sum per frequency
+  const std::vector<dynamics::WheelMode> at =
+      wheel.follows_contact() ? wheel.modes_at(position.wheel_shift_y) : std::vector<dynamics::WheelMode>{};
   for (std::size_t k = 0; k < spectra.frequency.size(); ++k) {
-    // a wheel that follows the contact (the FE wheel) has its modal part at the contact's position
-    const Receptance4 modal = wheel.follows_contact()
-                                  ? wheel.modal_receptance(spectra.frequency[k], position.wheel_shift_y)
-                                  : spectra.wheel_modal[k];
+    const Receptance4 modal =
+        wheel.follows_contact() ? dynamics::modal_sum(at, at, spectra.frequency[k]) : spectra.wheel_modal[k];
     s.wheel.push_back(wheel_receptance6(wheel, spectra.frequency[k], modal, position.wheel_shift_y));
     s.rail.push_back(at_contact[k].front());
     s.wheel_contact.push_back(to_contact_frame(s.wheel.back(), position.contact_angle));
