@@ -211,6 +211,11 @@ class RailModel {
   virtual std::vector<std::vector<Receptance6>> contact_transfers(
       const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
       bool interpolate = true) const;
+  /// Whether contact_transfers(frequencies, pairs, true) at one frequency depends on the grid's
+  /// other frequencies (a model that interpolates between direct evaluations): a caller that
+  /// splits a grid among threads must then split it the same way for any thread count. The beams
+  /// and the discretely supported waveguide compute every frequency alone: false.
+  virtual bool samples_grid() const { return false; }
   /// The same at complex frequency: a function of the Laplace variable s for fixed pairs, whose
   /// setup (the waveguide's basis at those points) is done once, here.
   using LaplaceTransfers = std::function<std::vector<Receptance6>(cdouble s)>;

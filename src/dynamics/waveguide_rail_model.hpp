@@ -78,6 +78,8 @@ class WaveguideRailModel : public RailModel {
   std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
                                                           const std::vector<RailContactPair>& pairs,
                                                           bool interpolate = true) const override;
+  /// True unless options.sampling computes every frequency directly (per_octave = 0).
+  bool samples_grid() const override { return options_.sampling.per_octave > 0; }
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of

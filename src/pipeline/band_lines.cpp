@@ -103,12 +103,17 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       out.capped = true;
       break;
     }
-    // The added lines in contiguous slices of about kLinesPerSlice, on up to `threads` threads.
-    // The slices depend on the number of lines alone, not on the threads: a rail model that
-    // samples the grid it is given (the waveguide's interpolation between direct evaluations,
-    // dynamics/waveguide_frequency_sampling.hpp) sees the same grids for any thread count (with
-    // slices per thread its band levels moved by up to 0.06 dB between 1 and 2 threads).
-    const std::size_t slices = (added.size() + kLinesPerSlice - 1) / kLinesPerSlice;
+    // The added lines in contiguous slices on up to `threads` threads; every line is computed on
+    // its own (spectra, f and g, the loops) except by a rail model that interpolates between
+    // direct evaluations on the grid it is given (the waveguide, samples_grid()): for it the
+    // slices are of kLinesPerSlice lines whatever the thread count, so that its grids, and the
+    // band levels, are the same on any number of threads (with one slice per thread they moved
+    // by up to 0.06 dB between 1 and 2 threads on curve_300m_waveguide). The other models take
+    // one slice per thread (fewer, larger slices: each costs its set-up, ~40 ms of the four-wheel
+    // run with 256-line slices).
+    const std::size_t slices = nc.rail->samples_grid()
+                                   ? (added.size() + kLinesPerSlice - 1) / kLinesPerSlice
+                                   : std::min<std::size_t>(threads, (added.size() + 63) / 64);
     std::vector<LoopsAt> more(slices);
     parallel_for(slices, static_cast<int>(std::min<std::size_t>(threads, slices)), [&](std::size_t i, int) {
       const std::size_t lo = added.size() * i / slices, hi = added.size() * (i + 1) / slices;

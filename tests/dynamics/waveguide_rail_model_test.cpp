@@ -140,4 +140,12 @@ TEST(WaveguideRailModel, ReciprocalPassiveAndContinuedToComplexFrequency) {
   }
   EXPECT_NEAR(db(rail.receptance(200.0)(rd::kZ, rd::kZ)),
               db(beam.receptance(200.0)(rd::kZ, rd::kZ)), 1.5);
+  // Its transfers on a grid interpolate between direct evaluations (the refinement then slices
+  // its lines by count, pipeline/band_lines.cpp); every frequency directly with per_octave = 0,
+  // and the beams always.
+  EXPECT_TRUE(rail.samples_grid());
+  rd::WaveguideRailOptions direct = o;
+  direct.sampling.per_octave = 0;
+  EXPECT_FALSE(rd::WaveguideRailModel(t, direct).samples_grid());
+  EXPECT_FALSE(beam.samples_grid());
 }
