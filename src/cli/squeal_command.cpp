@@ -19,11 +19,14 @@ namespace {
 // Per wheelset of curve.wheels: its unstable roots, each with the wheel it belongs to.
 void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
   for (const pipeline::WheelsetSqueal& ws : s) {
-    int unstable = 0;
-    for (const auto& x : ws.roots) unstable += x.root.root.unstable ? 1 : 0;
-    std::printf("  wheelset %s (%zu contacts, %zu roots, %d unstable, %.1f s, %ld evaluations)\n",
+    int unstable = 0, unconverged = 0;
+    for (const auto& x : ws.roots) {
+      unstable += x.root.root.unstable ? 1 : 0;
+      unconverged += x.root.root.converged ? 0 : 1;
+    }
+    std::printf("  wheelset %s (%zu contacts, %zu roots, %d unstable, %d not converged, %.1f s, %ld evaluations)\n",
                 noise::is_leading(ws.wheels.front()) ? "leading" : "trailing", ws.wheels.size() + ws.second_patches, ws.roots.size(),
-                unstable, ws.seconds, ws.evaluations);
+                unstable, unconverged, ws.seconds, ws.evaluations);
     if (!ws.skipped.empty()) std::printf("    left out: %s\n", ws.skipped.c_str());
     for (const auto& x : ws.roots)
       if (x.root.root.unstable || !x.root.root.converged)
@@ -97,8 +100,15 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
                   agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
     print_wheelsets(wheelsets);
     std::printf("wrote %s\n", out.c_str());
-    std::fprintf(stderr, "squeal: %d unstable of %zu modes%s\n", r.unstable_count(), r.roots.size(),
+    // A root whose continuation failed (converged = false) has no decided stability: counted
+    // apart, so that "0 unstable" is not read as a verdict on it.
+    int unconverged = 0;
+    for (const auto& x : r.roots) unconverged += x.converged ? 0 : 1;
+    std::fprintf(stderr, "squeal: %d unstable of %zu modes%s", r.unstable_count(), r.roots.size(),
                  r.unstable_count() ? " (see /squeal/unstable)" : "");
+    if (unconverged > 0)
+      std::fprintf(stderr, "; %d not converged, their stability not decided (/squeal/converged)", unconverged);
+    std::fprintf(stderr, "\n");
   }
   return 0;
 }

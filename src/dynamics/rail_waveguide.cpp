@@ -447,6 +447,11 @@ RailWaves RailWaveguide::waves(cdouble omega) const {
   for (int j = 0; j < m; ++j) {
     const cdouble root = std::sqrt(-mu(j));
     w.wavenumbers(j) = root.imag() > 0.0 ? -root : root;
+  }
+  // Im omega > 0 (Re s < 0): the member of each pair that continues the wave from Re omega
+  const std::vector<bool> flip = continued_branch(omega, w.wavenumbers);
+  for (int j = 0; j < m; ++j) {
+    if (flip[static_cast<std::size_t>(j)]) w.wavenumbers(j) = -w.wavenumbers(j);
     w.shapes.col(j).head(mx) = w.wavenumbers(j) * Z.col(j).head(mx);
     w.shapes.col(j).tail(ms) = Z.col(j).tail(ms);
   }

@@ -165,8 +165,18 @@ class RailWaveguide {
   Eigen::VectorXd dispersion(double k, int count) const;
 
   /// Eq. (W3) at angular frequency omega (rad/s; real, or complex for the continuation
-  /// omega = -i s, the waves then those with Im k < 0).
+  /// omega = -i s). Real omega and Im omega < 0 (Re s > 0): the waves with Im k < 0. Im omega > 0
+  /// (Re s < 0, a decaying root): the continuation along the vertical path from the real frequency
+  /// Re omega (continued_branch below), where a wave may have crossed the real k axis.
   RailWaves waves(cdouble omega) const;
+
+  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.5b, "Complex frequency"):
+  /// of each root pair +-k_j of Eq. (W5) at omega (k_j = sqrt(-mu_j) given with Im k_j <= 0), the
+  /// member nearer to the waves with Im k < 0 at the real frequency Re omega (their wavenumbers,
+  /// eigenvalues only) is the continued one, as the beams' RailModel::receptance_laplace takes
+  /// the root nearest to the physical one at the real frequency; true where that is -k_j, the
+  /// root with Im > 0 (a wave that crossed the real axis between Re omega and omega).
+  std::vector<bool> continued_branch(cdouble omega, const Eigen::VectorXcd& roots) const;
 
   /// Eq. (W4): responses r_i = response.col(i) . u(x_r) per loads f_j = load.col(j) applied at
   /// x_l, x = x_r - x_l (m); `response` and `load` in physical nodal components (dofs() rows).

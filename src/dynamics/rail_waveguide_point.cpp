@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -97,7 +98,46 @@ Eigen::MatrixXcd principal_sqrt_upper(const Eigen::MatrixXcd& t) {
   return s;
 }
 
+// The eigenvalues alone of a general complex matrix: balanced, the Hessenberg form (Eigen), then
+// zhseqr without the Schur form and vectors (job "E", compz "N").
+Eigen::VectorXcd eigenvalues_only(Eigen::MatrixXcd a) {
+  const int n = static_cast<int>(a.rows()), one = 1;
+  balance(a);
+  a = Eigen::HessenbergDecomposition<Eigen::MatrixXcd>(a).matrixH();
+  Eigen::VectorXcd w(n);
+  cdouble query, none;
+  int info = 0, lwork = -1;
+  zhseqr_("E", "N", &n, &one, &n, a.data(), &n, w.data(), &none, &one, &query, &lwork, &info);
+  lwork = std::max(1, static_cast<int>(query.real()));
+  std::vector<cdouble> work(lwork);
+  zhseqr_("E", "N", &n, &one, &n, a.data(), &n, w.data(), &none, &one, work.data(), &lwork, &info);
+  if (info != 0)
+    throw NumericalError("rail waveguide: LAPACK zhseqr failed (info = " + std::to_string(info) +
+                         ") on the " + std::to_string(n) + " x " + std::to_string(n) +
+                         " wavenumber eigenproblem");
+  return w;
+}
+
 }  // namespace
+
+std::vector<bool> RailWaveguide::continued_branch(cdouble omega, const Eigen::VectorXcd& roots) const {
+  std::vector<bool> flip(static_cast<std::size_t>(roots.size()), false);
+  if (!(omega.imag() > 0.0)) return flip;  // real omega or Re s > 0: Im k < 0 is the continuation
+  const Eigen::VectorXcd mu = eigenvalues_only(pencil(cdouble(omega.real(), 0.0)));
+  std::vector<cdouble> reference(static_cast<std::size_t>(mu.size()));
+  for (Eigen::Index j = 0; j < mu.size(); ++j) {
+    const cdouble root = std::sqrt(-mu(j));
+    reference[static_cast<std::size_t>(j)] = root.imag() > 0.0 ? -root : root;
+  }
+  auto distance = [&](cdouble k) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const cdouble& r : reference) d = std::min(d, std::abs(k - r));
+    return d;
+  };
+  for (Eigen::Index j = 0; j < roots.size(); ++j)
+    flip[static_cast<std::size_t>(j)] = distance(-roots(j)) < distance(roots(j));
+  return flip;
+}
 
 Eigen::MatrixXcd RailWaveguide::point_transfer(cdouble omega, const Eigen::MatrixXd& response,
                                                const Eigen::MatrixXd& load) const {
@@ -113,6 +153,18 @@ Eigen::MatrixXcd RailWaveguide::point_transfer(cdouble omega, const Eigen::Matri
       if (std::abs(root.imag()) <= 1e-7 * std::abs(root))
         return transfer(waves(omega), response, load, 0.0);
     }
+  // Eq. (W6)'s principal square root takes every root with Im k <= 0; where the continuation to
+  // Im omega > 0 takes the other member of a pair (continued_branch), Eq. (W4) with those waves.
+  if (omega.imag() > 0.0) {
+    Eigen::VectorXcd roots(m);
+    for (int j = 0; j < m; ++j) {
+      const cdouble root = std::sqrt(-t(j, j));
+      roots(j) = root.imag() > 0.0 ? -root : root;
+    }
+    const std::vector<bool> flip = continued_branch(omega, roots);
+    if (std::find(flip.begin(), flip.end(), true) != flip.end())
+      return transfer(waves(omega), response, load, 0.0);
+  }
   // H = R^T T G'(0) T^* F with T = i on u_x: the rotations cancel on the diagonal blocks, so
   // H = 1/2 (R_x^T W_xx F_x + R_s^T W_ss F_s), W = Y^{-1/2} B^{-1} = U S^{-1} U^H B^{-1},
   // S = T^{1/2}: the loads' u_x and u_s parts as separate columns.
