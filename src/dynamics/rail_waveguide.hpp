@@ -170,7 +170,7 @@ class RailWaveguide {
   /// Re omega (continued_branch below), where a wave may have crossed the real k axis.
   RailWaves waves(cdouble omega) const;
 
-  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.5b, "Complex frequency"):
+  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.5a, receptance_laplace):
   /// of each root pair +-k_j of Eq. (W5) at omega (k_j = sqrt(-mu_j) given with Im k_j <= 0), the
   /// member nearer to the waves with Im k < 0 at the real frequency Re omega (their wavenumbers,
   /// eigenvalues only) is the continued one, as the beams' RailModel::receptance_laplace takes
