@@ -47,6 +47,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -216,6 +217,15 @@ class RailModel {
   /// splits a grid among threads must then split it the same way for any thread count. The beams
   /// and the discretely supported waveguide compute every frequency alone: false.
   virtual bool samples_grid() const { return false; }
+  /// For a model that samples its grid: the same rail whose contact_transfers at any frequencies
+  /// take them from its sampling of `grid` (interpolated where that sampling checked the
+  /// interpolation, else computed), so that each frequency's value depends on `grid` and itself
+  /// alone (the refinement's added lines, pipeline/band_lines.cpp); it refers to this model, which
+  /// must outlive it. Null for a model that computes every frequency alone (use it as it is).
+  virtual std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const {
+    (void)grid;
+    return nullptr;
+  }
   /// The same at complex frequency: a function of the Laplace variable s for fixed pairs, whose
   /// setup (the waveguide's basis at those points) is done once, here.
   using LaplaceTransfers = std::function<std::vector<Receptance6>(cdouble s)>;

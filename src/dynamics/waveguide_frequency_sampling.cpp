@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -55,13 +56,12 @@ int split_sample(const std::vector<double>& x, int a, int b) {
   return std::clamp(j, a + 1, b - 1);
 }
 
-}  // namespace
-
-std::vector<std::vector<Receptance4>> sample_receptances(
+// sample_receptances, also giving its sampling (`kept`, when not null).
+std::vector<std::vector<Receptance4>> sample(
     const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
     const FrequencySampling& sampling, int* evaluations,
-    const std::vector<std::pair<int, int>>& scales) {
+    const std::vector<std::pair<int, int>>& scales, SampledGrid* kept) {
   std::vector<double> f = frequencies;  // the distinct frequencies, ascending
   std::sort(f.begin(), f.end());
   f.erase(std::unique(f.begin(), f.end()), f.end());
@@ -94,6 +94,7 @@ std::vector<std::vector<Receptance4>> sample_receptances(
     return out;
   };
   std::vector<std::pair<int, int>> open;
+  std::set<std::pair<int, int>> checked;  // sample intervals closed by a check (grid indices)
   if (sampling.tolerance > 0.0 && samples.size() < static_cast<std::size_t>(n))
     for (std::size_t i = 0; i + 1 < start.size(); ++i)
       if (start[i + 1] - start[i] >= 2) open.emplace_back(start[i], start[i + 1]);
@@ -112,7 +113,11 @@ std::vector<std::vector<Receptance4>> sample_receptances(
         err = std::max(err,
                        sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
       }
-      if (err <= sampling.tolerance) continue;
+      if (err <= sampling.tolerance) {
+        checked.emplace(open[k].first, mid[k]);
+        checked.emplace(mid[k], open[k].second);
+        continue;
+      }
       for (const auto& [a, b] :
            {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
         if (b - a >= 2) still_open.emplace_back(a, b);
@@ -121,6 +126,18 @@ std::vector<std::vector<Receptance4>> sample_receptances(
     open = std::move(still_open);
   }
   if (evaluations) *evaluations = static_cast<int>(samples.size());
+  if (kept) {
+    kept->at.clear();
+    kept->values.assign(pairs, {});
+    kept->checked.clear();
+    int before = -1;
+    for (const auto& [i, v] : samples) {
+      if (before >= 0) kept->checked.push_back(checked.count({before, i}) ? 1 : 0);
+      kept->at.push_back(f[i]);
+      for (std::size_t p = 0; p < pairs; ++p) kept->values[p].push_back(v.at(p));
+      before = i;
+    }
+  }
   // every requested frequency: its sample, or the interpolation of the samples
   std::vector<std::vector<Receptance4>> out(pairs);
   const bool all = samples.size() == static_cast<std::size_t>(n);
@@ -133,6 +150,44 @@ std::vector<std::vector<Receptance4>> sample_receptances(
     for (std::size_t p = 0; p < pairs; ++p)
       out[p].push_back(all ? samples.at(i).at(p) : values[p][i]);
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<Receptance4>> sample_receptances(
+    const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, int* evaluations,
+    const std::vector<std::pair<int, int>>& scales, SampledGrid* kept) {
+  return sample(frequencies, evaluate, sampling, evaluations, scales, kept);
+}
+
+std::vector<std::vector<Receptance4>> sampled_at(
+    const SampledGrid& g, const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate) {
+  const std::size_t pairs = g.values.size(), n = g.at.size();
+  std::vector<std::vector<Receptance4>> out(pairs, std::vector<Receptance4>(frequencies.size()));
+  std::vector<double> inside;        // frequencies in checked intervals, interpolated together
+  std::vector<std::size_t> inside_k;  // their places in `frequencies`
+  for (std::size_t k = 0; k < frequencies.size(); ++k) {
+    const double fq = frequencies[k];
+    const std::size_t j = static_cast<std::size_t>(std::lower_bound(g.at.begin(), g.at.end(), fq) - g.at.begin());
+    if (j < n && g.at[j] == fq) {  // a sample
+      for (std::size_t p = 0; p < pairs; ++p) out[p][k] = g.values[p][j];
+    } else if (j > 0 && j < n && g.checked[j - 1]) {  // inside the checked interval (at[j-1], at[j])
+      inside.push_back(fq);
+      inside_k.push_back(k);
+    } else {  // outside the grid, or where the sampling evaluated every grid frequency
+      const std::vector<Receptance4> v = evaluate(fq);
+      for (std::size_t p = 0; p < pairs; ++p) out[p][k] = v.at(p);
+    }
+  }
+  if (!inside.empty())
+    for (std::size_t p = 0; p < pairs; ++p) {
+      const std::vector<Receptance4> v = interpolate_receptances(g.at, g.values[p], inside);
+      for (std::size_t i = 0; i < inside.size(); ++i) out[p][inside_k[i]] = v[i];
+    }
   return out;
 }
 

@@ -47,10 +47,31 @@ struct FrequencySampling {
 /// pair the indices of the two values whose diagonals are S_a and S_b of Eq. (F1) (the point
 /// receptances of its two points); empty: each pair its own. `evaluations`, if given, receives the
 /// number of direct evaluations.
+struct SampledGrid;
+/// `kept`, if given, receives the sampling (SampledGrid).
 std::vector<std::vector<Receptance4>> sample_receptances(
     const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
     const FrequencySampling& sampling, int* evaluations = nullptr,
-    const std::vector<std::pair<int, int>>& scales = {});
+    const std::vector<std::pair<int, int>>& scales = {}, SampledGrid* kept = nullptr);
+
+/// The adaptive sampling of a grid as sample_receptances makes it, kept so that frequencies off
+/// the grid can be taken from it (sampled_at).
+struct SampledGrid {
+  std::vector<double> at;                        ///< frequencies evaluated directly, ascending (Hz)
+  std::vector<std::vector<Receptance4>> values;  ///< per pair, one per `at`
+  /// per interval (at[i], at[i + 1]): closed by a check of Eq. (F1) (its third point agreed with
+  /// the interpolation); the others hold no grid frequency (every one there was evaluated)
+  std::vector<char> checked;
+};
+
+/// Per pair, the values at `frequencies` (Hz, any order) from a grid's sampling: a sampled
+/// frequency its value, a frequency inside a checked interval the interpolation of the samples
+/// (interpolate_receptances, as on the grid), any other (an unchecked interval, e.g. near a cut-on,
+/// or outside the grid) evaluated directly. Each frequency's value depends on the sampling and
+/// itself alone, not on the others asked for.
+std::vector<std::vector<Receptance4>> sampled_at(
+    const SampledGrid& grid, const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate);
 
 }  // namespace rollnoise::dynamics

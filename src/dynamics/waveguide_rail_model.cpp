@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -204,15 +205,42 @@ PointSets point_sets(const std::vector<RailContactPair>& pairs) {
 std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
+  return transfers(frequencies, pairs, interpolate, nullptr);
+}
+
+std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers_from(
+    const std::vector<double>& grid, const std::vector<double>& frequencies,
+    const std::vector<RailContactPair>& pairs) const {
+  for (double f : grid) checked_omega(f);
+  return transfers(frequencies, pairs, true, &grid);
+}
+
+std::shared_ptr<const SampledGrid> WaveguideRailModel::recalled(const SamplingKey& key) const {
+  const std::lock_guard<std::mutex> lock(memo_->mutex);
+  const auto it = memo_->grids.find(key);
+  return it == memo_->grids.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<const SampledGrid> WaveguideRailModel::remember(SamplingKey key, SampledGrid grid) const {
+  auto kept = std::make_shared<const SampledGrid>(std::move(grid));
+  const std::lock_guard<std::mutex> lock(memo_->mutex);
+  // A cache of values that are computed the same way whenever asked: emptying it changes no result.
+  if (memo_->grids.size() >= 64) memo_->grids.clear();
+  return memo_->grids.emplace(std::move(key), kept).first->second;
+}
+
+std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+    bool interpolate, const std::vector<double>* grid) const {
   for (double f : frequencies) checked_omega(f);
   if (frequencies.empty()) return {};
   const PointSets sets = point_sets(pairs);
   FrequencySampling sampling = options_.sampling;
   if (!interpolate) sampling.per_octave = 0;
+  const bool sampled = interpolate && samples_grid();
   // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
   std::vector<std::vector<Receptance4>> values(pairs.size());
   for (std::size_t s = 0; s < sets.points.size(); ++s) {
-    const std::shared_ptr<const Station> st = station(sets.points[s]);
     std::vector<std::tuple<int, int, double>> within;
     std::vector<std::size_t> which;
     for (std::size_t p = 0; p < pairs.size(); ++p)
@@ -232,9 +260,29 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
       const int sa = point_value(a), sb = point_value(b);
       scales.emplace_back(sa, sb);
     }
-    std::vector<std::vector<Receptance4>> v = sample_receptances(
-        frequencies, [&](double f) { return between(*st, checked_complex_omega(f), within); },
-        sampling, nullptr, scales);
+    // the points' basis on the first direct evaluation (none where a kept sampling serves all)
+    std::shared_ptr<const Station> st;
+    auto evaluate = [&](double f) {
+      if (!st) st = station(sets.points[s]);
+      return between(*st, checked_complex_omega(f), within);
+    };
+    std::vector<std::vector<Receptance4>> v;
+    if (!sampled) {
+      v = sample_receptances(frequencies, evaluate, sampling, nullptr, scales);
+    } else if (!grid) {  // this grid sampled, and the sampling kept for frequencies off it
+      SampledGrid kept;
+      v = sample_receptances(frequencies, evaluate, sampling, nullptr, scales, &kept);
+      remember({sets.points[s], within, frequencies}, std::move(kept));
+    } else {  // from the sampling of `grid` (kept, or made now)
+      SamplingKey key{sets.points[s], within, *grid};
+      std::shared_ptr<const SampledGrid> g = recalled(key);
+      if (!g) {
+        SampledGrid kept;
+        sample_receptances(*grid, evaluate, sampling, nullptr, scales, &kept);
+        g = remember(std::move(key), std::move(kept));
+      }
+      v = sampled_at(*g, frequencies, evaluate);
+    }
     for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
@@ -244,6 +292,21 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
       out[k][p] = from_contact_frames(values[p][k], pairs[p].first.contact_angle,
                                       pairs[p].second.contact_angle);
   return out;
+}
+
+std::unique_ptr<RailModel> WaveguideRailModel::on_grid(std::vector<double> grid) const {
+  if (!samples_grid()) return nullptr;
+  return std::make_unique<WaveguideOnGrid>(*this, std::move(grid));
+}
+
+WaveguideOnGrid::WaveguideOnGrid(const WaveguideRailModel& rail, std::vector<double> grid)
+    : RailModel(rail.track(), TrackSupport::kContinuous, rail.position()), rail_(rail), grid_(std::move(grid)) {}
+
+std::vector<std::vector<Receptance6>> WaveguideOnGrid::contact_transfers(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+    bool interpolate) const {
+  return interpolate ? rail_.contact_transfers_from(grid_, frequencies, pairs)
+                     : rail_.contact_transfers(frequencies, pairs, false);
 }
 
 RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(

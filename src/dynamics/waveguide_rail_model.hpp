@@ -30,6 +30,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <tuple>
@@ -80,6 +81,15 @@ class WaveguideRailModel : public RailModel {
                                                           bool interpolate = true) const override;
   /// True unless options.sampling computes every frequency directly (per_octave = 0).
   bool samples_grid() const override { return options_.sampling.per_octave > 0; }
+  /// contact_transfers at `frequencies` from the sampling of `grid` (SampledGrid, sampled_at): a
+  /// sampled frequency its value, one inside a checked interval interpolated, any other computed.
+  /// The sampling of a grid is kept (a small cache shared by copies: every contact_transfers call
+  /// keeps its own), so the case's lines' sampling serves the refinement's lines.
+  std::vector<std::vector<Receptance6>> contact_transfers_from(const std::vector<double>& grid,
+                                                               const std::vector<double>& frequencies,
+                                                               const std::vector<RailContactPair>& pairs) const;
+  /// A WaveguideOnGrid of this rail (null with per_octave = 0: every frequency alone already).
+  std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
@@ -126,6 +136,21 @@ class WaveguideRailModel : public RailModel {
   RailReductionModes modes_;  // its section modes, the load-independent part of every basis
   std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
+  /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
+  using SamplingKey =
+      std::tuple<Points, std::vector<std::tuple<int, int, double>>, std::vector<double>>;
+  struct SamplingMemo {
+    std::mutex mutex;
+    std::map<SamplingKey, std::shared_ptr<const SampledGrid>> grids;
+  };
+  std::shared_ptr<SamplingMemo> memo_ = std::make_shared<SamplingMemo>();
+  std::shared_ptr<const SampledGrid> recalled(const SamplingKey& key) const;
+  std::shared_ptr<const SampledGrid> remember(SamplingKey key, SampledGrid grid) const;
+  /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
+  std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
+                                                  const std::vector<RailContactPair>& pairs,
+                                                  bool interpolate, const std::vector<double>* grid) const;
+
   const Station& crown() const;
   Receptance4 at(cdouble omega) const;
   std::shared_ptr<const Station> station(const Points& points) const;
@@ -133,6 +158,36 @@ class WaveguideRailModel : public RailModel {
   /// x_b) into the station's points: one wave solution, one Eq. (W4) per distinct distance.
   std::vector<Receptance4> between(const Station& s, cdouble omega,
                                    const std::vector<std::tuple<int, int, double>>& pairs) const;
+};
+
+/// A continuous waveguide rail whose contact transfers come from its sampling of one grid
+/// (WaveguideRailModel::on_grid; RailModel::on_grid): every frequency's value depends on that
+/// grid and itself alone, whatever other frequencies a call asks for. Everything else is the
+/// rail's own. Refers to the rail, which must outlive it.
+class WaveguideOnGrid final : public RailModel {
+ public:
+  WaveguideOnGrid(const WaveguideRailModel& rail, std::vector<double> grid);
+  Receptance4 receptance(double frequency) const override { return rail_.receptance(frequency); }
+  Receptance4 receptance_laplace(cdouble s) const override { return rail_.receptance_laplace(s); }
+  std::vector<Receptance4> line_transfers(
+      double frequency, const std::vector<std::pair<double, double>>& pairs) const override {
+    return rail_.line_transfers(frequency, pairs);
+  }
+  Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override {
+    return rail_.line_transfer_laplace(s, x_response, x_load);
+  }
+  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
+                                                          const std::vector<RailContactPair>& pairs,
+                                                          bool interpolate = true) const override;
+  /// Each frequency from the grid's sampling alone: no dependence on the frequencies asked for.
+  bool samples_grid() const override { return false; }
+  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override {
+    return rail_.laplace_transfers(pairs);
+  }
+
+ private:
+  const WaveguideRailModel& rail_;
+  std::vector<double> grid_;
 };
 
 /// The point of a counter-clockwise outline (y, z) (m) whose outward normal is

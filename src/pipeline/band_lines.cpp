@@ -2,6 +2,7 @@
 #include "pipeline/band_lines.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "core/task_pool.hpp"
 #include "noise/band_refinement.hpp"
@@ -48,21 +49,23 @@ struct LoopsAt {
   std::vector<noise::LoopResult> wheel_loops;
 };
 
-LoopsAt loops_at(const NoiseResult& r, const NoiseCase& nc, const std::vector<double>& f) {
+// `rail`: the case's rail as the refinement takes it (RailModel::on_grid).
+LoopsAt loops_at(const NoiseResult& r, const NoiseCase& nc, const std::vector<double>& f,
+                 const dynamics::RailModel& rail) {
   LoopsAt out;
   const noise::StructureSpectra spectra = noise::structure_spectra(*nc.wheel, f);
   const nss::LinearContactModel& model = *r.mean.model();
   const MainCoefficients main{&model, {model.creep_coefficients(f), model.normal_load_coefficients(f)}};
-  out.variants = loop_variants(r, nc, spectra, f, main.at.creep, main.at.load);
+  out.variants = loop_variants(r, nc, spectra, f, main.at.creep, main.at.load, &rail);
   if (r.bogie) {
     out.bogie = bogie_loop(contacts_at(r.wheels, nc, f, main), nc, f, {},
-                           contacts_at(r.patches, nc, f, main));
+                           contacts_at(r.patches, nc, f, main), 1, &rail);
     return out;
   }
   for (const WheelNoise& w : r.wheels)
     out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer
                                   ? noise::LoopResult{}
-                                  : wheel_loop_alone(contact_at(w, nc, f, main), nc, spectra));
+                                  : wheel_loop_alone(contact_at(w, nc, f, main), nc, spectra, &rail));
   return out;
 }
 
@@ -86,6 +89,12 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       out.wheel_loops.push_back(w.state.wheel == noise::WheelId::leading_outer ? noise::LoopResult{}
                                                                                : w.loop);
   const std::size_t base = r.variants.main.frequency.size();
+  // A rail that samples the grid it is given (the waveguide) takes the added lines from its
+  // sampling of the case's lines (RailModel::on_grid): interpolated where that sampling checked
+  // the interpolation, computed elsewhere; each line's value then depends on the case's lines and
+  // itself alone. Other rails compute every line alone as they are.
+  const std::unique_ptr<dynamics::RailModel> on_grid = nc.rail->on_grid(r.axis.frequency);
+  const dynamics::RailModel& rail = on_grid ? *on_grid : *nc.rail;
   for (int level = 0; level < nc.band_refinement; ++level) {
     std::vector<std::vector<double>> powers = noise::sampled_powers(out.variants.main);
     if (out.variants.has_uncoupled()) append(powers, noise::sampled_powers(out.variants.uncoupled));
@@ -103,21 +112,21 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       out.capped = true;
       break;
     }
-    // The added lines in contiguous slices on up to `threads` threads; every line is computed on
-    // its own (spectra, f and g, the loops) except by a rail model that interpolates between
-    // direct evaluations on the grid it is given (the waveguide, samples_grid()): for it the
-    // slices are of kLinesPerSlice lines whatever the thread count, so that its grids, and the
-    // band levels, are the same on any number of threads (with one slice per thread they moved
-    // by up to 0.06 dB between 1 and 2 threads on curve_300m_waveguide). The other models take
-    // one slice per thread (fewer, larger slices: each costs its set-up, ~40 ms of the four-wheel
-    // run with 256-line slices).
-    const std::size_t slices = nc.rail->samples_grid()
+    // The added lines in contiguous slices on up to `threads` threads: every line is computed on
+    // its own (spectra, f and g, the loops), except by a rail model that interpolates between
+    // direct evaluations on the grid it is given (samples_grid(); the waveguide with the rail's
+    // per-octave sampling off takes none, on_grid above takes the others): for it the slices
+    // are of kLinesPerSlice lines whatever the thread count, so that the band levels are the same
+    // on any number of threads (with one slice per thread they moved by up to 0.06 dB between 1
+    // and 2 threads on curve_300m_waveguide). Otherwise one slice per thread (fewer, larger
+    // slices: each costs its set-up, ~40 ms of the four-wheel run with 256-line slices).
+    const std::size_t slices = rail.samples_grid()
                                    ? (added.size() + kLinesPerSlice - 1) / kLinesPerSlice
                                    : std::min<std::size_t>(threads, (added.size() + 63) / 64);
     std::vector<LoopsAt> more(slices);
     parallel_for(slices, static_cast<int>(std::min<std::size_t>(threads, slices)), [&](std::size_t i, int) {
       const std::size_t lo = added.size() * i / slices, hi = added.size() * (i + 1) / slices;
-      more[i] = loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi));
+      more[i] = loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi), rail);
     });
     for (LoopsAt& m : more) {
       out.variants = noise::merged(std::move(out.variants), std::move(m.variants));

@@ -66,9 +66,10 @@ std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, cons
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
                                        const noise::CrossCoupling& cross,
-                                       const std::vector<WheelNoise>& patches, int threads) {
+                                       const std::vector<WheelNoise>& patches, int threads,
+                                       const dynamics::RailModel* rail) {
   const noise::ContactSetStructures s = noise::contact_set_structures(
-      *nc.wheel, *nc.rail, bogie_contacts(wheels, nc, patches), frequency, cross, threads);
+      *nc.wheel, rail ? *rail : *nc.rail, bogie_contacts(wheels, nc, patches), frequency, cross, threads);
   std::vector<std::vector<noise::Receptance4>> alpha;
   for (const WheelNoise* w : all_contacts(wheels, patches)) alpha.push_back(w->contact_receptance);
   return noise::solve_contact_set_loop(

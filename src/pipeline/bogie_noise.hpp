@@ -43,12 +43,13 @@ std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, cons
 
 /// (M3) with the wheels' contacts and one source per wheel, at `frequency`; `cross` selects the
 /// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). Any rail
-/// model: nc.rail between the contact points (RailModel::contact_transfers). The frequencies on
-/// `threads` threads (the same result for any count).
+/// model: nc.rail between the contact points (RailModel::contact_transfers), or `rail` if given.
+/// The frequencies on `threads` threads (the same result for any count).
 noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
                                        const std::vector<double>& frequency,
                                        const noise::CrossCoupling& cross = {},
-                                       const std::vector<WheelNoise>& patches = {}, int threads = 1);
+                                       const std::vector<WheelNoise>& patches = {}, int threads = 1,
+                                       const dynamics::RailModel* rail = nullptr);
 
 /// The effective roughness levels in the bands `centres` of each source of bogie_loop (its
 /// excited contacts, in order): each with its own contact's filter (a, b) on the case's roughness

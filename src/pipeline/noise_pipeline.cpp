@@ -253,11 +253,12 @@ noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
                                   const noise::StructureSpectra& spectra,
                                   const std::vector<double>& freq,
                                   const std::vector<nss::CreepMatrix>& creep,
-                                  const std::vector<nss::LoadVector>& load) {
+                                  const std::vector<nss::LoadVector>& load,
+                                  const dynamics::RailModel* rail) {
   using Baseline = NoiseCase::Baseline;
   const ContactCase& cc = r.mean.contact();
-  const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, r.mean.curve().position);
+  const noise::StructuralReceptances structures = noise::structural_receptances(
+      *nc.wheel, rail ? *rail : *nc.rail, spectra, r.mean.curve().position);
   noise::LoopVariantsInput in;
   in.normal_stiffness = r.mean.normal_stiffness();
   in.speed = cc.speed;

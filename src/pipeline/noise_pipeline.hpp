@@ -118,12 +118,14 @@ NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse
 void add_bands(NoiseResult& r, const NoiseCase& nc, int threads = 1);
 
 /// Stage 4's loop variants at `freq` (the main wheel's f and g there, `creep` and `load`; the
-/// wheel and rail spectra there): what run_noise_loop solves on the case's lines.
+/// wheel and rail spectra there): what run_noise_loop solves on the case's lines. `rail`: the
+/// rail model, if not nc.rail (the refinement's RailModel::on_grid).
 noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
                                   const noise::StructureSpectra& spectra,
                                   const std::vector<double>& freq,
                                   const std::vector<nss::CreepMatrix>& creep,
-                                  const std::vector<nss::LoadVector>& load);
+                                  const std::vector<nss::LoadVector>& load,
+                                  const dynamics::RailModel* rail = nullptr);
 /// noise.band_refinement: the loops of `r` (its variants, the bogie loop or the wheels' loops
 /// alone) on the case's lines plus the lines each refinement level adds (noise/band_refinement.hpp),
 /// at most nc.band_refinement levels; the added lines of a level on `threads` threads (the same

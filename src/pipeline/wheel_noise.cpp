@@ -53,9 +53,10 @@ std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, co
 }
 
 noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
-                                   const noise::StructureSpectra& spectra) {
+                                   const noise::StructureSpectra& spectra,
+                                   const dynamics::RailModel* rail) {
   const noise::StructuralReceptances structures =
-      noise::structural_receptances(*nc.wheel, *nc.rail, spectra, w.position);
+      noise::structural_receptances(*nc.wheel, rail ? *rail : *nc.rail, spectra, w.position);
   return noise::solve_loop(structures, w.contact_receptance);
 }
 

@@ -58,9 +58,10 @@ WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
                                const noise::WheelContact& w, const std::vector<double>& frequency);
 
 /// The wheel's single-contact loop alone (its structures at its contact position from the shared
-/// spectra, its contact receptance): WheelNoise::loop.
+/// spectra, its contact receptance): WheelNoise::loop. `rail`: the rail model, if not nc.rail.
 noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
-                                   const noise::StructureSpectra& spectra);
+                                   const noise::StructureSpectra& spectra,
+                                   const dynamics::RailModel* rail = nullptr);
 
 /// The wheel's alpha_c (as wheel_contact_noise computes it) at other frequencies.
 std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,

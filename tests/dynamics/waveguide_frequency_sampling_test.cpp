@@ -135,3 +135,51 @@ TEST(WaveguideFrequencySampling, EveryFrequencyDirectlyInTheOrderAsked) {
     EXPECT_EQ(r[1][k], 2.0 * sampling_test_receptance(f[k], 900.0, 0.0));
   }
 }
+
+// Frequencies off the grid from the grid's kept sampling (sampled_at; the refinement's added
+// lines): the grid's own frequencies are sample_receptances's values to the bit; an added
+// frequency inside an interval the sampling checked is interpolated, within the tolerance of the
+// true function (Eq. F1, 0.03); one in an unchecked interval (the cut-on at 1.5 kHz, where the
+// sampling computed every grid frequency) or outside the grid is computed (the function's value to
+// the bit); and each value is the same bits whichever other frequencies are asked with it (no
+// dependence on how a caller slices its lines).
+TEST(WaveguideFrequencySampling, OffGridFrequenciesFromTheKeptSamplingAlone) {
+  const std::vector<double> f = sampling_test_grid();
+  auto evaluate = [](double x) {
+    return std::vector<rd::Receptance4>{sampling_test_receptance(x, 640.0, 1500.0)};
+  };
+  const rd::FrequencySampling sampling;
+  rd::SampledGrid kept;
+  const auto on_grid = rd::sample_receptances(f, evaluate, sampling, nullptr, {}, &kept);
+  ASSERT_EQ(kept.values.size(), 1u);
+  ASSERT_EQ(kept.checked.size() + 1, kept.at.size());
+  EXPECT_LT(kept.at.size(), f.size());
+  const auto again = rd::sampled_at(kept, f, evaluate);
+  for (std::size_t k = 0; k < f.size(); ++k) ASSERT_TRUE(again[0][k] == on_grid[0][k]) << f[k];
+
+  // added lines: a third of the way between neighbours, and two outside the grid
+  std::vector<double> added{0.9 * f.front(), 1.1 * f.back()};
+  for (std::size_t k = 0; k + 1 < f.size(); ++k) added.push_back(f[k] + (f[k + 1] - f[k]) / 3.0);
+  const auto all = rd::sampled_at(kept, added, evaluate);
+  int interpolated = 0, computed = 0;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < added.size(); ++k) {
+    const rd::Receptance4 truth = evaluate(added[k])[0];
+    if (all[0][k] == truth) {
+      ++computed;
+    } else {
+      ++interpolated;
+      worst = std::max(worst, sampling_test_error(all[0][k], truth));
+    }
+    const auto alone = rd::sampled_at(kept, {added[k]}, evaluate);  // asked alone
+    ASSERT_TRUE(alone[0][0] == all[0][k]) << added[k];
+  }
+  std::printf("  %zu grid samples; %d added lines interpolated (largest error %.2e), %d computed\n",
+              kept.at.size(), interpolated, worst, computed);
+  EXPECT_GT(interpolated, 0);
+  EXPECT_GE(computed, 2);  // at least the two outside the grid
+  EXPECT_LT(worst, sampling.tolerance);
+  // near the cut-on every grid frequency was sampled: the added lines there are computed
+  for (std::size_t k = 2; k < added.size(); ++k)
+    if (std::abs(added[k] / 1500.0 - 1.0) < 0.002) EXPECT_TRUE(all[0][k] == evaluate(added[k])[0]) << added[k];
+}
