@@ -112,14 +112,13 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       out.capped = true;
       break;
     }
-    // The added lines in contiguous slices on up to `threads` threads: every line is computed on
-    // its own (spectra, f and g, the loops), except by a rail model that interpolates between
-    // direct evaluations on the grid it is given (samples_grid(); the waveguide with the rail's
-    // per-octave sampling off takes none, on_grid above takes the others): for it the slices
-    // are of kLinesPerSlice lines whatever the thread count, so that the band levels are the same
-    // on any number of threads (with one slice per thread they moved by up to 0.06 dB between 1
-    // and 2 threads on curve_300m_waveguide). Otherwise one slice per thread (fewer, larger
-    // slices: each costs its set-up, ~40 ms of the four-wheel run with 256-line slices).
+    // The added lines in contiguous slices on up to `threads` threads. Every line is computed on
+    // its own (spectra, f and g, the loops; the waveguide through on_grid above), so one slice
+    // per thread: fewer, larger slices (each costs its set-up; 256-line slices cost the beam case
+    // ~40 ms). Only a rail that still interpolates on the grid of each call (samples_grid(): one
+    // without an on_grid view; none shipped) gets slices of kLinesPerSlice lines whatever the
+    // thread count, so that its band levels do not depend on the thread count (with one slice per
+    // thread the waveguide's moved by up to 0.06 dB between 1 and 2 threads).
     const std::size_t slices = rail.samples_grid()
                                    ? (added.size() + kLinesPerSlice - 1) / kLinesPerSlice
                                    : std::min<std::size_t>(threads, (added.size() + 63) / 64);
