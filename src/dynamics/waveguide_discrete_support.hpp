@@ -91,7 +91,7 @@ class DiscretelySupportedWaveguide {
 /// The discretely supported waveguide rail as the loop's RailModel: receptance() and the line
 /// transfers are the 4x4 at the crown (WaveguideRailModel's load patch, order and frame);
 /// contact_transfers() and laplace_transfers() load the section at the contacts themselves.
-class DiscreteWaveguideRailModel : public RailModel {
+class DiscreteWaveguideRailModel : public GridSamplingRail {
  public:
   /// `contact_position`: from a sleeper (m; 0 over a sleeper, L/2 mid-span).
   DiscreteWaveguideRailModel(const TrackParameters& track, const WaveguideRailOptions& options,
@@ -106,10 +106,18 @@ class DiscreteWaveguideRailModel : public RailModel {
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
   /// At the contacts themselves (header comment): each set of coupled points (rail_point_sets)
-  /// with one Ritz basis, every frequency computed directly (`interpolate` is ignored).
+  /// with one Ritz basis; sampled as the options' sampling says (the rest interpolated, as the
+  /// continuous waveguide: waveguide_frequency_sampling.hpp) when `interpolate`, else every
+  /// frequency directly.
   std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
                                                           const std::vector<RailContactPair>& pairs,
                                                           bool interpolate = true) const override;
+  /// True unless options.sampling computes every frequency directly (per_octave = 0).
+  bool samples_grid() const override { return parts_.options.sampling.per_octave > 0; }
+  /// GridSamplingRail's; the samplings kept as the continuous waveguide keeps them.
+  std::vector<std::vector<Receptance6>> contact_transfers_from(
+      const std::vector<double>& grid, const std::vector<double>& frequencies,
+      const std::vector<RailContactPair>& pairs) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 between two contacts in their frames, a = (offset_a, angle_a) at x_a and
@@ -144,6 +152,14 @@ class DiscreteWaveguideRailModel : public RailModel {
 
   Parts parts_;
   double x_;
+  /// The samplings kept: per point set, its pairs (a, b, x_a, x_b, with the scales' points) and
+  /// the grid.
+  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
+  /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
+  std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
+                                                  const std::vector<RailContactPair>& pairs,
+                                                  bool interpolate,
+                                                  const std::vector<double>* grid) const;
 
   Receptance4 at(cdouble omega) const;
 };

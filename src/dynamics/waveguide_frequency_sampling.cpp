@@ -191,4 +191,42 @@ std::vector<std::vector<Receptance4>> sampled_at(
   return out;
 }
 
+std::shared_ptr<const SampledGrid> SamplingMemo::recalled(const Key& key) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = grids_.find(key);
+  return it == grids_.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<const SampledGrid> SamplingMemo::remember(Key key, SampledGrid grid) const {
+  auto kept = std::make_shared<const SampledGrid>(std::move(grid));
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (grids_.size() >= 64) grids_.clear();
+  return grids_.emplace(std::move(key), kept).first->second;
+}
+
+std::vector<std::vector<Receptance4>> sampled_values(
+    const std::vector<double>& frequencies, const std::vector<double>* grid, bool interpolate,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, const std::vector<std::pair<int, int>>& scales,
+    const SamplingMemo& memo, const std::vector<std::pair<double, double>>& points,
+    const std::vector<double>& pairs) {
+  if (!interpolate || sampling.per_octave <= 0) {
+    FrequencySampling direct = sampling;
+    direct.per_octave = 0;
+    return sample_receptances(frequencies, evaluate, direct, nullptr, scales);
+  }
+  // The sampling of the grid (`frequencies` themselves where no grid is given), kept or made now
+  // and kept; every frequency from it (on the grid sampled itself: the values sample_receptances
+  // gave, to the bit).
+  const std::vector<double>& on = grid ? *grid : frequencies;
+  SamplingMemo::Key key{points, pairs, on};
+  std::shared_ptr<const SampledGrid> g = memo.recalled(key);
+  if (!g) {
+    SampledGrid kept;
+    sample_receptances(on, evaluate, sampling, nullptr, scales, &kept);
+    g = memo.remember(std::move(key), std::move(kept));
+  }
+  return sampled_at(*g, frequencies, evaluate);
+}
+
 }  // namespace rollnoise::dynamics

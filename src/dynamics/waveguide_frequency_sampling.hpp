@@ -26,6 +26,10 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -73,5 +77,37 @@ struct SampledGrid {
 std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& grid, const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate);
+
+/// The samplings a rail model keeps (sample_receptances' `kept`), by what they were made of: a
+/// set of points on the section ((offset, angle) each), its pairs (any encoding of the values a
+/// sampling holds: the points' indices and their positions along the rail) and the grid. Shared by
+/// the copies of a model, thread-safe; a cache of values computed the same way whenever asked, so
+/// emptying it (at 64 entries) changes no result.
+class SamplingMemo {
+ public:
+  using Key =
+      std::tuple<std::vector<std::pair<double, double>>, std::vector<double>, std::vector<double>>;
+  std::shared_ptr<const SampledGrid> recalled(const Key& key) const;
+  std::shared_ptr<const SampledGrid> remember(Key key, SampledGrid grid) const;
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::map<Key, std::shared_ptr<const SampledGrid>> grids_;
+};
+
+/// One set of points' values, per pair at each of `frequencies`, as a rail model that samples its
+/// grid gives them (the waveguide on either support):
+///  * `interpolate` false, or sampling.per_octave = 0: every frequency by `evaluate`;
+///  * else from the sampling of `*grid` (`frequencies` themselves where `grid` is null: the values
+///    sample_receptances gives), kept in `memo` (key: `points`, `pairs`, the grid) or made now and
+///    kept: sampled_at, so that each frequency's value depends on the grid and itself alone, and a
+///    second query on the same grid evaluates nothing.
+/// `scales` as sample_receptances'.
+std::vector<std::vector<Receptance4>> sampled_values(
+    const std::vector<double>& frequencies, const std::vector<double>* grid, bool interpolate,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, const std::vector<std::pair<int, int>>& scales,
+    const SamplingMemo& memo, const std::vector<std::pair<double, double>>& points,
+    const std::vector<double>& pairs);
 
 }  // namespace rollnoise::dynamics

@@ -47,7 +47,7 @@ Eigen::Vector2d crown_of(const fem::QuadraticTriangleMesh& mesh) {
 
 WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
                                        const WaveguideRailOptions& options)
-    : RailModel(track, TrackSupport::kContinuous, 0.0),
+    : GridSamplingRail(track, TrackSupport::kContinuous, 0.0),
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
       full_(full_model(track, options)),
@@ -215,29 +215,12 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers_from
   return transfers(frequencies, pairs, true, &grid);
 }
 
-std::shared_ptr<const SampledGrid> WaveguideRailModel::recalled(const SamplingKey& key) const {
-  const std::lock_guard<std::mutex> lock(memo_->mutex);
-  const auto it = memo_->grids.find(key);
-  return it == memo_->grids.end() ? nullptr : it->second;
-}
-
-std::shared_ptr<const SampledGrid> WaveguideRailModel::remember(SamplingKey key, SampledGrid grid) const {
-  auto kept = std::make_shared<const SampledGrid>(std::move(grid));
-  const std::lock_guard<std::mutex> lock(memo_->mutex);
-  // A cache of values that are computed the same way whenever asked: emptying it changes no result.
-  if (memo_->grids.size() >= 64) memo_->grids.clear();
-  return memo_->grids.emplace(std::move(key), kept).first->second;
-}
-
 std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate, const std::vector<double>* grid) const {
   for (double f : frequencies) checked_omega(f);
   if (frequencies.empty()) return {};
   const PointSets sets = point_sets(pairs);
-  FrequencySampling sampling = options_.sampling;
-  if (!interpolate) sampling.per_octave = 0;
-  const bool sampled = interpolate && samples_grid();
   // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
   std::vector<std::vector<Receptance4>> values(pairs.size());
   for (std::size_t s = 0; s < sets.points.size(); ++s) {
@@ -266,23 +249,11 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
       if (!st) st = station(sets.points[s]);
       return between(*st, checked_complex_omega(f), within);
     };
-    std::vector<std::vector<Receptance4>> v;
-    if (!sampled) {
-      v = sample_receptances(frequencies, evaluate, sampling, nullptr, scales);
-    } else if (!grid) {  // this grid sampled, and the sampling kept for frequencies off it
-      SampledGrid kept;
-      v = sample_receptances(frequencies, evaluate, sampling, nullptr, scales, &kept);
-      remember({sets.points[s], within, frequencies}, std::move(kept));
-    } else {  // from the sampling of `grid` (kept, or made now)
-      SamplingKey key{sets.points[s], within, *grid};
-      std::shared_ptr<const SampledGrid> g = recalled(key);
-      if (!g) {
-        SampledGrid kept;
-        sample_receptances(*grid, evaluate, sampling, nullptr, scales, &kept);
-        g = remember(std::move(key), std::move(kept));
-      }
-      v = sampled_at(*g, frequencies, evaluate);
-    }
+    std::vector<double> code;  // the memo's key for the pairs: (a, b, x_a - x_b) each
+    for (const auto& [a, b, x] : within) code.insert(code.end(), {double(a), double(b), x});
+    std::vector<std::vector<Receptance4>> v =
+        sampled_values(frequencies, grid, interpolate, evaluate, options_.sampling, scales, *memo_,
+                       sets.points[s], code);
     for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
@@ -294,13 +265,15 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
   return out;
 }
 
-std::unique_ptr<RailModel> WaveguideRailModel::on_grid(std::vector<double> grid) const {
+std::unique_ptr<RailModel> GridSamplingRail::on_grid(std::vector<double> grid) const {
   if (!samples_grid()) return nullptr;
   return std::make_unique<WaveguideOnGrid>(*this, std::move(grid));
 }
 
-WaveguideOnGrid::WaveguideOnGrid(const WaveguideRailModel& rail, std::vector<double> grid)
-    : RailModel(rail.track(), TrackSupport::kContinuous, rail.position()), rail_(rail), grid_(std::move(grid)) {}
+WaveguideOnGrid::WaveguideOnGrid(const GridSamplingRail& rail, std::vector<double> grid)
+    : RailModel(rail.track(), TrackSupport::kContinuous, rail.position()),
+      rail_(rail),
+      grid_(std::move(grid)) {}
 
 std::vector<std::vector<Receptance6>> WaveguideOnGrid::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,

@@ -59,7 +59,23 @@ struct WaveguideRailOptions {
   FrequencySampling sampling;
 };
 
-class WaveguideRailModel : public RailModel {
+/// A rail model that samples the frequency grids it is given and keeps the samplings (the
+/// waveguide on the continuous and on the discrete support): on_grid gives the view of it that
+/// takes every frequency from the sampling of one grid (WaveguideOnGrid).
+class GridSamplingRail : public RailModel {
+ public:
+  using RailModel::RailModel;
+  /// contact_transfers at `frequencies` from the sampling of `grid` (SampledGrid, sampled_at): a
+  /// sampled frequency its value, one inside a checked interval interpolated, any other computed.
+  virtual std::vector<std::vector<Receptance6>> contact_transfers_from(
+      const std::vector<double>& grid, const std::vector<double>& frequencies,
+      const std::vector<RailContactPair>& pairs) const = 0;
+  /// A WaveguideOnGrid of this rail (null where samples_grid() is false: every frequency alone
+  /// already).
+  std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const override;
+};
+
+class WaveguideRailModel : public GridSamplingRail {
  public:
   /// `track`: the supports (vertical, lateral, longitudinal), sleeper spacing, and the rail's E,
   /// density (mass per length / area) and loss factor from track.vertical.
@@ -81,15 +97,12 @@ class WaveguideRailModel : public RailModel {
                                                           bool interpolate = true) const override;
   /// True unless options.sampling computes every frequency directly (per_octave = 0).
   bool samples_grid() const override { return options_.sampling.per_octave > 0; }
-  /// contact_transfers at `frequencies` from the sampling of `grid` (SampledGrid, sampled_at): a
-  /// sampled frequency its value, one inside a checked interval interpolated, any other computed.
-  /// The sampling of a grid is kept (a small cache shared by copies: every contact_transfers call
-  /// keeps its own), so the case's lines' sampling serves the refinement's lines.
-  std::vector<std::vector<Receptance6>> contact_transfers_from(const std::vector<double>& grid,
-                                                               const std::vector<double>& frequencies,
-                                                               const std::vector<RailContactPair>& pairs) const;
-  /// A WaveguideOnGrid of this rail (null with per_octave = 0: every frequency alone already).
-  std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const override;
+  /// GridSamplingRail's. The sampling of a grid is kept (SamplingMemo, shared by copies: every
+  /// contact_transfers call keeps its own), so the case's lines' sampling serves the refinement's
+  /// lines.
+  std::vector<std::vector<Receptance6>> contact_transfers_from(
+      const std::vector<double>& grid, const std::vector<double>& frequencies,
+      const std::vector<RailContactPair>& pairs) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
@@ -137,15 +150,7 @@ class WaveguideRailModel : public RailModel {
   std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
   /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
-  using SamplingKey =
-      std::tuple<Points, std::vector<std::tuple<int, int, double>>, std::vector<double>>;
-  struct SamplingMemo {
-    std::mutex mutex;
-    std::map<SamplingKey, std::shared_ptr<const SampledGrid>> grids;
-  };
-  std::shared_ptr<SamplingMemo> memo_ = std::make_shared<SamplingMemo>();
-  std::shared_ptr<const SampledGrid> recalled(const SamplingKey& key) const;
-  std::shared_ptr<const SampledGrid> remember(SamplingKey key, SampledGrid grid) const;
+  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
   /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
   std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
                                                   const std::vector<RailContactPair>& pairs,
@@ -160,13 +165,13 @@ class WaveguideRailModel : public RailModel {
                                    const std::vector<std::tuple<int, int, double>>& pairs) const;
 };
 
-/// A continuous waveguide rail whose contact transfers come from its sampling of one grid
-/// (WaveguideRailModel::on_grid; RailModel::on_grid): every frequency's value depends on that
+/// A waveguide rail whose contact transfers come from its sampling of one grid
+/// (GridSamplingRail::on_grid; RailModel::on_grid): every frequency's value depends on that
 /// grid and itself alone, whatever other frequencies a call asks for. Everything else is the
 /// rail's own. Refers to the rail, which must outlive it.
 class WaveguideOnGrid final : public RailModel {
  public:
-  WaveguideOnGrid(const WaveguideRailModel& rail, std::vector<double> grid);
+  WaveguideOnGrid(const GridSamplingRail& rail, std::vector<double> grid);
   Receptance4 receptance(double frequency) const override { return rail_.receptance(frequency); }
   Receptance4 receptance_laplace(cdouble s) const override { return rail_.receptance_laplace(s); }
   std::vector<Receptance4> line_transfers(
@@ -186,7 +191,7 @@ class WaveguideOnGrid final : public RailModel {
   }
 
  private:
-  const WaveguideRailModel& rail_;
+  const GridSamplingRail& rail_;
   std::vector<double> grid_;
 };
 
