@@ -82,4 +82,19 @@ inline void parallel_for(std::size_t n, int workers, const TaskPool::Task& task)
   TaskPool(n, workers, task).finish();
 }
 
+/// f(slice, lo, hi) for contiguous slices [lo, hi) of n items (a frequency grid's lines), one
+/// slice per thread on up to `threads` threads and at least `min_items` items a slice (a slice's
+/// start costs about as much as a few items; fewer, larger slices). Slice i is
+/// [n i / slices, n (i + 1) / slices); returns the number of slices (0 for n = 0). Whether a result
+/// may depend on the slicing is the caller's to rule out (each item computed on its own).
+template <class F>
+std::size_t for_slices(std::size_t n, int threads, const F& f, std::size_t min_items = 64) {
+  if (n == 0) return 0;
+  const std::size_t slices = std::clamp<std::size_t>(
+      (n + min_items - 1) / min_items, 1, static_cast<std::size_t>(std::max(threads, 1)));
+  parallel_for(slices, static_cast<int>(slices),
+               [&](std::size_t i, int) { f(i, n * i / slices, n * (i + 1) / slices); });
+  return slices;
+}
+
 }  // namespace rollnoise

@@ -12,16 +12,6 @@
 
 namespace rollnoise::noise {
 
-namespace {
-// f(lo, hi) for contiguous slices [lo, hi) of n frequencies on up to `threads` threads (at least
-// 64 frequencies a slice: a thread's start costs about as much as a few lines).
-template <class F>
-void for_frequency_slices(std::size_t n, int threads, const F& f) {
-  const std::size_t slices = std::clamp<std::size_t>((n + 63) / 64, 1, std::max(threads, 1));
-  parallel_for(slices, static_cast<int>(slices), [&](std::size_t i, int) { f(n * i / slices, n * (i + 1) / slices); });
-}
-}  // namespace
-
 ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
                                             const dynamics::RailModel& rail,
                                             const std::vector<ContactPoint>& contacts,
@@ -40,7 +30,7 @@ ContactSetStructures contact_set_structures(const dynamics::WheelModel& wheel,
   const std::vector<std::vector<Receptance6>> rail_pairs =
       rail.contact_transfers(frequencies, contact_set_rail_pairs(contacts, cross).points);
   s.receptance.resize(frequencies.size());
-  for_frequency_slices(frequencies.size(), threads, [&](std::size_t lo, std::size_t hi) {
+  for_slices(frequencies.size(), threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k)
       s.receptance[k] = contact_set_receptance(wheel, rail_pairs[k], contacts, tables, frequencies[k], cross);
   });
@@ -110,7 +100,7 @@ ContactSetLoopResult solve_contact_set_loop(const ContactSetStructures& s,
   r.rho = rho;
   r.force.resize(nf);
   if (velocities) r.wheel_velocity.resize(nf), r.rail_velocity.resize(nf);
-  for_frequency_slices(nf, threads, [&](std::size_t lo, std::size_t hi) {
+  for_slices(nf, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t k = lo; k < hi; ++k) {
       const ContactSetReceptance& rec = s.receptance[k];
       Eigen::MatrixXcd A = rec.wheel + rec.rail;  // (M3)

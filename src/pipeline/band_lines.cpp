@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "core/assert.hpp"
 #include "core/task_pool.hpp"
 #include "noise/band_refinement.hpp"
 #include "noise/wheel_contact.hpp"
@@ -80,7 +81,6 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
   // level is three lines for one), and within the case's limits.steps and limits.memory: a level
   // that would pass them is not taken (the band means keep the lines they have).
   constexpr std::size_t kMaxGrowth = 16;
-  constexpr std::size_t kLinesPerSlice = 256;
   RefinedLoops out;
   out.variants = r.variants;
   noise::ContactSetLoopResult bogie = r.bogie ? *r.bogie : noise::ContactSetLoopResult{};
@@ -112,21 +112,19 @@ RefinedLoops refined_loops(const NoiseResult& r, const NoiseCase& nc, int thread
       out.capped = true;
       break;
     }
-    // The added lines in contiguous slices on up to `threads` threads. Every line is computed on
-    // its own (spectra, f and g, the loops; the waveguide through on_grid above), so one slice
-    // per thread: fewer, larger slices (each costs its set-up; 256-line slices cost the beam case
-    // ~40 ms). Only a rail that still interpolates on the grid of each call (samples_grid(): one
-    // without an on_grid view; none shipped) gets slices of kLinesPerSlice lines whatever the
-    // thread count, so that its band levels do not depend on the thread count (with one slice per
-    // thread the waveguide's moved by up to 0.06 dB between 1 and 2 threads).
-    const std::size_t slices = rail.samples_grid()
-                                   ? (added.size() + kLinesPerSlice - 1) / kLinesPerSlice
-                                   : std::min<std::size_t>(threads, (added.size() + 63) / 64);
-    std::vector<LoopsAt> more(slices);
-    parallel_for(slices, static_cast<int>(std::min<std::size_t>(threads, slices)), [&](std::size_t i, int) {
-      const std::size_t lo = added.size() * i / slices, hi = added.size() * (i + 1) / slices;
-      more[i] = loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi), rail);
-    });
+    // The added lines in contiguous slices, one per thread (core/task_pool.hpp, for_slices).
+    // Every line is computed on its own (spectra, f and g, the loops; a sampling rail through its
+    // on_grid view above), so the band levels do not depend on the thread count; a rail that
+    // interpolated on the grid of each call would make them depend on it (the waveguide's moved by
+    // up to 0.06 dB between 1 and 2 threads before it had the view).
+    ROLLNOISE_ASSERT(!rail.samples_grid(),
+                     "refined_loops: a rail that samples its grid needs an on_grid view");
+    std::vector<LoopsAt> more(std::min<std::size_t>(std::max(threads, 1), added.size()));
+    more.resize(
+        for_slices(added.size(), threads, [&](std::size_t i, std::size_t lo, std::size_t hi) {
+          more[i] =
+              loops_at(r, nc, std::vector<double>(added.begin() + lo, added.begin() + hi), rail);
+        }));
     for (LoopsAt& m : more) {
       out.variants = noise::merged(std::move(out.variants), std::move(m.variants));
       if (r.bogie) bogie = noise::merged(std::move(bogie), std::move(m.bogie));

@@ -181,5 +181,7 @@ TEST(WaveguideFrequencySampling, OffGridFrequenciesFromTheKeptSamplingAlone) {
   EXPECT_LT(worst, sampling.tolerance);
   // near the cut-on every grid frequency was sampled: the added lines there are computed
   for (std::size_t k = 2; k < added.size(); ++k)
-    if (std::abs(added[k] / 1500.0 - 1.0) < 0.002) EXPECT_TRUE(all[0][k] == evaluate(added[k])[0]) << added[k];
+    if (std::abs(added[k] / 1500.0 - 1.0) < 0.002) {
+      EXPECT_TRUE(all[0][k] == evaluate(added[k])[0]) << added[k];
+    }
 }
