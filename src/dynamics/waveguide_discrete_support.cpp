@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -307,10 +308,12 @@ std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::transfers(
       const int sa = point_value(a, xa), sb = point_value(b, xb);
       scales.emplace_back(sa, sb);
     }
-    // the points' basis on the first direct evaluation (none where a kept sampling serves all)
+    // the points' basis on the first direct evaluation (none where a kept sampling serves all;
+    // the sampling may evaluate on several threads)
+    std::once_flag built;
     std::shared_ptr<const Station> st;
     auto evaluate = [&](double f) {
-      if (!st) st = station(sets.points[k]);
+      std::call_once(built, [&] { st = station(sets.points[k]); });
       return between(*st, checked_complex_omega(f), within);
     };
     std::vector<double> code;  // the memo's key for the pairs: (a, b, x_a, x_b) each

@@ -34,7 +34,10 @@
 // are the contact patches' loads at the contacts' own points of the head, in their frames (as the
 // continuous waveguide, waveguide_rail_model.hpp), G, G_fe, G_rf the free rail's Green's function
 // between them and the foot (Eq. W4 with the points' and the foot's loads in one Ritz basis); the
-// 6 x 6 is T_a H_ab T_b^T (G2 of rail_contact.hpp). No rigid move.
+// 6 x 6 is T_a H_ab T_b^T (G2 of rail_contact.hpp). No rigid move. On a frequency grid they are
+// computed directly on an adaptively chosen part of it and interpolated at the rest, the samplings
+// kept for the refinement's lines, as on the continuous support (waveguide_frequency_sampling.hpp;
+// GridSamplingRail).
 #pragma once
 
 #include <Eigen/Core>

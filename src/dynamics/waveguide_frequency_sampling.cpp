@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 
 namespace rollnoise::dynamics {
@@ -56,6 +57,18 @@ int split_sample(const std::vector<double>& x, int a, int b) {
   return std::clamp(j, a + 1, b - 1);
 }
 
+// evaluate(at[i]) for every i, on up to `threads` threads (core/task_pool.hpp): each evaluation is
+// on its own, so the values do not depend on the thread count; `evaluate` must be safe to call
+// concurrently.
+std::vector<std::vector<Receptance4>> evaluated(
+    const std::vector<double>& at, const std::function<std::vector<Receptance4>(double)>& evaluate,
+    int threads) {
+  std::vector<std::vector<Receptance4>> out(at.size());
+  parallel_for(at.size(), std::max(threads, 1),
+               [&](std::size_t i, int) { out[i] = evaluate(at[i]); });
+  return out;
+}
+
 // sample_receptances, also giving its sampling (`kept`, when not null).
 std::vector<std::vector<Receptance4>> sample(
     const std::vector<double>& frequencies,
@@ -71,14 +84,18 @@ std::vector<std::vector<Receptance4>> sample(
   std::vector<double> x(n);
   for (int i = 0; i < n; ++i) x[i] = std::log(f[i]);
   std::map<int, std::vector<Receptance4>> samples;  // grid index -> every pair's value
-  auto sample = [&](int i) { samples.emplace(i, evaluate(f[i])); };
   std::vector<int> start;
   if (sampling.per_octave > 0 && n > 4) start = starting_samples(x, sampling.per_octave);
   if (start.empty() || start.size() + 1 >= static_cast<std::size_t>(n)) {
     start.resize(n);  // as many samples as frequencies: every one directly
     for (int i = 0; i < n; ++i) start[i] = i;
   }
-  for (int i : start) sample(i);
+  {
+    std::vector<double> at;
+    for (int i : start) at.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> v = evaluated(at, evaluate, sampling.threads);
+    for (std::size_t k = 0; k < start.size(); ++k) samples.emplace(start[k], std::move(v[k]));
+  }
   std::size_t pairs = samples.empty() ? 0 : samples.begin()->second.size();
   // The interpolation of the current samples, per pair, at grid points `at`.
   auto interpolated = [&](const std::vector<int>& at) {
@@ -103,9 +120,12 @@ std::vector<std::vector<Receptance4>> sample(
     for (const auto& [a, b] : open) mid.push_back(split_sample(x, a, b));
     const std::vector<std::vector<Receptance4>> predicted = interpolated(mid);
     std::vector<std::pair<int, int>> still_open;
+    std::vector<double> at;
+    for (int i : mid) at.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> values_at_mid = evaluated(at, evaluate, sampling.threads);
     std::vector<std::pair<int, std::vector<Receptance4>>> added;
     for (std::size_t k = 0; k < open.size(); ++k) {
-      added.emplace_back(mid[k], evaluate(f[mid[k]]));
+      added.emplace_back(mid[k], std::move(values_at_mid[k]));
       const std::vector<Receptance4>& direct = added.back().second;
       double err = 0.0;
       for (std::size_t p = 0; p < pairs; ++p) {
@@ -165,11 +185,13 @@ std::vector<std::vector<Receptance4>> sample_receptances(
 
 std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& g, const std::vector<double>& frequencies,
-    const std::function<std::vector<Receptance4>(double)>& evaluate) {
+    const std::function<std::vector<Receptance4>(double)>& evaluate, int threads) {
   const std::size_t pairs = g.values.size(), n = g.at.size();
   std::vector<std::vector<Receptance4>> out(pairs, std::vector<Receptance4>(frequencies.size()));
   std::vector<double> inside;        // frequencies in checked intervals, interpolated together
   std::vector<std::size_t> inside_k;  // their places in `frequencies`
+  std::vector<double> computed;       // frequencies evaluated directly (on `threads` threads)
+  std::vector<std::size_t> computed_k;
   for (std::size_t k = 0; k < frequencies.size(); ++k) {
     const double fq = frequencies[k];
     const std::size_t j = static_cast<std::size_t>(std::lower_bound(g.at.begin(), g.at.end(), fq) - g.at.begin());
@@ -179,10 +201,13 @@ std::vector<std::vector<Receptance4>> sampled_at(
       inside.push_back(fq);
       inside_k.push_back(k);
     } else {  // outside the grid, or where the sampling evaluated every grid frequency
-      const std::vector<Receptance4> v = evaluate(fq);
-      for (std::size_t p = 0; p < pairs; ++p) out[p][k] = v.at(p);
+      computed.push_back(fq);
+      computed_k.push_back(k);
     }
   }
+  const std::vector<std::vector<Receptance4>> direct = evaluated(computed, evaluate, threads);
+  for (std::size_t i = 0; i < computed.size(); ++i)
+    for (std::size_t p = 0; p < pairs; ++p) out[p][computed_k[i]] = direct[i].at(p);
   if (!inside.empty())
     for (std::size_t p = 0; p < pairs; ++p) {
       const std::vector<Receptance4> v = interpolate_receptances(g.at, g.values[p], inside);
@@ -226,7 +251,7 @@ std::vector<std::vector<Receptance4>> sampled_values(
     sample_receptances(on, evaluate, sampling, nullptr, scales, &kept);
     g = memo.remember(std::move(key), std::move(kept));
   }
-  return sampled_at(*g, frequencies, evaluate);
+  return sampled_at(*g, frequencies, evaluate, sampling.threads);
 }
 
 }  // namespace rollnoise::dynamics

@@ -44,6 +44,10 @@ struct FrequencySampling {
   /// Eq. (F1)'s bound for closing an interval; <= 0: no refinement (the starting grid alone, as
   /// the fixed grid of 24 per octave was before).
   double tolerance = 0.03;
+  /// The direct evaluations of a pass (the starting grid, each pass's third points, the lines
+  /// sampled_at computes) on up to this many threads (the case's solver.threads): each is on its
+  /// own, so the values do not depend on it; `evaluate` must then be safe to call concurrently.
+  int threads = 1;
 };
 
 /// The values of every pair (`evaluate(f)` returns one 4x4 per pair, always as many) at each of
@@ -73,10 +77,10 @@ struct SampledGrid {
 /// frequency its value, a frequency inside a checked interval the interpolation of the samples
 /// (interpolate_receptances, as on the grid), any other (an unchecked interval, e.g. near a cut-on,
 /// or outside the grid) evaluated directly. Each frequency's value depends on the sampling and
-/// itself alone, not on the others asked for.
+/// itself alone, not on the others asked for. The direct evaluations on up to `threads` threads.
 std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& grid, const std::vector<double>& frequencies,
-    const std::function<std::vector<Receptance4>(double)>& evaluate);
+    const std::function<std::vector<Receptance4>(double)>& evaluate, int threads = 1);
 
 /// The samplings a rail model keeps (sample_receptances' `kept`), by what they were made of: a
 /// set of points on the section ((offset, angle) each), its pairs (any encoding of the values a

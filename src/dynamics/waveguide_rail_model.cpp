@@ -243,10 +243,12 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
       const int sa = point_value(a), sb = point_value(b);
       scales.emplace_back(sa, sb);
     }
-    // the points' basis on the first direct evaluation (none where a kept sampling serves all)
+    // the points' basis on the first direct evaluation (none where a kept sampling serves all;
+    // the sampling may evaluate on several threads)
+    std::once_flag built;
     std::shared_ptr<const Station> st;
     auto evaluate = [&](double f) {
-      if (!st) st = station(sets.points[s]);
+      std::call_once(built, [&] { st = station(sets.points[s]); });
       return between(*st, checked_complex_omega(f), within);
     };
     std::vector<double> code;  // the memo's key for the pairs: (a, b, x_a - x_b) each

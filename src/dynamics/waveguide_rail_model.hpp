@@ -20,7 +20,8 @@
 // lateral offset. The points of one query share one Ritz basis (the section's modes plus the
 // static responses to those points' loads, RailWaveguide::reduced), built by the query: for the
 // loop's frequency grid once (contact_transfers), for complex frequency once per set of pairs
-// (laplace_transfers returns a function of s holding it). Nothing is kept between queries.
+// (laplace_transfers returns a function of s holding it). Between queries only the samplings of
+// the grids are kept (SamplingMemo: a second query on the same grid evaluates nothing).
 //
 // The load is a uniform traction over the boundary within `patch_half_width` of the point (not a
 // nodal point force, whose receptance grows as the mesh is refined), and the response is the same

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "io/frequency_axis.hpp"
@@ -114,14 +115,20 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
   const std::string model = r.string("track.model");
   if (model != "waveguide" && r.has("track.rail_section"))
     r.fail("track.rail_section", "applies to track.model = \"waveguide\" only");
-  if (model == "waveguide" && support == "discrete")
-    c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, waveguide_rail_options(r, track_section), position);
-  else if (model == "waveguide")
-    c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, waveguide_rail_options(r, track_section));
-  else
+  if (model == "waveguide") {
+    dynamics::WaveguideRailOptions o = waveguide_rail_options(r, track_section);
+    // the sampling's direct frequencies on the case's threads (not in the id: the values do not
+    // depend on them)
+    o.sampling.threads = resolved_threads(static_cast<int>(r.integer("solver.threads")));
+    if (support == "discrete")
+      c.rail = std::make_unique<dynamics::DiscreteWaveguideRailModel>(track, o, position);
+    else
+      c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, o);
+  } else {
     c.rail = std::make_unique<dynamics::RailModel>(
         track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
         position);
+  }
   char pos[32];
   std::snprintf(pos, sizeof pos, "%.17g", position);
   return "track " + file + ", " + model + ", " + support + ", " + pos + track_section;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -184,4 +185,43 @@ TEST(WaveguideFrequencySampling, OffGridFrequenciesFromTheKeptSamplingAlone) {
     if (std::abs(added[k] / 1500.0 - 1.0) < 0.002) {
       EXPECT_TRUE(all[0][k] == evaluate(added[k])[0]) << added[k];
     }
+}
+
+// The direct evaluations of a pass on several threads (FrequencySampling::threads, the case's
+// solver.threads): the same samples, the same number of evaluations and the same values to the
+// bit as on one thread, on the grid (sample_receptances) and off it (sampled_at), with a cut-on
+// (1.5 kHz) where every grid frequency is evaluated.
+TEST(WaveguideFrequencySampling, ThreadsGiveTheSerialSamplingToTheBit) {
+  const std::vector<double> f = sampling_test_grid();
+  std::atomic<int> calls{0};
+  auto evaluate = [&](double x) {
+    ++calls;
+    return std::vector<rd::Receptance4>{sampling_test_receptance(x, 640.0, 1500.0),
+                                        sampling_test_receptance(x, 900.0, 0.0)};
+  };
+  std::vector<double> added{0.9 * f.front()};
+  for (std::size_t k = 0; k + 1 < f.size(); k += 5) added.push_back(f[k] + (f[k + 1] - f[k]) / 3.0);
+  std::vector<std::vector<std::vector<rd::Receptance4>>> on_grid, off_grid;
+  std::vector<int> evaluations;
+  for (int threads : {1, 2, 3}) {
+    rd::FrequencySampling sampling;
+    sampling.threads = threads;
+    rd::SampledGrid kept;
+    int points = 0;
+    calls = 0;
+    on_grid.push_back(rd::sample_receptances(f, evaluate, sampling, &points, {}, &kept));
+    EXPECT_EQ(calls.load(), points);
+    evaluations.push_back(points);
+    off_grid.push_back(rd::sampled_at(kept, added, evaluate, threads));
+  }
+  EXPECT_LT(evaluations[0], static_cast<int>(f.size()));
+  for (std::size_t t = 1; t < on_grid.size(); ++t) {
+    EXPECT_EQ(evaluations[t], evaluations[0]);
+    for (std::size_t p = 0; p < 2; ++p) {
+      for (std::size_t k = 0; k < f.size(); ++k)
+        ASSERT_TRUE(on_grid[t][p][k] == on_grid[0][p][k]) << f[k];
+      for (std::size_t k = 0; k < added.size(); ++k)
+        ASSERT_TRUE(off_grid[t][p][k] == off_grid[0][p][k]) << added[k];
+    }
+  }
 }
