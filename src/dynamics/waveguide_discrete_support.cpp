@@ -269,68 +269,16 @@ std::vector<std::tuple<int, int, double, double>> pairs_of_set(
 
 }  // namespace
 
-std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transfers(
-    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
-    bool interpolate) const {
-  return transfers(frequencies, pairs, interpolate, nullptr);
-}
-
-std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::contact_transfers_from(
-    const std::vector<double>& grid, const std::vector<double>& frequencies,
-    const std::vector<RailContactPair>& pairs) const {
-  for (double f : grid) checked_omega(f);
-  return transfers(frequencies, pairs, true, &grid);
-}
-
-std::vector<std::vector<Receptance6>> DiscreteWaveguideRailModel::transfers(
-    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
-    bool interpolate, const std::vector<double>* grid) const {
-  for (double f : frequencies) checked_omega(f);
-  if (frequencies.empty()) return {};
-  const RailPointSets sets = rail_point_sets(pairs);
-  std::vector<std::vector<Receptance4>> values(pairs.size());  // per pair, per frequency
-  for (std::size_t k = 0; k < sets.points.size(); ++k) {
-    std::vector<std::size_t> which;
-    auto within = pairs_of_set(sets, pairs, static_cast<int>(k), which);
-    // Eq. (F1)'s scales: each point's receptance at its own position (a, a, x_a, x_a),
-    // appended where not asked for
-    const std::size_t asked = within.size();
-    auto point_value = [&](int a, double x) {
-      const std::tuple<int, int, double, double> key(a, a, x, x);
-      const auto it = std::find(within.begin(), within.end(), key);
-      if (it != within.end()) return static_cast<int>(it - within.begin());
-      within.push_back(key);
-      return static_cast<int>(within.size()) - 1;
-    };
-    std::vector<std::pair<int, int>> scales;
-    for (std::size_t i = 0; i < asked; ++i) {
-      const auto [a, b, xa, xb] = within[i];
-      const int sa = point_value(a, xa), sb = point_value(b, xb);
-      scales.emplace_back(sa, sb);
-    }
-    // the points' basis on the first direct evaluation (none where a kept sampling serves all;
-    // the sampling may evaluate on several threads)
-    std::once_flag built;
-    std::shared_ptr<const Station> st;
-    auto evaluate = [&](double f) {
-      std::call_once(built, [&] { st = station(sets.points[k]); });
-      return between(*st, checked_complex_omega(f), within);
-    };
-    std::vector<double> code;  // the memo's key for the pairs: (a, b, x_a, x_b) each
-    for (const auto& [a, b, xa, xb] : within)
-      code.insert(code.end(), {double(a), double(b), xa, xb});
-    std::vector<std::vector<Receptance4>> v =
-        sampled_values(frequencies, grid, interpolate, evaluate, parts_.options.sampling, scales,
-                       *memo_, sets.points[k], code);
-    for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
-  }
-  std::vector<std::vector<Receptance6>> out(frequencies.size(),
-                                            std::vector<Receptance6>(pairs.size()));
-  for (std::size_t i = 0; i < frequencies.size(); ++i)
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      out[i][p] = from_contact_frames(values[p][i], pairs[p].first.contact_angle,
-                                      pairs[p].second.contact_angle);
-  return out;
+GridSamplingRail::Evaluator DiscreteWaveguideRailModel::evaluator(const Points& points,
+                                                                  const SetPairs& pairs) const {
+  // The points' basis on the first direct evaluation (none where a kept sampling serves all; the
+  // sampling may evaluate on several threads).
+  auto built = std::make_shared<std::once_flag>();
+  auto st = std::make_shared<std::shared_ptr<const Station>>();
+  return [this, points, pairs, built, st](double f) {
+    std::call_once(*built, [&] { *st = station(points); });
+    return between(**st, checked_complex_omega(f), pairs);
+  };
 }
 
 RailModel::LaplaceTransfers DiscreteWaveguideRailModel::laplace_transfers(

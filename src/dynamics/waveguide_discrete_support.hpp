@@ -108,19 +108,6 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  /// At the contacts themselves (header comment): each set of coupled points (rail_point_sets)
-  /// with one Ritz basis; sampled as the options' sampling says (the rest interpolated, as the
-  /// continuous waveguide: waveguide_frequency_sampling.hpp) when `interpolate`, else every
-  /// frequency directly.
-  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
-                                                          const std::vector<RailContactPair>& pairs,
-                                                          bool interpolate = true) const override;
-  /// True unless options.sampling computes every frequency directly (per_octave = 0).
-  bool samples_grid() const override { return parts_.options.sampling.per_octave > 0; }
-  /// GridSamplingRail's; the samplings kept as the continuous waveguide keeps them.
-  std::vector<std::vector<Receptance6>> contact_transfers_from(
-      const std::vector<double>& grid, const std::vector<double>& frequencies,
-      const std::vector<RailContactPair>& pairs) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 between two contacts in their frames, a = (offset_a, angle_a) at x_a and
@@ -155,14 +142,11 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
 
   Parts parts_;
   double x_;
-  /// The samplings kept: per point set, its pairs (a, b, x_a, x_b, with the scales' points) and
-  /// the grid.
-  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
-  /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
-  std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
-                                                  const std::vector<RailContactPair>& pairs,
-                                                  bool interpolate,
-                                                  const std::vector<double>* grid) const;
+  // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set of
+  // coupled points (rail_point_sets), each pair at its own positions between the sleepers.
+  const FrequencySampling& sampling() const override { return parts_.options.sampling; }
+  bool along_rail_invariant() const override { return false; }
+  Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
 
   Receptance4 at(cdouble omega) const;
 };

@@ -202,36 +202,43 @@ PointSets point_sets(const std::vector<RailContactPair>& pairs) {
 
 }  // namespace
 
-std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers(
+std::vector<std::vector<Receptance6>> GridSamplingRail::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate) const {
   return transfers(frequencies, pairs, interpolate, nullptr);
 }
 
-std::vector<std::vector<Receptance6>> WaveguideRailModel::contact_transfers_from(
+std::vector<std::vector<Receptance6>> GridSamplingRail::contact_transfers_from(
     const std::vector<double>& grid, const std::vector<double>& frequencies,
     const std::vector<RailContactPair>& pairs) const {
   for (double f : grid) checked_omega(f);
   return transfers(frequencies, pairs, true, &grid);
 }
 
-std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
+std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate, const std::vector<double>* grid) const {
   for (double f : frequencies) checked_omega(f);
   if (frequencies.empty()) return {};
-  const PointSets sets = point_sets(pairs);
+  const RailPointSets sets = rail_point_sets(pairs);
+  const bool invariant = along_rail_invariant();
   // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
   std::vector<std::vector<Receptance4>> values(pairs.size());
   for (std::size_t s = 0; s < sets.points.size(); ++s) {
-    std::vector<std::tuple<int, int, double>> within;
+    // the set's pairs as (a, b, x_a, x_b); (a, b, x_a - x_b, 0) where only the distance matters
+    SetPairs within;
     std::vector<std::size_t> which;
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      if (sets.set[p] == static_cast<int>(s)) within.push_back(sets.within[p]), which.push_back(p);
-    // Eq. (F1)'s scales: each point's receptance (a, a, 0), appended where not asked for
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      if (sets.set[p] != static_cast<int>(s)) continue;
+      const auto [a, b, x] = sets.within[p];
+      within.emplace_back(a, b, invariant ? x : pairs[p].first.x,
+                          invariant ? 0.0 : pairs[p].second.x);
+      which.push_back(p);
+    }
+    // Eq. (F1)'s scales: each point's receptance at its own position, appended where not asked for
     const std::size_t asked = within.size();
-    auto point_value = [&](int a) {
-      const std::tuple<int, int, double> key(a, a, 0.0);
+    auto point_value = [&](int a, double x) {
+      const SetPairs::value_type key(a, a, invariant ? 0.0 : x, invariant ? 0.0 : x);
       const auto it = std::find(within.begin(), within.end(), key);
       if (it != within.end()) return static_cast<int>(it - within.begin());
       within.push_back(key);
@@ -239,23 +246,17 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
     };
     std::vector<std::pair<int, int>> scales;
     for (std::size_t i = 0; i < asked; ++i) {
-      const int a = std::get<0>(within[i]), b = std::get<1>(within[i]);
-      const int sa = point_value(a), sb = point_value(b);
+      const std::size_t p = which[i];
+      const int sa = point_value(std::get<0>(within[i]), pairs[p].first.x);
+      const int sb = point_value(std::get<1>(within[i]), pairs[p].second.x);
       scales.emplace_back(sa, sb);
     }
-    // the points' basis on the first direct evaluation (none where a kept sampling serves all;
-    // the sampling may evaluate on several threads)
-    std::once_flag built;
-    std::shared_ptr<const Station> st;
-    auto evaluate = [&](double f) {
-      std::call_once(built, [&] { st = station(sets.points[s]); });
-      return between(*st, checked_complex_omega(f), within);
-    };
-    std::vector<double> code;  // the memo's key for the pairs: (a, b, x_a - x_b) each
-    for (const auto& [a, b, x] : within) code.insert(code.end(), {double(a), double(b), x});
+    std::vector<double> code;  // the memo's key for the pairs
+    for (const auto& [a, b, xa, xb] : within)
+      code.insert(code.end(), {double(a), double(b), xa, xb});
     std::vector<std::vector<Receptance4>> v =
-        sampled_values(frequencies, grid, interpolate, evaluate, options_.sampling, scales, *memo_,
-                       sets.points[s], code);
+        sampled_values(frequencies, grid, interpolate, evaluator(sets.points[s], within),
+                       sampling(), scales, *memo_, sets.points[s], code);
     for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
   std::vector<std::vector<Receptance6>> out(frequencies.size(),
@@ -265,6 +266,20 @@ std::vector<std::vector<Receptance6>> WaveguideRailModel::transfers(
       out[k][p] = from_contact_frames(values[p][k], pairs[p].first.contact_angle,
                                       pairs[p].second.contact_angle);
   return out;
+}
+
+GridSamplingRail::Evaluator WaveguideRailModel::evaluator(const Points& points,
+                                                          const SetPairs& pairs) const {
+  // The points' basis on the first direct evaluation (none where a kept sampling serves all; the
+  // sampling may evaluate on several threads); the pairs as (a, b, x_a - x_b).
+  std::vector<std::tuple<int, int, double>> within;
+  for (const auto& [a, b, x, unused] : pairs) within.emplace_back(a, b, x);
+  auto built = std::make_shared<std::once_flag>();
+  auto st = std::make_shared<std::shared_ptr<const Station>>();
+  return [this, points, within, built, st](double f) {
+    std::call_once(*built, [&] { *st = station(points); });
+    return between(**st, checked_complex_omega(f), within);
+  };
 }
 
 std::unique_ptr<RailModel> GridSamplingRail::on_grid(std::vector<double> grid) const {

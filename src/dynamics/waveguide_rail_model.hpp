@@ -31,6 +31,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -61,19 +62,54 @@ struct WaveguideRailOptions {
 };
 
 /// A rail model that samples the frequency grids it is given and keeps the samplings (the
-/// waveguide on the continuous and on the discrete support): on_grid gives the view of it that
-/// takes every frequency from the sampling of one grid (WaveguideOnGrid).
+/// waveguide on the continuous and on the discrete support): contact_transfers computes each set
+/// of coupled points (rail_point_sets) directly on an adaptively chosen part of the grid and
+/// interpolates the rest (waveguide_frequency_sampling.hpp, sampled_values), and on_grid gives the
+/// view of it that takes every frequency from the sampling of one grid (WaveguideOnGrid). A model
+/// provides its sampling and, per set of points, the direct evaluation.
 class GridSamplingRail : public RailModel {
  public:
   using RailModel::RailModel;
+  /// Sampled as sampling() says (the rest interpolated) when `interpolate`, else every frequency
+  /// directly.
+  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
+                                                          const std::vector<RailContactPair>& pairs,
+                                                          bool interpolate = true) const override;
   /// contact_transfers at `frequencies` from the sampling of `grid` (SampledGrid, sampled_at): a
   /// sampled frequency its value, one inside a checked interval interpolated, any other computed.
-  virtual std::vector<std::vector<Receptance6>> contact_transfers_from(
+  /// The sampling of a grid is kept (SamplingMemo, shared by copies: every contact_transfers call
+  /// keeps its own), so the case's lines' sampling serves the refinement's lines.
+  std::vector<std::vector<Receptance6>> contact_transfers_from(
       const std::vector<double>& grid, const std::vector<double>& frequencies,
-      const std::vector<RailContactPair>& pairs) const = 0;
+      const std::vector<RailContactPair>& pairs) const;
+  /// True unless sampling() computes every frequency directly (per_octave = 0).
+  bool samples_grid() const override { return sampling().per_octave > 0; }
   /// A WaveguideOnGrid of this rail (null where samples_grid() is false: every frequency alone
   /// already).
   std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const override;
+
+ protected:
+  /// Loaded points of the section ((offset, angle) each), and the pairs of one set of them as
+  /// (point a, point b, x_a, x_b) (m along the rail).
+  using Points = std::vector<std::pair<double, double>>;
+  using SetPairs = std::vector<std::tuple<int, int, double, double>>;
+  using Evaluator = std::function<std::vector<Receptance4>(double)>;
+  virtual const FrequencySampling& sampling() const = 0;
+  /// Whether a pair's value depends on x_a - x_b alone (the continuous support; the discrete one
+  /// depends on where the two points are between the sleepers).
+  virtual bool along_rail_invariant() const = 0;
+  /// The direct evaluation of one set: f (Hz) -> the contact-frame 4x4 of each of `pairs`, one
+  /// basis for the points (built on the first call); safe to call concurrently.
+  virtual Evaluator evaluator(const Points& points, const SetPairs& pairs) const = 0;
+
+ private:
+  /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
+  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
+  /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
+  std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
+                                                  const std::vector<RailContactPair>& pairs,
+                                                  bool interpolate,
+                                                  const std::vector<double>* grid) const;
 };
 
 class WaveguideRailModel : public GridSamplingRail {
@@ -91,19 +127,6 @@ class WaveguideRailModel : public GridSamplingRail {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  /// At the contacts themselves (header comment); sampled as options.sampling says (the rest
-  /// interpolated) when `interpolate`, else every frequency directly.
-  std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
-                                                          const std::vector<RailContactPair>& pairs,
-                                                          bool interpolate = true) const override;
-  /// True unless options.sampling computes every frequency directly (per_octave = 0).
-  bool samples_grid() const override { return options_.sampling.per_octave > 0; }
-  /// GridSamplingRail's. The sampling of a grid is kept (SamplingMemo, shared by copies: every
-  /// contact_transfers call keeps its own), so the case's lines' sampling serves the refinement's
-  /// lines.
-  std::vector<std::vector<Receptance6>> contact_transfers_from(
-      const std::vector<double>& grid, const std::vector<double>& frequencies,
-      const std::vector<RailContactPair>& pairs) const override;
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
@@ -130,9 +153,8 @@ class WaveguideRailModel : public GridSamplingRail {
   const Eigen::MatrixXd& crown_loads() const { return crown().loads; }
 
  private:
-  /// Loaded points of the section (contacts, (offset, angle) each), their reduced model and loads
-  /// (dofs() x 4 per point): a value built for one query.
-  using Points = std::vector<std::pair<double, double>>;
+  /// Loaded points of the section (Points: contacts, (offset, angle) each), their reduced model
+  /// and loads (dofs() x 4 per point): a value built for one query.
   struct Station {
     RailWaveguide model;
     Eigen::MatrixXd loads;
@@ -150,12 +172,10 @@ class WaveguideRailModel : public GridSamplingRail {
   RailReductionModes modes_;  // its section modes, the load-independent part of every basis
   std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
 
-  /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
-  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
-  /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
-  std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
-                                                  const std::vector<RailContactPair>& pairs,
-                                                  bool interpolate, const std::vector<double>* grid) const;
+  // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set.
+  const FrequencySampling& sampling() const override { return options_.sampling; }
+  bool along_rail_invariant() const override { return true; }
+  Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
 
   const Station& crown() const;
   Receptance4 at(cdouble omega) const;
