@@ -4,7 +4,8 @@
 //
 // DiscreteWaveguideContact/case/nf: RailModel::contact_transfers at nf frequencies (500 Hz up in
 // steps of 250 Hz); the CPU time includes the query's Ritz basis (once per set of coupled points),
-// so the cost per frequency is the difference of nf = 9 and nf = 1 divided by 8.
+// so the cost per frequency is the difference of nf = 9 and nf = 1 divided by 8 (9 frequencies over
+// 2.3 octaves are fewer than the sampling's starting grid: every one is computed directly).
 //   case 0: the crown's transfer moved rigidly to the gauge-corner contact (the base class's
 //           contact_transfers, the path the discrete waveguide took before it loaded the contact);
 //   case 1: one contact, the 300 m curve's gauge corner, loaded at the contact;
