@@ -191,7 +191,7 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackP
   std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
   RailWaveguide full(fem::mesh_polygon(outline, o.mesh_size), rail_material(track, o.poisson_ratio),
                      std::nullopt);
-  RailReductionModes modes = full.reduction_modes(o.reduction);
+  RailReductionModes modes = full.reduction_modes(o.contact_reduction);
   double top = full.mesh().nodes.at(0).y();
   for (const auto& p : full.mesh().nodes) top = std::max(top, p.y());
   Eigen::MatrixXd crown = full.patch_loads(Eigen::Vector2d(0.0, top), o.patch_half_width,
@@ -201,8 +201,8 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackP
   loads << crown, foot.loads;
   const FootSupport support{track.vertical_support, track.lateral_support,
                             track.longitudinal_support, track.sleeper_spacing};
-  DiscretelySupportedWaveguide rail(full.reduced(o.reduction, loads, modes), std::move(foot),
-                                    support, track.supports_each_side);
+  DiscretelySupportedWaveguide rail(full.reduced(o.contact_reduction, loads, modes),
+                                    std::move(foot), support, track.supports_each_side);
   return Parts{
       o, std::move(outline), std::move(full), std::move(modes), std::move(crown), std::move(rail)};
 }
@@ -227,7 +227,7 @@ std::shared_ptr<const DiscreteWaveguideRailModel::Station> DiscreteWaveguideRail
   loads << contacts, crown.foot().loads;
   return std::make_shared<const Station>(
       Station{DiscretelySupportedWaveguide(
-                  parts_.section.reduced(parts_.options.reduction, loads, parts_.modes),
+                  parts_.section.reduced(parts_.options.contact_reduction, loads, parts_.modes),
                   crown.foot(), crown.support(), crown.supports_each_side()),
               contacts});
 }

@@ -52,9 +52,8 @@ struct WaveguideRailOptions {
   double patch_half_width = 0.01;         ///< load patch radius around the crown (m)
   double head_bottom = kUic60HeadBottom;  ///< z of the head's underside (m), for the spin
   double poisson_ratio = 0.3;             ///< nu (-); E, rho, eta from the track's rail
-  /// The discretely supported waveguide's basis (waveguide_discrete_support.hpp).
-  RailReduction reduction;
-  /// The continuous waveguide's basis at the crown and the contacts (WaveguideRailModel).
+  /// The basis at the crown and the contacts, on either support (WaveguideRailModel,
+  /// DiscreteWaveguideRailModel; docs/models.md Sec. 2.5b, "The contact points' basis").
   RailReduction contact_reduction = near_field_reduction();
   /// contact_transfers() on a grid: the frequencies computed directly, the others interpolated
   /// (waveguide_frequency_sampling.hpp; per_octave = 0: every frequency directly).
