@@ -215,7 +215,8 @@ class RailModel {
   /// Whether contact_transfers(frequencies, pairs, true) at one frequency depends on the grid's
   /// other frequencies (a model that interpolates between direct evaluations): a caller that
   /// splits a grid among threads must then split it the same way for any thread count. The beams
-  /// and the discretely supported waveguide compute every frequency alone: false.
+  /// compute every frequency alone: false; the waveguide on either support samples (true unless
+  /// its sampling is off; GridSamplingRail in waveguide_rail_model.hpp).
   virtual bool samples_grid() const { return false; }
   /// For a model that samples its grid: the same rail whose contact_transfers at any frequencies
   /// take them from its sampling of `grid` (interpolated where that sampling checked the

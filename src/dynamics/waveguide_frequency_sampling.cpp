@@ -69,8 +69,9 @@ std::vector<std::vector<Receptance4>> evaluated(
   return out;
 }
 
-// sample_receptances, also giving its sampling (`kept`, when not null).
-std::vector<std::vector<Receptance4>> sample(
+}  // namespace
+
+std::vector<std::vector<Receptance4>> sample_receptances(
     const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
     const FrequencySampling& sampling, int* evaluations,
@@ -171,16 +172,6 @@ std::vector<std::vector<Receptance4>> sample(
       out[p].push_back(all ? samples.at(i).at(p) : values[p][i]);
   }
   return out;
-}
-
-}  // namespace
-
-std::vector<std::vector<Receptance4>> sample_receptances(
-    const std::vector<double>& frequencies,
-    const std::function<std::vector<Receptance4>(double)>& evaluate,
-    const FrequencySampling& sampling, int* evaluations,
-    const std::vector<std::pair<int, int>>& scales, SampledGrid* kept) {
-  return sample(frequencies, evaluate, sampling, evaluations, scales, kept);
 }
 
 std::vector<std::vector<Receptance4>> sampled_at(
