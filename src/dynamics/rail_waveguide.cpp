@@ -81,20 +81,24 @@ Eigen::Vector3d line3_shape(double xi) {
 
 }  // namespace
 
+void check_rail_inputs(const RailMaterial& material, const std::optional<FootSupport>& support) {
+  if (!(material.youngs_modulus > 0.0) || !(material.density > 0.0) ||
+      !(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5) ||
+      !(material.loss_factor >= 0.0))
+    throw InputError("rail_material", "rail material: E > 0, rho > 0, -1 < nu < 1/2, eta >= 0");
+  if (support) {
+    support->vertical.validate("track.support.vertical");
+    support->lateral.validate("track.support.lateral");
+    support->longitudinal.validate("track.support.longitudinal");
+    if (!(support->sleeper_spacing > 0.0))
+      throw InputError("rail_support", "sleeper spacing must be > 0");
+  }
+}
+
 RailWaveguide::RailWaveguide(fem::QuadraticTriangleMesh mesh, const RailMaterial& material,
                              std::optional<FootSupport> support)
     : mesh_(std::move(mesh)), material_(material), support_(std::move(support)) {
-  if (!(material_.youngs_modulus > 0.0) || !(material_.density > 0.0) ||
-      !(material_.poisson_ratio > -1.0 && material_.poisson_ratio < 0.5) ||
-      !(material_.loss_factor >= 0.0))
-    throw InputError("rail_material", "rail material: E > 0, rho > 0, -1 < nu < 1/2, eta >= 0");
-  if (support_) {
-    support_->vertical.validate("track.support.vertical");
-    support_->lateral.validate("track.support.lateral");
-    support_->longitudinal.validate("track.support.longitudinal");
-    if (!(support_->sleeper_spacing > 0.0))
-      throw InputError("rail_support", "sleeper spacing must be > 0");
-  }
+  check_rail_inputs(material_, support_);
   const int nn = static_cast<int>(mesh_.nodes.size());
   apply_basis(Eigen::MatrixXd::Identity(nn, nn), Eigen::MatrixXd::Identity(2 * nn, 2 * nn), true);
 }

@@ -137,6 +137,10 @@ struct RailReductionModes {
   std::vector<Eigen::LLT<Eigen::MatrixXd>> static_factors;
 };
 
+/// The checks RailWaveguide's constructor makes of its material and support (InputError naming
+/// the key), for models that build it on first use and check up front.
+void check_rail_inputs(const RailMaterial& material, const std::optional<FootSupport>& support);
+
 class RailWaveguide {
  public:
   /// `support`: none for the free rail. The foot is the set of boundary edges along the lowest z.

@@ -186,8 +186,6 @@ std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
 
 DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackParameters& track,
                                                                     const WaveguideRailOptions& o) {
-  if (!(o.mesh_size > 0.0) || !(o.patch_half_width > 0.0))
-    throw InputError("track.model", "waveguide rail: mesh size and load patch must be > 0");
   std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
   RailWaveguide full(fem::mesh_polygon(outline, o.mesh_size), rail_material(track, o.poisson_ratio),
                      std::nullopt);
@@ -210,24 +208,30 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackP
 DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& track,
                                                        const WaveguideRailOptions& options,
                                                        double contact_position)
-    : GridSamplingRail(track, TrackSupport::kContinuous, contact_position),
-      parts_(build(track, options)),
+    : GridSamplingRail(track, TrackSupport::kContinuous, contact_position, options.archive,
+                       "waveguide, discrete support\n" + options.archive_identity),
+      options_(options),
+      parts_([track, options] { return build(track, options); }),
       x_(contact_position) {
   if (!std::isfinite(x_) || x_ < 0.0)
     throw InputError("track.position", "contact position along the rail must be >= 0");
+  check_waveguide_inputs(track, options);  // the seats' values as the continuous support's
+  if (track.supports_each_side < 1)
+    throw InputError("rail_support", "at least one support each side");
 }
 
 std::shared_ptr<const DiscreteWaveguideRailModel::Station> DiscreteWaveguideRailModel::station(
     const std::vector<std::pair<double, double>>& points) const {
   // the points' loads and the foot's in one Ritz basis of the free rail (as build()'s crown)
+  const Parts& parts = parts_.get();
   const Eigen::MatrixXd contacts =
-      contact_point_loads(parts_.section, parts_.outline, parts_.options, points);
-  const DiscretelySupportedWaveguide& crown = parts_.rail;
-  Eigen::MatrixXd loads(parts_.section.dofs(), contacts.cols() + 4);
+      contact_point_loads(parts.section, parts.outline, parts.options, points);
+  const DiscretelySupportedWaveguide& crown = parts.rail;
+  Eigen::MatrixXd loads(parts.section.dofs(), contacts.cols() + 4);
   loads << contacts, crown.foot().loads;
   return std::make_shared<const Station>(
       Station{DiscretelySupportedWaveguide(
-                  parts_.section.reduced(parts_.options.contact_reduction, loads, parts_.modes),
+                  parts.section.reduced(parts.options.contact_reduction, loads, parts.modes),
                   crown.foot(), crown.support(), crown.supports_each_side()),
               contacts});
 }
@@ -273,12 +277,8 @@ GridSamplingRail::Evaluator DiscreteWaveguideRailModel::evaluator(const Points& 
                                                                   const SetPairs& pairs) const {
   // The points' basis on the first direct evaluation (none where a kept sampling serves all; the
   // sampling may evaluate on several threads).
-  auto built = std::make_shared<std::once_flag>();
-  auto st = std::make_shared<std::shared_ptr<const Station>>();
-  return [this, points, pairs, built, st](double f) {
-    std::call_once(*built, [&] { *st = station(points); });
-    return between(**st, checked_complex_omega(f), pairs);
-  };
+  const Lazy<std::shared_ptr<const Station>> st([this, points] { return station(points); });
+  return [pairs, st](double f) { return between(*st.get(), checked_complex_omega(f), pairs); };
 }
 
 RailModel::LaplaceTransfers DiscreteWaveguideRailModel::laplace_transfers(
@@ -322,7 +322,8 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
 }
 
 Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {
-  return parts_.rail.transfer(omega, parts_.crown, x_, parts_.crown, x_);
+  const Parts& parts = parts_.get();
+  return parts.rail.transfer(omega, parts.crown, x_, parts.crown, x_);
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance(double frequency) const {
@@ -342,14 +343,14 @@ std::vector<Receptance4> DiscreteWaveguideRailModel::line_transfers(
     double frequency, const std::vector<std::pair<double, double>>& pairs) const {
   std::vector<Receptance4> out;
   for (const Eigen::MatrixXcd& h :
-       parts_.rail.transfers(checked_complex_omega(frequency), parts_.crown, pairs))
+       rail().transfers(checked_complex_omega(frequency), crown_loads(), pairs))
     out.push_back(h);
   return out;
 }
 
 Receptance4 DiscreteWaveguideRailModel::line_transfer_laplace(cdouble s, double x_response,
                                                               double x_load) const {
-  return parts_.rail.transfer(checked_laplace(s), parts_.crown, x_response, parts_.crown, x_load);
+  return rail().transfer(checked_laplace(s), crown_loads(), x_response, crown_loads(), x_load);
 }
 
 }  // namespace rollnoise::dynamics

@@ -115,8 +115,8 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   Receptance4 contact_transfer(double frequency, double offset_a, double angle_a, double x_a,
                                double offset_b, double angle_b, double x_b) const;
 
-  const DiscretelySupportedWaveguide& rail() const { return parts_.rail; }
-  const Eigen::MatrixXd& crown_loads() const { return parts_.crown; }
+  const DiscretelySupportedWaveguide& rail() const { return parts_.get().rail; }
+  const Eigen::MatrixXd& crown_loads() const { return parts_.get().crown; }
 
  private:
   struct Parts {
@@ -140,11 +140,14 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
       const Station& s, cdouble omega,
       const std::vector<std::tuple<int, int, double, double>>& pairs);
 
-  Parts parts_;
+  WaveguideRailOptions options_;
+  // Built on first use (shared by copies): a run whose samplings all come from the archive
+  // meshes and solves nothing.
+  Lazy<Parts> parts_;
   double x_;
   // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set of
   // coupled points (rail_point_sets), each pair at its own positions between the sleepers.
-  const FrequencySampling& sampling() const override { return parts_.options.sampling; }
+  const FrequencySampling& sampling() const override { return options_.sampling; }
   bool along_rail_invariant() const override { return false; }
   Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
 

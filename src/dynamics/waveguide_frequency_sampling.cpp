@@ -207,17 +207,83 @@ std::vector<std::vector<Receptance4>> sampled_at(
   return out;
 }
 
+SamplingMemo::SamplingMemo(std::shared_ptr<const SamplingArchive> archive, std::string identity)
+    : archive_(std::move(archive)), identity_(std::move(identity)) {}
+
+std::string SamplingMemo::archive_key(const Key& key) const {
+  // the identity, then the points, the pairs and the grid as counts and raw doubles (the key is
+  // compared in full by the archive)
+  std::string out = identity_;
+  auto append = [&out](const double* v, std::size_t n) {
+    out += "\n" + std::to_string(n) + ":";
+    out.append(reinterpret_cast<const char*>(v), n * sizeof(double));
+  };
+  const auto& [points, pairs, grid] = key;
+  std::vector<double> flat;
+  for (const auto& [offset, angle] : points) flat.insert(flat.end(), {offset, angle});
+  append(flat.data(), flat.size());
+  append(pairs.data(), pairs.size());
+  append(grid.data(), grid.size());
+  return out;
+}
+
+void SamplingMemo::archive(const Key& key, const Entry& e) const {
+  archive_->write(archive_key(key), KeptSampling{*e.grid, e.direct});
+}
+
 std::shared_ptr<const SampledGrid> SamplingMemo::recalled(const Key& key) const {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = entries_.find(key);
+    if (it != entries_.end()) return it->second.grid;
+  }
+  if (!archive_) return nullptr;
+  std::optional<KeptSampling> kept = archive_->read(archive_key(key));
+  if (!kept) return nullptr;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const auto it = grids_.find(key);
-  return it == grids_.end() ? nullptr : it->second;
+  if (entries_.size() >= 64) entries_.clear();
+  Entry& e = entries_[key];
+  if (!e.grid) {
+    e.grid = std::make_shared<const SampledGrid>(std::move(kept->grid));
+    e.direct = std::move(kept->direct);
+    e.archived = e.direct.size();
+  }
+  return e.grid;
 }
 
 std::shared_ptr<const SampledGrid> SamplingMemo::remember(Key key, SampledGrid grid) const {
   auto kept = std::make_shared<const SampledGrid>(std::move(grid));
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (grids_.size() >= 64) grids_.clear();
-  return grids_.emplace(std::move(key), kept).first->second;
+  if (entries_.size() >= 64) entries_.clear();
+  Entry& e = entries_[key];
+  if (e.grid) return e.grid;
+  e.grid = kept;
+  if (archive_) archive(key, e);
+  return e.grid;
+}
+
+std::optional<std::vector<Receptance4>> SamplingMemo::direct(const Key& key, double f) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it == entries_.end()) return std::nullopt;
+  const auto v = it->second.direct.find(f);
+  if (v == it->second.direct.end()) return std::nullopt;
+  return v->second;
+}
+
+void SamplingMemo::keep_direct(const Key& key, double f, std::vector<Receptance4> value) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it != entries_.end()) it->second.direct.emplace(f, std::move(value));
+}
+
+void SamplingMemo::archive_direct(const Key& key) const {
+  if (!archive_) return;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = entries_.find(key);
+  if (it == entries_.end() || it->second.direct.size() == it->second.archived) return;
+  archive(key, it->second);
+  it->second.archived = it->second.direct.size();
 }
 
 std::vector<std::vector<Receptance4>> sampled_values(
@@ -235,14 +301,24 @@ std::vector<std::vector<Receptance4>> sampled_values(
   // and kept; every frequency from it (on the grid sampled itself: the values sample_receptances
   // gave, to the bit).
   const std::vector<double>& on = grid ? *grid : frequencies;
-  SamplingMemo::Key key{points, pairs, on};
+  const SamplingMemo::Key key{points, pairs, on};
   std::shared_ptr<const SampledGrid> g = memo.recalled(key);
   if (!g) {
     SampledGrid kept;
     sample_receptances(on, evaluate, sampling, nullptr, scales, &kept);
-    g = memo.remember(std::move(key), std::move(kept));
+    g = memo.remember(key, std::move(kept));
   }
-  return sampled_at(*g, frequencies, evaluate, sampling.threads);
+  // the frequencies the sampling does not give: computed once, then kept beside it (the same
+  // bits as computing them again)
+  const auto direct = [&](double f) {
+    if (std::optional<std::vector<Receptance4>> v = memo.direct(key, f)) return std::move(*v);
+    std::vector<Receptance4> v = evaluate(f);
+    memo.keep_direct(key, f, v);
+    return v;
+  };
+  std::vector<std::vector<Receptance4>> out = sampled_at(*g, frequencies, direct, sampling.threads);
+  memo.archive_direct(key);
+  return out;
 }
 
 }  // namespace rollnoise::dynamics

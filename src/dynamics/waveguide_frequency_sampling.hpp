@@ -29,6 +29,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -82,21 +84,61 @@ std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& grid, const std::vector<double>& frequencies,
     const std::function<std::vector<Receptance4>(double)>& evaluate, int threads = 1);
 
+/// What a rail model keeps of one grid: its sampling, and the values computed directly at the
+/// frequencies the sampling does not give (sampled_at's, e.g. refinement lines near a cut-on or
+/// off the grid), by frequency.
+struct KeptSampling {
+  SampledGrid grid;
+  std::map<double, std::vector<Receptance4>> direct;
+};
+
+/// Keeps samplings beyond the run (io/rail_sampling_cache.hpp: files in the user's cache
+/// directory). read() gives nothing for a key it does not hold; write() is best effort. Both may
+/// be called from several threads.
+class SamplingArchive {
+ public:
+  virtual ~SamplingArchive() = default;
+  virtual std::optional<KeptSampling> read(const std::string& key) const = 0;
+  virtual void write(const std::string& key, const KeptSampling& kept) const = 0;
+};
+
 /// The samplings a rail model keeps (sample_receptances' `kept`), by what they were made of: a
 /// set of points on the section ((offset, angle) each), its pairs (any encoding of the values a
-/// sampling holds: the points' indices and their positions along the rail) and the grid. Shared by
-/// the copies of a model, thread-safe; a cache of values computed the same way whenever asked, so
-/// emptying it (at 64 entries) changes no result.
+/// sampling holds: the points' indices and their positions along the rail) and the grid; with
+/// each, the values computed directly beside it. Shared by the copies of a model, thread-safe; a
+/// cache of values computed the same way whenever asked, so emptying it (at 64 entries) changes no
+/// result. With an archive, a sampling not held is read from it, and each one made (or given more
+/// direct values) is written to it, under the model's `identity` (everything its values depend
+/// on besides the key) followed by the key's bytes.
 class SamplingMemo {
  public:
   using Key =
       std::tuple<std::vector<std::pair<double, double>>, std::vector<double>, std::vector<double>>;
+  SamplingMemo() = default;
+  SamplingMemo(std::shared_ptr<const SamplingArchive> archive, std::string identity);
+  /// The sampling of `key`: held, else from the archive (with its direct values), else null.
   std::shared_ptr<const SampledGrid> recalled(const Key& key) const;
+  /// Holds `grid` under `key` (and archives it); returns what is held.
   std::shared_ptr<const SampledGrid> remember(Key key, SampledGrid grid) const;
+  /// The value computed directly at `f` beside `key`'s sampling, if held.
+  std::optional<std::vector<Receptance4>> direct(const Key& key, double f) const;
+  /// Holds a value computed directly at `f` beside `key`'s sampling (held: recalled or remembered).
+  void keep_direct(const Key& key, double f, std::vector<Receptance4> value) const;
+  /// Archives `key`'s entry again if it holds direct values the archive does not.
+  void archive_direct(const Key& key) const;
 
  private:
+  struct Entry {
+    std::shared_ptr<const SampledGrid> grid;
+    std::map<double, std::vector<Receptance4>> direct;
+    std::size_t archived = 0;  ///< direct values the archive holds
+  };
+  std::string archive_key(const Key& key) const;
+  void archive(const Key& key, const Entry& e) const;  // with mutex_ held
+  std::shared_ptr<const SamplingArchive> archive_;
+  std::string identity_;
   mutable std::mutex mutex_;
-  mutable std::map<Key, std::shared_ptr<const SampledGrid>> grids_;
+  mutable std::map<Key, Entry> entries_;
 };
 
 /// One set of points' values, per pair at each of `frequencies`, as a rail model that samples its

@@ -26,14 +26,15 @@ RailMaterial rail_material(const TrackParameters& track, double poisson_ratio) {
 
 namespace {
 
+FootSupport foot_support(const TrackParameters& track) {
+  return FootSupport{track.vertical_support, track.lateral_support, track.longitudinal_support,
+                     track.sleeper_spacing};
+}
+
 RailWaveguide full_model(const TrackParameters& track, const WaveguideRailOptions& o) {
-  if (!(o.mesh_size > 0.0) || !(o.patch_half_width > 0.0))
-    throw InputError("track.model", "waveguide rail: mesh size and load patch must be > 0");
   const std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
   return RailWaveguide(fem::mesh_polygon(outline, o.mesh_size),
-                       rail_material(track, o.poisson_ratio),
-                       FootSupport{track.vertical_support, track.lateral_support,
-                                   track.longitudinal_support, track.sleeper_spacing});
+                       rail_material(track, o.poisson_ratio), foot_support(track));
 }
 
 // The crown: the highest point of the outline at the centre line (y = 0), or the highest vertex.
@@ -45,25 +46,39 @@ Eigen::Vector2d crown_of(const fem::QuadraticTriangleMesh& mesh) {
 
 }  // namespace
 
-WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
-                                       const WaveguideRailOptions& options)
-    : GridSamplingRail(track, TrackSupport::kContinuous, 0.0),
-      options_(options),
-      outline_(options.outline.empty() ? uic60_outline() : options.outline),
-      full_(full_model(track, options)),
-      modes_(full_.reduction_modes(options.contact_reduction)) {
+void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOptions& options) {
+  if (!(options.mesh_size > 0.0) || !(options.patch_half_width > 0.0))
+    throw InputError("track.model", "waveguide rail: mesh size and load patch must be > 0");
   if (options.sampling.per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
+  fem::check_outline(options.outline.empty() ? uic60_outline() : options.outline,
+                     options.mesh_size);
+  check_rail_inputs(rail_material(track, options.poisson_ratio), foot_support(track));
+}
+
+WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
+                                       const WaveguideRailOptions& options)
+    : GridSamplingRail(track, TrackSupport::kContinuous, 0.0, options.archive,
+                       "waveguide, continuous support\n" + options.archive_identity),
+      options_(options),
+      outline_(options.outline.empty() ? uic60_outline() : options.outline),
+      section_([track, options] {
+        RailWaveguide full = full_model(track, options);
+        RailReductionModes modes = full.reduction_modes(options.contact_reduction);
+        return Section{std::move(full), std::move(modes)};
+      }),
+      crown_([section = section_, options] {
+        const Section& s = section.get();
+        Eigen::MatrixXd loads =
+            s.full.patch_loads(crown_of(s.full.mesh()), options.patch_half_width,
+                               Eigen::Vector2d(0.0, 1.0), options.head_bottom);
+        return Station{s.full.reduced(options.contact_reduction, loads, s.modes), std::move(loads)};
+      }) {
+  check_waveguide_inputs(track, options);
 }
 
 const WaveguideRailModel::Station& WaveguideRailModel::crown() const {
-  std::call_once(crown_->once, [this] {
-    Eigen::MatrixXd loads = full_.patch_loads(crown_of(full_.mesh()), options_.patch_half_width,
-                                              Eigen::Vector2d(0.0, 1.0), options_.head_bottom);
-    crown_->station = std::make_shared<const Station>(
-        Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
-  });
-  return *crown_->station;
+  return crown_.get();
 }
 
 Receptance4 WaveguideRailModel::at(cdouble omega) const {
@@ -131,9 +146,10 @@ Eigen::Vector2d WaveguideRailModel::contact_point(double offset_y, double contac
 
 std::shared_ptr<const WaveguideRailModel::Station> WaveguideRailModel::station(
     const Points& points) const {
-  Eigen::MatrixXd loads = contact_point_loads(full_, outline_, options_, points);
+  const Section& s = section_.get();
+  Eigen::MatrixXd loads = contact_point_loads(s.full, outline_, options_, points);
   return std::make_shared<const Station>(
-      Station{full_.reduced(options_.contact_reduction, loads, modes_), std::move(loads)});
+      Station{s.full.reduced(options_.contact_reduction, loads, s.modes), std::move(loads)});
 }
 
 std::vector<Receptance4> WaveguideRailModel::between(
@@ -215,6 +231,13 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::contact_transfers_from(
   return transfers(frequencies, pairs, true, &grid);
 }
 
+GridSamplingRail::GridSamplingRail(const TrackParameters& track, TrackSupport support,
+                                   double contact_position,
+                                   std::shared_ptr<const SamplingArchive> archive,
+                                   std::string identity)
+    : RailModel(track, support, contact_position),
+      memo_(std::make_shared<const SamplingMemo>(std::move(archive), std::move(identity))) {}
+
 std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
     bool interpolate, const std::vector<double>* grid) const {
@@ -274,12 +297,9 @@ GridSamplingRail::Evaluator WaveguideRailModel::evaluator(const Points& points,
   // sampling may evaluate on several threads); the pairs as (a, b, x_a - x_b).
   std::vector<std::tuple<int, int, double>> within;
   for (const auto& [a, b, x, unused] : pairs) within.emplace_back(a, b, x);
-  auto built = std::make_shared<std::once_flag>();
-  auto st = std::make_shared<std::shared_ptr<const Station>>();
-  return [this, points, within, built, st](double f) {
-    std::call_once(*built, [&] { *st = station(points); });
-    return between(**st, checked_complex_omega(f), within);
-  };
+  const Lazy<std::shared_ptr<const Station>> st([this, points] { return station(points); });
+  return
+      [this, within, st](double f) { return between(*st.get(), checked_complex_omega(f), within); };
 }
 
 std::unique_ptr<RailModel> GridSamplingRail::on_grid(std::vector<double> grid) const {

@@ -35,10 +35,12 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "core/lazy.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_frequency_sampling.hpp"
@@ -58,7 +60,18 @@ struct WaveguideRailOptions {
   /// contact_transfers() on a grid: the frequencies computed directly, the others interpolated
   /// (waveguide_frequency_sampling.hpp; per_octave = 0: every frequency directly).
   FrequencySampling sampling;
+  /// Where the samplings are kept beyond the run (null: nowhere; io/rail_sampling_cache.hpp), and
+  /// this model's identity there: everything its values depend on besides the points, pairs and
+  /// grid (the build, the track file, the support, the section).
+  std::shared_ptr<const SamplingArchive> archive;
+  std::string archive_identity;
 };
+
+/// The checks of a waveguide rail's inputs that its build makes (InputError naming the key): the
+/// mesh size, load patch and sampling, the outline (fem::check_outline), the rail's material and
+/// the supports (continuous, or the seats of the discrete support). The models make them up front
+/// and build on first use.
+void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOptions& options);
 
 /// A rail model that samples the frequency grids it is given and keeps the samplings (the
 /// waveguide on the continuous and on the discrete support): contact_transfers computes each set
@@ -68,7 +81,9 @@ struct WaveguideRailOptions {
 /// provides its sampling and, per set of points, the direct evaluation.
 class GridSamplingRail : public RailModel {
  public:
-  using RailModel::RailModel;
+  /// RailModel's, the samplings kept in `archive` (may be null) under `identity` as well.
+  GridSamplingRail(const TrackParameters& track, TrackSupport support, double contact_position,
+                   std::shared_ptr<const SamplingArchive> archive, std::string identity);
   /// Sampled as sampling() says (the rest interpolated) when `interpolate`, else every frequency
   /// directly.
   std::vector<std::vector<Receptance6>> contact_transfers(const std::vector<double>& frequencies,
@@ -103,7 +118,7 @@ class GridSamplingRail : public RailModel {
 
  private:
   /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
-  std::shared_ptr<const SamplingMemo> memo_ = std::make_shared<const SamplingMemo>();
+  std::shared_ptr<const SamplingMemo> memo_;
   /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
   std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
                                                   const std::vector<RailContactPair>& pairs,
@@ -159,17 +174,19 @@ class WaveguideRailModel : public GridSamplingRail {
     Eigen::MatrixXd loads;
   };
 
-  /// The crown's station, built once on first use (thread-safe; shared by copies).
-  struct LazyCrown {
-    std::once_flag once;
-    std::shared_ptr<const Station> station;
+  /// The unreduced model, for the contacts' bases, and its section modes (the load-independent
+  /// part of every basis).
+  struct Section {
+    RailWaveguide full;
+    RailReductionModes modes;
   };
 
   WaveguideRailOptions options_;
   std::vector<Eigen::Vector2d> outline_;
-  RailWaveguide full_;        // the unreduced model, for the contacts' bases
-  RailReductionModes modes_;  // its section modes, the load-independent part of every basis
-  std::shared_ptr<LazyCrown> crown_ = std::make_shared<LazyCrown>();
+  // Built on first use (shared by copies): a run whose samplings all come from the archive
+  // meshes and solves nothing.
+  Lazy<Section> section_;
+  Lazy<Station> crown_;
 
   // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set.
   const FrequencySampling& sampling() const override { return options_.sampling; }

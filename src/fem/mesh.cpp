@@ -40,37 +40,6 @@ bool segments_intersect(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
   return near(q0, q1, p0) || near(q0, q1, p1) || near(p0, p1, q0) || near(p0, p1, q1);
 }
 
-// Throws InputError for fewer than 3 points, a repeated point, zero area or crossing segments.
-void check_outline(const std::vector<Eigen::Vector2d>& outline, double h) {
-  if (!(h > 0.0) || !std::isfinite(h))
-    throw InputError("mesh_size", "mesh size must be positive, got " + std::to_string(h) + " m");
-  const int n = static_cast<int>(outline.size());
-  if (n < 3)
-    throw InputError("outline",
-                     "a section outline needs at least 3 points, got " + std::to_string(n));
-  double extent = 0.0;
-  for (const auto& p : outline) {
-    if (!p.allFinite()) throw InputError("outline", "outline point is not finite");
-    extent = std::max(extent, (p - outline[0]).norm());
-  }
-  const double tol = 1e-9 * extent;
-  for (int i = 0; i < n; ++i)
-    if ((outline[(i + 1) % n] - outline[i]).norm() <= tol)
-      throw InputError("outline", "outline points " + std::to_string(i) + " and " +
-                                      std::to_string((i + 1) % n) +
-                                      " coincide (degenerate segment)");
-  if (std::abs(polygon_signed_area(outline)) <= 1e-12 * extent * extent)
-    throw InputError("outline", "outline encloses no area");
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through the closing segment
-      if (segments_intersect(outline[i], outline[(i + 1) % n], outline[j], outline[(j + 1) % n],
-                             tol))
-        throw InputError("outline", "outline is self-intersecting: segment " + std::to_string(i) +
-                                        " meets segment " + std::to_string(j));
-    }
-}
-
 // Runs gmsh on the outline (already checked); fills nodes by tag, triangles and boundary lines.
 struct GmshMesh {
   std::vector<std::size_t> node_tags;
@@ -178,6 +147,36 @@ GmshMesh run_gmsh(const std::vector<Eigen::Vector2d>& outline, double h) {
 }
 
 }  // namespace
+
+void check_outline(const std::vector<Eigen::Vector2d>& outline, double h) {
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw InputError("mesh_size", "mesh size must be positive, got " + std::to_string(h) + " m");
+  const int n = static_cast<int>(outline.size());
+  if (n < 3)
+    throw InputError("outline",
+                     "a section outline needs at least 3 points, got " + std::to_string(n));
+  double extent = 0.0;
+  for (const auto& p : outline) {
+    if (!p.allFinite()) throw InputError("outline", "outline point is not finite");
+    extent = std::max(extent, (p - outline[0]).norm());
+  }
+  const double tol = 1e-9 * extent;
+  for (int i = 0; i < n; ++i)
+    if ((outline[(i + 1) % n] - outline[i]).norm() <= tol)
+      throw InputError("outline", "outline points " + std::to_string(i) + " and " +
+                                      std::to_string((i + 1) % n) +
+                                      " coincide (degenerate segment)");
+  if (std::abs(polygon_signed_area(outline)) <= 1e-12 * extent * extent)
+    throw InputError("outline", "outline encloses no area");
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing segment
+      if (segments_intersect(outline[i], outline[(i + 1) % n], outline[j], outline[(j + 1) % n],
+                             tol))
+        throw InputError("outline", "outline is self-intersecting: segment " + std::to_string(i) +
+                                        " meets segment " + std::to_string(j));
+    }
+}
 
 double polygon_signed_area(const std::vector<Eigen::Vector2d>& outline) {
   double a = 0.0;

@@ -27,6 +27,11 @@ struct QuadraticTriangleMesh {
 /// std::runtime_error if libgmsh cannot be loaded (gmsh_library()).
 QuadraticTriangleMesh mesh_polygon(const std::vector<Eigen::Vector2d>& outline, double h);
 
+/// The checks mesh_polygon makes before meshing: throws InputError (key "mesh_size" for h <= 0,
+/// "outline" for fewer than 3 points, a non-finite or repeated point, zero area or crossing
+/// segments).
+void check_outline(const std::vector<Eigen::Vector2d>& outline, double h);
+
 /// Signed area of a closed polygon (positive when counter-clockwise), shoelace formula.
 double polygon_signed_area(const std::vector<Eigen::Vector2d>& outline);
 

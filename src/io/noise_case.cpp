@@ -3,12 +3,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
+#include "io/cache_files.hpp"
 #include "io/frequency_axis.hpp"
+#include "io/rail_sampling_cache.hpp"
 #include "io/rail_section_file.hpp"
 #include "io/roughness_file.hpp"
 #include "io/track_file.hpp"
@@ -113,10 +117,20 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
   const std::string support = r.string("track.support");
   const double position = r.real("track.position");
   const std::string model = r.string("track.model");
-  if (model != "waveguide" && r.has("track.rail_section"))
-    r.fail("track.rail_section", "applies to track.model = \"waveguide\" only");
+  for (const char* key : {"track.rail_section", "track.sampling_cache"})
+    if (model != "waveguide" && r.has(key))
+      r.fail(key, "applies to track.model = \"waveguide\" only");
   if (model == "waveguide") {
     dynamics::WaveguideRailOptions o = waveguide_rail_options(r, track_section);
+    // the samplings kept between runs (io/rail_sampling_cache.hpp)
+    if (r.string("track.sampling_cache") == "user")
+      if (const std::optional<std::string> directory = cache_directory()) {
+        const std::string section =
+            r.has("track.rail_section") ? resolve_model_file(r, "track.rail_section") : "";
+        o.archive_identity = rail_sampling_identity(file, section, position);
+        if (!o.archive_identity.empty())
+          o.archive = std::make_shared<const RailSamplingCache>(*directory);
+      }
     // the sampling's direct frequencies on the case's threads (not in the id: the values do not
     // depend on them)
     o.sampling.threads = resolved_threads(static_cast<int>(r.integer("solver.threads")));
