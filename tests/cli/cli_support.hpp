@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -76,5 +78,25 @@ inline std::string file_contents(const std::string& path) {
   s << in.rdbuf();
   return s.str();
 }
+
+/// ROLLNOISE_CACHE_DIR for the runs of one scope (the suite runs with it "off": CMakeLists.txt).
+class CacheFolder {
+ public:
+  explicit CacheFolder(const std::string& value) {
+    if (const char* v = std::getenv("ROLLNOISE_CACHE_DIR")) old_ = v;
+    ::setenv("ROLLNOISE_CACHE_DIR", value.c_str(), 1);
+  }
+  ~CacheFolder() {
+    if (old_)
+      ::setenv("ROLLNOISE_CACHE_DIR", old_->c_str(), 1);
+    else
+      ::unsetenv("ROLLNOISE_CACHE_DIR");
+  }
+  CacheFolder(const CacheFolder&) = delete;
+  CacheFolder& operator=(const CacheFolder&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
 
 }  // namespace rollnoise::cli_test

@@ -27,24 +27,6 @@ std::string coarse_curve(const std::string& out, const std::string& more = "") {
          more;
 }
 
-// ROLLNOISE_CACHE_DIR for the runs of one scope (the suite runs with it "off": CMakeLists.txt).
-class CacheFolder {
- public:
-  explicit CacheFolder(const std::string& value) {
-    if (const char* v = std::getenv("ROLLNOISE_CACHE_DIR")) old_ = v;
-    ::setenv("ROLLNOISE_CACHE_DIR", value.c_str(), 1);
-  }
-  ~CacheFolder() {
-    if (old_)
-      ::setenv("ROLLNOISE_CACHE_DIR", old_->c_str(), 1);
-    else
-      ::unsetenv("ROLLNOISE_CACHE_DIR");
-  }
-
- private:
-  std::optional<std::string> old_;
-};
-
 std::vector<double> dataset(const std::filesystem::path& file, const std::string& name) {
   const rollnoise::io::Hdf5Reader h(file.string());
   EXPECT_TRUE(h.ok()) << file;

@@ -11,6 +11,12 @@
 #include <atomic>
 #include <cmath>
 #include <complex>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace rd = rollnoise::dynamics;
@@ -224,4 +230,73 @@ TEST(WaveguideFrequencySampling, ThreadsGiveTheSerialSamplingToTheBit) {
         ASSERT_TRUE(off_grid[t][p][k] == off_grid[0][p][k]) << added[k];
     }
   }
+}
+
+namespace {
+
+// An archive in memory (the role io::RailSamplingCache plays with files), counting its writes.
+class MemoryArchive : public rd::SamplingArchive {
+ public:
+  std::optional<rd::KeptSampling> read(const std::string& key) const override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = kept_.find(key);
+    if (it == kept_.end()) return std::nullopt;
+    return it->second;
+  }
+  void write(const std::string& key, const rd::KeptSampling& kept) const override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    kept_[key] = kept;
+    ++writes;
+  }
+  mutable int writes = 0;
+  mutable std::map<std::string, rd::KeptSampling> kept_;
+
+ private:
+  mutable std::mutex mutex_;
+};
+
+}  // namespace
+
+// Samplings kept beyond the run (SamplingMemo with an archive; track.sampling_cache): a second
+// memo on the same archive and identity (a later run) computes nothing, neither the grid's sampling
+// nor the lines beside it (an unchecked interval at the cut-on, outside the grid), and gives the
+// first run's values to the bit; another identity (another track) or another grid computes anew.
+TEST(WaveguideFrequencySampling, ArchivedSamplingServesALaterRunWithoutEvaluating) {
+  const std::vector<double> f = sampling_test_grid();
+  std::atomic<int> calls{0};
+  auto evaluate = [&](double x) {
+    ++calls;
+    return std::vector<rd::Receptance4>{sampling_test_receptance(x, 640.0, 1500.0)};
+  };
+  std::vector<double> added{0.9 * f.front(), 1.1 * f.back()};
+  for (std::size_t k = 0; k + 1 < f.size(); k += 3) added.push_back(f[k] + (f[k + 1] - f[k]) / 3.0);
+  const rd::FrequencySampling sampling;
+  const std::vector<std::pair<double, double>> points{{-0.0366, 0.52}};
+  const std::vector<double> pairs{0, 0, 0, 0};
+  auto archive = std::make_shared<const MemoryArchive>();
+  auto run = [&](const std::string& identity, const std::vector<double>& grid) {
+    const rd::SamplingMemo memo(archive, identity);  // a run's memo
+    calls = 0;
+    auto on_grid =
+        rd::sampled_values(grid, nullptr, true, evaluate, sampling, {}, memo, points, pairs);
+    auto off_grid =
+        rd::sampled_values(added, &grid, true, evaluate, sampling, {}, memo, points, pairs);
+    return std::make_tuple(on_grid, off_grid, calls.load());
+  };
+  const auto [grid1, added1, first] = run("track A", f);
+  EXPECT_GT(first, 0);
+  EXPECT_EQ(archive->kept_.size(), 1u);
+  const auto [grid2, added2, second] = run("track A", f);
+  EXPECT_EQ(second, 0);  // the sampling and its direct lines from the archive
+  for (std::size_t k = 0; k < f.size(); ++k) ASSERT_TRUE(grid2[0][k] == grid1[0][k]) << f[k];
+  for (std::size_t k = 0; k < added.size(); ++k)
+    ASSERT_TRUE(added2[0][k] == added1[0][k]) << added[k];
+  const int writes = archive->writes;
+  run("track A", f);
+  EXPECT_EQ(archive->writes, writes);  // nothing new: nothing written
+  // another identity, another grid: computed and kept apart
+  EXPECT_EQ(std::get<2>(run("track B", f)), first);
+  std::vector<double> other(f.begin(), f.begin() + 400);
+  EXPECT_GT(std::get<2>(run("track A", other)), 0);
+  EXPECT_EQ(archive->kept_.size(), 3u);
 }
