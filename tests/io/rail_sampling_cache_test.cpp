@@ -21,7 +21,7 @@ namespace {
 using namespace rollnoise;
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
+fs::path rail_scratch(const std::string& name) {
   static const struct Root {
     fs::path dir =
         fs::temp_directory_path() / ("rollnoise_rail_cache_" + std::to_string(::getpid()));
@@ -37,7 +37,7 @@ fs::path scratch(const std::string& name) {
 }
 
 // A sampling of two pairs on 5 frequencies with 2 lines beside it, random values (seeded).
-dynamics::KeptSampling random_sampling() {
+dynamics::KeptSampling random_rail_sampling() {
   std::mt19937 rng(20261127);
   std::normal_distribution<double> n(0.0, 1e-9);
   auto r4 = [&] {
@@ -55,7 +55,7 @@ dynamics::KeptSampling random_sampling() {
   return k;
 }
 
-bool same(const dynamics::KeptSampling& a, const dynamics::KeptSampling& b) {
+bool same_sampling(const dynamics::KeptSampling& a, const dynamics::KeptSampling& b) {
   if (a.grid.at != b.grid.at || a.grid.checked != b.grid.checked ||
       a.direct.size() != b.direct.size())
     return false;
@@ -74,21 +74,21 @@ bool same(const dynamics::KeptSampling& a, const dynamics::KeptSampling& b) {
 }  // namespace
 
 TEST(RailSamplingCache, SamplingReadBackIsBitIdentical) {
-  const io::RailSamplingCache cache(scratch("roundtrip").string());
-  const dynamics::KeptSampling k = random_sampling();
+  const io::RailSamplingCache cache(rail_scratch("roundtrip").string());
+  const dynamics::KeptSampling k = random_rail_sampling();
   const std::string key = "identity\npoints, pairs, grid";
   EXPECT_FALSE(cache.read(key).has_value());
   cache.write(key, k);
   const auto back = cache.read(key);
   ASSERT_TRUE(back.has_value());
-  EXPECT_TRUE(same(*back, k));
+  EXPECT_TRUE(same_sampling(*back, k));
 }
 
 TEST(RailSamplingCache, AnotherKeyADamagedOrTruncatedFileReadsNothing) {
-  const fs::path dir = scratch("damaged");
+  const fs::path dir = rail_scratch("damaged");
   const io::RailSamplingCache cache(dir.string());
   const std::string key = "identity\nthe key";
-  cache.write(key, random_sampling());
+  cache.write(key, random_rail_sampling());
   ASSERT_TRUE(cache.read(key).has_value());
   EXPECT_FALSE(cache.read("identity\nanother key").has_value());
   const std::string file = cache.file(key), bytes = io::file_bytes(file);
@@ -105,7 +105,7 @@ TEST(RailSamplingCache, AnotherKeyADamagedOrTruncatedFileReadsNothing) {
   // a folder that cannot be made (a file is in the way): nothing written, nothing read, no error
   std::ofstream(dir / "blocked") << "x";
   const io::RailSamplingCache blocked((dir / "blocked" / "cache").string());
-  blocked.write(key, random_sampling());
+  blocked.write(key, random_rail_sampling());
   EXPECT_FALSE(blocked.read(key).has_value());
 }
 
@@ -118,7 +118,7 @@ TEST(RailSamplingCache, IdentityChangesWithTrackSectionAndPosition) {
   EXPECT_EQ(io::rail_sampling_identity(track, "", 0.3), id);
   EXPECT_NE(io::rail_sampling_identity(track, section, 0.3), id);
   EXPECT_NE(io::rail_sampling_identity(track, "", 0.0), id);
-  const fs::path dir = scratch("identity");
+  const fs::path dir = rail_scratch("identity");
   const fs::path other = dir / "track.toml";
   std::ofstream(other) << io::file_bytes(track) << "\n# edited\n";
   EXPECT_NE(io::rail_sampling_identity(other.string(), "", 0.3), id);
