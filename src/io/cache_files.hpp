@@ -1,6 +1,7 @@
 // Files in the user's cache directory, kept between runs: the wheel's FE modes
 // (io/wheel_modes_cache.hpp) and the waveguide rail's frequency samplings
-// (io/rail_sampling_cache.hpp); docs/interface.md, "The cache directory".
+// (io/rail_sampling_cache.hpp); docs/interface.md, "The wheel's mode cache" and "The rail's
+// sampling cache".
 //
 // Each file holds a magic line, its key (the length, a newline, the bytes), a payload and the
 // payload's FNV-1a checksum, and is named by the key's FNV-1a hash (64 bits; Fowler, Noll, Vo). The

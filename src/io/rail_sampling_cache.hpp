@@ -1,5 +1,5 @@
 // The waveguide rail's frequency samplings kept between runs (track.sampling_cache = "user";
-// docs/interface.md, "The cache directory").
+// docs/interface.md, "The rail's sampling cache").
 //
 // On a frequency grid the waveguide rail computes each set of coupled contact points directly at
 // an adaptively chosen part of the grid (each frequency a wavenumber eigenproblem, ~2-20 ms) and

@@ -1,5 +1,5 @@
 // The waveguide rail's sampling cache through the program (track.sampling_cache,
-// ROLLNOISE_CACHE_DIR; docs/interface.md "The cache directory"): the first run of a waveguide case
+// ROLLNOISE_CACHE_DIR; docs/interface.md "The rail's sampling cache"): the first run of a waveguide case
 // stores its samplings at the contacts, the second reads them and writes the same numbers; "off"
 // (key or environment) stores nothing; the key belongs to the waveguide rail.
 #include <gtest/gtest.h>
