@@ -6,7 +6,6 @@
 #include "io/rail_sampling_cache.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <complex>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include <string>
 
 #include "io/cache_files.hpp"
+#include "support/test_helpers.hpp"
 
 namespace {
 
@@ -22,18 +22,7 @@ using namespace rollnoise;
 namespace fs = std::filesystem;
 
 fs::path rail_scratch(const std::string& name) {
-  static const struct Root {
-    fs::path dir =
-        fs::temp_directory_path() / ("rollnoise_rail_cache_" + std::to_string(::getpid()));
-    ~Root() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } root;
-  const fs::path d = root.dir / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return test_support::scratch_folder("rollnoise_rail_cache", name);
 }
 
 // A sampling of two pairs on 5 frequencies with 2 lines beside it, random values (seeded).

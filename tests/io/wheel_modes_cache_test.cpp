@@ -4,7 +4,6 @@
 #include "io/wheel_modes_cache.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -16,26 +15,15 @@
 #include "io/case_reader.hpp"
 #include "io/input_problems.hpp"
 #include "io/wheel_section_file.hpp"
+#include "support/test_helpers.hpp"
 
 namespace {
 
 using namespace rollnoise;
 namespace fs = std::filesystem;
 
-// A fresh scratch folder of this test process (all of them removed when the process ends).
 fs::path scratch(const std::string& name) {
-  static const struct Root {
-    fs::path dir =
-        fs::temp_directory_path() / ("rollnoise_modes_cache_" + std::to_string(::getpid()));
-    ~Root() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } root;
-  const fs::path d = root.dir / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return test_support::scratch_folder("rollnoise_modes_cache", name);
 }
 
 // The default FE wheel case with a coarse mesh and a short range (n <= 3, 2.5 kHz: a few modes).
