@@ -281,7 +281,7 @@ GridSamplingRail::Evaluator DiscreteWaveguideRailModel::evaluator(const Points& 
   return [pairs, st](double f) { return between(*st.get(), checked_complex_omega(f), pairs); };
 }
 
-RailModel::LaplaceTransfers DiscreteWaveguideRailModel::laplace_transfers(
+RailModel::LaplaceTransfers DiscreteWaveguideRailModel::direct_laplace_transfers(
     const std::vector<RailContactPair>& pairs) const {
   const RailPointSets sets = rail_point_sets(pairs);
   std::vector<std::shared_ptr<const Station>> stations;

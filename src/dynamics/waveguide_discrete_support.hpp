@@ -108,7 +108,6 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 between two contacts in their frames, a = (offset_a, angle_a) at x_a and
   /// b = (offset_b, angle_b) at x_b along the rail (m from a sleeper), one basis for both.
@@ -150,6 +149,8 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   const FrequencySampling& sampling() const override { return options_.sampling; }
   bool along_rail_invariant() const override { return false; }
   Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
+  LaplaceTransfers direct_laplace_transfers(
+      const std::vector<RailContactPair>& pairs) const override;
 
   Receptance4 at(cdouble omega) const;
 };

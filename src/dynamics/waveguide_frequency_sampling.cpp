@@ -218,12 +218,13 @@ std::string SamplingMemo::archive_key(const Key& key) const {
     out += "\n" + std::to_string(n) + ":";
     out.append(reinterpret_cast<const char*>(v), n * sizeof(double));
   };
-  const auto& [points, pairs, grid] = key;
+  const auto& [points, pairs, grid, every] = key;
   std::vector<double> flat;
   for (const auto& [offset, angle] : points) flat.insert(flat.end(), {offset, angle});
   append(flat.data(), flat.size());
   append(pairs.data(), pairs.size());
   append(grid.data(), grid.size());
+  out += every ? "\nevery frequency directly" : "\nsampled";
   return out;
 }
 
@@ -295,13 +296,25 @@ std::vector<std::vector<Receptance4>> sampled_values(
   if (!interpolate || sampling.per_octave <= 0) {
     FrequencySampling direct = sampling;
     direct.per_octave = 0;
-    return sample_receptances(frequencies, evaluate, direct, nullptr, scales);
+    if (!memo.archived()) return sample_receptances(frequencies, evaluate, direct, nullptr, scales);
+    // kept for later runs: every distinct frequency a sample, no interval checked
+    std::vector<double> distinct = frequencies;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    const SamplingMemo::Key key{points, pairs, distinct, true};
+    std::shared_ptr<const SampledGrid> g = memo.recalled(key);
+    if (!g) {
+      SampledGrid kept;
+      sample_receptances(distinct, evaluate, direct, nullptr, scales, &kept);
+      g = memo.remember(key, std::move(kept));
+    }
+    return sampled_at(*g, frequencies, evaluate, sampling.threads);
   }
   // The sampling of the grid (`frequencies` themselves where no grid is given), kept or made now
   // and kept; every frequency from it (on the grid sampled itself: the values sample_receptances
   // gave, to the bit).
   const std::vector<double>& on = grid ? *grid : frequencies;
-  const SamplingMemo::Key key{points, pairs, on};
+  const SamplingMemo::Key key{points, pairs, on, false};
   std::shared_ptr<const SampledGrid> g = memo.recalled(key);
   if (!g) {
     SampledGrid kept;

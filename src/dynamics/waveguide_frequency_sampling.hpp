@@ -35,6 +35,7 @@
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_contact.hpp"
 #include "dynamics/receptance.hpp"
 
 namespace rollnoise::dynamics {
@@ -92,14 +93,22 @@ struct KeptSampling {
   std::map<double, std::vector<Receptance4>> direct;
 };
 
-/// Keeps samplings beyond the run (io/rail_sampling_cache.hpp: files in the user's cache
-/// directory). read() gives nothing for a key it does not hold; write() is best effort. Both may
-/// be called from several threads.
+/// What a rail model keeps of one set of pairs at complex frequencies (squeal's continuation,
+/// RailModel::laplace_transfers): the values (one 6x6 per pair) by s = (Re s, Im s).
+struct KeptLaplace {
+  std::map<std::pair<double, double>, std::vector<Receptance6>> values;
+};
+
+/// Keeps samplings (and values at complex frequencies) beyond the run (io/rail_sampling_cache.hpp:
+/// files in the user's cache directory). read gives nothing for a key it does not hold; write is
+/// best effort. All may be called from several threads.
 class SamplingArchive {
  public:
   virtual ~SamplingArchive() = default;
   virtual std::optional<KeptSampling> read(const std::string& key) const = 0;
   virtual void write(const std::string& key, const KeptSampling& kept) const = 0;
+  virtual std::optional<KeptLaplace> read_laplace(const std::string& key) const = 0;
+  virtual void write_laplace(const std::string& key, const KeptLaplace& kept) const = 0;
 };
 
 /// The samplings a rail model keeps (sample_receptances' `kept`), by what they were made of: a
@@ -112,10 +121,13 @@ class SamplingArchive {
 /// on besides the key) followed by the key's bytes.
 class SamplingMemo {
  public:
-  using Key =
-      std::tuple<std::vector<std::pair<double, double>>, std::vector<double>, std::vector<double>>;
+  /// (points, pairs, grid, every frequency computed directly: a "sampling" with no interpolation)
+  using Key = std::tuple<std::vector<std::pair<double, double>>, std::vector<double>,
+                         std::vector<double>, bool>;
   SamplingMemo() = default;
   SamplingMemo(std::shared_ptr<const SamplingArchive> archive, std::string identity);
+  /// Whether the samplings also go to an archive.
+  bool archived() const { return archive_ != nullptr; }
   /// The sampling of `key`: held, else from the archive (with its direct values), else null.
   std::shared_ptr<const SampledGrid> recalled(const Key& key) const;
   /// Holds `grid` under `key` (and archives it); returns what is held.
@@ -143,7 +155,8 @@ class SamplingMemo {
 
 /// One set of points' values, per pair at each of `frequencies`, as a rail model that samples its
 /// grid gives them (the waveguide on either support):
-///  * `interpolate` false, or sampling.per_octave = 0: every frequency by `evaluate`;
+///  * `interpolate` false, or sampling.per_octave = 0: every frequency by `evaluate` (with an
+///    archive in `memo`, kept as a sampling of the frequencies that interpolates nothing);
 ///  * else from the sampling of `*grid` (`frequencies` themselves where `grid` is null: the values
 ///    sample_receptances gives), kept in `memo` (key: `points`, `pairs`, the grid) or made now and
 ///    kept: sampled_at, so that each frequency's value depends on the grid and itself alone, and a

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -236,7 +237,66 @@ GridSamplingRail::GridSamplingRail(const TrackParameters& track, TrackSupport su
                                    std::shared_ptr<const SamplingArchive> archive,
                                    std::string identity)
     : RailModel(track, support, contact_position),
-      memo_(std::make_shared<const SamplingMemo>(std::move(archive), std::move(identity))) {}
+      memo_(std::make_shared<const SamplingMemo>(archive, identity)),
+      archive_(std::move(archive)),
+      identity_(std::move(identity)) {}
+
+namespace {
+
+// The values at complex s of one set of pairs, read from the archive on construction and written
+// back when they are destroyed if they grew (best effort: the archive does not throw).
+class ArchivedLaplace {
+ public:
+  ArchivedLaplace(std::shared_ptr<const SamplingArchive> archive, std::string key)
+      : archive_(std::move(archive)), key_(std::move(key)) {
+    if (std::optional<KeptLaplace> k = archive_->read_laplace(key_)) kept_ = std::move(*k);
+    read_ = kept_.values.size();
+  }
+  ~ArchivedLaplace() {
+    if (kept_.values.size() > read_) archive_->write_laplace(key_, kept_);
+  }
+  ArchivedLaplace(const ArchivedLaplace&) = delete;
+  ArchivedLaplace& operator=(const ArchivedLaplace&) = delete;
+
+  std::optional<std::vector<Receptance6>> find(cdouble s) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = kept_.values.find({s.real(), s.imag()});
+    if (it == kept_.values.end()) return std::nullopt;
+    return it->second;
+  }
+  void add(cdouble s, std::vector<Receptance6> v) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    kept_.values.emplace(std::make_pair(s.real(), s.imag()), std::move(v));
+  }
+
+ private:
+  std::shared_ptr<const SamplingArchive> archive_;
+  std::string key_;
+  KeptLaplace kept_;
+  std::size_t read_ = 0;
+  mutable std::mutex mutex_;
+};
+
+}  // namespace
+
+RailModel::LaplaceTransfers GridSamplingRail::laplace_transfers(
+    const std::vector<RailContactPair>& pairs) const {
+  if (!archive_) return direct_laplace_transfers(pairs);
+  // the key: the identity, then each pair's two contacts (x, offset, angle) as raw doubles
+  std::string key = identity_ + "\nlaplace " + std::to_string(pairs.size()) + ":";
+  for (const auto& [a, b] : pairs)
+    for (double v : {a.x, a.offset_y, a.contact_angle, b.x, b.offset_y, b.contact_angle})
+      key.append(reinterpret_cast<const char*>(&v), sizeof v);
+  auto kept = std::make_shared<ArchivedLaplace>(archive_, std::move(key));
+  // the model's bases only once a value is not in the archive
+  const Lazy<LaplaceTransfers> direct([this, pairs] { return direct_laplace_transfers(pairs); });
+  return [kept, direct](cdouble s) {
+    if (std::optional<std::vector<Receptance6>> v = kept->find(s)) return std::move(*v);
+    std::vector<Receptance6> v = direct.get()(s);
+    kept->add(s, v);
+    return v;
+  };
+}
 
 std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
@@ -319,7 +379,7 @@ std::vector<std::vector<Receptance6>> WaveguideOnGrid::contact_transfers(
                      : rail_.contact_transfers(frequencies, pairs, false);
 }
 
-RailModel::LaplaceTransfers WaveguideRailModel::laplace_transfers(
+RailModel::LaplaceTransfers WaveguideRailModel::direct_laplace_transfers(
     const std::vector<RailContactPair>& pairs) const {
   const PointSets sets = point_sets(pairs);
   std::vector<std::shared_ptr<const Station>> stations;

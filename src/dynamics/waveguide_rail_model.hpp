@@ -101,6 +101,11 @@ class GridSamplingRail : public RailModel {
   /// A WaveguideOnGrid of this rail (null where samples_grid() is false: every frequency alone
   /// already).
   std::unique_ptr<RailModel> on_grid(std::vector<double> grid) const override;
+  /// The model's direct_laplace_transfers; with an archive, each s's values also kept in it (read
+  /// at the first call, written when the last copy of the function goes) and taken from it where
+  /// it holds them: a later run on the same path of s computes none. Refers to the rail, which
+  /// must outlive it.
+  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const final;
 
  protected:
   /// Loaded points of the section ((offset, angle) each), and the pairs of one set of them as
@@ -115,10 +120,16 @@ class GridSamplingRail : public RailModel {
   /// The direct evaluation of one set: f (Hz) -> the contact-frame 4x4 of each of `pairs`, one
   /// basis for the points (built on the first call); safe to call concurrently.
   virtual Evaluator evaluator(const Points& points, const SetPairs& pairs) const = 0;
+  /// The contact transfers at complex s, computed at every call (RailModel::laplace_transfers).
+  virtual LaplaceTransfers direct_laplace_transfers(
+      const std::vector<RailContactPair>& pairs) const = 0;
 
  private:
   /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
   std::shared_ptr<const SamplingMemo> memo_;
+  /// Where the values at complex s are kept beyond the run (may be null), under identity_.
+  std::shared_ptr<const SamplingArchive> archive_;
+  std::string identity_;
   /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
   std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
                                                   const std::vector<RailContactPair>& pairs,
@@ -141,7 +152,6 @@ class WaveguideRailModel : public GridSamplingRail {
   std::vector<Receptance4> line_transfers(
       double frequency, const std::vector<std::pair<double, double>>& pairs) const override;
   Receptance4 line_transfer_laplace(cdouble s, double x_response, double x_load) const override;
-  LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override;
 
   /// The 4x4 in the contact frame of a contact at (offset_y, contact_angle) per frequency of
   /// `frequencies` (interpolated as contact_transfers), at one frequency and at s.
@@ -192,6 +202,8 @@ class WaveguideRailModel : public GridSamplingRail {
   const FrequencySampling& sampling() const override { return options_.sampling; }
   bool along_rail_invariant() const override { return true; }
   Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
+  LaplaceTransfers direct_laplace_transfers(
+      const std::vector<RailContactPair>& pairs) const override;
 
   const Station& crown() const;
   Receptance4 at(cdouble omega) const;

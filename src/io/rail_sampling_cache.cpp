@@ -13,7 +13,9 @@ namespace {
 
 constexpr const char* kSamplingMagic = "rollnoise rail sampling cache\n";
 constexpr int kSamplingFormat = 1;
+constexpr const char* kLaplaceMagic = "rollnoise rail laplace cache\n";
 constexpr std::size_t kReceptanceBytes = 16 * sizeof(std::complex<double>);
+constexpr std::size_t kReceptance6Bytes = 36 * sizeof(std::complex<double>);
 
 void put_receptance(std::string& out, const dynamics::Receptance4& r) {
   out.append(reinterpret_cast<const char*>(r.data()), kReceptanceBytes);
@@ -77,7 +79,62 @@ std::optional<dynamics::KeptSampling> parse_sampling(const std::string& body) {
   return k;
 }
 
+// pairs P, count N, N x (Re s, Im s, values[P])
+std::string laplace_payload(const dynamics::KeptLaplace& k) {
+  std::string out;
+  const std::size_t pairs = k.values.empty() ? 0 : k.values.begin()->second.size();
+  put<std::uint64_t>(out, pairs);
+  put<std::uint64_t>(out, k.values.size());
+  for (const auto& [s, values] : k.values) {
+    put(out, s.first);
+    put(out, s.second);
+    for (const auto& r : values)
+      out.append(reinterpret_cast<const char*>(r.data()), kReceptance6Bytes);
+  }
+  return out;
+}
+
+std::optional<dynamics::KeptLaplace> parse_laplace(const std::string& body) {
+  Bytes b(body);
+  std::uint64_t pairs = 0, n = 0;
+  if (!b.get(pairs) || !b.get(n)) return std::nullopt;
+  if (pairs == 0 || pairs > b.left() / kReceptance6Bytes ||
+      n > b.left() / (16 + pairs * kReceptance6Bytes))
+    return std::nullopt;
+  dynamics::KeptLaplace k;
+  for (std::uint64_t i = 0; i < n; ++i) {
+    double re = 0.0, im = 0.0;
+    if (!b.get(re) || !b.get(im)) return std::nullopt;
+    std::vector<dynamics::Receptance6> values(pairs);
+    for (auto& r : values)
+      for (int j = 0; j < 36; ++j) {
+        double x = 0.0, y = 0.0;
+        if (!b.get(x) || !b.get(y)) return std::nullopt;
+        r.data()[j] = {x, y};
+      }
+    k.values.emplace(std::make_pair(re, im), std::move(values));
+  }
+  if (b.left() != 0) return std::nullopt;
+  return k;
+}
+
 }  // namespace
+
+std::string RailSamplingCache::laplace_file(const std::string& key) const {
+  return cache_file(directory_, "rail-laplace", key);
+}
+
+std::optional<dynamics::KeptLaplace> RailSamplingCache::read_laplace(const std::string& key) const {
+  const std::optional<std::string> body = read_cache_payload(laplace_file(key), kLaplaceMagic, key);
+  return body ? parse_laplace(*body) : std::nullopt;
+}
+
+void RailSamplingCache::write_laplace(const std::string& key,
+                                      const dynamics::KeptLaplace& kept) const {
+  if (kept.values.empty()) return;
+  write_cache_payload(laplace_file(key), kLaplaceMagic, key, laplace_payload(kept),
+                      "track.sampling_cache");
+}
 
 std::string RailSamplingCache::file(const std::string& key) const {
   return cache_file(directory_, "rail-sampling", key);

@@ -7,10 +7,12 @@
 // is most of a curve case's run time. What a run computes is kept in the user's cache directory
 // (io/cache_files.hpp), one file per set of points and grid: the sampling and the values computed
 // directly beside it (the refinement's lines), so a later run of the same rail at the same points
-// on the same grid computes nothing and gives the same bits. The key: this build, the model
-// (support), the track file's and the section file's bytes, the contact position, then the points
-// (offset, angle), the pairs and the grid as raw doubles. Any other case (another track, another
-// contact point, another grid) computes as before.
+// on the same grid computes nothing and gives the same bits. The same for the values at complex
+// frequencies that squeal's continuation asks for (one file per set of pairs: each s computed, by
+// its bits), so a later run of the same squeal case computes no rail value. The key: this build,
+// the model (support), the track file's and the section file's bytes, the contact position, then
+// the points (offset, angle), the pairs and the grid as raw doubles. Any other case (another track,
+// another contact point, another grid) computes as before.
 #pragma once
 
 #include <memory>
@@ -27,8 +29,11 @@ class RailSamplingCache : public dynamics::SamplingArchive {
   explicit RailSamplingCache(std::string directory) : directory_(std::move(directory)) {}
   std::optional<dynamics::KeptSampling> read(const std::string& key) const override;
   void write(const std::string& key, const dynamics::KeptSampling& kept) const override;
-  /// The file of `key`.
+  std::optional<dynamics::KeptLaplace> read_laplace(const std::string& key) const override;
+  void write_laplace(const std::string& key, const dynamics::KeptLaplace& kept) const override;
+  /// The file of a sampling's `key`, and of the values at complex s under `key`.
   std::string file(const std::string& key) const;
+  std::string laplace_file(const std::string& key) const;
 
  private:
   std::string directory_;

@@ -248,6 +248,10 @@ class MemoryArchive : public rd::SamplingArchive {
     kept_[key] = kept;
     ++writes;
   }
+  std::optional<rd::KeptLaplace> read_laplace(const std::string&) const override {
+    return std::nullopt;
+  }
+  void write_laplace(const std::string&, const rd::KeptLaplace&) const override {}
   mutable int writes = 0;
   mutable std::map<std::string, rd::KeptSampling> kept_;
 

@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "dynamics/rail_section.hpp"
@@ -173,4 +177,76 @@ TEST(WaveguideRailModel, ContinuedToDecayingRootsWithoutJumpingSheets) {
     std::printf("  %6.0f Hz: largest relative second difference along the path %.2e\n", f, worst);
     EXPECT_LT(worst, 1e-3) << "f = " << f;
   }
+}
+
+namespace {
+
+// An archive in memory for the waveguide model's values at complex s and its samplings.
+class LaplaceArchive : public rd::SamplingArchive {
+ public:
+  std::optional<rd::KeptSampling> read(const std::string& key) const override {
+    const auto it = samplings.find(key);
+    return it == samplings.end() ? std::nullopt : std::optional<rd::KeptSampling>(it->second);
+  }
+  void write(const std::string& key, const rd::KeptSampling& kept) const override {
+    samplings[key] = kept;
+  }
+  std::optional<rd::KeptLaplace> read_laplace(const std::string& key) const override {
+    const auto it = laplace.find(key);
+    return it == laplace.end() ? std::nullopt : std::optional<rd::KeptLaplace>(it->second);
+  }
+  void write_laplace(const std::string& key, const rd::KeptLaplace& kept) const override {
+    laplace[key] = kept;
+  }
+  mutable std::map<std::string, rd::KeptSampling> samplings;
+  mutable std::map<std::string, rd::KeptLaplace> laplace;
+};
+
+}  // namespace
+
+// The values at complex s kept beyond the run (GridSamplingRail::laplace_transfers with an
+// archive, squeal's continuation; track.sampling_cache): the first run's function computes them
+// (the same bits as without the archive) and leaves them in the archive when it goes; a later
+// run's function takes them from the archive, not from the model (a value altered in the archive
+// comes back altered), and computes only the s it does not hold. Frequencies computed directly
+// (contact_transfers without interpolation, squeal's route 1) are kept the same way.
+TEST(WaveguideRailModel, ValuesAtComplexFrequencyKeptForALaterRun) {
+  const rd::TrackParameters t = rd::uic60_ballasted();
+  rd::WaveguideRailOptions o;
+  o.mesh_size = 0.04;
+  auto archive = std::make_shared<LaplaceArchive>();
+  rd::WaveguideRailOptions kept = o;
+  kept.archive = archive;
+  kept.archive_identity = "test track";
+  const rd::RailContact c{0.3, -0.0366, 0.52};
+  const std::vector<rd::RailContactPair> pairs{{c, c}};
+  const std::vector<cd> s{cd(-20.0, 2.0 * M_PI * 800.0), cd(-5.0, 2.0 * M_PI * 1500.0)};
+  const rd::WaveguideRailModel plain(t, o);
+  const auto reference = plain.laplace_transfers(pairs);
+  {
+    const rd::WaveguideRailModel first(t, kept);
+    const auto at = first.laplace_transfers(pairs);
+    for (const cd& z : s) ASSERT_TRUE(at(z).front() == reference(z).front());
+  }
+  ASSERT_EQ(archive->laplace.size(), 1u);
+  ASSERT_EQ(archive->laplace.begin()->second.values.size(), s.size());
+  for (auto& [z, v] : archive->laplace.begin()->second.values) v.front() *= 2.0;  // marked
+  const rd::WaveguideRailModel later(t, kept);
+  const auto at = later.laplace_transfers(pairs);
+  for (const cd& z : s) EXPECT_TRUE(at(z).front() == 2.0 * reference(z).front());
+  const cd other(-10.0, 2.0 * M_PI * 1000.0);  // not held: computed
+  EXPECT_TRUE(at(other).front() == reference(other).front());
+
+  // every frequency directly (no interpolation): kept as a sampling with no checked interval
+  const std::vector<double> f{300.0, 700.0, 300.0};
+  const auto direct = plain.contact_transfers(f, pairs, false);
+  const auto stored = later.contact_transfers(f, pairs, false);
+  ASSERT_EQ(archive->samplings.size(), 1u);
+  for (std::size_t k = 0; k < f.size(); ++k) ASSERT_TRUE(stored[k].front() == direct[k].front());
+  for (auto& [key, sampling] : archive->samplings)
+    for (auto& v : sampling.grid.values.front()) v *= 2.0;  // marked
+  const rd::WaveguideRailModel third(t, kept);
+  const auto again = third.contact_transfers(f, pairs, false);
+  for (std::size_t k = 0; k < f.size(); ++k)
+    EXPECT_TRUE(again[k].front() == 2.0 * direct[k].front());  // (scaling by 2 is exact)
 }

@@ -113,3 +113,33 @@ TEST(RailSamplingCache, IdentityChangesWithTrackSectionAndPosition) {
   EXPECT_NE(io::rail_sampling_identity(other.string(), "", 0.3), id);
   EXPECT_TRUE(io::rail_sampling_identity((dir / "missing.toml").string(), "", 0.3).empty());
 }
+
+// The values at complex s (squeal's continuation) read back to the bit, in their own file; a
+// damaged one reads nothing.
+TEST(RailSamplingCache, ValuesAtComplexFrequencyReadBackIsBitIdentical) {
+  const io::RailSamplingCache cache(rail_scratch("laplace").string());
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n(0.0, 1e-9);
+  dynamics::KeptLaplace k;
+  for (int i = 0; i < 5; ++i) {
+    std::vector<dynamics::Receptance6> v(3);
+    for (auto& r : v)
+      for (int j = 0; j < 36; ++j) r.data()[j] = {n(rng), n(rng)};
+    k.values[{-10.0 * i, 6000.0 + i}] = v;
+  }
+  const std::string key = "identity\nlaplace pairs";
+  cache.write_laplace(key, k);
+  EXPECT_FALSE(cache.read(key).has_value());  // not a sampling
+  const auto back = cache.read_laplace(key);
+  ASSERT_TRUE(back.has_value());
+  ASSERT_EQ(back->values.size(), k.values.size());
+  for (const auto& [s, v] : k.values) {
+    const auto it = back->values.find(s);
+    ASSERT_NE(it, back->values.end());
+    for (std::size_t p = 0; p < v.size(); ++p) EXPECT_TRUE(it->second[p] == v[p]);
+  }
+  std::string bytes = io::file_bytes(cache.laplace_file(key));
+  bytes[bytes.size() / 2] ^= 0x10;
+  std::ofstream(cache.laplace_file(key), std::ios::binary | std::ios::trunc) << bytes;
+  EXPECT_FALSE(cache.read_laplace(key).has_value());
+}
