@@ -244,7 +244,7 @@ GridSamplingRail::GridSamplingRail(const TrackParameters& track, TrackSupport su
 namespace {
 
 // The values at complex s of one set of pairs, read from the archive on construction and written
-// back when they are destroyed if they grew (best effort: the archive does not throw).
+// back when they are destroyed if they grew (best effort).
 class ArchivedLaplace {
  public:
   ArchivedLaplace(std::shared_ptr<const SamplingArchive> archive, std::string key)
@@ -253,7 +253,11 @@ class ArchivedLaplace {
     read_ = kept_.values.size();
   }
   ~ArchivedLaplace() {
-    if (kept_.values.size() > read_) archive_->write_laplace(key_, kept_);
+    if (kept_.values.size() <= read_) return;
+    try {
+      archive_->write_laplace(key_, kept_);
+    } catch (...) {  // a destructor does not throw: the values are only not kept
+    }
   }
   ArchivedLaplace(const ArchivedLaplace&) = delete;
   ArchivedLaplace& operator=(const ArchivedLaplace&) = delete;
