@@ -287,6 +287,21 @@ void SamplingMemo::archive_direct(const Key& key) const {
   it->second.archived = it->second.direct.size();
 }
 
+namespace {
+
+// The sampling of `key`'s grid as `memo` holds it (or its archive), else made now and kept.
+std::shared_ptr<const SampledGrid> kept_sampling(
+    const SamplingMemo& memo, const SamplingMemo::Key& key,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, const std::vector<std::pair<int, int>>& scales) {
+  if (std::shared_ptr<const SampledGrid> g = memo.recalled(key)) return g;
+  SampledGrid kept;
+  sample_receptances(std::get<2>(key), evaluate, sampling, nullptr, scales, &kept);
+  return memo.remember(key, std::move(kept));
+}
+
+}  // namespace
+
 std::vector<std::vector<Receptance4>> sampled_values(
     const std::vector<double>& frequencies, const std::vector<double>* grid, bool interpolate,
     const std::function<std::vector<Receptance4>(double)>& evaluate,
@@ -301,13 +316,8 @@ std::vector<std::vector<Receptance4>> sampled_values(
     std::vector<double> distinct = frequencies;
     std::sort(distinct.begin(), distinct.end());
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-    const SamplingMemo::Key key{points, pairs, distinct, true};
-    std::shared_ptr<const SampledGrid> g = memo.recalled(key);
-    if (!g) {
-      SampledGrid kept;
-      sample_receptances(distinct, evaluate, direct, nullptr, scales, &kept);
-      g = memo.remember(key, std::move(kept));
-    }
+    const std::shared_ptr<const SampledGrid> g =
+        kept_sampling(memo, {points, pairs, distinct, true}, evaluate, direct, scales);
     return sampled_at(*g, frequencies, evaluate, sampling.threads);
   }
   // The sampling of the grid (`frequencies` themselves where no grid is given), kept or made now
@@ -315,12 +325,7 @@ std::vector<std::vector<Receptance4>> sampled_values(
   // gave, to the bit).
   const std::vector<double>& on = grid ? *grid : frequencies;
   const SamplingMemo::Key key{points, pairs, on, false};
-  std::shared_ptr<const SampledGrid> g = memo.recalled(key);
-  if (!g) {
-    SampledGrid kept;
-    sample_receptances(on, evaluate, sampling, nullptr, scales, &kept);
-    g = memo.remember(key, std::move(kept));
-  }
+  const std::shared_ptr<const SampledGrid> g = kept_sampling(memo, key, evaluate, sampling, scales);
   // the frequencies the sampling does not give: computed once, then kept beside it (the same
   // bits as computing them again)
   const auto direct = [&](double f) {

@@ -126,8 +126,10 @@ class SamplingMemo {
                          std::vector<double>, bool>;
   SamplingMemo() = default;
   SamplingMemo(std::shared_ptr<const SamplingArchive> archive, std::string identity);
-  /// Whether the samplings also go to an archive.
+  /// Whether the samplings also go to an archive; the archive (may be null) and the identity.
   bool archived() const { return archive_ != nullptr; }
+  const std::shared_ptr<const SamplingArchive>& archive() const { return archive_; }
+  const std::string& identity() const { return identity_; }
   /// The sampling of `key`: held, else from the archive (with its direct values), else null.
   std::shared_ptr<const SampledGrid> recalled(const Key& key) const;
   /// Holds `grid` under `key` (and archives it); returns what is held.

@@ -237,9 +237,7 @@ GridSamplingRail::GridSamplingRail(const TrackParameters& track, TrackSupport su
                                    std::shared_ptr<const SamplingArchive> archive,
                                    std::string identity)
     : RailModel(track, support, contact_position),
-      memo_(std::make_shared<const SamplingMemo>(archive, identity)),
-      archive_(std::move(archive)),
-      identity_(std::move(identity)) {}
+      memo_(std::make_shared<const SamplingMemo>(std::move(archive), std::move(identity))) {}
 
 namespace {
 
@@ -285,13 +283,13 @@ class ArchivedLaplace {
 
 RailModel::LaplaceTransfers GridSamplingRail::laplace_transfers(
     const std::vector<RailContactPair>& pairs) const {
-  if (!archive_) return direct_laplace_transfers(pairs);
+  if (!memo_->archived()) return direct_laplace_transfers(pairs);
   // the key: the identity, then each pair's two contacts (x, offset, angle) as raw doubles
-  std::string key = identity_ + "\nlaplace " + std::to_string(pairs.size()) + ":";
+  std::string key = memo_->identity() + "\nlaplace " + std::to_string(pairs.size()) + ":";
   for (const auto& [a, b] : pairs)
     for (double v : {a.x, a.offset_y, a.contact_angle, b.x, b.offset_y, b.contact_angle})
       key.append(reinterpret_cast<const char*>(&v), sizeof v);
-  auto kept = std::make_shared<ArchivedLaplace>(archive_, std::move(key));
+  auto kept = std::make_shared<ArchivedLaplace>(memo_->archive(), std::move(key));
   // the model's bases only once a value is not in the archive
   const Lazy<LaplaceTransfers> direct([this, pairs] { return direct_laplace_transfers(pairs); });
   return [kept, direct](cdouble s) {

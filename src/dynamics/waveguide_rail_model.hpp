@@ -125,11 +125,9 @@ class GridSamplingRail : public RailModel {
       const std::vector<RailContactPair>& pairs) const = 0;
 
  private:
-  /// The samplings kept: per point set, its pairs (with the scales' points) and the grid.
+  /// The samplings kept: per point set, its pairs (with the scales' points) and the grid; its
+  /// archive (if any) keeps the values at complex s too.
   std::shared_ptr<const SamplingMemo> memo_;
-  /// Where the values at complex s are kept beyond the run (may be null), under identity_.
-  std::shared_ptr<const SamplingArchive> archive_;
-  std::string identity_;
   /// contact_transfers (grid null) and contact_transfers_from (from the sampling of *grid).
   std::vector<std::vector<Receptance6>> transfers(const std::vector<double>& frequencies,
                                                   const std::vector<RailContactPair>& pairs,
