@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "support/test_helpers.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -28,9 +29,9 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
+// A file in its own folder of this process's scratch folder (removed at exit).
 std::string scratch(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "rollnoise_contact_results_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = rollnoise::test_support::scratch_folder("rollnoise_contact_results_test", name);
   const std::string p = (dir / name).string();
   std::ofstream(p) << text;
   return p;

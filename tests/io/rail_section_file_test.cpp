@@ -16,16 +16,17 @@
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "fem/mesh.hpp"
+#include "support/test_helpers.hpp"
 
 namespace {
 
 using namespace rollnoise;
 namespace fs = std::filesystem;
 
+// A file in its own folder of this process's scratch folder (removed at exit;
+// test_support::scratch_folder).
 fs::path rail_section_temp_file(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("rollnoise_rail_section_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test_support::scratch_folder("rollnoise_rail_section", name);
   std::ofstream(dir / name) << text;
   return dir / name;
 }
