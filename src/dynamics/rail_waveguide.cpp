@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "dynamics/lapack_section.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/triangle6.hpp"
 
@@ -62,6 +63,7 @@ void eigen_decomposition(Eigen::MatrixXcd a, Eigen::VectorXcd& values, Eigen::Ma
   cdouble dummy, query;
   std::vector<double> rwork(2 * n);
   int info = 0, lwork = -1;
+  const LapackSection lapack;  // lapack_section.hpp: not every LAPACK is reentrant
   zgeev_("N", "V", &n, a.data(), &n, values.data(), &dummy, &one, vectors.data(), &n, &query,
          &lwork, rwork.data(), &info);
   lwork = static_cast<int>(query.real());
@@ -286,8 +288,11 @@ std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixX
   Eigen::MatrixXd Z(n, n);
   std::vector<double> work(5 * n);
   std::vector<int> iwork(5 * n), ifail(n);
-  dstevx_("V", "V", &n, d.data(), e.data(), &vl, &vu, &one, &one, &abstol, &found, w.data(),
-          Z.data(), &n, work.data(), iwork.data(), ifail.data(), &info);
+  {
+    const LapackSection lapack;  // lapack_section.hpp
+    dstevx_("V", "V", &n, d.data(), e.data(), &vl, &vu, &one, &one, &abstol, &found, w.data(),
+            Z.data(), &n, work.data(), iwork.data(), ifail.data(), &info);
+  }
   if (info != 0)
     throw NumericalError("rail waveguide: cross-section eigensolver failed (LAPACK dstevx, info " +
                          std::to_string(info) + ")");
