@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
+#include "linalg/aaa_rational.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -174,15 +175,98 @@ std::vector<std::vector<Receptance4>> sample_receptances(
   return out;
 }
 
+namespace {
+
+// Eq. (F2) of the header: the samples around the open interval (at[j-1], at[j]) as the rows of a
+// set of functions of ln f (every pair's 16 entries), each entry against its Eq. (F1) scale.
+struct LocalSamples {
+  Eigen::VectorXd x;
+  Eigen::MatrixXcd values;
+  Eigen::MatrixXd scale;
+};
+LocalSamples local_samples(const SampledGrid& g, std::size_t lo, std::size_t hi,
+                           const std::vector<std::pair<int, int>>& scales) {
+  const std::size_t pairs = g.values.size();
+  LocalSamples s;
+  s.x.resize(hi - lo);
+  s.values.resize(hi - lo, 16 * pairs);
+  s.scale.resize(hi - lo, 16 * pairs);
+  for (std::size_t i = lo; i < hi; ++i) {
+    const Eigen::Index row = static_cast<Eigen::Index>(i - lo);
+    s.x(row) = std::log(g.at[i]);
+    for (std::size_t p = 0; p < pairs; ++p) {
+      const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+      const Receptance4& v = g.values[p][i];
+      const Receptance4 &a = g.values[sa][i], &b = g.values[sb][i];
+      const double frobenius = v.norm() > 0.0 ? v.norm() : 1.0;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+          const Eigen::Index col = static_cast<Eigen::Index>(16 * p + 4 * r + c);
+          const double d = std::sqrt(std::abs(a(r, r)) * std::abs(b(c, c)));
+          s.values(row, col) = v(r, c);
+          s.scale(row, col) = d > 0.0 ? d : frobenius;
+        }
+    }
+  }
+  return s;
+}
+
+// The rows of `s` without row `drop`.
+LocalSamples samples_without(const LocalSamples& s, Eigen::Index drop) {
+  const Eigen::Index n = s.x.size();
+  LocalSamples o;
+  o.x.resize(n - 1);
+  o.values.resize(n - 1, s.values.cols());
+  o.scale.resize(n - 1, s.scale.cols());
+  for (Eigen::Index i = 0, k = 0; i < n; ++i) {
+    if (i == drop) continue;
+    o.x(k) = s.x(i);
+    o.values.row(k) = s.values.row(i);
+    o.scale.row(k) = s.scale.row(i);
+    ++k;
+  }
+  return o;
+}
+
+// Eq. (F2): the rational of the kLocalWindow samples on each side of the open interval (at[j-1],
+// at[j]), fitted to a tenth of the tolerance, if each of the two samples nearest either end is
+// predicted within a third of the tolerance by the same fit without it; else none.
+constexpr std::size_t kLocalWindow = 6;
+std::optional<linalg::BarycentricRational> local_rational(
+    const SampledGrid& g, std::size_t j, double tolerance,
+    const std::vector<std::pair<int, int>>& scales) {
+  const std::size_t n = g.at.size();
+  const std::size_t lo = j >= kLocalWindow ? j - kLocalWindow : 0,
+                    hi = std::min(n, j + kLocalWindow);
+  if (!(tolerance > 0.0) || hi - lo < 6) return std::nullopt;
+  const LocalSamples s = local_samples(g, lo, hi, scales);
+  const int terms = static_cast<int>(hi - lo) - 1;
+  for (std::size_t q = j >= 2 ? j - 2 : 0; q < std::min(n, j + 2); ++q) {
+    const Eigen::Index row = static_cast<Eigen::Index>(q - lo);
+    const LocalSamples rest = samples_without(s, row);
+    const linalg::BarycentricRational r =
+        linalg::aaa_fit(rest.x, rest.values, rest.scale, 0.1 * tolerance, terms - 1);
+    const double err =
+        ((r(s.x(row)) - s.values.row(row)).cwiseAbs().array() / s.scale.row(row).array())
+            .maxCoeff();
+    if (!(err <= tolerance / 3.0)) return std::nullopt;
+  }
+  return linalg::aaa_fit(s.x, s.values, s.scale, 0.1 * tolerance, terms);
+}
+
+}  // namespace
+
 std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& g, const std::vector<double>& frequencies,
-    const std::function<std::vector<Receptance4>(double)>& evaluate, int threads) {
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, const std::vector<std::pair<int, int>>& scales) {
   const std::size_t pairs = g.values.size(), n = g.at.size();
   std::vector<std::vector<Receptance4>> out(pairs, std::vector<Receptance4>(frequencies.size()));
   std::vector<double> inside;        // frequencies in checked intervals, interpolated together
   std::vector<std::size_t> inside_k;  // their places in `frequencies`
   std::vector<double> computed;       // frequencies evaluated directly (on `threads` threads)
   std::vector<std::size_t> computed_k;
+  std::map<std::size_t, std::vector<std::size_t>> open;  // open interval j -> places inside it
   for (std::size_t k = 0; k < frequencies.size(); ++k) {
     const double fq = frequencies[k];
     const std::size_t j = static_cast<std::size_t>(std::lower_bound(g.at.begin(), g.at.end(), fq) - g.at.begin());
@@ -191,12 +275,31 @@ std::vector<std::vector<Receptance4>> sampled_at(
     } else if (j > 0 && j < n && g.checked[j - 1]) {  // inside the checked interval (at[j-1], at[j])
       inside.push_back(fq);
       inside_k.push_back(k);
-    } else {  // outside the grid, or where the sampling evaluated every grid frequency
+    } else if (j > 0 && j < n) {  // where the sampling evaluated every grid frequency: Eq. (F2)
+      open[j].push_back(k);
+    } else {  // outside the grid
       computed.push_back(fq);
       computed_k.push_back(k);
     }
   }
-  const std::vector<std::vector<Receptance4>> direct = evaluated(computed, evaluate, threads);
+  for (const auto& [j, places] : open) {
+    const std::optional<linalg::BarycentricRational> r =
+        local_rational(g, j, sampling.tolerance, scales);
+    for (std::size_t k : places) {
+      if (!r) {
+        computed.push_back(frequencies[k]);
+        computed_k.push_back(k);
+        continue;
+      }
+      const Eigen::RowVectorXcd v = (*r)(std::log(frequencies[k]));
+      for (std::size_t p = 0; p < pairs; ++p)
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b)
+            out[p][k](a, b) = v(static_cast<Eigen::Index>(16 * p + 4 * a + b));
+    }
+  }
+  const std::vector<std::vector<Receptance4>> direct =
+      evaluated(computed, evaluate, sampling.threads);
   for (std::size_t i = 0; i < computed.size(); ++i)
     for (std::size_t p = 0; p < pairs; ++p) out[p][computed_k[i]] = direct[i].at(p);
   if (!inside.empty())
@@ -318,7 +421,7 @@ std::vector<std::vector<Receptance4>> sampled_values(
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
     const std::shared_ptr<const SampledGrid> g =
         kept_sampling(memo, {points, pairs, distinct, true}, evaluate, direct, scales);
-    return sampled_at(*g, frequencies, evaluate, sampling.threads);
+    return sampled_at(*g, frequencies, evaluate, sampling, scales);
   }
   // The sampling of the grid (`frequencies` themselves where no grid is given), kept or made now
   // and kept; every frequency from it (on the grid sampled itself: the values sample_receptances
@@ -334,7 +437,7 @@ std::vector<std::vector<Receptance4>> sampled_values(
     memo.keep_direct(key, f, v);
     return v;
   };
-  std::vector<std::vector<Receptance4>> out = sampled_at(*g, frequencies, direct, sampling.threads);
+  std::vector<std::vector<Receptance4>> out = sampled_at(*g, frequencies, direct, sampling, scales);
   memo.archive_direct(key);
   return out;
 }
