@@ -102,6 +102,35 @@ Eigen::MatrixXcd green(const RailWaves& w, const Amplitudes& r, const Amplitudes
          (ahead ? f.minus : f.plus);
 }
 
+// Eq. (W4)'s weights at the points x_i = x0 + i h, i = 0 .. count - 1 (column i; h != 0, the
+// sleepers' spacing): e^{-i k_j |x_i|} as powers of z_j = e^{-i k_j |h|}. The points on either side
+// of x = 0 are each an arithmetic run in |x|, walked from its point nearest 0 outward (two
+// exponentials per wave and side instead of one per point, and 1/d_j once; each step one complex
+// product, the rounding error growing by about an ulp per span).
+Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, int count) {
+  const cdouble I(0.0, 1.0);
+  const Eigen::ArrayXcd scale = -I * w.norms.array().inverse();
+  const Eigen::ArrayXcd z = (-I * w.wavenumbers.array() * std::abs(h)).exp();
+  Eigen::MatrixXcd out(w.wavenumbers.size(), count);
+  const auto x = [&](int i) { return x0 + i * h; };
+  // the indices [a, b) of one side of x = 0, from the end nearest 0
+  const auto walk_run = [&](int a, int b) {
+    if (a >= b) return;
+    const bool up = std::abs(x(a)) <= std::abs(x(b - 1));
+    int i = up ? a : b - 1;
+    Eigen::ArrayXcd e = (-I * w.wavenumbers.array() * std::abs(x(i))).exp();
+    for (int k = a; k < b; ++k, i += up ? 1 : -1) {
+      out.col(i) = (scale * e).matrix();
+      e *= z;
+    }
+  };
+  int split = 1;  // the first index on the other side of 0 from x_0 (count: none)
+  while (split < count && (x(split) >= 0.0) == (x(0) >= 0.0)) ++split;
+  walk_run(0, split);
+  walk_run(split, count);
+  return out;
+}
+
 // One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and the LU of
 // I + A K (Eq. D2), whose blocks g(d L), d = 0..2N, depend on the seats' spacing only.
 struct Seats {
@@ -125,7 +154,9 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   s.stiffness << support.longitudinal.dynamic_stiffness(omega),
       support.lateral.dynamic_stiffness(omega), kz, kz * attachment.roll_arm_squared;
   std::vector<Eigen::Matrix4cd> g(m);  // g(-x) = g(x)^T, reciprocity of Eq. W4
-  for (int d = 0; d < m; ++d) g[d] = green(s.waves, s.foot, s.foot, d * s.spacing);
+  const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
+  for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
+    g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
   Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(4 * m, 4 * m);
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < m; ++j) {
@@ -143,20 +174,27 @@ Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double 
   const int m = 2 * s.n + 1;
   const long first = std::lround(0.5 * (x_r + x_l) / s.spacing) - s.n;
   Eigen::MatrixXcd B(4 * m, f.plus.cols());
-  for (int i = 0; i < m; ++i)
-    B.middleRows(4 * i, 4) = green(s.waves, s.foot, f, (first + i) * s.spacing - x_l);
+  // the seats' positions from the load, x_i = x_first - x_l + i L, and from the response
+  const double from_load = first * s.spacing - x_l, from_response = x_r - first * s.spacing;
+  const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
+  for (int i = 0; i < m; ++i) {
+    const bool ahead = from_load + i * s.spacing >= 0.0;
+    B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
+                             to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
+  }
   const Eigen::MatrixXcd v = s.lu.solve(B);
   // Eq. (D3): sum_n G_rf(x_r - x_n) K v_n = A_s(r)^T sum_n diag(weights) A_-s(foot) K v_n, the
   // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
   Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), B.cols());
   Eigen::MatrixXcd ahead = behind;
+  const Eigen::MatrixXcd from_seats = green_weights_along(s.waves, from_response, -s.spacing, m);
   for (int i = 0; i < m; ++i) {
-    const double x = x_r - (first + i) * s.spacing;
+    const double x = from_response - i * s.spacing;
     const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
     if (x >= 0.0)
-      behind += green_weights(s.waves, x).asDiagonal() * (s.foot.minus * Kv);
+      behind += from_seats.col(i).asDiagonal() * (s.foot.minus * Kv);
     else
-      ahead += green_weights(s.waves, x).asDiagonal() * (s.foot.plus * Kv);
+      ahead += from_seats.col(i).asDiagonal() * (s.foot.plus * Kv);
   }
   return green(s.waves, r, f, x_r - x_l) - r.plus.transpose() * behind -
          r.minus.transpose() * ahead;
