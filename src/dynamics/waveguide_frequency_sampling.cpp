@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -70,113 +71,6 @@ std::vector<std::vector<Receptance4>> evaluated(
   return out;
 }
 
-}  // namespace
-
-std::vector<std::vector<Receptance4>> sample_receptances(
-    const std::vector<double>& frequencies,
-    const std::function<std::vector<Receptance4>(double)>& evaluate,
-    const FrequencySampling& sampling, int* evaluations,
-    const std::vector<std::pair<int, int>>& scales, SampledGrid* kept) {
-  std::vector<double> f = frequencies;  // the distinct frequencies, ascending
-  std::sort(f.begin(), f.end());
-  f.erase(std::unique(f.begin(), f.end()), f.end());
-  if (!f.empty() && !(f.front() > 0.0))
-    throw NumericalError("sample_receptances: frequencies must be > 0 Hz");
-  const int n = static_cast<int>(f.size());
-  std::vector<double> x(n);
-  for (int i = 0; i < n; ++i) x[i] = std::log(f[i]);
-  std::map<int, std::vector<Receptance4>> samples;  // grid index -> every pair's value
-  std::vector<int> start;
-  if (sampling.per_octave > 0 && n > 4) start = starting_samples(x, sampling.per_octave);
-  if (start.empty() || start.size() + 1 >= static_cast<std::size_t>(n)) {
-    start.resize(n);  // as many samples as frequencies: every one directly
-    for (int i = 0; i < n; ++i) start[i] = i;
-  }
-  {
-    std::vector<double> at;
-    for (int i : start) at.push_back(f[i]);
-    std::vector<std::vector<Receptance4>> v = evaluated(at, evaluate, sampling.threads);
-    for (std::size_t k = 0; k < start.size(); ++k) samples.emplace(start[k], std::move(v[k]));
-  }
-  std::size_t pairs = samples.empty() ? 0 : samples.begin()->second.size();
-  // The interpolation of the current samples, per pair, at grid points `at`.
-  auto interpolated = [&](const std::vector<int>& at) {
-    std::vector<double> grid, where;
-    for (const auto& s : samples) grid.push_back(f[s.first]);
-    for (int i : at) where.push_back(f[i]);
-    std::vector<std::vector<Receptance4>> out(pairs);
-    for (std::size_t p = 0; p < pairs; ++p) {
-      std::vector<Receptance4> v;
-      for (const auto& s : samples) v.push_back(s.second.at(p));
-      out[p] = interpolate_receptances(grid, v, where);
-    }
-    return out;
-  };
-  std::vector<std::pair<int, int>> open;
-  std::set<std::pair<int, int>> checked;  // sample intervals closed by a check (grid indices)
-  if (sampling.tolerance > 0.0 && samples.size() < static_cast<std::size_t>(n))
-    for (std::size_t i = 0; i + 1 < start.size(); ++i)
-      if (start[i + 1] - start[i] >= 2) open.emplace_back(start[i], start[i + 1]);
-  while (!open.empty()) {  // one pass: every open interval's third point against the samples before
-    std::vector<int> mid;
-    for (const auto& [a, b] : open) mid.push_back(split_sample(x, a, b));
-    const std::vector<std::vector<Receptance4>> predicted = interpolated(mid);
-    std::vector<std::pair<int, int>> still_open;
-    std::vector<double> at;
-    for (int i : mid) at.push_back(f[i]);
-    std::vector<std::vector<Receptance4>> values_at_mid = evaluated(at, evaluate, sampling.threads);
-    std::vector<std::pair<int, std::vector<Receptance4>>> added;
-    for (std::size_t k = 0; k < open.size(); ++k) {
-      added.emplace_back(mid[k], std::move(values_at_mid[k]));
-      const std::vector<Receptance4>& direct = added.back().second;
-      double err = 0.0;
-      for (std::size_t p = 0; p < pairs; ++p) {
-        const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
-        err = std::max(err,
-                       sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
-      }
-      if (err <= sampling.tolerance) {
-        checked.emplace(open[k].first, mid[k]);
-        checked.emplace(mid[k], open[k].second);
-        continue;
-      }
-      for (const auto& [a, b] :
-           {std::pair(open[k].first, mid[k]), std::pair(mid[k], open[k].second)})
-        if (b - a >= 2) still_open.emplace_back(a, b);
-    }
-    for (auto& s : added) samples.emplace(s.first, std::move(s.second));
-    open = std::move(still_open);
-  }
-  if (evaluations) *evaluations = static_cast<int>(samples.size());
-  if (kept) {
-    kept->at.clear();
-    kept->values.assign(pairs, {});
-    kept->checked.clear();
-    int before = -1;
-    for (const auto& [i, v] : samples) {
-      if (before >= 0) kept->checked.push_back(checked.count({before, i}) ? 1 : 0);
-      kept->at.push_back(f[i]);
-      for (std::size_t p = 0; p < pairs; ++p) kept->values[p].push_back(v.at(p));
-      before = i;
-    }
-  }
-  // every requested frequency: its sample, or the interpolation of the samples
-  std::vector<std::vector<Receptance4>> out(pairs);
-  const bool all = samples.size() == static_cast<std::size_t>(n);
-  std::vector<int> every(n);
-  for (int i = 0; i < n; ++i) every[i] = i;
-  const std::vector<std::vector<Receptance4>> values =
-      all ? std::vector<std::vector<Receptance4>>{} : interpolated(every);
-  for (double fq : frequencies) {
-    const int i = static_cast<int>(std::lower_bound(f.begin(), f.end(), fq) - f.begin());
-    for (std::size_t p = 0; p < pairs; ++p)
-      out[p].push_back(all ? samples.at(i).at(p) : values[p][i]);
-  }
-  return out;
-}
-
-namespace {
-
 // Eq. (F2) of the header: the samples around the open interval (at[j-1], at[j]) as the rows of a
 // set of functions of ln f (every pair's 16 entries), each entry against its Eq. (F1) scale.
 struct LocalSamples {
@@ -230,18 +124,24 @@ LocalSamples samples_without(const LocalSamples& s, Eigen::Index drop) {
 
 // Eq. (F2): the rational of the kLocalWindow samples on each side of the open interval (at[j-1],
 // at[j]), fitted to a tenth of the tolerance, if each of the two samples nearest either end is
-// predicted within a third of the tolerance by the same fit without it; else none.
+// predicted within `agreement` (a third of the tolerance) by the same fit without it; else none.
+// An infinite `agreement` skips that check (an interval the sampling closed by it: the same
+// samples, so the same outcome).
 constexpr std::size_t kLocalWindow = 6;
+// The bisection closes an interval by Eq. (F2) only on a closer leave-one-out agreement (its
+// samples are still sparse there), this fraction of the tolerance.
+constexpr double kClosingAgreement = 0.1;
 std::optional<linalg::BarycentricRational> local_rational(
     const SampledGrid& g, std::size_t j, double tolerance,
-    const std::vector<std::pair<int, int>>& scales) {
+    const std::vector<std::pair<int, int>>& scales, double agreement) {
   const std::size_t n = g.at.size();
   const std::size_t lo = j >= kLocalWindow ? j - kLocalWindow : 0,
                     hi = std::min(n, j + kLocalWindow);
   if (!(tolerance > 0.0) || hi - lo < 6) return std::nullopt;
   const LocalSamples s = local_samples(g, lo, hi, scales);
   const int terms = static_cast<int>(hi - lo) - 1;
-  for (std::size_t q = j >= 2 ? j - 2 : 0; q < std::min(n, j + 2); ++q) {
+  for (std::size_t q = j >= 2 ? j - 2 : 0; std::isfinite(agreement) && q < std::min(n, j + 2);
+       ++q) {
     const Eigen::Index row = static_cast<Eigen::Index>(q - lo);
     const LocalSamples rest = samples_without(s, row);
     const linalg::BarycentricRational r =
@@ -249,12 +149,196 @@ std::optional<linalg::BarycentricRational> local_rational(
     const double err =
         ((r(s.x(row)) - s.values.row(row)).cwiseAbs().array() / s.scale.row(row).array())
             .maxCoeff();
-    if (!(err <= tolerance / 3.0)) return std::nullopt;
+    if (!(err <= agreement)) return std::nullopt;
   }
   return linalg::aaa_fit(s.x, s.values, s.scale, 0.1 * tolerance, terms);
 }
 
+// The samples (grid index -> every pair's value) as a SampledGrid (no intervals marked), for
+// Eq. (F2)'s fits.
+SampledGrid grid_of(const std::map<int, std::vector<Receptance4>>& samples,
+                    const std::vector<double>& f) {
+  SampledGrid g;
+  const std::size_t pairs = samples.empty() ? 0 : samples.begin()->second.size();
+  g.values.assign(pairs, {});
+  for (const auto& [i, v] : samples) {
+    g.at.push_back(f[i]);
+    for (std::size_t p = 0; p < pairs; ++p) g.values[p].push_back(v.at(p));
+  }
+  return g;
+}
+
+// Eq. (F2)'s values at the frequencies `at` (Hz, inside one interval) from the rational `r`.
+std::vector<std::vector<Receptance4>> rational_values(const linalg::BarycentricRational& r,
+                                                      const std::vector<double>& at,
+                                                      std::size_t pairs) {
+  std::vector<std::vector<Receptance4>> out(at.size(), std::vector<Receptance4>(pairs));
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    const Eigen::RowVectorXcd v = r(std::log(at[k]));
+    for (std::size_t p = 0; p < pairs; ++p)
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          out[k][p](a, b) = v(static_cast<Eigen::Index>(16 * p + 4 * a + b));
+  }
+  return out;
+}
 }  // namespace
+
+std::vector<std::vector<Receptance4>> sample_receptances(
+    const std::vector<double>& frequencies,
+    const std::function<std::vector<Receptance4>(double)>& evaluate,
+    const FrequencySampling& sampling, int* evaluations,
+    const std::vector<std::pair<int, int>>& scales, SampledGrid* kept) {
+  std::vector<double> f = frequencies;  // the distinct frequencies, ascending
+  std::sort(f.begin(), f.end());
+  f.erase(std::unique(f.begin(), f.end()), f.end());
+  if (!f.empty() && !(f.front() > 0.0))
+    throw NumericalError("sample_receptances: frequencies must be > 0 Hz");
+  const int n = static_cast<int>(f.size());
+  std::vector<double> x(n);
+  for (int i = 0; i < n; ++i) x[i] = std::log(f[i]);
+  std::map<int, std::vector<Receptance4>> samples;  // grid index -> every pair's value
+  std::vector<int> start;
+  if (sampling.per_octave > 0 && n > 4) start = starting_samples(x, sampling.per_octave);
+  if (start.empty() || start.size() + 1 >= static_cast<std::size_t>(n)) {
+    start.resize(n);  // as many samples as frequencies: every one directly
+    for (int i = 0; i < n; ++i) start[i] = i;
+  }
+  {
+    std::vector<double> at;
+    for (int i : start) at.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> v = evaluated(at, evaluate, sampling.threads);
+    for (std::size_t k = 0; k < start.size(); ++k) samples.emplace(start[k], std::move(v[k]));
+  }
+  std::size_t pairs = samples.empty() ? 0 : samples.begin()->second.size();
+  // The interpolation of the current samples, per pair, at grid points `at`.
+  auto interpolated = [&](const std::vector<int>& at) {
+    std::vector<double> grid, where;
+    for (const auto& s : samples) grid.push_back(f[s.first]);
+    for (int i : at) where.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> out(pairs);
+    for (std::size_t p = 0; p < pairs; ++p) {
+      std::vector<Receptance4> v;
+      for (const auto& s : samples) v.push_back(s.second.at(p));
+      out[p] = interpolate_receptances(grid, v, where);
+    }
+    return out;
+  };
+  std::vector<std::pair<int, int>> open;
+  std::set<std::pair<int, int>> checked;   // sample intervals closed by the cubic's check (F1)
+  std::set<std::pair<int, int>> rational;  // ... by Eq. (F2) instead (grid indices)
+  if (sampling.tolerance > 0.0 && samples.size() < static_cast<std::size_t>(n))
+    for (std::size_t i = 0; i + 1 < start.size(); ++i)
+      if (start[i + 1] - start[i] >= 2) open.emplace_back(start[i], start[i + 1]);
+  while (!open.empty()) {  // one pass: every open interval's third point against the samples before
+    std::vector<int> mid;
+    for (const auto& [a, b] : open) mid.push_back(split_sample(x, a, b));
+    const std::vector<std::vector<Receptance4>> predicted = interpolated(mid);
+    std::vector<std::pair<int, int>> still_open;
+    std::vector<double> at;
+    for (int i : mid) at.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> values_at_mid = evaluated(at, evaluate, sampling.threads);
+    std::vector<std::pair<int, std::vector<Receptance4>>> added;
+    std::vector<std::pair<int, int>> failed;  // the halves of the intervals whose check failed
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      added.emplace_back(mid[k], std::move(values_at_mid[k]));
+      const std::vector<Receptance4>& direct = added.back().second;
+      double err = 0.0;
+      for (std::size_t p = 0; p < pairs; ++p) {
+        const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+        err = std::max(err,
+                       sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
+      }
+      if (err <= sampling.tolerance) {
+        checked.emplace(open[k].first, mid[k]);
+        checked.emplace(mid[k], open[k].second);
+        continue;
+      }
+      // the cubic's check failed:
+      failed.emplace_back(open[k].first, mid[k]);
+      failed.emplace_back(mid[k], open[k].second);
+    }
+    for (auto& s : added) samples.emplace(s.first, std::move(s.second));
+    // a half whose cubic check failed closes where Eq. (F2) holds on the samples now (the rational
+    // of the samples around it); else it stays open while it holds a grid frequency
+    const SampledGrid now = failed.empty() ? SampledGrid{} : grid_of(samples, f);
+    for (const auto& [a, b] : failed) {
+      if (b - a < 2) continue;  // no grid frequency inside: unchecked
+      const auto j = static_cast<std::size_t>(std::distance(samples.begin(), samples.find(b)));
+      if (local_rational(now, j, sampling.tolerance, scales,
+                         kClosingAgreement * sampling.tolerance))
+        rational.emplace(a, b);
+      else
+        still_open.emplace_back(a, b);
+    }
+    open = std::move(still_open);
+  }
+  // Eq. (F2) once more on the final samples for each interval it closed (more samples around it
+  // since); where it fails now, the interval's grid frequencies are computed (samples themselves),
+  // until it holds for every one left.
+  std::map<std::pair<int, int>, linalg::BarycentricRational> fits;
+  while (!rational.empty()) {
+    const SampledGrid now = grid_of(samples, f);
+    fits.clear();
+    std::vector<int> fill;
+    for (auto it = rational.begin(); it != rational.end();) {
+      const auto [a, b] = *it;
+      const auto j = static_cast<std::size_t>(std::distance(samples.begin(), samples.find(b)));
+      if (std::optional<linalg::BarycentricRational> r =
+              local_rational(now, j, sampling.tolerance, scales, sampling.tolerance / 3.0)) {
+        fits.emplace(*it, std::move(*r));
+        ++it;
+        continue;
+      }
+      for (int i = a + 1; i < b; ++i) fill.push_back(i);
+      it = rational.erase(it);
+    }
+    if (fill.empty()) break;
+    std::vector<double> at;
+    for (int i : fill) at.push_back(f[i]);
+    std::vector<std::vector<Receptance4>> v = evaluated(at, evaluate, sampling.threads);
+    for (std::size_t k = 0; k < fill.size(); ++k) samples.emplace(fill[k], std::move(v[k]));
+  }
+  if (evaluations) *evaluations = static_cast<int>(samples.size());
+  // per interval between neighbouring samples: 1 closed by the cubic's check, 2 by Eq. (F2), 0 not
+  // checked (no grid frequency inside)
+  std::vector<char> closed_by;
+  std::vector<std::pair<int, int>> intervals;
+  {
+    int before = -1;
+    for (const auto& s : samples) {
+      if (before >= 0) {
+        const std::pair<int, int> ab(before, s.first);
+        closed_by.push_back(checked.count(ab) ? 1 : rational.count(ab) ? 2 : 0);
+        intervals.push_back(ab);
+      }
+      before = s.first;
+    }
+  }
+  if (kept) {
+    *kept = grid_of(samples, f);
+    kept->checked = closed_by;
+  }
+  // every requested frequency: its sample, the cubic of the samples, or Eq. (F2)'s rational
+  std::vector<std::vector<Receptance4>> out(pairs);
+  const bool all = samples.size() == static_cast<std::size_t>(n);
+  std::vector<int> every(n);
+  for (int i = 0; i < n; ++i) every[i] = i;
+  std::vector<std::vector<Receptance4>> values =
+      all ? std::vector<std::vector<Receptance4>>{} : interpolated(every);
+  for (const auto& [ab, r] : fits) {
+    std::vector<double> at(f.begin() + ab.first + 1, f.begin() + ab.second);
+    const std::vector<std::vector<Receptance4>> v = rational_values(r, at, pairs);
+    for (std::size_t k = 0; k < at.size(); ++k)
+      for (std::size_t p = 0; p < pairs; ++p) values[p][ab.first + 1 + k] = v[k][p];
+  }
+  for (double fq : frequencies) {
+    const int i = static_cast<int>(std::lower_bound(f.begin(), f.end(), fq) - f.begin());
+    for (std::size_t p = 0; p < pairs; ++p)
+      out[p].push_back(all ? samples.at(i).at(p) : values[p][i]);
+  }
+  return out;
+}
 
 std::vector<std::vector<Receptance4>> sampled_at(
     const SampledGrid& g, const std::vector<double>& frequencies,
@@ -272,10 +356,11 @@ std::vector<std::vector<Receptance4>> sampled_at(
     const std::size_t j = static_cast<std::size_t>(std::lower_bound(g.at.begin(), g.at.end(), fq) - g.at.begin());
     if (j < n && g.at[j] == fq) {  // a sample
       for (std::size_t p = 0; p < pairs; ++p) out[p][k] = g.values[p][j];
-    } else if (j > 0 && j < n && g.checked[j - 1]) {  // inside the checked interval (at[j-1], at[j])
+    } else if (j > 0 && j < n && g.checked[j - 1] == 1) {  // inside (at[j-1], at[j]) closed by F1
       inside.push_back(fq);
       inside_k.push_back(k);
-    } else if (j > 0 && j < n) {  // where the sampling evaluated every grid frequency: Eq. (F2)
+    } else if (j > 0 &&
+               j < n) {  // closed by Eq. (F2), or unchecked (every grid frequency a sample)
       open[j].push_back(k);
     } else {  // outside the grid
       computed.push_back(fq);
@@ -283,19 +368,17 @@ std::vector<std::vector<Receptance4>> sampled_at(
     }
   }
   for (const auto& [j, places] : open) {
-    const std::optional<linalg::BarycentricRational> r =
-        local_rational(g, j, sampling.tolerance, scales);
+    const std::optional<linalg::BarycentricRational> r = local_rational(
+        g, j, sampling.tolerance, scales,
+        g.checked[j - 1] == 2 ? std::numeric_limits<double>::infinity() : sampling.tolerance / 3.0);
     for (std::size_t k : places) {
       if (!r) {
         computed.push_back(frequencies[k]);
         computed_k.push_back(k);
         continue;
       }
-      const Eigen::RowVectorXcd v = (*r)(std::log(frequencies[k]));
-      for (std::size_t p = 0; p < pairs; ++p)
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            out[p][k](a, b) = v(static_cast<Eigen::Index>(16 * p + 4 * a + b));
+      const std::vector<std::vector<Receptance4>> v = rational_values(*r, {frequencies[k]}, pairs);
+      for (std::size_t p = 0; p < pairs; ++p) out[p][k] = v[0][p];
     }
   }
   const std::vector<std::vector<Receptance4>> direct =

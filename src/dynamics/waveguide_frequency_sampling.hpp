@@ -1,7 +1,8 @@
 // Sampling the waveguide rail's receptances on a frequency grid with fewer direct evaluations
 // (each one m x m wavenumber eigenproblem, rail_waveguide.hpp Eq. W5): the values are computed
 // directly on a subset of the grid and interpolated by cubic Hermite in ln f
-// (interpolate_receptances, waveguide_rail_model.hpp) at the others.
+// (interpolate_receptances, waveguide_rail_model.hpp) or, where that fails its check, by a local
+// rational (Eq. F2 below) at the others.
 //
 // The subset is chosen adaptively (docs/models.md Sec. 2.5b, "The frequency grid"): a starting
 // grid of `per_octave` points per octave (grid frequencies nearest to it, both ends included),
@@ -34,6 +35,14 @@
 // A resonance or a cut-on smoothed by the loss is a low-order rational locally, which the Hermite
 // cubic is not; measured on the leading outer wheel's contact of curve_300m (discrete support,
 // docs/performance.md Sec. 20) the check held for 92 % of such lines, their largest error 0.003.
+//
+// The bisection uses Eq. (F2) too: a half of an interval whose cubic check failed closes if (F2)
+// holds for it on the samples of that pass (the new third point among them) with the closer
+// leave-one-out agreement of a tenth of the tolerance (the samples are still sparse there),
+// instead of being bisected on to the grid's resolution. After the last pass (F2) is checked again
+// on the final samples for every interval it closed; where it fails then, the interval's grid
+// frequencies are computed, until it holds for all. The grid frequencies inside such an interval
+// take (F2)'s rational of the final samples (the same as sampled_at gives there).
 #pragma once
 
 #include <functional>
@@ -82,16 +91,18 @@ std::vector<std::vector<Receptance4>> sample_receptances(
 struct SampledGrid {
   std::vector<double> at;                        ///< frequencies evaluated directly, ascending (Hz)
   std::vector<std::vector<Receptance4>> values;  ///< per pair, one per `at`
-  /// per interval (at[i], at[i + 1]): closed by a check of Eq. (F1) (its third point agreed with
-  /// the interpolation); the others hold no grid frequency (every one there was evaluated)
+  /// per interval (at[i], at[i + 1]): 1 closed by a check of Eq. (F1) (its third point agreed
+  /// with the cubic interpolation), 2 closed by Eq. (F2) (its rational checked), 0 holds no grid
+  /// frequency (every one there was evaluated)
   std::vector<char> checked;
 };
 
 /// Per pair, the values at `frequencies` (Hz, any order) from a grid's sampling: a sampled
-/// frequency its value, a frequency inside a checked interval the interpolation of the samples
-/// (interpolate_receptances, as on the grid), one inside an unchecked interval (near a cut-on or a
-/// sharp resonance, where the sampling evaluated every grid frequency) the rational of Eq. (F2)
-/// where its check holds, any other (and outside the grid) evaluated directly. Each frequency's
+/// frequency its value, a frequency inside an interval closed by Eq. (F1) the cubic interpolation
+/// of the samples (interpolate_receptances, as on the grid), one inside an interval closed by Eq.
+/// (F2) or unchecked (near a cut-on or a sharp resonance, where the sampling evaluated every grid
+/// frequency) the rational of Eq. (F2) where its check holds, any other (and outside the grid)
+/// evaluated directly. Each frequency's
 /// value depends on the sampling and itself alone, not on the others asked for. Eq. (F2)'s
 /// tolerance is sampling.tolerance, its scales `scales` (as sample_receptances'); the direct
 /// evaluations on up to sampling.threads threads.

@@ -80,16 +80,19 @@ TEST(WaveguideFrequencySampling, SmoothReceptanceWithinToleranceOnAFewSamples) {
       error = std::max(error, sampling_test_error(r[k], evaluate(f[k]).front()));
     EXPECT_LT(error, tolerance) << "tolerance " << tolerance;
     EXPECT_LT(error, previous_error);
-    EXPECT_GT(points, previous_points);
+    // not fewer (a resonance is a rational of low order: Eq. F2 may close the same intervals for
+    // every tolerance here)
+    EXPECT_GE(points, previous_points);
     EXPECT_LT(points, static_cast<int>(f.size()) / 3) << "tolerance " << tolerance;
     previous_error = error, previous_points = points;
   }
 }
 
-// A cut-on inside the grid: the sampling refines down to the grid there (every frequency near f_c
-// is computed), and the error stays within the tolerance where the fixed grid of 24 per octave
-// (the former sampling) is off by more than 10 times as much.
-TEST(WaveguideFrequencySampling, RefinesToTheGridAtACutOn) {
+// A cut-on inside the grid: where the cubic's checks fail near f_c the sampling closes the
+// intervals by Eq. (F2)'s checked rational (it would otherwise refine down to the grid there), the
+// grid frequencies next to the cut-on are within the tolerance, and so is the whole grid, where the
+// fixed grid of 24 per octave (the former sampling) is off by more than 10 times as much.
+TEST(WaveguideFrequencySampling, ClosesACutOnByTheCheckedRational) {
   const std::vector<double> f = sampling_test_grid();
   const double fc = 3400.0;
   std::vector<double> evaluated;
@@ -99,13 +102,18 @@ TEST(WaveguideFrequencySampling, RefinesToTheGridAtACutOn) {
   };
   int points = 0;
   const double tolerance = 1e-2;
+  rd::SampledGrid kept;
   const std::vector<rd::Receptance4> r =
-      rd::sample_receptances(f, evaluate, {6, tolerance}, &points).front();
+      rd::sample_receptances(f, evaluate, {6, tolerance}, &points, {}, &kept).front();
   EXPECT_EQ(points, static_cast<int>(evaluated.size()));
+  EXPECT_NE(std::find(kept.checked.begin(), kept.checked.end(), 2), kept.checked.end())
+      << "no interval closed by Eq. (F2)";
   const auto above = std::lower_bound(f.begin(), f.end(), fc);
-  for (auto it = above - 2; it != above + 2; ++it)
-    EXPECT_NE(std::find(evaluated.begin(), evaluated.end(), *it), evaluated.end())
-        << "grid frequency " << *it << " Hz next to the cut-on not computed";
+  for (auto it = above - 2; it != above + 2; ++it) {
+    const std::size_t k = static_cast<std::size_t>(it - f.begin());
+    EXPECT_LT(sampling_test_error(r[k], sampling_test_receptance(*it, 250.0, fc)), tolerance)
+        << *it << " Hz";
+  }
   evaluated.clear();
   int fixed_points = 0;
   const std::vector<rd::Receptance4> fixed =
@@ -199,8 +207,9 @@ TEST(WaveguideFrequencySampling, OffGridFrequenciesFromTheKeptSamplingAlone) {
 
 // Eq. (F2) where its check fails: a ripple on the cut-on function with a period of about two grid
 // spacings (0.3 % in f: no smooth function of ln f, so the sampling evaluates every grid frequency
-// there, and no low-order rational predicts a left-out sample). The added lines in those
-// intervals are computed (the function's value to the bit); without the ripple they are not.
+// there, and no low-order rational predicts a left-out sample). Added lines in the intervals the
+// cubic did not close (closed by Eq. F2, or unchecked) are then mostly computed (the function's
+// value to the bit); without the ripple none is, and all are within the tolerance.
 TEST(WaveguideFrequencySampling, OpenIntervalsFromACheckedRationalElseComputed) {
   const std::vector<double> f = sampling_test_grid();
   const double spacing = std::log(f[1] / f[0]);
@@ -214,10 +223,10 @@ TEST(WaveguideFrequencySampling, OpenIntervalsFromACheckedRationalElseComputed) 
     const rd::FrequencySampling sampling;
     rd::SampledGrid kept;
     rd::sample_receptances(f, evaluate, sampling, nullptr, {}, &kept);
-    std::vector<double> added;  // a third of the way into each unchecked interval
+    std::vector<double> added;  // a third of the way into each interval the cubic did not close
     for (std::size_t i = 0; i + 1 < kept.at.size(); ++i)
-      if (!kept.checked[i]) added.push_back(kept.at[i] + (kept.at[i + 1] - kept.at[i]) / 3.0);
-    ASSERT_GT(added.size(), 10u) << ripple;
+      if (kept.checked[i] != 1) added.push_back(kept.at[i] + (kept.at[i + 1] - kept.at[i]) / 3.0);
+    ASSERT_GT(added.size(), 5u) << ripple;
     const auto v = rd::sampled_at(kept, added, evaluate, sampling);
     int computed = 0;
     double worst = 0.0;
@@ -229,7 +238,8 @@ TEST(WaveguideFrequencySampling, OpenIntervalsFromACheckedRationalElseComputed) 
         worst = std::max(worst, sampling_test_error(v[0][k], truth));
     }
     std::printf(
-        "  ripple %.1f: %zu lines in unchecked intervals, %d computed, the others' largest "
+        "  ripple %.1f: %zu lines in intervals the cubic did not close, %d computed, the others' "
+        "largest "
         "error %.2e\n",
         ripple, added.size(), computed, worst);
     EXPECT_LT(worst, sampling.tolerance) << ripple;
