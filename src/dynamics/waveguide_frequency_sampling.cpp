@@ -303,14 +303,12 @@ std::vector<std::vector<Receptance4>> sample_receptances(
   // per interval between neighbouring samples: 1 closed by the cubic's check, 2 by Eq. (F2), 0 not
   // checked (no grid frequency inside)
   std::vector<char> closed_by;
-  std::vector<std::pair<int, int>> intervals;
   {
     int before = -1;
     for (const auto& s : samples) {
       if (before >= 0) {
         const std::pair<int, int> ab(before, s.first);
         closed_by.push_back(checked.count(ab) ? 1 : rational.count(ab) ? 2 : 0);
-        intervals.push_back(ab);
       }
       before = s.first;
     }
