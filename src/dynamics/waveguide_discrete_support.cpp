@@ -104,12 +104,11 @@ Eigen::MatrixXcd green(const RailWaves& w, const Amplitudes& r, const Amplitudes
 
 // Eq. (W4)'s weights at the points x_i = x0 + i h, i = 0 .. count - 1 (column i; h != 0, the
 // sleepers' spacing): e^{-i k_j |x_i|} as powers of z_j = e^{-i k_j |h|}. The points on either side
-// of x = 0 are each an arithmetic run in |x|, walked from its point nearest 0 outward (two
-// exponentials per wave and side instead of one per point, and 1/d_j once; each step one complex
-// product, the rounding error growing by about an ulp per span).
+// of x = 0 are each an arithmetic run in |x|, walked from its point nearest 0 outward
+// (green_weights there, then one complex product per step instead of an exponential and a division
+// per point; the rounding error grows by about an ulp per span).
 Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, int count) {
   const cdouble I(0.0, 1.0);
-  const Eigen::ArrayXcd scale = -I * w.norms.array().inverse();
   const Eigen::ArrayXcd z = (-I * w.wavenumbers.array() * std::abs(h)).exp();
   Eigen::MatrixXcd out(w.wavenumbers.size(), count);
   const auto x = [&](int i) { return x0 + i * h; };
@@ -118,10 +117,10 @@ Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, in
     if (a >= b) return;
     const bool up = std::abs(x(a)) <= std::abs(x(b - 1));
     int i = up ? a : b - 1;
-    Eigen::ArrayXcd e = (-I * w.wavenumbers.array() * std::abs(x(i))).exp();
+    Eigen::ArrayXcd weight = green_weights(w, x(i)).array();
     for (int k = a; k < b; ++k, i += up ? 1 : -1) {
-      out.col(i) = (scale * e).matrix();
-      e *= z;
+      out.col(i) = weight.matrix();
+      weight *= z;
     }
   };
   int split = 1;  // the first index on the other side of 0 from x_0 (count: none)

@@ -17,18 +17,34 @@ namespace rollnoise::dynamics {
 
 namespace {
 
-// Eq. (F1): the largest entry of |a - b| against sqrt(|sa_ii| |sb_jj|) (the Frobenius norm of b
-// where that vanishes).
-double sampling_error(const Receptance4& a, const Receptance4& b, const Receptance4& sa,
-                      const Receptance4& sb) {
-  double err = 0.0;
-  const double scale = b.norm();
+// Eq. (F1)'s scale of each entry of a pair's value b: sqrt(|sa_ii| |sb_jj|), sa and sb the point
+// receptances of its two points (the Frobenius norm of b where that vanishes; 0 if b is 0 too).
+Eigen::Matrix4d sampling_scales(const Receptance4& b, const Receptance4& sa,
+                                const Receptance4& sb) {
+  Eigen::Matrix4d s;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       const double d = std::sqrt(std::abs(sa(i, i)) * std::abs(sb(j, j)));
-      const double s = d > 0.0 ? d : scale;
-      if (s > 0.0) err = std::max(err, std::abs(a(i, j) - b(i, j)) / s);
+      s(i, j) = d > 0.0 ? d : b.norm();
     }
+  return s;
+}
+
+// The indices of the values whose diagonals scale pair p (sample_receptances' `scales`; none
+// given: the pair's own).
+std::pair<int, int> scale_points(const std::vector<std::pair<int, int>>& scales, std::size_t p) {
+  return p < scales.size() ? scales[p]
+                           : std::pair<int, int>(static_cast<int>(p), static_cast<int>(p));
+}
+
+// Eq. (F1): the largest entry of |a - b| against its sampling_scales.
+double sampling_error(const Receptance4& a, const Receptance4& b, const Receptance4& sa,
+                      const Receptance4& sb) {
+  const Eigen::Matrix4d scale = sampling_scales(b, sa, sb);
+  double err = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (scale(i, j) > 0.0) err = std::max(err, std::abs(a(i, j) - b(i, j)) / scale(i, j));
   return err;
 }
 
@@ -89,16 +105,14 @@ LocalSamples local_samples(const SampledGrid& g, std::size_t lo, std::size_t hi,
     const Eigen::Index row = static_cast<Eigen::Index>(i - lo);
     s.x(row) = std::log(g.at[i]);
     for (std::size_t p = 0; p < pairs; ++p) {
-      const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+      const auto [sa, sb] = scale_points(scales, p);
       const Receptance4& v = g.values[p][i];
-      const Receptance4 &a = g.values[sa][i], &b = g.values[sb][i];
-      const double frobenius = v.norm() > 0.0 ? v.norm() : 1.0;
+      const Eigen::Matrix4d scale = sampling_scales(v, g.values[sa][i], g.values[sb][i]);
       for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c) {
           const Eigen::Index col = static_cast<Eigen::Index>(16 * p + 4 * r + c);
-          const double d = std::sqrt(std::abs(a(r, r)) * std::abs(b(c, c)));
           s.values(row, col) = v(r, c);
-          s.scale(row, col) = d > 0.0 ? d : frobenius;
+          s.scale(row, col) = scale(r, c) > 0.0 ? scale(r, c) : 1.0;  // v = 0: any scale
         }
     }
   }
@@ -245,7 +259,7 @@ std::vector<std::vector<Receptance4>> sample_receptances(
       const std::vector<Receptance4>& direct = added.back().second;
       double err = 0.0;
       for (std::size_t p = 0; p < pairs; ++p) {
-        const auto [sa, sb] = p < scales.size() ? scales[p] : std::pair<int, int>(p, p);
+        const auto [sa, sb] = scale_points(scales, p);
         err = std::max(err,
                        sampling_error(predicted[p][k], direct.at(p), direct.at(sa), direct.at(sb)));
       }
