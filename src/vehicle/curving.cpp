@@ -5,13 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <stdexcept>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "geometry/wheel_rail.hpp"
+#include "linalg/nearest_root.hpp"
 
 namespace rollnoise::noise {
 namespace {
@@ -47,47 +49,14 @@ Residual residual(const Geometry& g, const std::array<double, 2>& S, const State
   return {C1 * psi1 + C2 * psi2 + x.Y[0] + x.Y[1] + g.Fu + G1 + G2, yaw};
 }
 
-// A root of a scalar function on [lo, hi]: the interval is scanned in `n` pieces for sign
-// changes (the yaw equation of a flanging bogie need not be monotone), each bracket is refined
-// by bisection (robust to the jumps of a tabulated Delta_r: on a jump the root is the jump
-// itself), and the root nearest to `prefer` is returned (continuation from the previous
-// iterate). False without a sign change.
+// A root of a scalar function on [lo, hi] scanned in `n` pieces for sign changes (the yaw equation
+// of a flanging bogie need not be monotone), the one nearest to `prefer` (continuation from the
+// previous iterate): linalg::nearest_root. False without a sign change.
 template <class F>
 bool find_root(F f, double lo, double hi, double prefer, double* root, int n = 200) {
-  if (!(lo <= hi)) return false;
-  bool found = false;
-  double best = 0.0;
-  double a = lo, fa = f(lo);
-  for (int k = 1; k <= n; ++k) {
-    double b = lo + (hi - lo) * k / n, fb = f(b);
-    double r = 0.0;
-    bool bracket = false;
-    if (fa == 0.0) {
-      r = a;
-      bracket = true;
-    } else if ((fa > 0.0) != (fb > 0.0) || fb == 0.0) {
-      double x0 = a, x1 = b, f0 = fa;
-      for (int it = 0; it < 200 && x1 - x0 > 1e-14; ++it) {
-        const double mid = 0.5 * (x0 + x1), fm = f(mid);
-        if (fm != 0.0 && (fm > 0.0) == (f0 > 0.0)) {
-          x0 = mid;
-          f0 = fm;
-        } else {
-          x1 = mid;
-        }
-      }
-      r = 0.5 * (x0 + x1);
-      bracket = true;
-    }
-    if (bracket && (!found || std::abs(r - prefer) < std::abs(best - prefer))) {
-      best = r;
-      found = true;
-    }
-    a = b;
-    fa = fb;
-  }
-  if (found) *root = best;
-  return found;
+  const std::optional<double> r = linalg::nearest_root(f, lo, hi, prefer, n);
+  if (r) *root = *r;
+  return r.has_value();
 }
 
 // (K3) for one choice of flange contacts (flange_i = 0 free, +1 at y = +y_f, -1 at y = -y_f).
