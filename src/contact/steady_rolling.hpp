@@ -13,6 +13,8 @@
 // docs/accuracy.md ("Benchmarks") for sizes and timings.
 #pragma once
 
+#include <memory>
+
 #include "contact/friction_law.hpp"
 #include "contact/influence.hpp"
 #include "contact/tangential_solver.hpp"
@@ -43,5 +45,34 @@ TangentialSolution solve_steady_rolling(const InfluenceTable& A, const GridField
                                         const SteadyRollingInput& in,
                                         const TangentialSolverSettings& settings = {},
                                         const TangentialSolution* start = nullptr);
+
+class CoulombNewton;
+
+/// Steady rolling solved again and again on one grid at one speed, with a pressure that changes
+/// between the calls (a wheel lowered under its load: geometry/curved_contact.cpp). solve() is
+/// solve_steady_rolling; the Newton solver is kept between the calls with its FFT products and
+/// its LU factors (coulomb_newton.hpp: the preconditioner of its GMRES, renewed there when
+/// GMRES needs more than 30 iterations with them), which serve while the contact elements stay
+/// the same. The solution is that of solve_steady_rolling to the Newton solver's tolerance (the
+/// factors precondition; they do not change the equations). `A` must outlive the solver.
+class SteadyRollingSolver {
+ public:
+  explicit SteadyRollingSolver(const InfluenceTable& A);
+  ~SteadyRollingSolver();
+  SteadyRollingSolver(SteadyRollingSolver&&) noexcept;
+  SteadyRollingSolver& operator=(SteadyRollingSolver&&) noexcept;
+
+  TangentialSolution solve(const GridField& pn, const SteadyRollingInput& in,
+                           const TangentialSolverSettings& settings = {},
+                           const TangentialSolution* start = nullptr);
+  /// LU factorisations made so far by the kept Newton solver(s).
+  int factorisations() const;
+
+ private:
+  const InfluenceTable* A_;
+  double speed_ = 0.0;
+  std::unique_ptr<CoulombNewton> newton_;
+  int earlier_factorisations_ = 0;  // of solvers replaced (another speed)
+};
 
 }  // namespace rollnoise::contact

@@ -243,6 +243,8 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     contact::SteadyRollingInput rolling = in.rolling;
     local_creepages(c, cp.rows, g, in, rolling);
     LoadedContact out;
+    // One Newton solver for the iterations: its LU factors serve again while the area stays.
+    contact::SteadyRollingSolver steady(patch->influence);
     double dz = 0.0, c0 = std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
     contact::GridField h = cp.h;
     for (out.iterations = 1;; ++out.iterations) {
@@ -252,8 +254,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
       const contact::GridField* start = out.iterations > 1 ? &patch->normal.pn : nullptr;
       patch->normal = contact::solve_normal(g, op, h, N, {}, start);
       const contact::TangentialSolution* tstart = out.iterations > 1 ? &out.tangential : nullptr;
-      out.tangential = contact::solve_steady_rolling(patch->influence, patch->normal.pn, rolling,
-                                                     {}, tstart);
+      out.tangential = steady.solve(patch->normal.pn, rolling, {}, tstart);
       // (C3) and the forces on the wheel, each row with its own orientation.
       const RowSums rs = row_sums(g, patch->normal.pn, out.tangential, cosd, sind);
       const double up = rs.up, lat = rs.lat, lon = rs.lon, pc = rs.pc, psum = rs.psum;
