@@ -189,3 +189,37 @@ TEST(SteadyRolling, ZeroCreepageGivesZeroTraction) {
   for (double v : s.px) EXPECT_EQ(v, 0.0);
   EXPECT_EQ(s.count(ElementState::adhesion), patch.normal.contact_elements());
 }
+
+// One steady-rolling solver for a pressure iterated on a grid (contact::SteadyRollingSolver, as a
+// wheel's lowering uses it): on the paper's coarse grid near saturation (xi = 2e-3, 1e-3, spin 0.1
+// rad/m), three pressures (pn scaled by 1, 1.03, 0.97: the same contact elements) give the
+// tractions of a fresh solve_steady_rolling each time within 1e-10 of the largest traction (the LU
+// factors only precondition), and the kept solver factorises fewer times than a fresh one per
+// pressure does.
+TEST(SteadyRollingSolver, KeepsItsFactorsAcrossPressuresAndGivesTheFreshSolution) {
+  const ContactPatch& patch = coarse_patch();
+  const SteadyRollingInput in(kMu, kSpeed, {2e-3, 1e-3, 0.1});
+  SteadyRollingSolver kept(patch.influence);
+  int fresh_factorisations = 0;
+  const TangentialSolution* start = nullptr;
+  TangentialSolution previous;
+  for (double scale : {1.0, 1.03, 0.97}) {
+    GridField pn = patch.normal.pn;
+    for (double& p : pn) p *= scale;
+    const TangentialSolution a = kept.solve(pn, in, {}, start);
+    const TangentialSolution b = solve_steady_rolling(patch.influence, pn, in, {}, start);
+    SteadyRollingSolver fresh(patch.influence);
+    fresh.solve(pn, in, {}, start);
+    fresh_factorisations += fresh.factorisations();
+    double largest = 0.0, diff = 0.0;
+    for (std::size_t k = 0; k < pn.size(); ++k) {
+      largest = std::max({largest, std::abs(b.px[k]), std::abs(b.py[k])});
+      diff = std::max({diff, std::abs(a.px[k] - b.px[k]), std::abs(a.py[k] - b.py[k])});
+    }
+    EXPECT_LE(diff, 1e-10 * largest) << "pn x " << scale;
+    previous = a;
+    start = &previous;
+  }
+  ASSERT_GT(fresh_factorisations, 0) << "the case must need factors for the check to mean anything";
+  EXPECT_LT(kept.factorisations(), fresh_factorisations);
+}
