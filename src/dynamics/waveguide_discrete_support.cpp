@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "dynamics/frequency_argument.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/mesh.hpp"
+#include "linalg/block_toeplitz_solve.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -130,15 +132,34 @@ Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, in
   return out;
 }
 
-// One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and the LU of
-// I + A K (Eq. D2), whose blocks g(d L), d = 0..2N, depend on the seats' spacing only.
+// One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and I + A K of Eq.
+// (D2), block Toeplitz (its block (i, j) is delta_ij I + a(i - j) K with a(d) = g(d L) and a(-d) =
+// g(d L)^T, d = 0..2N: the seats' spacing alone sets it), solved by the block Levinson recursion
+// (linalg/block_toeplitz_solve.hpp: O(N^2) blocks instead of the dense LU's O(N^3), checked by its
+// residual) and by a dense LU where that check fails.
 struct Seats {
   RailWaves waves;
   Amplitudes foot;
   Eigen::Vector4cd stiffness;
-  Eigen::PartialPivLU<Eigen::MatrixXcd> lu;
   int n;
   double spacing;
+  std::vector<Eigen::Matrix4cd> lower, upper;  // the blocks t(d), t(-d) of I + A K, d = 0..2N
+  std::optional<linalg::BlockToeplitzSolver> levinson;
+  mutable std::optional<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu;  // only where Levinson fails
+
+  /// v = (I + A K)^{-1} B.
+  Eigen::MatrixXcd solve(const Eigen::MatrixXcd& B) const {
+    if (std::optional<Eigen::MatrixXcd> v = levinson->solve(B)) return std::move(*v);
+    if (!lu) {
+      const int m = static_cast<int>(lower.size());
+      Eigen::MatrixXcd S(4 * m, 4 * m);
+      for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j)
+          S.block<4, 4>(4 * i, 4 * j) = i >= j ? lower[i - j] : upper[j - i];
+      lu.emplace(S);
+    }
+    return lu->solve(B);
+  }
 };
 
 Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const FootSupport& support,
@@ -156,13 +177,15 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
   for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
     g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
-  Eigen::MatrixXcd S = Eigen::MatrixXcd::Identity(4 * m, 4 * m);
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      const Eigen::Matrix4cd a = i >= j ? g[i - j] : g[j - i].transpose();
-      S.block<4, 4>(4 * i, 4 * j) += a * s.stiffness.asDiagonal();
-    }
-  s.lu.compute(S);
+  s.lower.resize(m);
+  s.upper.resize(m);
+  for (int d = 0; d < m; ++d) {
+    s.lower[d] = g[d] * s.stiffness.asDiagonal();
+    s.upper[d] = g[d].transpose() * s.stiffness.asDiagonal();
+  }
+  s.lower[0] += Eigen::Matrix4cd::Identity();
+  s.upper[0] = s.lower[0];
+  s.levinson.emplace(s.lower, s.upper);
   return s;
 }
 
@@ -181,7 +204,7 @@ Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double 
     B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
                              to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
   }
-  const Eigen::MatrixXcd v = s.lu.solve(B);
+  const Eigen::MatrixXcd v = s.solve(B);
   // Eq. (D3): sum_n G_rf(x_r - x_n) K v_n = A_s(r)^T sum_n diag(weights) A_-s(foot) K v_n, the
   // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
   Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), B.cols());
