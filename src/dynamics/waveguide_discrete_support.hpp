@@ -25,8 +25,11 @@
 //   H(x_r, x_e) = G(x_r - x_e) u - Sum_n G_rf(x_r - x_n) K v_n,                              (D3)
 //
 // A_nm = g(x_n - x_m) (block Toeplitz, g(-x) = g(x)^T), B_e,n = G_fe(x_n - x_e), G_rf(x) the
-// response at the rail's response distributions to a foot load. Solved by a dense LU (4(2N + 1)
-// unknowns; N = 60: 484). Truncation as in the beam model: the 2N + 1 seats nearest the midpoint of
+// response at the rail's response distributions to a foot load. I + A K is block Toeplitz (block
+// (n, m) = delta_nm I + a(n - m) K, a(d) = g(d L), a(-d) = g(d L)^T): solved by the block Levinson
+// recursion (linalg/block_toeplitz_solve.hpp, O(N^2) 4 x 4 block products, residual-checked), a
+// dense LU of its 4(2N + 1) unknowns (N = 60: 484) where the check fails. Truncation as in the
+// beam model: the 2N + 1 seats nearest the midpoint of
 // the two positions, the rail free beyond them. I + A K depends on the seats' spacing only, not on
 // where they are centred, so one LU per frequency serves every pair of positions.
 //

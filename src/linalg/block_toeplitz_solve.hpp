@@ -2,8 +2,8 @@
 // necessarily symmetric or Hermitian), for a few right-hand sides, in O(m^2) block operations
 // instead of the O(m^3) of a dense LU.
 //
-// The block Levinson recursion (Whittle, Proc. R. Soc. A 274, 1963; Wiggins & Robinson, J.
-// Geophys. Res. 70, 1965; Akaike, SIAM J. Appl. Math. 24, 1973), on the leading principal block
+// The block Levinson recursion (Whittle, Biometrika 50, 1963; Wiggins & Robinson, J. Geophys.
+// Res. 70, 1965; Akaike, SIAM J. Appl. Math. 24, 1973), on the leading principal block
 // submatrices M_k = [t(i - j)]_{i,j=0..k}. Per order k it keeps a forward and a backward predictor,
 //
 //   M_k [I; a_1; ...; a_k] = [V_k; 0; ...; 0],   M_k [b_0; ...; b_{k-1}; I] = [0; ...; 0; U_k],
