@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "dynamics/lapack_section.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/triangle6.hpp"
+#include "linalg/lapack_section.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -63,7 +63,7 @@ void eigen_decomposition(Eigen::MatrixXcd a, Eigen::VectorXcd& values, Eigen::Ma
   cdouble dummy, query;
   std::vector<double> rwork(2 * n);
   int info = 0, lwork = -1;
-  const LapackSection lapack;  // lapack_section.hpp: not every LAPACK is reentrant
+  const linalg::LapackSection lapack;  // lapack_section.hpp: not every LAPACK is reentrant
   zgeev_("N", "V", &n, a.data(), &n, values.data(), &dummy, &one, vectors.data(), &n, &query,
          &lwork, rwork.data(), &info);
   lwork = static_cast<int>(query.real());
@@ -289,7 +289,7 @@ std::vector<Eigen::VectorXd> section_modes_below(const Eigen::LLT<Eigen::MatrixX
   std::vector<double> work(5 * n);
   std::vector<int> iwork(5 * n), ifail(n);
   {
-    const LapackSection lapack;  // lapack_section.hpp
+    const linalg::LapackSection lapack;  // lapack_section.hpp
     dstevx_("V", "V", &n, d.data(), e.data(), &vl, &vu, &one, &one, &abstol, &found, w.data(),
             Z.data(), &n, work.data(), iwork.data(), ifail.data(), &info);
   }

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "dynamics/lapack_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
+#include "linalg/lapack_section.hpp"
 
 namespace rollnoise::dynamics {
 
@@ -69,7 +69,7 @@ void schur_form(Eigen::MatrixXcd& a, Eigen::MatrixXcd& u) {
   Eigen::VectorXcd w(n);
   cdouble query;
   int info = 0, lwork = -1;
-  const LapackSection lapack;  // lapack_section.hpp: not every LAPACK is reentrant
+  const linalg::LapackSection lapack;  // lapack_section.hpp: not every LAPACK is reentrant
   zhseqr_("S", "V", &n, &one, &n, a.data(), &n, w.data(), u.data(), &n, &query, &lwork, &info);
   lwork = std::max(1, static_cast<int>(query.real()));
   std::vector<cdouble> work(lwork);
@@ -109,7 +109,7 @@ Eigen::VectorXcd eigenvalues_only(Eigen::MatrixXcd a) {
   Eigen::VectorXcd w(n);
   cdouble query, none;
   int info = 0, lwork = -1;
-  const LapackSection lapack;  // lapack_section.hpp
+  const linalg::LapackSection lapack;  // lapack_section.hpp
   zhseqr_("E", "N", &n, &one, &n, a.data(), &n, w.data(), &none, &one, &query, &lwork, &info);
   lwork = std::max(1, static_cast<int>(query.real()));
   std::vector<cdouble> work(lwork);

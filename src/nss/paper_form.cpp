@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "linalg/hessenberg_eigenvalues.hpp"
 #include "nss/linear_model.hpp"
 #include "nss/linear_model_parts.hpp"
 
@@ -167,10 +168,11 @@ void LinearContactModel::hessenberg_at(std::complex<double> z, CreepMatrix* f, L
 }
 
 double LinearContactModel::spectral_radius() const {
-  // The eigenvalues of M0^{-1} M1 = Q H Q' are those of H (real Schur of the Hessenberg form).
+  // The eigenvalues of M0^{-1} M1 = Q H Q' are those of H (LAPACK's Hessenberg QR on H itself:
+  // linalg/hessenberg_eigenvalues.hpp).
   std::call_once(built_->radius_once, [this] {
-    const Eigen::EigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(hessenberg().H), false);
-    built_->spectral_radius = es.eigenvalues().cwiseAbs().maxCoeff();
+    built_->spectral_radius =
+        linalg::hessenberg_eigenvalues(Eigen::MatrixXd(hessenberg().H)).cwiseAbs().maxCoeff();
   });
   return built_->spectral_radius;
 }

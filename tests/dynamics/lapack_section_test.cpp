@@ -3,7 +3,7 @@
 // the bits of one thread, whatever LAPACK the system has installed. With Debian's
 // libopenblas0-serial as the system LAPACK and no lock, this test failed: two threads' values
 // differed from one thread's by O(1) at some frequencies.
-#include "dynamics/lapack_section.hpp"
+#include "linalg/lapack_section.hpp"
 
 #include <gtest/gtest.h>
 
@@ -56,7 +56,9 @@ EigenValuesPerFrequency computed_on_threads(const rd::RailWaveguide& rail,
 // state shared between them): on two threads the same bits as on one (tolerance: none).
 TEST(LapackSection, WaveguideEigenproblemsOnTwoThreadsGiveOneThreadsBits) {
   std::printf("system LAPACK entered from several threads at once: %s\n",
-              rd::lapack_reentrant() ? "yes" : "no (OpenBLAS built single-threaded: calls locked)");
+              rollnoise::linalg::lapack_reentrant()
+                  ? "yes"
+                  : "no (OpenBLAS built single-threaded: calls locked)");
   const rd::RailWaveguide full = free_rail_on_60mm_mesh();
   const Eigen::Vector2d top(0.0, 0.172), up(0.0, 1.0);
   const Eigen::MatrixXd crown = full.patch_loads(top, 0.01, up, rd::kUic60HeadBottom);

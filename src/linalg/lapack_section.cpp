@@ -1,8 +1,8 @@
-#include "dynamics/lapack_section.hpp"
+#include "linalg/lapack_section.hpp"
 
 #include <dlfcn.h>
 
-namespace rollnoise::dynamics {
+namespace rollnoise::linalg {
 
 namespace {
 
@@ -31,4 +31,4 @@ LapackSection::LapackSection() : lock_(lapack_mutex(), std::defer_lock) {
   if (!lapack_reentrant()) lock_.lock();
 }
 
-}  // namespace rollnoise::dynamics
+}  // namespace rollnoise::linalg

@@ -19,7 +19,7 @@
 
 #include <mutex>
 
-namespace rollnoise::dynamics {
+namespace rollnoise::linalg {
 
 /// Whether the LAPACK loaded in this process may be entered from several threads at once (false
 /// for an OpenBLAS built single-threaded; decided once per process).
@@ -35,4 +35,4 @@ class LapackSection {
   std::unique_lock<std::mutex> lock_;
 };
 
-}  // namespace rollnoise::dynamics
+}  // namespace rollnoise::linalg
