@@ -93,11 +93,11 @@ std::unique_ptr<LinearContactModel::HessenbergForm> LinearContactModel::hessenbe
   const Eigen::MatrixXd N = lu0.solve(d.M1);
   const Eigen::HessenbergDecomposition<Eigen::MatrixXd> hd(N);
   form->H = hd.matrixH();
-  const Eigen::MatrixXd Q = hd.matrixQ();
   Eigen::MatrixXd inputs(W_.rows(), 5);  // the creepages, then wN0 and wN1 of (G2)
   inputs << W_, wN0_, wN1_;
-  form->Rhat = Q.transpose() * lu0.solve(inputs);
-  form->Lhat = Q.transpose() * L_;
+  // Q' applied as its Householder reflectors (O(n^2) per column; forming Q is O(n^3)).
+  form->Rhat = hd.matrixQ().transpose() * lu0.solve(inputs);
+  form->Lhat = hd.matrixQ().transpose() * L_;
   return form;
 }
 
