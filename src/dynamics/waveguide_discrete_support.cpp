@@ -143,21 +143,13 @@ struct Seats {
   Eigen::Vector4cd stiffness;
   int n;
   double spacing;
-  std::vector<Eigen::Matrix4cd> lower, upper;  // the blocks t(d), t(-d) of I + A K, d = 0..2N
-  std::optional<linalg::BlockToeplitzSolver> levinson;
+  std::optional<linalg::BlockToeplitzSolver> levinson;              // I + A K
   mutable std::optional<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu;  // only where Levinson fails
 
   /// v = (I + A K)^{-1} B.
   Eigen::MatrixXcd solve(const Eigen::MatrixXcd& B) const {
     if (std::optional<Eigen::MatrixXcd> v = levinson->solve(B)) return std::move(*v);
-    if (!lu) {
-      const int m = static_cast<int>(lower.size());
-      Eigen::MatrixXcd S(4 * m, 4 * m);
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j)
-          S.block<4, 4>(4 * i, 4 * j) = i >= j ? lower[i - j] : upper[j - i];
-      lu.emplace(S);
-    }
+    if (!lu) lu.emplace(levinson->dense());
     return lu->solve(B);
   }
 };
@@ -177,15 +169,14 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
   for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
     g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
-  s.lower.resize(m);
-  s.upper.resize(m);
+  std::vector<Eigen::Matrix4cd> lower(m), upper(m);  // the blocks t(d), t(-d) of I + A K
   for (int d = 0; d < m; ++d) {
-    s.lower[d] = g[d] * s.stiffness.asDiagonal();
-    s.upper[d] = g[d].transpose() * s.stiffness.asDiagonal();
+    lower[d] = g[d] * s.stiffness.asDiagonal();
+    upper[d] = g[d].transpose() * s.stiffness.asDiagonal();
   }
-  s.lower[0] += Eigen::Matrix4cd::Identity();
-  s.upper[0] = s.lower[0];
-  s.levinson.emplace(s.lower, s.upper);
+  lower[0] += Eigen::Matrix4cd::Identity();
+  upper[0] = lower[0];
+  s.levinson.emplace(std::move(lower), std::move(upper));
   return s;
 }
 

@@ -81,6 +81,15 @@ class BlockToeplitzSolver {
   /// Whether (L1) ran through (every pivot block regular and finite).
   bool ok() const { return ok_; }
   int blocks() const { return static_cast<int>(lower_.size()); }
+  /// T itself (4 m x 4 m), for a dense solve where solve() gives nothing.
+  Eigen::MatrixXcd dense() const {
+    const int m = blocks();
+    Eigen::MatrixXcd T(4 * m, 4 * m);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j)
+        T.block<4, 4>(4 * i, 4 * j) = i >= j ? lower_[i - j] : upper_[j - i];
+    return T;
+  }
 
   /// X = T^{-1} B (B: 4 m rows) by (L2), if the recursion ran and the residual ||T c - B w|| of
   /// the combination c = X w, w_j = (1 + 0.618 j) / ||b_j||, is at most `tolerance`.
