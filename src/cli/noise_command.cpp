@@ -9,6 +9,7 @@
 #include "io/noise_case.hpp"
 #include "io/noise_output.hpp"
 #include "io/rail_waves_output.hpp"
+#include "nss/linear_model.hpp"
 #include "pipeline/noise_pipeline.hpp"
 
 namespace rollnoise::cli {
@@ -48,6 +49,19 @@ void print_wheel_line(const pipeline::WheelNoise& wn, const char* label) {
               1e-3 * w.normal_force(), 1e-3 * f[0], 1e-3 * f[1], 1e-3 * f[2], 10.0 * std::log10(total));
 }
 
+// What a contact's work cost: its linear model's size and sweep
+// (/noise/wheels/<wheel>/contact_work).
+void print_contact_work(const pipeline::WheelNoise& wn, const char* label) {
+  const nss::LinearContactModel* m = wn.mean.model().get();
+  if (!m) {
+    std::printf("    %-14s %.2f s\n", label, wn.seconds);
+    return;
+  }
+  std::printf("    %-14s %4d adhesion / %4d slip elements, r = %4d, %3d block steps, %.2f s\n",
+              label, m->adhesion_elements(), m->slip_elements(), m->reduced_unknowns(),
+              m->sweep_info().block_steps, wn.seconds);
+}
+
 // One line per wheel of curve.wheels, then one per second patch (noise.second_patch).
 void print_wheels(const pipeline::NoiseResult& r) {
   if (r.wheels.empty()) return;
@@ -61,6 +75,13 @@ void print_wheels(const pipeline::NoiseResult& r) {
                 noise::wheel_name(p.state.wheel));
     print_wheel_line(p, "  flange");
   }
+  std::printf(
+      "  contact work (curve state %.2f s first; then each contact on its own thread, "
+      "concurrently):\n",
+      r.seconds_curve);
+  for (const pipeline::WheelNoise& wn : r.wheels)
+    print_contact_work(wn, noise::wheel_name(wn.state.wheel));
+  for (const pipeline::WheelNoise& p : r.patches) print_contact_work(p, "  flange");
 }
 
 // The 1/3-octave band levels, one line per band (left out with -q).

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "io/contact_output.hpp"
+#include "nss/linear_model.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -91,6 +92,26 @@ void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline
 
 namespace {
 
+// What the wheel's contact cost (docs/interface.md, /noise/wheels): its linear model's size and
+// sweep, and the wall time of its contact work.
+void write_contact_work(Hdf5Writer& w, const std::string& g, const pipeline::WheelNoise& wn) {
+  w.write(g + "seconds", wn.seconds,
+          "s (wall time of the wheel's contact state, patch, steady rolling, linear model and f, "
+          "g; the "
+          "wheels run concurrently)");
+  const nss::LinearContactModel* model = wn.mean.model().get();
+  if (!model) return;  // Kalker's coefficients (noise.contact_model = "kalker")
+  w.write(g + "elements", std::vector<int>{model->adhesion_elements(), model->slip_elements()}, {2},
+          "- (adhesion, slip elements of the steady state the model is linearised about)");
+  w.write(g + "reduced_unknowns", std::vector<int>{model->reduced_unknowns()}, {},
+          "- (r = 2 adhesion + slip: the order of the linear model's step matrix K0)");
+  const nss::SweepInfo& sweep = model->sweep_info();
+  w.write(
+      g + "block_steps", std::vector<int>{sweep.block_steps}, {},
+      "- (block Krylov steps of the frequency sweep; the exact recursion's steps where the Krylov "
+      "model failed its check; 0 on the Hessenberg route)");
+}
+
 void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelNoise& wn) {
   const noise::WheelContact& st = wn.state;
   const geometry::LoadedContact& loaded = *st.loaded;
@@ -121,6 +142,7 @@ void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelN
           "N, N, N m (steady state on the loop's planar patch at N: Fx, Fy, Mz)");
   w.write(group + "/bands/force_level", flatten_levels(wn.bands), {wn.bands.centre.size(), 4},
           "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
+  write_contact_work(w, group + "/contact_work/", wn);
   std::vector<double> vl;
   for (const auto& l : wn.bands.velocity_level)
     for (const auto& side : l) vl.insert(vl.end(), side.begin(), side.end());

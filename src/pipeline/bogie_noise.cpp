@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
+#include "core/stopwatch.hpp"
 #include "core/task_pool.hpp"
 #include "noise/flange_patch.hpp"
 
@@ -51,10 +52,13 @@ std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCas
     return w.state.wheel == noise::WheelId::leading_outer;
   });
   if (!curve.state || !curve.state_input || !leading_outer) return {};
+  const auto t0 = Clock::now();
   const std::optional<noise::WheelContact> flange =
       noise::flange_patch_contact(*curve.state_input, *curve.state);
   if (!flange) return {};
-  return {wheel_noise(base, nc, *flange, spectra, frequency)};
+  WheelNoise patch = wheel_noise(base, nc, *flange, spectra, frequency);
+  patch.seconds = seconds_since(t0);
+  return {std::move(patch)};
 }
 
 std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, const NoiseCase& nc) {

@@ -114,9 +114,11 @@ class FurtherWheels {
                           [this](std::size_t i) { return noise::is_outer(ids_[i]); });
     pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t task, int) {
       const std::size_t i = schedule_[task];
+      const auto t0 = Clock::now();
       const noise::WheelContact w =
           noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
       results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
+      results_[i].seconds = seconds_since(t0);
     });
   }
 
@@ -145,6 +147,7 @@ class FurtherWheels {
       m.slip_elements = r.mean.model()->slip_elements();
     }
     m.loop = r.variants.main;
+    m.seconds = r.seconds_contact - r.seconds_curve;
     const noise::ContactCoefficients model =
         nc_.use_nss ? noise::ContactCoefficients{r.creep, r.load}
                     : kalker_coefficients(r.mean.contact(), r.axis.frequency.size());
@@ -221,6 +224,7 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
   MeanContactOptions options = noise_contact_options(nc, freq);
   options.with_model = true;
   CurvePlacement placed = resolve_curve(c, nc);  // as curve_mean_contact
+  r.seconds_curve = seconds_since(t0);
   if (on_curve) on_curve(placed.contact, placed.curve, freq);  // the further wheels from here on
   r.mean = solve_mean_contact(std::move(placed.contact), std::move(placed.curve), options);
   const ContactCase& cc = r.mean.contact();

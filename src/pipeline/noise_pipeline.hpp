@@ -90,6 +90,9 @@ struct NoiseResult {
   /// means (band_lines.hpp); null without refinement. The band levels are taken from these.
   std::shared_ptr<const RefinedLoops> refined;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
+  /// Of seconds_contact: the curve state (the bogie's curving estimate and the main wheel's place
+  /// in it), before any wheel's contact work starts.
+  double seconds_curve = 0.0;
 };
 
 /// What the cases of a study share (docs/study.md). The wheel's modal and the rail's receptances

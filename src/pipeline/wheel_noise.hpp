@@ -32,6 +32,11 @@ struct WheelNoise {
   MeanContact mean;
   contact::TangentialForces mean_force;  ///< of the steady state on the loop's (planar) patch
   int adhesion_elements = 0, slip_elements = 0;
+  /// Wall time (s) of the wheel's own contact work: its contact state in the curve, patch, steady
+  /// rolling, linear model and f, g on the case's lines (on its own thread: the wheels run
+  /// concurrently, so the times of several wheels do not add up to the run's). The curve state
+  /// they all start from (the bogie's curving estimate) is not in it.
+  double seconds = 0.0;
   /// The main variant (with g when normal_coupling), the wheel alone. Under the bogie loop
   /// (noise.contact_coupling = "bogie") only the leading outer wheel's (the main run's); the
   /// others' are not computed (the bogie loop replaces them; wheel_loop_alone gives them).

@@ -371,7 +371,9 @@ TEST(NoiseCommand, WritesTheCurveContactState) {
 // under /noise/wheels/<wheel>, with units; each patch carries its wheel's vertical load (the
 // force in the track frame has up = vertical_load within 1e-5); the leading outer wheel is the
 // top-level run (same normal force and band levels, bit for bit); the summary prints one line per
-// wheel; a wrong wheel name or a [trailing_wheelset] key outside a multibody run names its key.
+// wheel; each wheel's contact work gives its linear model's order r = 2 adhesion + slip elements,
+// its sweep's block steps (> 0) and its wall time (> 0 s); a wrong wheel name or a
+// [trailing_wheelset] key outside a multibody run names its key.
 TEST(NoiseCommand, WritesEveryWheelsContactStateAndLevels) {
   const fs::path out = temp_dir() / "noise_wheels.h5";
   const Invocation r = run("noise " + curve_case() + " --set noise.points_per_band=4 --set noise.band_max=1000.0 "
@@ -400,9 +402,20 @@ TEST(NoiseCommand, WritesEveryWheelsContactStateAndLevels) {
       EXPECT_EQ(levels, top_levels);
       EXPECT_EQ(read_doubles(f, (g + "/contact/normal_force").c_str()), top_normal);
     }
+    const auto elements = read_doubles(f, (g + "/contact_work/elements").c_str());
+    const auto unknowns = read_doubles(f, (g + "/contact_work/reduced_unknowns").c_str());
+    const auto steps = read_doubles(f, (g + "/contact_work/block_steps").c_str());
+    const auto seconds = read_doubles(f, (g + "/contact_work/seconds").c_str());
+    ASSERT_EQ(elements.size(), 2u) << w;
+    ASSERT_EQ(unknowns.size(), 1u) << w;
+    EXPECT_EQ(unknowns[0], 2 * elements[0] + elements[1]) << w;
+    EXPECT_GT(steps.at(0), 0.0) << w;
+    EXPECT_GT(seconds.at(0), 0.0) << w;
+    EXPECT_EQ(read_units(f, (g + "/contact_work/seconds").c_str()).substr(0, 2), "s ") << w;
   }
   H5Fclose(f);
   EXPECT_NE(r.output.find("in the loop alone"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("contact work (curve state"), std::string::npos) << r.output;
 
   const Invocation bad = run("noise " + curve_case() + " --set 'curve.wheels=[\"front_left\"]' -o " +
                              (temp_dir() / "bad_wheels.h5").string());
