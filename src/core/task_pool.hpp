@@ -7,6 +7,9 @@
 // The background threads start at construction; the caller may do other work and then calls
 // finish(), which takes the remaining tasks on the caller's thread, joins the others and rethrows
 // the exception of the LOWEST index that threw (the one a serial loop would have thrown first).
+// A caller that has work of its own before finish() (Caller::busy) is one of the `workers` only
+// from then on: the pool starts workers - 1 background threads even for fewer tasks than workers
+// (one further wheel beside the main one runs at once, not after it), at most one per task.
 // The destructor without finish() (the caller's own work threw) lets no further task start and
 // joins.
 #pragma once
@@ -31,12 +34,20 @@ inline int resolved_threads(int threads, int most = 4) {
 class TaskPool {
  public:
   using Task = std::function<void(std::size_t index, int worker)>;
+  /// Whether the caller takes tasks from the start (ready: it calls finish() at once, e.g.
+  /// parallel_for) or has work of its own first (busy).
+  enum class Caller { ready, busy };
 
-  /// Starts min(workers, n) - 1 background threads (none for workers <= 1: all on finish()).
-  TaskPool(std::size_t n, int workers, Task task)
+  /// Starts min(workers, n) - 1 background threads (ready), min(workers - 1, n) (busy); none for
+  /// workers <= 1: all on finish().
+  TaskPool(std::size_t n, int workers, Task task, Caller caller = Caller::ready)
       : n_(n), task_(std::move(task)), errors_(n) {
-    const int threads = static_cast<int>(std::min<std::size_t>(std::max(workers, 1), std::max<std::size_t>(n, 1)));
-    for (int w = 1; w < threads; ++w) threads_.emplace_back([this, w] { run(w); });
+    const std::size_t most = static_cast<std::size_t>(std::max(workers, 1)) - 1;
+    const std::size_t background = caller == Caller::busy
+                                       ? std::min(most, n)
+                                       : std::min(most + 1, std::max<std::size_t>(n, 1)) - 1;
+    for (std::size_t w = 1; w <= background; ++w)
+      threads_.emplace_back([this, w] { run(static_cast<int>(w)); });
   }
   ~TaskPool() {
     stop_ = true;

@@ -112,14 +112,18 @@ class FurtherWheels {
     for (std::size_t i = 0; i < ids_.size(); ++i) schedule_[i] = i;
     std::stable_partition(schedule_.begin(), schedule_.end(),
                           [this](std::size_t i) { return noise::is_outer(ids_[i]); });
-    pool_ = std::make_unique<TaskPool>(ids_.size(), threads_, [this](std::size_t task, int) {
-      const std::size_t i = schedule_[task];
-      const auto t0 = Clock::now();
-      const noise::WheelContact w =
-          noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
-      results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
-      results_[i].seconds = seconds_since(t0);
-    });
+    // Caller::busy: the caller's main wheel runs beside them (with one further wheel, too).
+    pool_ = std::make_unique<TaskPool>(
+        ids_.size(), threads_,
+        [this](std::size_t task, int) {
+          const std::size_t i = schedule_[task];
+          const auto t0 = Clock::now();
+          const noise::WheelContact w =
+              noise::bogie_wheel_contacts(*curve_.state_input, *curve_.state, {ids_[i]}).front();
+          results_[i] = wheel_contact_noise(base_, nc_, w, frequency_);
+          results_[i].seconds = seconds_since(t0);
+        },
+        TaskPool::Caller::busy);
   }
 
   // Every wheel in the order of curve.wheels, the main one from the run; the loops alone (without

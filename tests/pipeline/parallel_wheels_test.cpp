@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -107,4 +109,39 @@ TEST(ParallelWheels, TaskPoolRunsEachTaskOnceAndRethrowsTheFirst) {
       EXPECT_NE(std::string(e.what()).find("wheel 1"), std::string::npos) << e.what();
     }
   }
+}
+
+// A caller with work of its own before finish() (the main wheel: TaskPool::Caller::busy) does not
+// hold the further wheels back: one task on two workers starts on a background thread (worker 1)
+// while the caller has not called finish() yet (the caller waits up to 60 s for it); a ready
+// caller's single task waits for finish() and runs on the caller (worker 0); with busy, no more
+// background threads than tasks (each task once, workers < 3).
+TEST(ParallelWheels, TaskPoolStartsAFurtherWheelBesideABusyCaller) {
+  std::atomic<bool> ran{false};
+  std::atomic<int> on{-1};
+  TaskPool busy(
+      1, 2, [&](std::size_t, int worker) { on = worker, ran = true; }, TaskPool::Caller::busy);
+  for (int ms = 0; ms < 60000 && !ran; ++ms)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_TRUE(ran.load());
+  busy.finish();
+  EXPECT_EQ(on.load(), 1);
+
+  std::atomic<int> ready_on{-1};
+  TaskPool ready(1, 2, [&](std::size_t, int worker) { ready_on = worker; });
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(ready_on.load(), -1);  // not started: no background thread for one task
+  ready.finish();
+  EXPECT_EQ(ready_on.load(), 0);
+
+  std::vector<std::atomic<int>> runs(3);
+  TaskPool three(
+      runs.size(), 8,
+      [&](std::size_t i, int worker) {
+        EXPECT_LE(worker, 3);
+        ++runs[i];
+      },
+      TaskPool::Caller::busy);
+  three.finish();
+  for (const auto& r : runs) EXPECT_EQ(r.load(), 1);
 }
