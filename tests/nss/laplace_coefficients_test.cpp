@@ -76,7 +76,8 @@ TEST(LaplaceCoefficients, BothAtOnceEqualTheTwoCallsWithAndWithoutMarkovParamete
   // coefficients_laplace (squeal's loop: f and g at every s) takes both from one Hessenberg solve
   // without Markov parameters (falling friction), the series with them: the same values as the two
   // calls to rounding (1e-13 relative: the solve's columns are eliminated by the same row
-  // operations; only the blocked back substitution may round differently).
+  // operations and projected step by step; only the vectorised complex products may round
+  // differently).
   const contact::Creepage mean{0.001, 0.001, -0.053};
   for (const contact::FallingFriction law :
        {contact::FallingFriction{}, contact::FallingFriction{0.5, 4.0}}) {
