@@ -210,12 +210,15 @@ Eigen::MatrixXcd projected_shifted_hessenberg_solve(const RowMajorMatrix& H, std
     ci[k + 1] = oi - (sh.mr * pi + sh.mi * pr);
     const Eigen::Index j0 = k + 2;
     const int len = static_cast<int>(n - j0);
-    if (next_is_pivot)
-      eliminate_and_substitute<true>(len, sh, h + j0, cr.data() + j0, ci.data() + j0, &ar(j0, 0),
-                                     &ai(j0, 0), &ar(j0, 1), &ai(j0, 1), &ar(j0, 2), &ai(j0, 2));
-    else
-      eliminate_and_substitute<false>(len, sh, h + j0, cr.data() + j0, ci.data() + j0, &ar(j0, 0),
-                                      &ai(j0, 0), &ar(j0, 1), &ai(j0, 1), &ar(j0, 2), &ai(j0, 2));
+    // the columns' pointers by offset (at k = n - 2 there are none: no element to address)
+    double* const a_r = ar.data() + j0;
+    double* const a_i = ai.data() + j0;
+    if (len > 0 && next_is_pivot)
+      eliminate_and_substitute<true>(len, sh, h + j0, cr.data() + j0, ci.data() + j0, a_r, a_i,
+                                     a_r + n, a_i + n, a_r + 2 * n, a_i + 2 * n);
+    else if (len > 0)
+      eliminate_and_substitute<false>(len, sh, h + j0, cr.data() + j0, ci.data() + j0, a_r, a_i,
+                                      a_r + n, a_i + n, a_r + 2 * n, a_i + 2 * n);
     zc = zn - mult * zc;
   }
   return out;
