@@ -96,9 +96,8 @@ namespace {
 // sweep, and the wall time of its contact work.
 void write_contact_work(Hdf5Writer& w, const std::string& g, const pipeline::WheelNoise& wn) {
   w.write(g + "seconds", wn.seconds,
-          "s (wall time of the wheel's contact state, patch, steady rolling, linear model and f, "
-          "g; the "
-          "wheels run concurrently)");
+          "s (wall time of the wheel's contact state, patch, steady rolling, linear model and "
+          "f, g; the wheels run concurrently)");
   const nss::LinearContactModel* model = wn.mean.model().get();
   if (!model) return;  // Kalker's coefficients (noise.contact_model = "kalker")
   w.write(g + "elements", std::vector<int>{model->adhesion_elements(), model->slip_elements()}, {2},

@@ -140,6 +140,11 @@ void eliminate_and_substitute(int len, const Shift& s, const double* __restrict 
   }
 }
 
+/// (a b) for complex a, b written out (std::complex's product calls __muldc3).
+inline std::complex<double> times(std::complex<double> a, std::complex<double> b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
 // Lhat' (I - z H)^{-1} R for upper Hessenberg H (n x n), R (n x m), Lhat (n x 3), without forming
 // I - z H or a factor of it. Gaussian elimination with row interchanges between neighbouring rows
 // (the only candidates for a pivot in a Hessenberg matrix) makes the rows of U and of
@@ -182,12 +187,7 @@ Eigen::MatrixXcd projected_shifted_hessenberg_solve(const RowMajorMatrix& H, std
         next_is_pivot = true;
       }
     }
-    // one complex division a row; the products written out (std::complex's call __muldc3)
-    const cd inv = 1.0 / pivot;
-    auto times = [](cd a, cd b) {
-      return cd(a.real() * b.real() - a.imag() * b.imag(),
-                a.real() * b.imag() + a.imag() * b.real());
-    };
+    const cd inv = 1.0 / pivot;          // one complex division a row
     Shift sh{zr, zi, 0.0, 0.0, {}, {}};  // Y_k = (Lhat_k - a_k) / U_kk
     for (int q = 0; q < 3; ++q) {
       const cd y = times(Lhat(k, q) - cd(ar(k, q), ai(k, q)), inv);
@@ -197,7 +197,8 @@ Eigen::MatrixXcd projected_shifted_hessenberg_solve(const RowMajorMatrix& H, std
     if (tail == 0) break;
     const cd mult = times(other, inv);
     sh.mr = mult.real(), sh.mi = mult.imag();
-    // column k + 1 holds the next row's diagonal 1: that column apart, then the rest
+    // column k + 1 holds the next row's diagonal 1: that column apart (the kernel's arithmetic
+    // written out: with one helper for both, GCC 12 no longer vectorised the kernel), then the rest
     const double* h = &H(k + 1, 0);
     const double fr = 1.0 - zr * h[k + 1], fi = -zi * h[k + 1];
     const double pr = next_is_pivot ? fr : cr[k + 1], pi = next_is_pivot ? fi : ci[k + 1];
