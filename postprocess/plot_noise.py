@@ -10,7 +10,10 @@ and, on the Fy panel, the mu-scaled normal force 20 log10|Fy_mean/N| + L_Fz) and
 (narrow-band force per unit roughness, |F/r|, in dB re 1 N/m, the same variants), and with
 /noise/wheels (curve.wheels) PREFIX_wheels.png: each wheel's band levels of Fz, Fx, Fy, Mz (its
 attribute `loop` says whether the wheels were coupled, noise.contact_coupling), and a second patch's
-(noise.second_patch) as one more line.
+(noise.second_patch) as one more line; with /noise/sound (noise.sound = "on") PREFIX_sound.png: the
+sound power spectra of wheel, rail, sleepers and total (dB re 1 pW, with the A-weighted totals in
+the legend) and the mechanical input power, beside the track decay rates (/track/decay_rate) against
+the EN ISO 3095:2013 minimum decay rates where the file has them.
 Files written before the coupling existed (only /noise/kalker) are plotted too. Band axes are
 labelled with the nominal band centres (..., 400, 500, 630, ..., 5000 Hz).
 """
@@ -64,6 +67,7 @@ def main():
                 patch = f"/noise/wheels/{name}/patches/1/bands/force_level"
                 if patch in f:  # noise.second_patch = "coupled": the flange patch (noise_loop.md 7.4)
                     wheels.append((name + " flange patch", f[patch][:]))
+        sound = read_sound(f)
     title = f"{args.file}: mean creepage ({creep[0]:.3g}, {creep[1]:.3g}, {creep[2]:.3g} rad/m)"
 
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
@@ -101,7 +105,60 @@ def main():
     if wheels:
         plot_wheels(wheels, wheels_loop, centre, args.file, prefix + "_wheels.png")
         written.append(prefix + "_wheels.png")
+    if sound:
+        plot_sound(sound, args.file, prefix + "_sound.png")
+        written.append(prefix + "_sound.png")
     print("wrote", *written)
+
+
+def read_sound(f):
+    """/noise/sound and /track/decay_rate as a dict, or None for a run with noise.sound = "off"."""
+    if "/noise/sound/power" not in f:
+        return None
+    s = {"centre": f["/noise/sound/band_centre"][:], "power": f["/noise/sound/power"][:],
+         "power_a": np.atleast_1d(f["/noise/sound/power_a"][()]),
+         "input": f["/noise/sound/input_power"][:] if "/noise/sound/input_power" in f else None,
+         "note": rh.attribute(f["/noise/sound"], "wheel_missing", "")}
+    for d in ("vertical", "lateral"):
+        key = "/track/decay_rate/" + d
+        s[d] = f[key][:] if key in f else None
+        limit = "/track/decay_rate/limit_" + d
+        s["limit_" + d] = f[limit][:] if limit in f else None
+    return s
+
+
+def plot_sound(s, name, path):
+    """Sound power by source (left) and the track decay rates (right)."""
+    fig, (ax, ad) = plt.subplots(1, 2, figsize=(12, 5), gridspec_kw={"width_ratios": [3, 2]})
+    x = np.arange(len(s["centre"]))
+    sources = [("wheel", "tab:blue", "-"), ("rail", "tab:red", "-"), ("sleepers", "tab:green", "-"),
+               ("total", "k", "-")]
+    for j, (label, c, ls) in enumerate(sources):
+        level = s["power"][:, j]
+        if np.all(np.isnan(level)):
+            continue
+        ax.plot(x, level, ls, color=c, marker="o", ms=3, lw=2 if label == "total" else 1.2,
+                label=f"{label}: {s['power_a'][j]:.1f} dB(A)")
+    if s["input"] is not None:
+        ax.plot(x, s["input"], ":", color="0.5", label="mechanical input power (bound)")
+    ax.set_ylabel("sound power, dB re 1 pW")
+    rh.set_band_axis(ax, s["centre"], every=1 if len(x) <= 20 else 2)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"{name}: sound power by source" + (" (no wheel surface)" if s["note"] else ""), fontsize=9)
+    for d, c in (("vertical", "k"), ("lateral", "tab:blue")):
+        if s[d] is not None:
+            ad.plot(x, s[d], "-o", color=c, ms=3, label=f"{d}")
+        if s["limit_" + d] is not None:
+            ad.plot(x, s["limit_" + d], "--", color=c, label=f"{d}: EN ISO 3095 minimum")
+    ad.set_yscale("log")
+    ad.set_ylabel("decay rate, dB/m")
+    rh.set_band_axis(ad, s["centre"], every=2)
+    ad.grid(alpha=0.3, which="both")
+    ad.legend(fontsize=8)
+    ad.set_title("track decay rates (EN 15461)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
 
 
 def plot_wheels(wheels, loop, centre, name, path):

@@ -113,6 +113,22 @@ void print_band_table(const pipeline::NoiseResult& r) {
   }
 }
 
+// The A-weighted sound powers (docs/sound.md): one line for the bogie and one per wheel.
+void print_sound(const pipeline::NoiseResult& r) {
+  if (!r.sound) return;
+  const pipeline::SoundResult& s = *r.sound;
+  auto line = [](const char* label, const std::array<double, 4>& a) {
+    std::printf("    %-14s wheel %6.1f  rail %6.1f  sleepers %6.1f  total %6.1f\n", label, a[0], a[1], a[2], a[3]);
+  };
+  std::printf("  sound power, dB(A) re 1 pW (%.0f Hz - %.0f Hz; sound stage %.2f s)%s:\n",
+              noise::nominal_centre(s.centre.front()), noise::nominal_centre(s.centre.back()), s.seconds,
+              s.wheel_note.empty() ? "" : "; the wheel's column empty (see below)");
+  line(r.bogie ? "bogie" : "all wheels", s.power_a);
+  for (std::size_t i = 0; i < r.wheels.size() && i < s.contact_power_a.size(); ++i)
+    line(noise::wheel_name(r.wheels[i].state.wheel), s.contact_power_a[i]);
+  if (!s.wheel_note.empty()) std::fprintf(stderr, "note: %s\n", s.wheel_note.c_str());
+}
+
 }  // namespace
 
 int run_noise(const CommonOptions& o) {
@@ -148,6 +164,7 @@ int run_noise(const CommonOptions& o) {
   std::printf("  mean forces Fx %.4g N, Fy %.4g N, Mz %.4g N m, N %.4g N; g(0) = (%.4g, %.4g, %.4g m)\n",
               r.mean_force.Fx, r.mean_force.Fy, r.mean_force.Mz, cc.normal_force, r.g0(0).real(), r.g0(1).real(),
               r.g0(2).real());
+  print_sound(r);
   if (!o.quiet) print_band_table(r);  // -q: the summary lines only
   std::printf("wrote %s\n", out.c_str());
   return 0;

@@ -123,4 +123,37 @@ std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s,
   return table;
 }
 
+ModalParticipation modal_participation(const WheelFeModes& w, const WheelFeContactOptions& o,
+                                       const std::vector<TreadContact>& contacts) {
+  check_spin(w, o);
+  ModalParticipation p;
+  p.spin_speed = o.spin_speed;
+  for (std::size_t k = 0; k < w.modes.size(); ++k)
+    if (w.modes[k].n >= o.n_min) p.modes.push_back(static_cast<int>(k));
+  const Eigen::Index m = static_cast<Eigen::Index>(p.modes.size());
+  const Eigen::Index cols = 4 * static_cast<Eigen::Index>(contacts.size());
+  p.cos_set = Eigen::MatrixXd::Zero(m, cols);
+  p.sin_set = Eigen::MatrixXd::Zero(m, cols);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const WheelFeMode& mode = w.modes[static_cast<std::size_t>(p.modes[static_cast<std::size_t>(i)])];
+    p.omega.push_back(kTwoPi * mode.frequency);
+    p.zeta.push_back(o.damping.ratio(mode));
+    p.n.push_back(mode.n);
+    for (std::size_t a = 0; a < contacts.size(); ++a) {
+      const ContactShapes c = contact_shapes(w, mode, contacts[a]);
+      p.cos_set.block<1, 4>(i, 4 * static_cast<Eigen::Index>(a)) = c.cos_set.transpose();
+      p.sin_set.block<1, 4>(i, 4 * static_cast<Eigen::Index>(a)) = c.sin_set.transpose();
+    }
+  }
+  return p;
+}
+
+Eigen::VectorXcd modal_responses(const ModalParticipation& p, double frequency) {
+  const double omega = kTwoPi * frequency;
+  Eigen::VectorXcd r(static_cast<Eigen::Index>(p.omega.size()));
+  for (std::size_t k = 0; k < p.omega.size(); ++k)
+    r(static_cast<Eigen::Index>(k)) = modal_response(p.omega[k], p.zeta[k], p.n[k], p.spin_speed, omega);
+  return r;
+}
+
 }  // namespace rollnoise::dynamics

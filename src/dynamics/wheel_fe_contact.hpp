@@ -93,4 +93,27 @@ Receptance4 fe_cross_receptance(const WheelFeModes& w, const WheelFeContactOptio
 std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s,
                                           const WheelFeContactOptions& options = {});
 
+/// The modes' participation at the contacts of one wheel, for the wheel's modal response to the
+/// loop's contact forces (the sound power, docs/sound.md Sec. 2): for every mode with n >= n_min,
+/// the rows psi^T of its cos set and its sin set at each contact (4 columns per contact, its frame),
+/// so that the modal coordinates under forces F (4 per contact, on the wheel) are
+///   q_cos = R_k(omega) psi_cos^T F,   q_sin = R_k(omega) psi_sin^T F                      (W2)
+/// with R_k of the header (unit modal masses; the +-n Omega split as in the receptance). The
+/// wheel's displacement field is then sum_k q_cos,k Phi_k cos(n theta) + q_sin,k Phi_k sin(n theta)
+/// (Phi_k the mode's section shape, wheel_fe.hpp): the rotating wheel's fixed-frame response as
+/// fe_cross_receptance has it (the antisymmetric Coriolis coupling left out there too).
+struct ModalParticipation {
+  std::vector<int> modes;    ///< index into WheelFeModes::modes
+  Eigen::MatrixXd cos_set;   ///< modes x 4 contacts: psi^T of each mode's cos set
+  Eigen::MatrixXd sin_set;   ///< the same for the sin sets (zero rows for n = 0)
+  std::vector<double> omega; ///< omega_k (rad/s)
+  std::vector<double> zeta;  ///< damping ratio
+  std::vector<int> n;        ///< nodal diameters
+  double spin_speed = 0.0;   ///< Omega (rad/s)
+};
+ModalParticipation modal_participation(const WheelFeModes& w, const WheelFeContactOptions& options,
+                                       const std::vector<TreadContact>& contacts);
+/// R_k(omega) of every mode of `p` at `frequency` (Hz), unit modal mass (m/N per unit modal force).
+Eigen::VectorXcd modal_responses(const ModalParticipation& p, double frequency);
+
 }  // namespace rollnoise::dynamics

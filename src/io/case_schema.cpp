@@ -303,6 +303,19 @@ const std::vector<KeySpec>& case_schema() {
        "line's cell in three; the band levels use them, the narrow-band outputs stay on the "
        "case's lines (docs/noise_loop.md Sec. 6.1); 0: off",
        {}, 0, "", 8},
+      // the sound power (docs/sound.md; pipeline/sound_power.hpp)
+      {"noise.sound", T::String, "\"on\"", "-",
+       "the sound power of the wheels (axisymmetric BEM of the FE wheel's modes), the rails (2D BEM of "
+       "the section, the response along the rail) and the sleepers (baffled pistons) per band, "
+       "A-weighted totals and the track decay rates (/noise/sound, /track/decay_rate; docs/sound.md)",
+       {"on", "off"}},
+      {"sound.rail_ground", T::String, "\"free\"", "-",
+       "the rail's radiation: \"free\" (the section in free field: ballast is porous and absorbs) or "
+       "\"rigid\" (a reflecting plane at the foot, e.g. slab track)",
+       {"free", "rigid"}},
+      {"sound.sleeper_length", T::PositiveReal, "1.3", "m",
+       "the radiating length of the sleeper per rail (half a 2.6 m monobloc sleeper)"},
+      {"sound.sleeper_width", T::PositiveReal, "0.25", "m", "the sleeper's radiating width"},
       // limits (pipeline/limits.hpp; docs/conventions.md, Limits)
       {"limits.memory", T::PositiveReal, memory_default, "B",
        "memory a run may use, estimated before allocating (default: half the physical memory of this machine)"},

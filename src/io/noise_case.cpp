@@ -14,6 +14,8 @@
 #include "io/frequency_axis.hpp"
 #include "io/rail_sampling_cache.hpp"
 #include "io/rail_section_file.hpp"
+#include "io/radiation_cache.hpp"
+#include "io/sound_case.hpp"
 #include "io/roughness_file.hpp"
 #include "io/track_file.hpp"
 #include "io/wheel_fe_case.hpp"
@@ -145,14 +147,23 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
   }
   char pos[32];
   std::snprintf(pos, sizeof pos, "%.17g", position);
-  return "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
+  const std::string id = "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
+  // the rail's response along its length for the sound power, kept in the cache under the track's
+  // values (io/radiation_cache.hpp)
+  const std::string identity = rail_identity(id, track);
+  c.sound.rail_line_table = [identity](const dynamics::RailModel& rail, const std::vector<double>& positions,
+                                       const std::vector<double>& grid, int gauss) {
+    return rail_line_gram_cached(rail, identity, positions, grid, gauss);
+  };
+  return id;
 }
 
 // [wheel]: the FE wheel or the wheelset with a mode table; its identity for the reuse groups.
-std::string read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
+std::string read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& c,
+                       std::optional<WheelFeCase>& fe) {
   std::string id;
   const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
-  if (const auto fe = read_wheel_fe_case(r, problems)) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
+  if ((fe = read_wheel_fe_case(r, problems))) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
     c.wheel = std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &id));
     return "wheel " + wheelset + ", " + id;
   }
@@ -217,9 +228,18 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   read_curve(r, problems, c);
   std::string track_id, wheel_id;
   problems.check([&] { track_id = read_track(r, c); });
-  problems.check([&] { wheel_id = read_wheel(r, problems, c); });
+  std::optional<WheelFeCase> fe;
+  problems.check([&] { wheel_id = read_wheel(r, problems, c, fe); });
   c.structures_id = track_id + "; " + wheel_id;
   read_roughness_and_loop(r, problems, c);
+  problems.check([&] {
+    const std::vector<Eigen::Vector2d> section =
+        r.has("track.rail_section") ? read_rail_section(resolve_model_file(r, "track.rail_section"))
+                                    : std::vector<Eigen::Vector2d>{};
+    auto line_table = std::move(c.sound.rail_line_table);  // read_track's (the track's identity)
+    c.sound = read_sound_case(r, problems, fe, section);
+    c.sound.rail_line_table = std::move(line_table);
+  });
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "io/contact_output.hpp"
+#include "io/sound_output.hpp"
 #include "nss/linear_model.hpp"
 
 namespace rollnoise::io {
@@ -257,6 +258,7 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
           "g with F~ = -f xi~ + g N~, N~ = Fz (-, -, m) for Fx, Fy, Mz; used when normal_coupling is on");
   write_contact_state(w, "/noise/contact", nc, r.mean.contact(), r.mean.curve(), r.mean.normal_stiffness());
   write_wheels(w, r);
+  write_sound(w, r);
   if (r.mean.curve().estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
     w.write("/noise/curving/attack_angle", r.mean.curve().curving.leading.attack_angle, "rad");

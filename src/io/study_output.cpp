@@ -232,6 +232,8 @@ std::optional<CaseRecord> read_case_record(const std::string& path) {
   c.force_level = *force;
   c.velocity_level = *velocity;
   c.wheels = read_wheel_records(h, centre->size());
+  if (const auto a = h.numbers("/noise/sound/power_a"); a && a->size() == 4)
+    c.sound_power_a = {(*a)[0], (*a)[1], (*a)[2], (*a)[3]};
   const auto t = h.attribute("/", "run_time");
   c.run_time = t ? std::strtod(t->c_str(), nullptr) : kNaN;
   return c;
@@ -245,6 +247,7 @@ struct StudyColumns {
   BandTable bands;
   std::vector<WheelColumns> wheels;
   std::vector<double> run_time, creepage, angle, normal, adhesion, slip;
+  std::vector<double> sound_a;  // n x 4: wheel, rail, sleepers, total (dB(A) re 1 pW)
   std::vector<int> index, status;
   std::vector<std::string> message;
 };
@@ -270,6 +273,7 @@ StudyColumns study_columns(const std::vector<StudyRow>& rows) {
   t.normal.assign(n, kNaN);
   t.adhesion.assign(n, kNaN);
   t.slip.assign(n, kNaN);
+  t.sound_a.assign(4 * n, kNaN);
   t.index.resize(n);
   t.status.resize(n);
   t.message.resize(n);
@@ -286,6 +290,7 @@ StudyColumns study_columns(const std::vector<StudyRow>& rows) {
     t.normal[i] = c.normal_force;
     t.adhesion[i] = double(c.adhesion_elements);
     t.slip[i] = double(c.slip_elements);
+    for (int k = 0; k < 4; ++k) t.sound_a[4 * i + k] = c.sound_power_a[static_cast<std::size_t>(k)];
   }
   return t;
 }
@@ -326,6 +331,8 @@ void write_study_h5(const std::string& h5_path, const pipeline::StudyPlan& plan,
   w.write("/study/normal_force", t.normal, {n}, "N");
   w.write("/study/adhesion_elements", t.adhesion, {n}, "-");
   w.write("/study/slip_elements", t.slip, {n}, "-");
+  w.write("/study/sound_power_a", t.sound_a, {n, 4},
+          "dB(A) re 1 pW (A-weighted sound power: wheel, rail, sleepers, total; docs/sound.md)");
   w.write("/study/band_centre", t.centres, {nb}, "Hz");
   w.write("/study/force_level", t.bands.force, {n, nb, 4}, kForceUnits);
   w.write("/study/velocity_level", t.bands.velocity, {n, nb, 2, 4}, kVelocityUnits);
@@ -350,7 +357,9 @@ void write_study_csv(const std::string& csv_path, const pipeline::StudyPlan& pla
     for (const auto& a : plan.axes) csv << "," << csv_cell(a.key + " [" + units_of(a.key) + "]");
     csv << ",status,run_time [s],xi_x [-],xi_y [-],phi [rad/m],contact_angle [rad],normal_force "
            "[N],"
-           "adhesion_elements [-],slip_elements [-]";
+           "adhesion_elements [-],slip_elements [-],"
+           "LwA_wheel [dB(A) re 1 pW],LwA_rail [dB(A) re 1 pW],LwA_sleepers [dB(A) re 1 pW],"
+           "LwA_total [dB(A) re 1 pW]";
     band_header(csv, "", t.centres);
     for (const WheelColumns& c : t.wheels) {
       const std::string p = "," + c.name + ".";
@@ -367,6 +376,7 @@ void write_study_csv(const std::string& csv_path, const pipeline::StudyPlan& pla
       for (int k = 0; k < 3; ++k) csv << "," << number(t.creepage[3 * i + k]);
       csv << "," << number(t.angle[i]) << "," << number(t.normal[i]) << "," << number(t.adhesion[i])
           << "," << number(t.slip[i]);
+      for (int k = 0; k < 4; ++k) csv << "," << number(t.sound_a[4 * i + k]);
       band_cells(csv, t.bands, i, nb);
       for (const WheelColumns& c : t.wheels) {
         for (int k = 0; k < 3; ++k) csv << "," << number(c.creepage[3 * i + k]);

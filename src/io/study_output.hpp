@@ -3,6 +3,8 @@
 // file for a case that failed, and the merged table study.h5 / study.csv that `collect` writes.
 #pragma once
 
+#include "core/constants.hpp"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -46,6 +48,9 @@ struct CaseRecord {
   std::vector<double> force_level;       ///< nb x 4, dB (Fz, Fx, Fy re 1 N; Mz re 1 N m)
   std::vector<double> velocity_level;    ///< nb x 2 x 4, dB re 1e-9 m/s, rad/s ([wheel, rail] x (z, x, y, rot z))
   std::vector<WheelRecord> wheels;       ///< /noise/wheels/*, in the order leading_outer ... trailing_inner
+  /// /noise/sound/power_a: A-weighted sound power of wheel, rail, sleepers, total (dB(A) re 1 pW;
+  /// NaN for a case run with noise.sound = "off")
+  std::array<double, 4> sound_power_a{kNaN, kNaN, kNaN, kNaN};
 };
 /// nullopt when the file lacks what a noise case writes.
 std::optional<CaseRecord> read_case_record(const std::string& path);

@@ -14,6 +14,7 @@
 #include "dynamics/wheel.hpp"
 #include "noise/roughness.hpp"
 #include "noise/roughness_filter.hpp"
+#include "pipeline/sound_power.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -69,6 +70,8 @@ struct NoiseCase {
   /// noise.band_refinement: levels of lines added where the case's lines do not resolve a peak
   /// of the response (docs/noise_loop.md Sec. 6.1); 0: the band means on the case's lines only.
   int band_refinement = 6;
+  /// noise.sound and [sound]: the sound powers of wheel, rail and sleepers (docs/sound.md).
+  SoundCase sound;
 };
 
 }  // namespace rollnoise::pipeline

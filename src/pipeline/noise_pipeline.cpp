@@ -13,6 +13,7 @@
 #include "noise/contact_receptance.hpp"
 #include "noise/kalker_linear.hpp"
 #include "noise/roughness.hpp"
+#include "pipeline/noise_sound.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -207,6 +208,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   if (nc.band_refinement > 0)
     r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
   add_bands(r, nc, threads);
+  if (nc.sound.on) r.sound = std::make_shared<const SoundResult>(noise_sound(r, nc, threads));
   r.seconds_total = seconds_since(t0);
   return r;
 }
@@ -290,6 +292,7 @@ void add_bands(NoiseResult& r, const NoiseCase& nc, int threads) {
   // the leading outer wheel's is the main run's (every wheel is a source: wheel i is source i).
   std::vector<std::vector<double>> source_levels;
   if (r.bogie) source_levels = bogie_source_levels(r.wheels, nc, centres, r.patches, threads);
+  r.source_levels = source_levels;
   const auto main_source = std::find_if(r.wheels.begin(), r.wheels.end(), [](const WheelNoise& w) {
     return w.state.wheel == noise::WheelId::leading_outer;
   });

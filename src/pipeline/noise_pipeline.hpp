@@ -35,6 +35,7 @@
 #include "pipeline/band_lines.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/wheel_noise.hpp"
+#include "pipeline/sound_power.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -89,6 +90,11 @@ struct NoiseResult {
   /// noise.band_refinement > 0: the loops on the case's lines and the lines added for the band
   /// means (band_lines.hpp); null without refinement. The band levels are taken from these.
   std::shared_ptr<const RefinedLoops> refined;
+  /// Each roughness source's effective roughness levels in the bands (dB re 1 um; the bogie loop's
+  /// sources, set by add_bands).
+  std::vector<std::vector<double>> source_levels;
+  /// noise.sound = "on": the sound powers (pipeline/noise_sound.hpp, docs/sound.md); null when off.
+  std::shared_ptr<const SoundResult> sound;
   double seconds_contact = 0.0, seconds_structures = 0.0, seconds_wheels = 0.0, seconds_total = 0.0;
   /// Of seconds_contact: the curve state (the bogie's curving estimate and the main wheel's place
   /// in it), before any wheel's contact work starts.

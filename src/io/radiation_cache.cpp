@@ -1,0 +1,264 @@
+#include "io/radiation_cache.hpp"
+
+#include <map>
+#include <mutex>
+#include <sstream>
+
+#include "io/cache_files.hpp"
+#include "io/wheel_modes_cache.hpp"
+
+namespace rollnoise::io {
+namespace {
+
+constexpr const char* kWheelMagic = "rollnoise wheel radiation 1\n";
+constexpr const char* kRailMagic = "rollnoise rail radiation 1\n";
+constexpr const char* kLineMagic = "rollnoise rail line gram 1\n";
+
+void put_matrices(std::string& out, const std::vector<Eigen::MatrixXcd>& v) {
+  put(out, static_cast<std::uint64_t>(v.size()));
+  for (const Eigen::MatrixXcd& m : v) {
+    put(out, static_cast<std::int64_t>(m.rows()));
+    for (Eigen::Index i = 0; i < m.size(); ++i) put(out, m(i));
+  }
+}
+bool get_matrices(Bytes& in, std::vector<Eigen::MatrixXcd>& v) {
+  std::uint64_t n = 0;
+  if (!in.get(n) || n > 100000) return false;
+  v.clear();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    std::int64_t rows = 0;
+    if (!in.get(rows) || rows < 0 || rows > 1000) return false;
+    Eigen::MatrixXcd m(rows, rows);
+    for (Eigen::Index i = 0; i < m.size(); ++i)
+      if (!in.get(m(i))) return false;
+    v.push_back(std::move(m));
+  }
+  return true;
+}
+
+void put_beam(std::ostringstream& k, const dynamics::BeamSection& b) {
+  k << real_text(b.youngs_modulus) << " " << real_text(b.shear_modulus) << " " << real_text(b.area) << " "
+    << real_text(b.second_moment) << " " << real_text(b.mass_per_length) << " "
+    << real_text(b.shear_coefficient) << " " << real_text(b.loss_factor) << " " << b.timoshenko << "\n";
+}
+void put_support(std::ostringstream& k, const dynamics::Support& s) {
+  k << real_text(s.pad_stiffness) << " " << real_text(s.pad_loss_factor) << " " << real_text(s.sleeper_mass)
+    << " " << real_text(s.ballast_stiffness) << " " << real_text(s.ballast_loss_factor) << "\n";
+}
+
+void put_doubles(std::string& out, const std::vector<double>& v) {
+  put(out, static_cast<std::uint64_t>(v.size()));
+  for (double x : v) put(out, x);
+}
+bool get_doubles(Bytes& in, std::vector<double>& v) {
+  std::uint64_t n = 0;
+  if (!in.get(n) || n > in.left() / sizeof(double)) return false;
+  v.resize(n);
+  for (double& x : v)
+    if (!in.get(x)) return false;
+  return true;
+}
+
+std::string grid_text(const std::vector<double>& grid, const acoustics::Fluid& fluid) {
+  std::ostringstream key;
+  key << "rho " << real_text(fluid.density) << " c " << real_text(fluid.sound_speed) << "\ngrid "
+      << grid.size();
+  for (double f : grid) key << " " << real_text(f);
+  key << "\n";
+  return key.str();
+}
+
+std::string wheel_payload(const pipeline::WheelRadiation& w) {
+  std::string out;
+  put_doubles(out, w.frequency);
+  put(out, w.surface);
+  put(out, static_cast<std::int64_t>(w.elements));
+  put(out, static_cast<std::uint64_t>(w.orders.size()));
+  for (const auto& o : w.orders) {
+    put(out, static_cast<std::int64_t>(o.n));
+    put(out, static_cast<std::uint64_t>(o.modes.size()));
+    for (int k : o.modes) put(out, static_cast<std::int64_t>(k));
+    for (const Eigen::MatrixXcd& P : o.power)
+      for (Eigen::Index i = 0; i < P.size(); ++i) put(out, P(i));
+  }
+  put(out, static_cast<std::uint64_t>(w.efficiency.size()));
+  for (const auto& s : w.efficiency) put_doubles(out, s);
+  return out;
+}
+
+std::optional<pipeline::WheelRadiation> parse_wheel(const std::string& body) {
+  Bytes in(body);
+  pipeline::WheelRadiation w;
+  std::int64_t elements = 0;
+  std::uint64_t orders = 0;
+  if (!get_doubles(in, w.frequency) || !in.get(w.surface) || !in.get(elements) || !in.get(orders))
+    return std::nullopt;
+  w.elements = static_cast<int>(elements);
+  if (orders > 1000) return std::nullopt;
+  for (std::uint64_t i = 0; i < orders; ++i) {
+    pipeline::WheelRadiation::Order o;
+    std::int64_t n = 0;
+    std::uint64_t m = 0;
+    if (!in.get(n) || !in.get(m) || m > 10000) return std::nullopt;
+    o.n = static_cast<int>(n);
+    for (std::uint64_t j = 0; j < m; ++j) {
+      std::int64_t k = 0;
+      if (!in.get(k)) return std::nullopt;
+      o.modes.push_back(static_cast<int>(k));
+    }
+    for (std::size_t f = 0; f < w.frequency.size(); ++f) {
+      Eigen::MatrixXcd P(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+      for (Eigen::Index e = 0; e < P.size(); ++e)
+        if (!in.get(P(e))) return std::nullopt;
+      o.power.push_back(std::move(P));
+    }
+    w.orders.push_back(std::move(o));
+  }
+  std::uint64_t ne = 0;
+  if (!in.get(ne) || ne > 100000) return std::nullopt;
+  w.efficiency.resize(ne);
+  for (auto& s : w.efficiency)
+    if (!get_doubles(in, s)) return std::nullopt;
+  if (in.left() != 0) return std::nullopt;
+  return w;
+}
+
+std::string rail_payload(const pipeline::RailRadiation& r) {
+  std::string out;
+  put(out, static_cast<std::int64_t>(r.ground ? 1 : 0));
+  for (const auto* v : {&r.frequency, &r.vertical, &r.lateral, &r.sigma_vertical, &r.sigma_lateral})
+    put_doubles(out, *v);
+  return out;
+}
+
+std::optional<pipeline::RailRadiation> parse_rail(const std::string& body) {
+  Bytes in(body);
+  pipeline::RailRadiation r;
+  std::int64_t ground = 0;
+  if (!in.get(ground)) return std::nullopt;
+  r.ground = ground != 0;
+  for (auto* v : {&r.frequency, &r.vertical, &r.lateral, &r.sigma_vertical, &r.sigma_lateral})
+    if (!get_doubles(in, *v)) return std::nullopt;
+  if (in.left() != 0) return std::nullopt;
+  return r;
+}
+
+}  // namespace
+
+std::string rail_identity(const std::string& model, const dynamics::TrackParameters& t) {
+  std::ostringstream k;
+  k << model << "\n";
+  put_beam(k, t.vertical);
+  put_beam(k, t.lateral);
+  put_support(k, t.vertical_support);
+  put_support(k, t.lateral_support);
+  put_support(k, t.longitudinal_support);
+  k << real_text(t.sleeper_spacing) << " " << real_text(t.head_height) << " " << t.supports_each_side << " "
+    << static_cast<int>(t.discrete_solution) << "\n";
+  return k.str();
+}
+
+std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
+    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
+    const std::vector<double>& grid, int gauss) {
+  std::ostringstream k;
+  k << identity << "positions";
+  for (double x : positions) k << " " << real_text(x);
+  k << "\ngauss " << gauss << "\n" << grid_text(grid, acoustics::Fluid{});
+  static std::mutex mutex;  // this process's: a study's cases, a test's runs
+  static std::map<std::string, std::shared_ptr<const pipeline::RailLineGram>> kept;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = kept.find(k.str()); it != kept.end()) return it->second;
+  }
+  const std::optional<std::string> directory = cache_directory();
+  const std::string build = directory ? build_identity() : std::string();
+  const std::string key = build.empty() ? std::string() : build + k.str();
+  std::shared_ptr<const pipeline::RailLineGram> g;
+  if (!key.empty())
+    if (const auto body = read_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key)) {
+      Bytes in(*body);
+      pipeline::RailLineGram r;
+      r.positions = positions;
+      if (get_matrices(in, r.z) && get_matrices(in, r.y) && get_matrices(in, r.sleepers) && in.left() == 0 &&
+          r.z.size() == grid.size())
+        g = std::make_shared<const pipeline::RailLineGram>(std::move(r));
+    }
+  if (!g) {
+    g = std::make_shared<const pipeline::RailLineGram>(pipeline::rail_line_gram(rail, positions, grid, gauss));
+    if (!key.empty()) {
+      std::string out;
+      put_matrices(out, g->z);
+      put_matrices(out, g->y);
+      put_matrices(out, g->sleepers);
+      write_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key, out,
+                          "rail line gram");
+    }
+  }
+  std::lock_guard<std::mutex> lock(mutex);
+  kept.emplace(k.str(), g);
+  return g;
+}
+
+std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
+    const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
+    bool cache) {
+  // this process's (a study's cases, a test's runs): by the wheel's identity, n_min and the grid
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const pipeline::WheelRadiation>> kept;
+  const std::string memo = c.id + "\nn_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = kept.find(memo); it != kept.end()) return it->second;
+  }
+  auto remember = [&](std::shared_ptr<const pipeline::WheelRadiation> w) {
+    std::lock_guard<std::mutex> lock(mutex);
+    kept.emplace(memo, w);
+    return w;
+  };
+  const std::optional<std::string> directory = cache ? cache_directory() : std::nullopt;
+  std::string key = directory ? mode_cache_key(c) : std::string();
+  if (!key.empty()) key += "n_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
+  if (!key.empty())
+    if (const auto body = read_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key))
+      if (auto w = parse_wheel(*body)) return remember(std::make_shared<const pipeline::WheelRadiation>(std::move(*w)));
+  auto w = std::make_shared<const pipeline::WheelRadiation>(
+      pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid));
+  if (!key.empty())
+    write_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key,
+                        wheel_payload(*w), "wheel radiation");
+  return remember(w);
+}
+
+std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
+    const std::vector<Eigen::Vector2d>& outline, bool ground, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid) {
+  std::ostringstream k;
+  k << "section " << outline.size();
+  for (const auto& p : outline) k << " " << real_text(p.x()) << " " << real_text(p.y());
+  k << "\nground " << (ground ? 1 : 0) << "\n" << grid_text(grid, fluid);
+  static std::mutex mutex;  // this process's
+  static std::map<std::string, std::shared_ptr<const pipeline::RailRadiation>> kept;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = kept.find(k.str()); it != kept.end()) return it->second;
+  }
+  auto remember = [&](std::shared_ptr<const pipeline::RailRadiation> r) {
+    std::lock_guard<std::mutex> lock(mutex);
+    kept.emplace(k.str(), r);
+    return r;
+  };
+  const std::optional<std::string> directory = cache_directory();
+  const std::string build = directory ? build_identity() : std::string();
+  const std::string key = build.empty() ? std::string() : build + k.str();
+  if (!key.empty())
+    if (const auto body = read_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key))
+      if (auto r = parse_rail(*body)) return remember(std::make_shared<const pipeline::RailRadiation>(std::move(*r)));
+  auto r = std::make_shared<const pipeline::RailRadiation>(pipeline::rail_radiation(outline, ground, grid, fluid));
+  if (!key.empty())
+    write_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key, rail_payload(*r),
+                        "rail radiation");
+  return remember(r);
+}
+
+}  // namespace rollnoise::io

@@ -1,0 +1,41 @@
+// The radiation tables kept between runs (docs/sound.md Sec. 5, docs/interface.md "The caches"):
+// the wheel's modal radiation (pipeline::WheelRadiation) and the rail section's
+// (pipeline::RailRadiation) depend only on the geometry, the modes, the air and the frequency grid,
+// not on the case's contact. They go into the same cache directory as the wheel's modes, under the
+// same rules (io/cache_files.hpp: keyed by this build, compared in full, best effort, written
+// whole or not at all); ROLLNOISE_CACHE_DIR=off switches them off.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/wheel_fe_case.hpp"
+#include "pipeline/sound_power.hpp"
+#include "pipeline/sound_radiation.hpp"
+
+namespace rollnoise::io {
+
+/// The wheel's radiation on `grid`: from the cache, else computed (the FE modes with their mesh,
+/// wheel_fe_modes_once) and stored. `cache`: wheel.mode_cache = "user".
+std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
+    const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
+    bool cache);
+
+/// The rail section's radiation on `grid`: from the cache, else computed and stored.
+std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
+    const std::vector<Eigen::Vector2d>& outline, bool ground, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid);
+
+/// What a rail's response along its length depends on, for the cache's key: `model` (the rail
+/// model's identity: file, model, support, position, section) and every value of `track`, so that a
+/// changed pad, support, spacing or damping never reads another track's values.
+std::string rail_identity(const std::string& model, const dynamics::TrackParameters& track);
+
+/// The rail's line Gram matrices (pipeline::rail_line_gram) at `positions` on `grid`: from the
+/// cache under `identity` (rail_identity), else computed and stored. Kept in this process too.
+std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
+    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
+    const std::vector<double>& grid, int gauss);
+
+}  // namespace rollnoise::io

@@ -1,0 +1,92 @@
+#include "io/sound_output.hpp"
+
+#include <string>
+
+#include "dynamics/wheel_fe.hpp"
+#include "noise/wheel_contact.hpp"
+
+namespace rollnoise::io {
+namespace {
+
+constexpr const char* kColumns = "wheel, rail, sleepers, total";
+
+std::vector<double> flat(const pipeline::SoundBands& b) {
+  std::vector<double> out;
+  for (const auto& row : b) out.insert(out.end(), row.begin(), row.end());
+  return out;
+}
+
+void write_bands(Hdf5Writer& w, const std::string& group, const pipeline::SoundBands& bands,
+                 const std::array<double, 4>& a) {
+  w.write(group + "/power", flat(bands), {bands.size(), 4},
+          std::string("dB re 1 pW; [band][") + kColumns + "]");
+  w.write(group + "/power_a", std::vector<double>(a.begin(), a.end()), {4},
+          std::string("dB(A) re 1 pW (IEC 61672-1 A-weighting over the bands); [") + kColumns + "]");
+}
+
+}  // namespace
+
+void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
+  if (!r.sound) return;
+  const pipeline::SoundResult& s = *r.sound;
+  w.write("/noise/sound/band_centre", s.centre, {s.centre.size()}, "Hz");
+  write_bands(w, "/noise/sound", s.power, s.power_a);
+  w.attribute("/noise/sound", "columns", kColumns);
+  w.write("/noise/sound/input_power", s.input_power, {s.input_power.size()},
+          "dB re 1 pW (the mechanical power the contact forces put into the wheels and the rails per band: "
+          "the bound of the radiated power)");
+  w.attribute("/noise/sound", "sum",
+              r.bogie ? "the bogie: every wheel's power, each rail's power under all the contacts on it "
+                        "(coherently), the sleepers of both rails; power sum over the roughness sources"
+                      : "the power sums of each wheel's loop alone (noise.contact_coupling = \"none\")");
+  if (!s.wheel_note.empty()) w.attribute("/noise/sound", "wheel_missing", s.wheel_note);
+  for (std::size_t i = 0; i < r.wheels.size() && i < s.contact_power.size(); ++i) {
+    const std::string g =
+        std::string("/noise/wheels/") + noise::wheel_name(r.wheels[i].state.wheel) + "/sound";
+    write_bands(w, g, s.contact_power[i], s.contact_power_a[i]);
+    w.attribute(g, "columns",
+                "wheel: this wheel's radiation under all its contacts' forces; rail, sleepers: its rail "
+                "and sleepers under this wheel's contact forces alone (the bogie's columns are coherent "
+                "sums over the contacts on each rail)");
+  }
+  if (s.rail) {
+    w.write("/sound/radiation_efficiency/rail/frequency", s.rail->frequency, {s.rail->frequency.size()}, "Hz");
+    w.write("/sound/radiation_efficiency/rail/vertical", s.rail->sigma_vertical,
+            {s.rail->sigma_vertical.size()}, "- (sigma of the section's rigid vertical motion, 2D BEM)");
+    w.write("/sound/radiation_efficiency/rail/lateral", s.rail->sigma_lateral,
+            {s.rail->sigma_lateral.size()}, "- (sigma of the section's rigid lateral motion, 2D BEM)");
+    w.attribute("/sound/radiation_efficiency/rail", "ground",
+                s.rail->ground ? "rigid plane at the foot (sound.rail_ground = \"rigid\")" : "free field");
+  }
+  if (s.wheel) {
+    const pipeline::WheelRadiation& wr = *s.wheel;
+    const std::string g = "/sound/radiation_efficiency/wheel";
+    w.write(g + "/frequency", wr.frequency, {wr.frequency.size()}, "Hz");
+    std::vector<double> sigma;
+    std::vector<int> n, mode;
+    for (const auto& o : wr.orders)
+      for (int k : o.modes) n.push_back(o.n), mode.push_back(k);
+    for (std::size_t f = 0; f < wr.frequency.size(); ++f)
+      for (const auto& e : wr.efficiency) sigma.push_back(e[f]);
+    w.write(g + "/sigma", sigma, {wr.frequency.size(), wr.efficiency.size()},
+            "- (each mode's radiation efficiency, axisymmetric BEM; [frequency][mode])");
+    w.write(g + "/n", n, {n.size()}, "- (nodal diameters of each column of sigma)");
+    w.write(g + "/mode", mode, {mode.size()}, "- (index of the FE mode, as /wheel/modes of `rollnoise modes`)");
+    w.write(g + "/surface", wr.surface, "m^2 (the radiating surface: the section boundary swept around)");
+    w.write(g + "/elements", std::vector<int>{wr.elements}, {}, "- (boundary elements of the section)");
+  }
+  w.write("/track/decay_rate/band_centre", s.centre, {s.centre.size()}, "Hz");
+  w.write("/track/decay_rate/vertical", s.decay_vertical, {s.decay_vertical.size()},
+          "dB/m (EN 15461: vertical transfer receptances along the rail from a vertical force at "
+          "track.position, band means)");
+  w.write("/track/decay_rate/lateral", s.decay_lateral, {s.decay_lateral.size()},
+          "dB/m (EN 15461: lateral transfer receptances from a lateral force)");
+  w.write("/track/decay_rate/limit_vertical", s.decay_limit_vertical, {s.decay_limit_vertical.size()},
+          "dB/m (EN ISO 3095:2013 lower limit of the vertical decay rate of a reference track; NaN "
+          "outside 250 Hz - 5 kHz)");
+  w.write("/track/decay_rate/limit_lateral", s.decay_limit_lateral, {s.decay_limit_lateral.size()},
+          "dB/m (EN ISO 3095:2013 lower limit of the lateral decay rate; NaN outside 250 Hz - 5 kHz)");
+  w.write("/noise/sound/seconds", s.seconds, "s (wall time of the sound stage)");
+}
+
+}  // namespace rollnoise::io

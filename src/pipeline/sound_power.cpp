@@ -1,0 +1,432 @@
+#include "pipeline/sound_power.hpp"
+
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "acoustics/a_weighting.hpp"
+#include "acoustics/decay_rate.hpp"
+#include "acoustics/piston.hpp"
+#include "core/constants.hpp"
+#include "core/task_pool.hpp"
+#include "dynamics/rail_section.hpp"
+#include "noise/bands.hpp"
+
+namespace rollnoise::pipeline {
+namespace {
+
+using cdouble = std::complex<double>;
+constexpr double kPowerReference = 1e-12;  // W (dB re 1 pW)
+// Sleeper spans on each side of the contacts over which (S2) and (S3) are integrated point by
+// point; beyond them the tails are closed as geometric series (docs/sound.md Sec. 3.2).
+constexpr int kWindowSpans = 20;
+
+double angular(double f) { return 2 * kPi * f; }
+
+// Gauss-Legendre nodes and weights on [0, 1].
+std::vector<std::pair<double, double>> gauss_unit(int n) {
+  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(static_cast<std::size_t>(n));
+  std::vector<std::pair<double, double>> out;
+  for (int i = 0; i < n; ++i) {
+    double x = 0.0, w = 0.0;
+    gsl_integration_glfixed_point(0.0, 1.0, static_cast<std::size_t>(i), &x, &w, t);
+    out.emplace_back(x, w);
+  }
+  gsl_integration_glfixed_table_free(t);
+  return out;
+}
+
+// The points along the rail: Gauss points of each span (weight > 0) and the sleepers (weight 0,
+// flagged), spans numbered outward on each side for the tail closure.
+struct RailPoints {
+  std::vector<double> x, weight;
+  std::vector<int> span;           // the span [j L, (j + 1) L] of a Gauss point; j of a sleeper
+  std::vector<bool> is_sleeper;    // a sleeper at x = j L (weight 0)
+  int first_span = 0, last_span = 0;
+};
+
+RailPoints rail_points(double x_min, double x_max, double spacing, int gauss) {
+  RailPoints p;
+  p.first_span = static_cast<int>(std::floor(x_min / spacing)) - kWindowSpans;
+  p.last_span = static_cast<int>(std::floor(x_max / spacing)) + kWindowSpans;
+  const auto rule = gauss_unit(gauss);
+  for (int j = p.first_span; j <= p.last_span; ++j) {
+    for (const auto& [u, w] : rule) {
+      p.x.push_back((j + u) * spacing);
+      p.weight.push_back(w * spacing);
+      p.span.push_back(j);
+      p.is_sleeper.push_back(false);
+    }
+    p.x.push_back(j * spacing);
+    p.weight.push_back(0.0);
+    p.span.push_back(j);
+    p.is_sleeper.push_back(true);
+  }
+  return p;
+}
+
+// A geometric tail beyond the window: the last block times rho/(1 - rho), rho the ratio of the
+// last two blocks' traces (0 when the response does not decay there: no closure).
+void close_tail(Eigen::MatrixXcd& total, const Eigen::MatrixXcd& last, const Eigen::MatrixXcd& before) {
+  const double a = last.trace().real(), b = before.trace().real();
+  if (!(a > 0.0) || !(b > 0.0)) return;
+  const double rho = a / b;
+  if (rho < 1.0) total += last * (rho / (1.0 - rho));
+}
+
+Eigen::MatrixXcd interpolated(const std::vector<Eigen::MatrixXcd>& m, const GridPlace& p) {
+  return (1.0 - p.w) * m[p.i] + p.w * m[p.i + 1];
+}
+double interpolated(const std::vector<double>& v, const GridPlace& p) {
+  return (1.0 - p.w) * v[p.i] + p.w * v[p.i + 1];
+}
+
+// The forces of `which` contacts under source e at line k, stacked (4 per contact).
+Eigen::VectorXcd stacked_forces(const noise::ContactSetLoopResult& loop, const std::vector<int>& which,
+                                std::size_t k, int e) {
+  Eigen::VectorXcd F(static_cast<Eigen::Index>(4 * which.size()));
+  for (std::size_t j = 0; j < which.size(); ++j)
+    F.segment<4>(static_cast<Eigen::Index>(4 * j)) = loop.force[k].block<4, 1>(4 * which[j], e);
+  return F;
+}
+
+// Per source, per line: the powers (W per unit roughness amplitude) the bands are made of.
+struct LinePowers {
+  // [source][line]
+  std::vector<std::vector<double>> wheel_total, rail_total, sleeper_total;
+  // [wheel][source][line]
+  std::vector<std::vector<std::vector<double>>> wheel, rail, sleepers;
+  // [source][line]: the mechanical power the contact forces put into the wheels and the rails
+  std::vector<std::vector<double>> input;
+};
+
+// (S5): the power the contact forces put into the structures, (1/2) Re(F^H v_wheel - F^H v_rail)
+// summed over the contacts, with the velocities of the loop (z, x, y, rot z of each contact's local
+// frame) taken into its contact frame (T^T v; the rotations about x and y, which the loop does not
+// keep, taken as zero: they carry only the spin moment's share).
+double input_power(const noise::ContactSetLoopResult& loop, const std::vector<noise::ContactPoint>& contacts,
+                   std::size_t k, int e) {
+  if (loop.wheel_velocity.empty()) return kNaN;
+  double p = 0.0;
+  for (std::size_t a = 0; a < contacts.size(); ++a) {
+    const Eigen::Matrix<double, 6, 4> T = dynamics::contact_frame(contacts[a].position.contact_angle);
+    Eigen::Matrix<cdouble, 6, 1> vw = Eigen::Matrix<cdouble, 6, 1>::Zero(), vr = vw;
+    for (int i = 0; i < 4; ++i) {
+      vw(dynamics::kSixOfFour[i]) = loop.wheel_velocity[k](static_cast<Eigen::Index>(4 * a) + i, e);
+      vr(dynamics::kSixOfFour[i]) = loop.rail_velocity[k](static_cast<Eigen::Index>(4 * a) + i, e);
+    }
+    const Eigen::Matrix<cdouble, 4, 1> F = loop.force[k].block<4, 1>(static_cast<Eigen::Index>(4 * a), e);
+    const Eigen::Matrix<cdouble, 4, 1> dv = T.transpose().cast<cdouble>() * (vw - vr);
+    p += 0.5 * F.dot(dv).real();
+  }
+  return p;
+}
+
+double band_level(const std::vector<double>& f, const std::vector<std::vector<double>>& by_source,
+                  const std::vector<std::vector<double>>& source_levels, std::size_t band, double centre) {
+  double sum = 0.0;
+  for (std::size_t e = 0; e < by_source.size(); ++e) {
+    std::vector<double> twice(by_source[e].size());
+    for (std::size_t k = 0; k < twice.size(); ++k) twice[k] = 2.0 * by_source[e][k];
+    const double r2 = noise::kRoughnessReference * noise::kRoughnessReference *
+                      std::pow(10.0, source_levels[e][band] / 10.0);
+    sum += r2 * noise::band_mean(f, twice, centre);
+  }
+  return 10 * std::log10(sum / kPowerReference);
+}
+
+std::array<double, 4> a_weighted(const std::vector<double>& centres, const SoundBands& bands) {
+  std::array<double, 4> out{};
+  for (int c = 0; c < 4; ++c) {
+    std::vector<double> levels;
+    for (const auto& b : bands) levels.push_back(b[static_cast<std::size_t>(c)]);
+    out[static_cast<std::size_t>(c)] = acoustics::a_weighted_total(centres, levels);
+  }
+  return out;
+}
+
+double power_sum(double a, double b) {
+  if (std::isnan(a)) return b;
+  if (std::isnan(b)) return a;
+  return 10 * std::log10(std::pow(10.0, a / 10) + std::pow(10.0, b / 10));
+}
+
+}  // namespace
+
+RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<double>& positions,
+                            const std::vector<double>& grid, int gauss) {
+  RailLineGram g;
+  g.positions = positions;
+  if (positions.empty()) return g;
+  const double L = rail.track().sleeper_spacing;
+  const auto [lo, hi] = std::minmax_element(positions.begin(), positions.end());
+  const RailPoints pts = rail_points(*lo, *hi, L, gauss);
+  const std::size_t p = positions.size();
+  std::vector<dynamics::RailContactPair> pairs;
+  for (double x : pts.x)
+    for (double xb : positions) pairs.push_back({dynamics::RailContact{x, 0.0, 0.0}, dynamics::RailContact{xb, 0.0, 0.0}});
+  const auto transfers = rail.contact_transfers(grid, pairs, true);
+  const Eigen::Index n = static_cast<Eigen::Index>(6 * p);
+  const std::size_t spans = static_cast<std::size_t>(pts.last_span - pts.first_span + 1);
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    // per span (and per sleeper) blocks, for the tails
+    std::vector<Eigen::MatrixXcd> span_z(spans, Eigen::MatrixXcd::Zero(n, n));
+    std::vector<Eigen::MatrixXcd> span_y = span_z, sleeper_z = span_z;
+    for (std::size_t i = 0; i < pts.x.size(); ++i) {
+      Eigen::RowVectorXcd az(n), ay(n);
+      for (std::size_t b = 0; b < p; ++b) {
+        const dynamics::Receptance6& alpha = transfers[k][i * p + b];
+        az.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(2);
+        ay.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(1);
+      }
+      const std::size_t s = static_cast<std::size_t>(pts.span[i] - pts.first_span);
+      if (pts.is_sleeper[i]) {
+        sleeper_z[s] += az.adjoint() * az;
+      } else {
+        span_z[s] += pts.weight[i] * az.adjoint() * az;
+        span_y[s] += pts.weight[i] * ay.adjoint() * ay;
+      }
+    }
+    auto summed = [&](const std::vector<Eigen::MatrixXcd>& blocks) {
+      Eigen::MatrixXcd total = Eigen::MatrixXcd::Zero(n, n);
+      for (const auto& b : blocks) total += b;
+      close_tail(total, blocks[0], blocks[1]);
+      close_tail(total, blocks[blocks.size() - 1], blocks[blocks.size() - 2]);
+      return total;
+    };
+    g.z.push_back(summed(span_z));
+    g.y.push_back(summed(span_y));
+    g.sleepers.push_back(summed(sleeper_z));
+  }
+  return g;
+}
+
+RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts, int side) {
+  RailGram g;
+  for (std::size_t a = 0; a < contacts.size(); ++a)
+    if (contacts[a].side == side) g.contacts.push_back(static_cast<int>(a));
+  if (g.contacts.empty()) return g;
+  // M: contact forces (4 per contact, its frame) -> the centre-line loads (6 per position):
+  // (G1) with the response on the centre line, alpha L(d_b)^T, L(d)^T = [[I, 0], [S(d), I]],
+  // d_b = (0, offset_b, 0); then the contact frame T_b (G2).
+  const Eigen::Index n = static_cast<Eigen::Index>(6 * line.positions.size());
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(4 * g.contacts.size()));
+  for (std::size_t j = 0; j < g.contacts.size(); ++j) {
+    const noise::ContactPoint& c = contacts[static_cast<std::size_t>(g.contacts[j])];
+    std::size_t p = 0;
+    while (p < line.positions.size() && std::abs(line.positions[p] - c.rail_x) > 1e-12) ++p;
+    if (p == line.positions.size())
+      throw std::invalid_argument("rail_gram: a contact's position is not among the line Gram's");
+    Eigen::Matrix<double, 6, 6> Lt = Eigen::Matrix<double, 6, 6>::Identity();
+    Lt.block<3, 3>(3, 0) = dynamics::cross_matrix(Eigen::Vector3d(0.0, c.position.rail_offset_y, 0.0));
+    M.block(static_cast<Eigen::Index>(6 * p), static_cast<Eigen::Index>(4 * j), 6, 4) =
+        Lt * dynamics::contact_frame(c.position.contact_angle);
+  }
+  const Eigen::MatrixXcd Mc = M.cast<cdouble>();
+  for (std::size_t k = 0; k < line.z.size(); ++k) {
+    g.z.push_back(Mc.adjoint() * line.z[k] * Mc);
+    g.y.push_back(Mc.adjoint() * line.y[k] * Mc);
+    g.sleepers.push_back(Mc.adjoint() * line.sleepers[k] * Mc);
+  }
+  return g;
+}
+
+SoundResult sound_power(const noise::ContactSetLoopResult& loop,
+                        const std::vector<noise::ContactPoint>& contacts,
+                        const std::vector<SoundWheel>& wheels,
+                        const std::vector<std::vector<double>>& source_levels,
+                        const std::vector<double>& centres, const dynamics::RailModel& rail,
+                        const SoundCase& sound, int threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SoundResult r;
+  r.centre = centres;
+  const std::vector<double> grid = radiation_grid(centres);
+
+  // the radiation tables (from the cache where io gives one)
+  std::shared_ptr<const dynamics::WheelFeModes> tread = sound.wheel_tread ? sound.wheel_tread() : nullptr;
+  if (tread && sound.wheel_table) r.wheel = sound.wheel_table(grid);
+  r.wheel_note = r.wheel ? "" : sound.wheel_missing;
+  if (sound.rail_table)
+    r.rail = sound.rail_table(grid);
+  else
+    r.rail = std::make_shared<const RailRadiation>(rail_radiation(
+        sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section, sound.rail_ground,
+        grid, sound.fluid));
+
+  // the rails' Gram matrices (S2), (S3): Gauss points a span from the bending wavelength at the top
+  // of the grid (12 a span up to 5 kHz: 2.4 wavelengths of |u|^2 in a 0.6 m span)
+  const int gauss = std::max(12, static_cast<int>(std::ceil(12 * std::sqrt(grid.back() / 5000.0))));
+  std::vector<double> positions;
+  for (const noise::ContactPoint& c : contacts)
+    if (std::none_of(positions.begin(), positions.end(), [&](double x) { return std::abs(x - c.rail_x) <= 1e-12; }))
+      positions.push_back(c.rail_x);
+  const std::shared_ptr<const RailLineGram> line =
+      sound.rail_line_table ? sound.rail_line_table(rail, positions, grid, gauss)
+                            : std::make_shared<const RailLineGram>(rail_line_gram(rail, positions, grid, gauss));
+  std::vector<RailGram> rails;
+  for (int side : {1, -1}) rails.push_back(rail_gram(*line, contacts, side));
+
+  // each wheel's modal participation (W2) at its contacts
+  std::vector<dynamics::ModalParticipation> modal;
+  if (r.wheel)
+    for (const SoundWheel& w : wheels) {
+      std::vector<dynamics::TreadContact> at;
+      for (int a : w.contacts) {
+        const noise::ContactPoint& c = contacts[static_cast<std::size_t>(a)];
+        at.push_back({c.position.wheel_shift_y, c.position.contact_angle});
+      }
+      modal.push_back(dynamics::modal_participation(*tread, sound.wheel_options, at));
+    }
+  // the position in the radiation table's orders of each participating mode
+  std::vector<std::vector<int>> order_rows;  // [order][j] -> row in ModalParticipation
+  if (r.wheel && !modal.empty())
+    for (const auto& order : r.wheel->orders) {
+      std::vector<int> rows;
+      for (int k : order.modes) {
+        const auto it = std::find(modal.front().modes.begin(), modal.front().modes.end(), k);
+        rows.push_back(it == modal.front().modes.end() ? -1 : static_cast<int>(it - modal.front().modes.begin()));
+      }
+      order_rows.push_back(rows);
+    }
+
+  const dynamics::Support& seat = rail.track().vertical_support;
+  const double area = sound.sleeper_length * sound.sleeper_width;
+  const std::size_t nl = loop.frequency.size(), ne = static_cast<std::size_t>(loop.sources());
+  const std::size_t nw = wheels.size();
+  LinePowers lp;
+  lp.wheel_total.assign(ne, std::vector<double>(nl, 0.0));
+  lp.rail_total = lp.sleeper_total = lp.wheel_total;
+  lp.wheel.assign(nw, lp.wheel_total);
+  lp.rail = lp.sleepers = lp.wheel;
+  lp.input = lp.wheel_total;
+
+  parallel_for(nl, threads, [&](std::size_t k, int) {
+    const double f = loop.frequency[k], omega = angular(f), w2 = omega * omega;
+    const GridPlace at = grid_place(grid, f);
+    const double kk = omega / sound.fluid.sound_speed;
+    const double pv = interpolated(r.rail->vertical, at), pl = interpolated(r.rail->lateral, at);
+    const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
+    const cdouble kb = cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
+    const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * w2));
+    const double sleeper_factor =
+        tau2 * 0.5 * sound.fluid.impedance() * acoustics::rectangular_piston_efficiency(kk, sound.sleeper_length, sound.sleeper_width) * area;
+    std::vector<Eigen::MatrixXcd> gz, gy, gs;
+    for (const RailGram& g : rails) {
+      if (g.contacts.empty()) {
+        gz.emplace_back(), gy.emplace_back(), gs.emplace_back();
+        continue;
+      }
+      gz.push_back(interpolated(g.z, at));
+      gy.push_back(interpolated(g.y, at));
+      gs.push_back(interpolated(g.sleepers, at));
+    }
+    std::vector<Eigen::MatrixXcd> pw;  // P_n at f
+    if (r.wheel)
+      for (const auto& order : r.wheel->orders) pw.push_back(interpolated(order.power, at));
+    std::vector<Eigen::VectorXcd> R;  // each wheel's modal responses
+    for (const auto& m : modal) R.push_back(dynamics::modal_responses(m, f));
+
+    for (std::size_t e = 0; e < ne; ++e) {
+      const int src = static_cast<int>(e);
+      lp.input[e][k] = input_power(loop, contacts, k, src);
+      // rails (S2), (S3): each coherently over its contacts
+      for (std::size_t s = 0; s < rails.size(); ++s) {
+        if (rails[s].contacts.empty()) continue;
+        const Eigen::VectorXcd F = stacked_forces(loop, rails[s].contacts, k, src);
+        lp.rail_total[e][k] += w2 * (pv * F.dot(gz[s] * F).real() + pl * F.dot(gy[s] * F).real());
+        lp.sleeper_total[e][k] += w2 * sleeper_factor * F.dot(gs[s] * F).real();
+      }
+      for (std::size_t w = 0; w < nw; ++w) {
+        // the wheel's own rail and sleepers under its contacts' forces alone
+        for (std::size_t s = 0; s < rails.size(); ++s) {
+          const RailGram& g = rails[s];
+          Eigen::VectorXcd F = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(4 * g.contacts.size()));
+          bool any = false;
+          for (std::size_t j = 0; j < g.contacts.size(); ++j)
+            if (std::find(wheels[w].contacts.begin(), wheels[w].contacts.end(), g.contacts[j]) !=
+                wheels[w].contacts.end()) {
+              F.segment<4>(static_cast<Eigen::Index>(4 * j)) = loop.force[k].block<4, 1>(4 * g.contacts[j], src);
+              any = true;
+            }
+          if (!any) continue;
+          lp.rail[w][e][k] += w2 * (pv * F.dot(gz[s] * F).real() + pl * F.dot(gy[s] * F).real());
+          lp.sleepers[w][e][k] += w2 * sleeper_factor * F.dot(gs[s] * F).real();
+        }
+        if (!r.wheel) continue;
+        // (S1): the wheel's modes under its contacts' forces
+        const Eigen::VectorXcd F = stacked_forces(loop, wheels[w].contacts, k, src);
+        const Eigen::VectorXcd qc = R[w].cwiseProduct(modal[w].cos_set.cast<cdouble>() * F);
+        const Eigen::VectorXcd qs = R[w].cwiseProduct(modal[w].sin_set.cast<cdouble>() * F);
+        double power = 0.0;
+        for (std::size_t o = 0; o < pw.size(); ++o) {
+          const std::vector<int>& rows = order_rows[o];
+          Eigen::VectorXcd vc(static_cast<Eigen::Index>(rows.size())), vs(vc.size());
+          for (std::size_t j = 0; j < rows.size(); ++j) {
+            vc(static_cast<Eigen::Index>(j)) = rows[j] < 0 ? 0.0 : qc(rows[j]);
+            vs(static_cast<Eigen::Index>(j)) = rows[j] < 0 ? 0.0 : qs(rows[j]);
+          }
+          power += w2 * (vc.dot(pw[o] * vc).real() + vs.dot(pw[o] * vs).real());
+        }
+        lp.wheel[w][e][k] = power;
+        lp.wheel_total[e][k] += power;
+      }
+    }
+  });
+
+  // (S4): band levels
+  const std::vector<double>& f = loop.frequency;
+  r.power.resize(centres.size());
+  r.contact_power.assign(nw, SoundBands(centres.size()));
+  for (std::size_t b = 0; b < centres.size(); ++b) {
+    const double wheel = r.wheel ? band_level(f, lp.wheel_total, source_levels, b, centres[b]) : kNaN;
+    const double rl = band_level(f, lp.rail_total, source_levels, b, centres[b]);
+    const double sl = band_level(f, lp.sleeper_total, source_levels, b, centres[b]);
+    r.power[b] = {wheel, rl, sl, power_sum(power_sum(wheel, rl), sl)};
+    for (std::size_t w = 0; w < nw; ++w) {
+      const double ww = r.wheel ? band_level(f, lp.wheel[w], source_levels, b, centres[b]) : kNaN;
+      const double wr = band_level(f, lp.rail[w], source_levels, b, centres[b]);
+      const double ws = band_level(f, lp.sleepers[w], source_levels, b, centres[b]);
+      r.contact_power[w][b] = {ww, wr, ws, power_sum(power_sum(ww, wr), ws)};
+    }
+  }
+  for (std::size_t b = 0; b < centres.size(); ++b)
+    r.input_power.push_back(loop.wheel_velocity.empty() ? kNaN : band_level(f, lp.input, source_levels, b, centres[b]));
+  r.power_a = a_weighted(centres, r.power);
+  for (const SoundBands& c : r.contact_power) r.contact_power_a.push_back(a_weighted(centres, c));
+
+  // decay rates (EN 15461) from a force at the centre line at track.position
+  const std::vector<double> measured_at = acoustics::en15461_positions(rail.track().sleeper_spacing);
+  std::vector<dynamics::RailContactPair> pairs;
+  const double x0 = rail.position();
+  for (double d : measured_at) pairs.push_back({dynamics::RailContact{x0 + d, 0.0, 0.0}, dynamics::RailContact{x0, 0.0, 0.0}});
+  const auto along = rail.contact_transfers(grid, pairs, true);
+  for (std::size_t b = 0; b < centres.size(); ++b) {
+    const auto [lo, hi] = noise::third_octave_edges(centres[b]);
+    std::vector<double> az(measured_at.size(), 0.0), ay(measured_at.size(), 0.0);
+    int count = 0;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+      if (grid[k] < lo || grid[k] > hi) continue;
+      ++count;
+      for (std::size_t p = 0; p < measured_at.size(); ++p) {
+        az[p] += std::norm(along[k][p](2, 2));
+        ay[p] += std::norm(along[k][p](1, 1));
+      }
+    }
+    r.decay_vertical.push_back(count ? acoustics::track_decay_rate(measured_at, az) : kNaN);
+    r.decay_lateral.push_back(count ? acoustics::track_decay_rate(measured_at, ay) : kNaN);
+    // EN ISO 3095:2013's lower limits where the band has one
+    double lv = kNaN, ll = kNaN;
+    for (const acoustics::DecayRateLimit& l : acoustics::iso3095_decay_rate_limits())
+      if (std::abs(l.frequency / noise::nominal_centre(centres[b]) - 1.0) < 1e-3) lv = l.vertical, ll = l.lateral;
+    r.decay_limit_vertical.push_back(lv);
+    r.decay_limit_lateral.push_back(ll);
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace rollnoise::pipeline

@@ -1,0 +1,147 @@
+// How loud: the sound power of the wheels, the rails and the sleepers under the loop's contact
+// forces, per 1/3-octave band (docs/sound.md). The stage after the band levels of run_noise.
+//
+// Per roughness source e and narrow-band line f, with F the loop's contact forces per unit
+// roughness amplitude (noise/contact_set_loop.hpp, contact frames, on the wheels):
+//
+//  wheel (each wheel alone; its contacts' forces, W2 of dynamics/wheel_fe_contact.hpp, W3 of
+//  sound_radiation.hpp):
+//    W_wheel = omega^2 sum_n sum_{set} q_set,n^H P_n(f) q_set,n                              (S1)
+//
+//  rail (each rail: the response at its centre line u(x) = sum_b alpha(x, b) T_b (-F_b) of the
+//  contacts b on it, RailModel::contact_transfers):
+//    W_rail = omega^2 Int [ P_v(f) |u_z(x)|^2 + P_l(f) |u_y(x)|^2 ] dx
+//           = omega^2 [ P_v F^H G_z F + P_l F^H G_y F ],   G_c = Int A_c(x)^H A_c(x) dx          (S2)
+//  with A_c(x) the row c of alpha(x, b) T_b over the contacts b. The integral: Gauss-Legendre
+//  points in each sleeper span over a window around the contacts, the tails beyond it closed as
+//  the geometric series of the last spans' ratio (the slowest Floquet wave's decay; docs/sound.md
+//  Sec. 3.2);
+//
+//  sleepers (a baffled rigid piston of the sleeper's area per rail seat, acoustics/piston.hpp;
+//  the seat's sleeper displacement tau u_z(x_j), tau = k_p* / (k_p* + k_b* - m_s omega^2) of
+//  Eq. (1) of dynamics/track.hpp):
+//    W_sleepers = omega^2 |tau|^2 (rho c / 2) sigma_p(k) A_s F^H G_s F,  G_s = sum_j A_z(x_j)^H A_z(x_j)  (S3)
+//
+// The G matrices vary smoothly with frequency; they are computed on the radiation grid
+// (sound_radiation.hpp) and interpolated to the lines. Band levels as (B1) of noise/bands.hpp with
+// each source's own roughness levels, the power per unit mean-square roughness being 2 W:
+//
+//    L_W(b) = 10 log10( sum_e r_e,b^2 <2 W_e>_b / W0 ),   W0 = 1 pW                             (S4)
+//
+// The bogie's wheel column sums the wheels, the rail column both rails (each coherently over its
+// contacts), the sleeper column both rails' sleepers; total = wheel + rail + sleepers. A wheel's
+// own group: its wheel's power, and its rail's and sleepers' power under its contact's forces
+// alone (without the other contacts on that rail: a wheel's rail columns do not add up to the
+// bogie's, whose coherent sum also holds the cross terms).
+//
+// The bound (S5): the mechanical power the contact forces put into the structures,
+//   P_in = (1/2) Re sum_a F_a^H (v_wheel,a - v_rail,a)   (contact frames),
+// of which the radiated power can only be a part (the rest is dissipated in the pads, the ballast,
+// the wheel's and the rail's damping).
+//
+// Decay rates (EN 15461, acoustics/decay_rate.hpp): the transfer receptances along the rail from a
+// vertical (lateral) force at the centre line at track.position, band means of |A(x)|^2 on the
+// grid.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics/wheel_fe_contact.hpp"
+#include "noise/contact_set_loop.hpp"
+#include "pipeline/sound_radiation.hpp"
+
+namespace rollnoise::pipeline {
+
+/// (S2), (S3) for loads on the rail's centre line: at each frequency of `grid`, with a_c(x) the
+/// row c of the rail's 6x6 transfer (RailModel::contact_transfers, centre line to centre line) from
+/// the loads at each of `positions` (6 per position: x, y, z, rot x, rot y, rot z),
+///   G_z = Int a_z^H a_z dx,  G_y = Int a_y^H a_y dx,  G_s = sum_j a_z(x_j)^H a_z(x_j)  (sleepers x_j = j L);
+/// m^2/N^2 m and m^2/N^2 (6 p x 6 p). `gauss`: Gauss-Legendre points a sleeper span. The same for
+/// both rails (one track model); it depends on the track, the positions and the grid alone, so
+/// io keeps it in the cache (io/radiation_cache.hpp).
+struct RailLineGram {
+  std::vector<double> positions;                 ///< m along the rail, from a sleeper
+  std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency
+};
+RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<double>& positions,
+                            const std::vector<double>& grid, int gauss);
+
+/// What the sound power needs besides the loop (read by io from the [sound] keys).
+struct SoundCase {
+  bool on = true;                       ///< noise.sound
+  acoustics::Fluid fluid;
+  bool rail_ground = false;             ///< sound.rail_ground = "rigid"
+  double sleeper_length = 1.3;          ///< sound.sleeper_length: per rail seat (m)
+  double sleeper_width = 0.25;          ///< sound.sleeper_width (m)
+  std::vector<Eigen::Vector2d> rail_section;  ///< (y, z) m; empty: dynamics::uic60_outline()
+  /// The FE wheel along the tread and its contact options (null: the table wheel, no surface)
+  std::function<std::shared_ptr<const dynamics::WheelFeModes>()> wheel_tread;
+  dynamics::WheelFeContactOptions wheel_options;
+  /// The radiation tables on a grid: computed here, or read from the cache (io). Null: computed
+  /// directly (wheel_radiation needs the FE modes with their mesh: wheel_modes).
+  std::function<std::shared_ptr<const WheelRadiation>(const std::vector<double>& grid)> wheel_table;
+  std::function<std::shared_ptr<const RailRadiation>(const std::vector<double>& grid)> rail_table;
+  /// The rail's line Gram matrices (rail_line_gram below), from the cache where io gives one; null:
+  /// computed here.
+  std::function<std::shared_ptr<const RailLineGram>(
+      const dynamics::RailModel& rail, const std::vector<double>& positions,
+      const std::vector<double>& grid, int gauss)>
+      rail_line_table;
+  /// Why the wheel has no sound (empty when it has): e.g. the table wheel.
+  std::string wheel_missing;
+};
+
+/// Band sound powers, dB re 1 pW: [band][wheel, rail, sleepers, total].
+using SoundBands = std::vector<std::array<double, 4>>;
+
+struct SoundResult {
+  std::vector<double> centre;  ///< Hz
+  SoundBands power;            ///< the bogie
+  std::array<double, 4> power_a{};  ///< A-weighted totals of the columns, dB(A) re 1 pW
+  std::vector<SoundBands> contact_power;  ///< per physical wheel (wheels' order)
+  std::vector<std::array<double, 4>> contact_power_a;
+  std::string wheel_note;  ///< why the wheel column is empty (NaN), if it is
+  std::shared_ptr<const WheelRadiation> wheel;  ///< null without the wheel's surface
+  std::shared_ptr<const RailRadiation> rail;
+  std::vector<double> decay_vertical, decay_lateral;  ///< dB/m per band
+  /// EN ISO 3095:2013's lower limits of the decay rates (dB/m; NaN outside 250 Hz - 5 kHz)
+  std::vector<double> decay_limit_vertical, decay_limit_lateral;
+  /// (S5): the mechanical power the contact forces put into the wheels and rails, dB re 1 pW per
+  /// band (the bound of the radiated power; NaN without the loop's velocities)
+  std::vector<double> input_power;
+  double seconds = 0.0;  ///< wall time of the stage (s)
+};
+
+/// The Gram matrices of one rail's contacts (those of `contacts` on `side`) in their frames
+/// (4 columns per contact): M^H G M, M the lever arm from each contact's offset on the head to the
+/// centre line and its contact frame ((G1), (G2) of dynamics/rail_contact.hpp). Exact for the
+/// beams and the discretely supported waveguide, which move their centre-line transfer rigidly to
+/// the contact; for the continuously supported waveguide, which loads its section at the contact,
+/// the response along the rail is taken from the centre-line load moved by the same lever arm
+/// (docs/sound.md Sec. 3.2).
+struct RailGram {
+  std::vector<int> contacts;  ///< indices into `contacts`, those on this side
+  std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency, 4 m x 4 m
+};
+RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts, int side);
+
+/// A physical wheel: the contacts (indices into the loop's contacts) on it.
+struct SoundWheel {
+  std::vector<int> contacts;
+};
+
+/// (S1)-(S4) for the loop `loop` (lines and sources) with `contacts` (as the loop's), `wheels` the
+/// physical wheels (each one or more contacts), `source_levels[e]` each source's roughness levels
+/// in the bands `centres` (dB re 1 um).
+SoundResult sound_power(const noise::ContactSetLoopResult& loop,
+                        const std::vector<noise::ContactPoint>& contacts,
+                        const std::vector<SoundWheel>& wheels,
+                        const std::vector<std::vector<double>>& source_levels,
+                        const std::vector<double>& centres, const dynamics::RailModel& rail,
+                        const SoundCase& sound, int threads = 1);
+
+}  // namespace rollnoise::pipeline

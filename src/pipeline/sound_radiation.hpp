@@ -1,0 +1,87 @@
+// The radiation of the structures, independent of the case's contact (docs/sound.md Sec. 2-4):
+// what the sound power needs of the wheel's surface and of the rail's section, tabulated on a
+// frequency grid once, so that a run from the cache (io/radiation_cache.hpp) repeats none of it.
+//
+// Wheel (docs/sound.md Sec. 2). The FE wheel's section boundary (its mesh's boundary edges, each
+// split at its mid-side node into two straight boundary elements) is the generator of an
+// axisymmetric surface; each mode k of order n moves it with the normal velocity amplitude
+// v_k(s) = i omega q_k (U_r n_r + U_z n_z)(s) cos(n theta) (wheel_fe.hpp: U_theta is tangential to
+// the surface and does not radiate). For the modes of one order n and one set (cos or sin; the two
+// sets radiate alike and without cross power, their patterns being orthogonal in theta) the
+// axisymmetric BEM (acoustics/axisymmetric_bem.hpp) gives the Hermitian matrix P_n(f) with
+//
+//   W_n = vdot^H P_n(f) vdot,   vdot = i omega q (the modal velocity amplitudes)             (W3)
+//
+// the time-averaged power, modal cross terms included. The bore, clamped, has zero velocity; the
+// axle, the other wheel and the bogie are not in the model (docs/sound.md Sec. 6).
+//
+// Rail (docs/sound.md Sec. 3). The 2D BEM of the section (acoustics/bem2d.hpp) gives the power per
+// unit length of the section moving as a rigid body, vertically and laterally, per unit velocity
+// amplitude squared: W' = P_v |V_z|^2 + P_l |V_y|^2 (the symmetric section radiates no cross power
+// between the two, its patterns being even and odd in y). Optionally over a rigid ground plane at
+// the foot (sound.rail_ground = "rigid").
+//
+// The grid: radiation_grid(centres), 6 points per 1/3 octave over the bands' edges, log-spaced;
+// values between them are interpolated linearly in log f (interpolate_at): the radiation has no
+// resonance (the BEM's irregular frequencies are removed by CHIEF), so 6 points a band hold the
+// band levels within 0.05 dB (docs/sound.md Sec. 5, measured against 12 points a band).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "acoustics/fluid.hpp"
+#include "dynamics/wheel_fe.hpp"
+
+namespace rollnoise::pipeline {
+
+/// 6 log-spaced frequencies per 1/3 octave from the lower edge of the first band to the upper edge
+/// of the last (Hz, ascending).
+std::vector<double> radiation_grid(const std::vector<double>& centres);
+
+/// Position of f on `grid` for linear interpolation in log f: the lower index i and the weight w of
+/// grid[i + 1] (clamped to the grid's ends).
+struct GridPlace {
+  std::size_t i = 0;
+  double w = 0.0;
+};
+GridPlace grid_place(const std::vector<double>& grid, double f);
+
+/// The wheel's radiation by order (W3).
+struct WheelRadiation {
+  std::vector<double> frequency;  ///< the grid (Hz)
+  struct Order {
+    int n = 0;
+    std::vector<int> modes;  ///< index into WheelFeModes::modes, ascending
+    /// P_n at each grid frequency (modes x modes, W per (m/s sqrt(kg))^2 of modal velocity)
+    std::vector<Eigen::MatrixXcd> power;
+  };
+  std::vector<Order> orders;
+  /// Each mode's radiation efficiency sigma_k(f) = P_kk / (rho c S <v_n^2>) on the grid, in the
+  /// order of `orders` and their modes.
+  std::vector<std::vector<double>> efficiency;
+  double surface = 0.0;  ///< the radiating surface (m^2): the section boundary swept around
+  int elements = 0;      ///< boundary elements of the generator
+};
+
+/// The radiation of the modes of `w` with n >= n_min (w from wheel_fe_modes: with its mesh and
+/// section shapes) on `grid`. std::invalid_argument for modes without section shapes.
+WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
+                               const std::vector<double>& grid, const acoustics::Fluid& fluid);
+
+/// The rail section's radiation per unit length.
+struct RailRadiation {
+  std::vector<double> frequency;      ///< the grid (Hz)
+  std::vector<double> vertical;       ///< P_v (W/m per (m/s)^2 velocity amplitude)
+  std::vector<double> lateral;        ///< P_l
+  std::vector<double> sigma_vertical; ///< P_v / (rho c (1/2) Int n_z^2 ds)
+  std::vector<double> sigma_lateral;  ///< P_l / (rho c (1/2) Int n_y^2 ds)
+  bool ground = false;                ///< over a rigid plane at the foot
+};
+
+/// `outline`: the section (y, z) in m, closed polygon (dynamics::uic60_outline() or
+/// track.rail_section); `ground`: a rigid plane at the foot's lowest z.
+RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool ground,
+                             const std::vector<double>& grid, const acoustics::Fluid& fluid);
+
+}  // namespace rollnoise::pipeline
