@@ -1,0 +1,620 @@
+// The axisymmetric boundary elements (acoustics/axisymmetric_bem.hpp): the kernels' phi-integrals,
+// their singular and near-singular parts, the CHIEF points, the least-squares solve, the power.
+//
+// 1. The phi-integrals. For an observation point x = (r_x, 0, z_x) and a surface point
+//    y = (r_y cos phi, r_y sin phi, z_y) with outward normal (n_r cos phi, n_r sin phi, n_z):
+//      R^2 = d^2 + 4 r_x r_y sin^2(phi/2),  d^2 = (r_x - r_y)^2 + (z_x - z_y)^2,
+//      (y - x).n_y = q + 2 n_r r_x sin^2(phi/2),  q = n_r (r_y - r_x) + n_z (z_y - z_x),
+//      G = e^{-ikR} / (4 pi R),  dG/dn_y = -e^{-ikR} (1 + ikR) (y - x).n_y / (4 pi R^3),
+//    both written without the cancellations of R^2 = A - B cos phi near R = 0. The integrands are
+//    even and 2 pi-periodic in phi, so the trapezoidal rule on [0, pi] (end weights halved, all
+//    doubled) converges geometrically (Trefethen & Weideman, SIAM Rev. 56 (2014), Thm. 3.2): the
+//    error is ~ exp(-2 M a) for M intervals, a the distance of the integrand's nearest
+//    singularity from the real axis, and the rule is exact for trigonometric polynomials of
+//    degree < 2 M. One rule serves all orders: w_j cos(n phi_j) is tabulated once per call by the
+//    Chebyshev recurrence cos((n+1) phi) = 2 cos(phi) cos(n phi) - cos((n-1) phi), and the moments
+//    of all orders of all quadrature points of one observation point are one matrix product.
+//    M is chosen from the bandwidth of e^{-ikR(phi)} (its phase changes at most at the rate
+//    k sqrt(r_x r_y) <= k r_max per radian) and of cos(n phi): 2 M > k r_max + n_max plus a margin.
+//
+// 2. The near-singular phi-integrand. 1/R has its singularity at phi ~ +-i d / rho,
+//    rho = sqrt(r_x r_y): when the meridian distance d is small against rho the peak at phi = 0
+//    is too narrow for the rule. There (d < tau rho, tau = 10 / M, so that exp(-2 M tau) < 3e-9)
+//    the static kernel of order 0 is subtracted and integrated analytically:
+//      int G cos(n phi) = int (G - G0) cos(n phi) + int G0 (cos(n phi) - 1) + int G0,  G0 = 1/(4 pi R),
+//    the first two integrands bounded (no narrow peak; their residual kinks are O(d)), and with
+//    m = 4 r_x r_y / D^2, D^2 = (r_x + r_y)^2 + (z_x - z_y)^2, 1 - m = d^2 / D^2 (Gradshteyn &
+//    Ryzhik 3.674; the same forms in Seybert et al.):
+//      int_0^{2 pi} G0 dphi      = K(m) / (pi D),
+//      int_0^{2 pi} dG0/dn dphi  = -(1 / (pi D)) [ q E(m) / d^2 + (n_r / (2 r_y)) (K(m) - E(m)) ],
+//    from int (A - B cos phi)^{-1/2} = 4 K / sqrt(A + B), int (A - B cos phi)^{-3/2} =
+//    4 E / ((A - B) sqrt(A + B)) and (y - x).n_y = q - n_r d^2 / (2 r_y) + n_r R^2 / (2 r_y).
+//    The same for dG/dn. After the phi-integration the kernels are log-singular in d (through
+//    K ~ ln(4 D / d)) and the double layer has q / d^2 ~ 1 / d next to corners.
+//
+// 3. The integral along the generator. Gauss-Legendre on each segment; a segment nearer to the
+//    observation point than its length is bisected until each piece is no longer than its
+//    distance from the point (a geometric grading towards the point), so ln d and 1/d are
+//    integrated to ~1e-6 by 4 points a piece. Long segments (k L > 1.5) are cut so that each
+//    piece holds a quarter wavelength at most.
+//    The singular segment (the observation point is its midpoint) is split there; on each half,
+//    u in (0, 1] the distance from the midpoint over L/2, the analytic static parts carry the
+//    logarithm explicitly: K(m) = L(1 - m) ln(1/(1 - m)) + (smooth), L(m1) = K(m1)/pi =
+//    (1/2)(1 + m1/4 + 9 m1^2/64 + ...) (Abramowitz & Stegun 17.3.26; the series to m1^2 leaves
+//    an m1^3 ln m1 term, smooth enough), ln(1/(1 - m)) = 2 ln(2 D / L) + 2 ln(1/u) on the segment
+//    (d = u L/2 there, q = 0). The ln(1/u) part is integrated by the Gauss rule of that weight,
+//    the rest (analytic minus logarithm, and the subtracted phi-integrals) by Gauss-Legendre.
+//    This product integration is exact for the logarithm, unlike a polar (Duffy) patch, which
+//    would need the 3D surface and a second rule per order; here the singular part is
+//    order-independent (cos(n phi) - 1 vanishes at phi = 0), so one analytic term serves all n.
+//
+// 4. Points on the axis (an open generator's ends): collocation and CHIEF points have r > 0, the
+//    Gauss points of the end segments r_y > 0, so R >= d > 0 and m < 1 everywhere; the factor
+//    n_r / r_y is finite in the product with r_y (dS = r_y ds dphi), and the order-n integrals
+//    vanish like (r_x r_y)^n at the axis without special cases.
+#include "acoustics/axisymmetric_bem.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "acoustics/axisymmetric_quadrature.hpp"
+
+namespace rollnoise::acoustics {
+namespace {
+
+using axi_cd = std::complex<double>;
+constexpr double kAxiPi = 3.14159265358979323846;
+
+std::string axi_point_text(const Eigen::Vector2d& p) {
+  return "(r, z) = (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ") m";
+}
+
+double axi_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// Distance from p to the segment [a, b].
+double axi_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                            const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// Whether the closed segments [a, b] and [c, d] share a point (exact orientation tests).
+bool axi_segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                       const Eigen::Vector2d& d) {
+  const double d1 = axi_cross(b - a, c - a), d2 = axi_cross(b - a, d - a);
+  const double d3 = axi_cross(d - c, a - c), d4 = axi_cross(d - c, b - c);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return true;
+  auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& s) {
+    return std::min(p.x(), q.x()) <= s.x() && s.x() <= std::max(p.x(), q.x()) &&
+           std::min(p.y(), q.y()) <= s.y() && s.y() <= std::max(p.y(), q.y());
+  };
+  return (d1 == 0 && on(a, b, c)) || (d2 == 0 && on(a, b, d)) || (d3 == 0 && on(c, d, a)) ||
+         (d4 == 0 && on(c, d, b));
+}
+
+// The checked generator: its points (open ends snapped onto r = 0) and elements.
+struct AxiMesh {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<AxisymmetricElement> elements;
+  bool closed = true;
+  double r_max = 0.0;
+};
+
+AxiMesh axi_mesh(const AxisymmetricGenerator& g) {
+  AxiMesh mesh;
+  mesh.closed = g.closed;
+  mesh.points = g.points;
+  auto& pts = mesh.points;
+  const std::size_t np = pts.size();
+  if (np < 3)
+    throw std::invalid_argument("axisymmetric generator: " + std::to_string(np) +
+                                " points; a surface of revolution needs at least 3");
+  double size = 0.0;
+  for (const auto& p : pts) {
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+      throw std::invalid_argument("axisymmetric generator: a point is not finite");
+    size = std::max({size, std::abs(p.x()), std::abs(p.y())});
+  }
+  for (const auto& p : pts)
+    if (p.x() < 0.0 && !(!g.closed && std::abs(p.x()) <= 1e-9 * size))
+      throw std::invalid_argument("axisymmetric generator: point " + axi_point_text(p) +
+                                  " has r < 0; the generator lies in the half-plane r >= 0");
+  if (g.closed) {
+    for (const auto& p : pts)
+      if (!(p.x() > 0.0))
+        throw std::invalid_argument(
+            "axisymmetric generator: a closed generator (a ring) must not touch the axis, point " +
+            axi_point_text(p) + " does; give a body reaching the axis as an open generator");
+  } else {
+    for (std::size_t i : {std::size_t(0), np - 1}) {
+      if (std::abs(pts[i].x()) > 1e-9 * size)
+        throw std::invalid_argument(
+            "axisymmetric generator: an open generator must start and end on the axis (r = 0), "
+            "its end " + axi_point_text(pts[i]) + " does not");
+      pts[i].x() = 0.0;
+    }
+    for (std::size_t i = 1; i + 1 < np; ++i)
+      if (!(pts[i].x() > 0.0))
+        throw std::invalid_argument("axisymmetric generator: inner point " +
+                                    axi_point_text(pts[i]) +
+                                    " of an open generator is on the axis; only its ends may be");
+    if (pts.front().y() == pts.back().y())
+      throw std::invalid_argument(
+          "axisymmetric generator: an open generator's ends are one point of the axis; the "
+          "surface would enclose no volume along the axis");
+  }
+  const std::size_t ne = g.closed ? np : np - 1;
+  // Signed (doubled) area of the polygon (closed along the axis for an open generator, where
+  // that side adds r_a z_b - r_b z_a = 0): > 0 counter-clockwise in (r, z).
+  double area2 = 0.0;
+  for (std::size_t i = 0; i < np; ++i) area2 += axi_cross(pts[i], pts[(i + 1) % np]);
+  for (std::size_t e = 0; e < ne; ++e) {
+    if ((pts[(e + 1) % np] - pts[e]).norm() <= 1e-12 * size)
+      throw std::invalid_argument("axisymmetric generator: zero-length segment at " +
+                                  axi_point_text(pts[e]));
+  }
+  if (!(std::abs(area2) > 1e-12 * size * size))
+    throw std::invalid_argument("axisymmetric generator: the outline encloses no area");
+  // No two segments may meet except consecutive ones at their shared point.
+  for (std::size_t a = 0; a < ne; ++a)
+    for (std::size_t b = a + 1; b < ne; ++b) {
+      const bool adjacent = b == a + 1 || (g.closed && a == 0 && b == ne - 1);
+      if (adjacent) continue;
+      if (axi_segments_meet(pts[a], pts[(a + 1) % np], pts[b], pts[(b + 1) % np]))
+        throw std::invalid_argument("axisymmetric generator: the outline crosses itself (segments "
+                                    "from " + axi_point_text(pts[a]) + " and from " +
+                                    axi_point_text(pts[b]) + ")");
+    }
+  const double sense = area2 > 0.0 ? 1.0 : -1.0;  // flip the right-hand normal if clockwise
+  mesh.elements.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    AxisymmetricElement& el = mesh.elements[e];
+    el.start = pts[e];
+    el.end = pts[(e + 1) % np];
+    el.midpoint = 0.5 * (el.start + el.end);
+    const Eigen::Vector2d ds = el.end - el.start;
+    el.length = ds.norm();
+    el.normal = sense * Eigen::Vector2d(ds.y(), -ds.x()) / el.length;
+    el.r_ds = el.length * 0.5 * (el.start.x() + el.end.x());
+  }
+  for (const auto& p : pts) mesh.r_max = std::max(mesh.r_max, p.x());
+  return mesh;
+}
+
+// Halton radical inverse of i in base b (deterministic, well spread candidates).
+double axi_halton(int i, int b) {
+  double f = 1.0, x = 0.0;
+  for (; i > 0; i /= b) {
+    f /= b;
+    x += f * (i % b);
+  }
+  return x;
+}
+
+// CHIEF points: candidates of a Halton sequence over the bounding box, kept inside the polygon
+// (even-odd rule), scored by their clearance c = min(distance to the outline, r) (r: the order-n
+// interior equation vanishes on the axis like r^n); the deepest first, then greedily the
+// candidate farthest from the outline and from the points already taken (max of
+// min(c, distance to the chosen)), among those with c >= 0.2 c_max. Spread, irregular positions
+// make it unlikely that all points lie on a nodal surface of the same interior mode, the failure
+// of CHIEF (Schenck 1968; Seybert & Rengarajan, JASA 81 (1987) 1299).
+std::vector<Eigen::Vector2d> axi_chief_points(const AxiMesh& mesh, int count) {
+  std::vector<Eigen::Vector2d> chosen;
+  if (count <= 0) return chosen;
+  const auto& pts = mesh.points;
+  const std::size_t np = pts.size();
+  Eigen::Vector2d lo = pts[0], hi = pts[0];
+  for (const auto& p : pts) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  struct Candidate {
+    Eigen::Vector2d p;
+    double clearance;
+  };
+  std::vector<Candidate> cand;
+  const int n_candidates = 4096;
+  for (int i = 1; i <= n_candidates; ++i) {
+    const Eigen::Vector2d p(lo.x() + (hi.x() - lo.x()) * axi_halton(i, 2),
+                            lo.y() + (hi.y() - lo.y()) * axi_halton(i, 3));
+    bool inside = false;  // ray to +r; the open polygon's closing side lies on r = 0 < p.r
+    double clearance = p.x();
+    for (std::size_t a = 0; a < np; ++a) {
+      const Eigen::Vector2d& u = pts[a];
+      const Eigen::Vector2d& v = pts[(a + 1) % np];
+      if ((u.y() > p.y()) != (v.y() > p.y()) &&
+          p.x() < u.x() + (p.y() - u.y()) * (v.x() - u.x()) / (v.y() - u.y()))
+        inside = !inside;
+      if (mesh.closed || a + 1 < np) clearance = std::min(clearance, axi_segment_distance(p, u, v));
+    }
+    if (inside && clearance > 0.0) cand.push_back({p, clearance});
+  }
+  if (cand.empty()) return chosen;
+  double c_max = 0.0;
+  for (const auto& c : cand) c_max = std::max(c_max, c.clearance);
+  std::vector<double> score;
+  for (const auto& c : cand) score.push_back(c.clearance >= 0.2 * c_max ? c.clearance : -1.0);
+  while (static_cast<int>(chosen.size()) < count) {
+    const auto best = std::max_element(score.begin(), score.end());
+    if (*best <= 0.0) break;
+    const Eigen::Vector2d p = cand[best - score.begin()].p;
+    chosen.push_back(p);
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      if (score[i] > 0.0) score[i] = std::min(score[i], (cand[i].p - p).norm());
+  }
+  return chosen;
+}
+
+// The trapezoidal phi-rule on [0, pi] with its order tables.
+struct AxiPhiRule {
+  int intervals = 0;
+  Eigen::VectorXd half_sin2;  // sin^2(phi_j / 2), j = 0..M
+  Eigen::MatrixXd cos_n;      // (n_max + 1) x (M + 1): w_j cos(n phi_j)
+  Eigen::MatrixXd cos_n_m1;   // (n_max + 1) x (M + 1): w_j (cos(n phi_j) - 1)
+};
+
+AxiPhiRule axi_phi_rule(int intervals, int n_max) {
+  AxiPhiRule rule;
+  rule.intervals = intervals;
+  const int np = intervals + 1;
+  rule.half_sin2.resize(np);
+  rule.cos_n.resize(n_max + 1, np);
+  rule.cos_n_m1.resize(n_max + 1, np);
+  const double h = kAxiPi / intervals;
+  for (int j = 0; j < np; ++j) {
+    const double phi = j * h;
+    const double s = std::sin(0.5 * phi);
+    rule.half_sin2(j) = s * s;
+    // 2 for [pi, 2 pi] (even integrands), 1/2 at the ends (trapezoid)
+    const double w = 2.0 * h * ((j == 0 || j == intervals) ? 0.5 : 1.0);
+    // d_n = cos(n phi) - 1 by the Chebyshev recurrence written for d: d_0 = 0,
+    // d_1 = -2 sin^2(phi/2), d_{n+1} = 2 cos(phi) d_n - d_{n-1} + 2 d_1 (accurate near phi = 0).
+    const double d1 = -2.0 * s * s, c1 = 1.0 + d1;
+    double d_prev = 0.0, d = d1;
+    rule.cos_n(0, j) = w;
+    rule.cos_n_m1(0, j) = 0.0;
+    for (int n = 1; n <= n_max; ++n) {
+      rule.cos_n(n, j) = w * (1.0 + d);
+      rule.cos_n_m1(n, j) = w * d;
+      const double d_next = 2.0 * c1 * d - d_prev + 2.0 * d1;
+      d_prev = d;
+      d = d_next;
+    }
+  }
+  return rule;
+}
+
+// A quadrature point y of the generator integral for one observation point.
+struct AxiNode {
+  int element;
+  double weight;  // Gauss weight * ds * r_y
+  double r, z;    // y
+  double nr, nz;  // outward normal at y
+  bool subtract;  // the static kernel subtracted (Sec. 2 of the file comment)
+  bool on_line;   // y on the observation point's own segment: q = 0
+};
+
+// Static (order-0, k = 0) phi-integrals of G0 and dG0/dn_y, Sec. 2.
+struct AxiStatic {
+  double g, h;
+};
+AxiStatic axi_static(double rx, double zx, const AxiNode& y) {
+  const double dz = y.z - zx;
+  const double d2 = (rx - y.r) * (rx - y.r) + dz * dz;
+  const double big_d2 = (rx + y.r) * (rx + y.r) + dz * dz;
+  const double big_d = std::sqrt(big_d2);
+  const AxisymmetricEllipticKE ke = axisymmetric_elliptic_ke(d2 / big_d2);
+  const double q = y.on_line ? 0.0 : y.nr * (y.r - rx) + y.nz * dz;
+  return {ke.K / (kAxiPi * big_d),
+          -(q * ke.E / d2 + 0.5 * y.nr / y.r * (ke.K - ke.E)) / (kAxiPi * big_d)};
+}
+
+// The shared rules and buffers of one call.
+struct AxiWork {
+  AxisymmetricQuadratureRule gauss, gauss_singular, log_singular;
+  AxiPhiRule phi;
+  double k = 0.0;
+  double tau = 0.0;  // subtract the static kernel where d < tau sqrt(r_x r_y)
+  std::vector<AxiNode> nodes;
+  Eigen::MatrixXd f, f1, mom, mom1;
+  Eigen::MatrixXcd row_g, row_h;  // (n_max + 1) x elements
+};
+
+// The Gauss points of segment e between parameters ta < tb, bisected towards x (Sec. 3).
+void axi_graded_nodes(const AxisymmetricElement& el, int e, const Eigen::Vector2d& x, double ta,
+                      double tb, int depth, AxiWork& w) {
+  const Eigen::Vector2d a = el.start + ta * (el.end - el.start);
+  const Eigen::Vector2d b = el.start + tb * (el.end - el.start);
+  const double len = (tb - ta) * el.length;
+  if (len > axi_segment_distance(x, a, b) && depth < 50) {
+    const double tm = 0.5 * (ta + tb);
+    axi_graded_nodes(el, e, x, ta, tm, depth + 1, w);
+    axi_graded_nodes(el, e, x, tm, tb, depth + 1, w);
+    return;
+  }
+  const double rho_x = x.x();
+  for (Eigen::Index g = 0; g < w.gauss.nodes.size(); ++g) {
+    const Eigen::Vector2d y = a + w.gauss.nodes(g) * (b - a);
+    AxiNode node{e, w.gauss.weights(g) * len * y.x(), y.x(), y.y(), el.normal.x(),
+                 el.normal.y(), false, false};
+    node.subtract = (y - x).norm() < w.tau * std::sqrt(rho_x * y.x());
+    w.nodes.push_back(node);
+  }
+}
+
+// One row of the equations: the order-n integrals over every element, int r_y ds int K cos(n
+// phi) dphi for K = G and dG/dn_y, of the observation point x (on element `singular`, its
+// midpoint, or -1 for an interior point), into w.row_g, w.row_h.
+void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWork& w) {
+  const int ne = static_cast<int>(mesh.elements.size());
+  const int nn = static_cast<int>(w.phi.cos_n.rows());
+  const double rx = x.x(), zx = x.y();
+  w.nodes.clear();
+  w.row_g.setZero(nn, ne);
+  w.row_h.setZero(nn, ne);
+  Eigen::VectorXd static_g = Eigen::VectorXd::Zero(ne), static_h = Eigen::VectorXd::Zero(ne);
+
+  for (int e = 0; e < ne; ++e) {
+    const AxisymmetricElement& el = mesh.elements[e];
+    if (e == singular) {
+      // Sec. 3: two halves from the midpoint, u = distance / (L/2).
+      const double half = 0.5 * el.length;
+      for (const Eigen::Vector2d& tip : {el.start, el.end}) {
+        auto at = [&](double u) -> AxiNode {
+          const Eigen::Vector2d y = el.midpoint + u * (tip - el.midpoint);
+          return {e, 0.0, y.x(), y.y(), el.normal.x(), el.normal.y(), true, true};
+        };
+        // log coefficients of ln(1/u): S_g = 2 L(m1) / (pi D), S_h = -(n_r / (2 r_y)) S_g
+        auto log_coefficients = [&](const AxiNode& y) -> AxiStatic {
+          const double dz = y.z - zx;
+          const double big_d2 = (rx + y.r) * (rx + y.r) + dz * dz;
+          const double m1 = ((rx - y.r) * (rx - y.r) + dz * dz) / big_d2;
+          const double lm = 0.5 * (1.0 + m1 * (0.25 + m1 * 9.0 / 64.0));
+          const double sg = 2.0 * lm / (kAxiPi * std::sqrt(big_d2));
+          return {sg, -0.5 * y.nr / y.r * sg};
+        };
+        for (Eigen::Index g = 0; g < w.gauss_singular.nodes.size(); ++g) {
+          const double u = w.gauss_singular.nodes(g);
+          AxiNode y = at(u);
+          y.weight = w.gauss_singular.weights(g) * half * y.r;
+          const AxiStatic s = axi_static(rx, zx, y);
+          const AxiStatic c = log_coefficients(y);
+          const double log_u = std::log(1.0 / u);
+          static_g(e) += y.weight * (s.g - c.g * log_u);
+          static_h(e) += y.weight * (s.h - c.h * log_u);
+          w.nodes.push_back(y);
+        }
+        for (Eigen::Index g = 0; g < w.log_singular.nodes.size(); ++g) {
+          const AxiNode y = at(w.log_singular.nodes(g));
+          const double wt = w.log_singular.weights(g) * half * y.r;
+          const AxiStatic c = log_coefficients(y);
+          static_g(e) += wt * c.g;
+          static_h(e) += wt * c.h;
+        }
+      }
+      continue;
+    }
+    // Long segments first cut to k L <= 1.5, then graded towards x.
+    const int pieces = std::max(1, static_cast<int>(std::ceil(w.k * el.length / 1.5)));
+    for (int p = 0; p < pieces; ++p)
+      axi_graded_nodes(el, e, x, double(p) / pieces, double(p + 1) / pieces, 0, w);
+  }
+  for (const AxiNode& y : w.nodes)
+    if (y.subtract && !y.on_line) {
+      const AxiStatic s = axi_static(rx, zx, y);
+      static_g(y.element) += y.weight * s.g;
+      static_h(y.element) += y.weight * s.h;
+    }
+
+  // The phi-integrands at every node (Sec. 1, 2): columns Re G, Im G, Re dG/dn, Im dG/dn (for a
+  // subtracted node G - G0 and dG/dn - dG0/dn), and G0, dG0/dn for the subtracted ones.
+  const int nq = static_cast<int>(w.nodes.size());
+  int ns = 0;
+  for (const AxiNode& y : w.nodes) ns += y.subtract;
+  const int np = w.phi.intervals + 1;
+  w.f.resize(np, 4 * nq);
+  w.f1.resize(np, 2 * std::max(ns, 1));
+  const double k = w.k;
+  const double inv4pi = 1.0 / (4.0 * kAxiPi);
+  int is = 0;
+  for (int iq = 0; iq < nq; ++iq) {
+    const AxiNode& y = w.nodes[iq];
+    const double dz = y.z - zx;
+    const double d2 = (rx - y.r) * (rx - y.r) + dz * dz;
+    const double c4 = 4.0 * rx * y.r;
+    const double q = y.on_line ? 0.0 : y.nr * (y.r - rx) + y.nz * dz;
+    const double p2 = 2.0 * y.nr * rx;
+    double* fg_re = w.f.col(4 * iq).data();
+    double* fg_im = w.f.col(4 * iq + 1).data();
+    double* fh_re = w.f.col(4 * iq + 2).data();
+    double* fh_im = w.f.col(4 * iq + 3).data();
+    if (!y.subtract) {
+      for (int j = 0; j < np; ++j) {
+        const double s2 = w.phi.half_sin2(j);
+        const double r = std::sqrt(d2 + c4 * s2);
+        const double inv_r = 1.0 / r;
+        const double kr = k * r;
+        const double c = std::cos(kr), s = std::sin(kr);
+        const double g = inv4pi * inv_r;
+        fg_re[j] = c * g;
+        fg_im[j] = -s * g;
+        // dG/dn = -e^{-ikR} (1 + ikR) P / (4 pi R^3), e^{-ikR}(1 + ikR) = c + kR s + i (kR c - s)
+        const double hp = -(q + p2 * s2) * g * inv_r * inv_r;
+        fh_re[j] = (c + kr * s) * hp;
+        fh_im[j] = (kr * c - s) * hp;
+      }
+    } else {
+      double* f0g = w.f1.col(2 * is).data();
+      double* f0h = w.f1.col(2 * is + 1).data();
+      for (int j = 0; j < np; ++j) {
+        const double s2 = w.phi.half_sin2(j);
+        const double r = std::sqrt(d2 + c4 * s2);
+        const double inv_r = 1.0 / r;
+        const double kr = k * r;
+        const double sh = std::sin(0.5 * kr), ch = std::cos(0.5 * kr);
+        const double s = 2.0 * sh * ch, cm1 = -2.0 * sh * sh;  // sin kR, cos kR - 1
+        const double g = inv4pi * inv_r;
+        fg_re[j] = cm1 * g;  // (e^{-ikR} - 1) / (4 pi R)
+        fg_im[j] = -s * g;
+        const double hp = -(q + p2 * s2) * g * inv_r * inv_r;  // dG0/dn
+        // e^{-ikR}(1 + ikR) - 1 = (cos kR - 1 + kR sin kR) + i (kR cos kR - sin kR)
+        fh_re[j] = (cm1 + kr * s) * hp;
+        fh_im[j] = (kr * (1.0 + cm1) - s) * hp;
+        f0g[j] = g;
+        f0h[j] = hp;
+      }
+      ++is;
+    }
+  }
+  // All orders at once: moments = (w_j cos(n phi_j)) x integrands.
+  w.mom.noalias() = w.phi.cos_n * w.f;
+  if (ns > 0) w.mom1.noalias() = w.phi.cos_n_m1 * w.f1.leftCols(2 * ns);
+  is = 0;
+  for (int iq = 0; iq < nq; ++iq) {
+    const AxiNode& y = w.nodes[iq];
+    for (int n = 0; n < nn; ++n) {
+      axi_cd g(w.mom(n, 4 * iq), w.mom(n, 4 * iq + 1));
+      axi_cd h(w.mom(n, 4 * iq + 2), w.mom(n, 4 * iq + 3));
+      if (y.subtract) {
+        g += w.mom1(n, 2 * is);
+        h += w.mom1(n, 2 * is + 1);
+      }
+      w.row_g(n, y.element) += y.weight * g;
+      w.row_h(n, y.element) += y.weight * h;
+    }
+    is += y.subtract;
+  }
+  for (int n = 0; n < nn; ++n) {
+    w.row_g.row(n) += static_g.transpose().cast<axi_cd>();
+    w.row_h.row(n) += static_h.transpose().cast<axi_cd>();
+  }
+}
+
+double axi_order_weight(int n) { return n == 0 ? 2.0 * kAxiPi : kAxiPi; }
+
+}  // namespace
+
+std::vector<AxisymmetricElement> axisymmetric_elements(const AxisymmetricGenerator& generator) {
+  return axi_mesh(generator).elements;
+}
+
+std::vector<Eigen::Vector2d> axisymmetric_chief_points(const AxisymmetricGenerator& generator,
+                                                       int count) {
+  if (count < 0)
+    throw std::invalid_argument("CHIEF points: count " + std::to_string(count) + " < 0");
+  return axi_chief_points(axi_mesh(generator), count);
+}
+
+std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerator& generator,
+                                                      double k,
+                                                      const std::vector<Eigen::MatrixXd>& patterns,
+                                                      const Fluid& fluid,
+                                                      const AxisymmetricBemOptions& options) {
+  if (!(k > 0.0) || !std::isfinite(k))
+    throw std::invalid_argument("axisymmetric BEM: wavenumber k = " + std::to_string(k) +
+                                " 1/m; radiation needs a finite k > 0");
+  if (!(fluid.density > 0.0) || !(fluid.sound_speed > 0.0))
+    throw std::invalid_argument("axisymmetric BEM: the fluid needs density > 0 and sound speed > 0");
+  if (options.gauss_points < 1 || options.gauss_points > 20)
+    throw std::invalid_argument("axisymmetric BEM: gauss_points " +
+                                std::to_string(options.gauss_points) + " outside 1..20");
+  if (options.chief_points < 0)
+    throw std::invalid_argument("axisymmetric BEM: chief_points " +
+                                std::to_string(options.chief_points) + " < 0");
+  if (options.phi_intervals < 0)
+    throw std::invalid_argument("axisymmetric BEM: phi_intervals " +
+                                std::to_string(options.phi_intervals) + " < 0");
+  const AxiMesh mesh = axi_mesh(generator);
+  const int ne = static_cast<int>(mesh.elements.size());
+  int n_max = -1;
+  for (std::size_t n = 0; n < patterns.size(); ++n) {
+    if (patterns[n].size() == 0) continue;
+    if (patterns[n].rows() != ne)
+      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
+                                  " has " + std::to_string(patterns[n].rows()) +
+                                  " rows; the generator has " + std::to_string(ne) + " elements");
+    if (!patterns[n].allFinite())
+      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
+                                  " has non-finite velocities");
+    n_max = static_cast<int>(n);
+  }
+  std::vector<Eigen::MatrixXcd> result(patterns.size());
+  if (n_max < 0) return result;
+
+  const std::vector<Eigen::Vector2d> chief = axi_chief_points(mesh, options.chief_points);
+  const int nc = static_cast<int>(chief.size());
+  const int rows = ne + nc;
+
+  AxiWork w;
+  w.k = k;
+  w.gauss = axisymmetric_gauss_legendre(options.gauss_points);
+  w.gauss_singular = axisymmetric_gauss_legendre(8);
+  w.log_singular = axisymmetric_log_gauss(8);
+  // Sec. 1: 2 M > k r_max + n_max with a margin for the tails of the Fourier coefficients of
+  // e^{-ikR(phi)} (Bessel-like, decaying past order k r + (k r)^{1/3}).
+  const double kr = k * mesh.r_max;
+  const int intervals =
+      options.phi_intervals > 0
+          ? options.phi_intervals
+          : std::max(16, static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
+  w.phi = axi_phi_rule(intervals, n_max);
+  w.tau = 10.0 / intervals;
+
+  std::vector<Eigen::MatrixXcd> g_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
+  std::vector<Eigen::MatrixXcd> h_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
+  for (int row = 0; row < rows; ++row) {
+    const bool surface = row < ne;
+    axi_row(mesh, surface ? mesh.elements[row].midpoint : chief[row - ne], surface ? row : -1, w);
+    for (int n = 0; n <= n_max; ++n) {
+      g_n[n].row(row) = w.row_g.row(n);
+      h_n[n].row(row) = w.row_h.row(n);
+    }
+  }
+
+  const axi_cd ik_rho_c(0.0, k * fluid.impedance());
+  for (int n = 0; n <= n_max; ++n) {
+    if (patterns[n].size() == 0) continue;
+    // [1/2 I - H; -H_chief] p = i k rho c [G; G_chief] v, least squares (Householder QR).
+    Eigen::MatrixXcd a = -h_n[n];
+    a.topRows(ne).diagonal().array() += 0.5;
+    const Eigen::MatrixXcd rhs = ik_rho_c * (g_n[n] * patterns[n].cast<axi_cd>());
+    const Eigen::MatrixXcd p = a.householderQr().solve(rhs);
+    // W = (1/2) Re (V a)^H D (P a), D = diag(r_ds c_n): P_n = (M + M^H) / 4, M = V^T D P.
+    Eigen::VectorXd d(ne);
+    for (int e = 0; e < ne; ++e) d(e) = mesh.elements[e].r_ds * axi_order_weight(n);
+    const Eigen::MatrixXcd m = patterns[n].transpose().cast<axi_cd>() * (d.asDiagonal() * p);
+    result[n] = 0.25 * (m + m.adjoint());
+  }
+  return result;
+}
+
+double radiation_efficiency(const AxisymmetricGenerator& generator, int n, double k,
+                            const Eigen::VectorXd& pattern, const Fluid& fluid,
+                            const AxisymmetricBemOptions& options) {
+  if (n < 0)
+    throw std::invalid_argument("radiation efficiency: circumferential order " +
+                                std::to_string(n) + " < 0");
+  const std::vector<AxisymmetricElement> elements = axisymmetric_elements(generator);
+  if (pattern.size() != static_cast<Eigen::Index>(elements.size()))
+    throw std::invalid_argument("radiation efficiency: the pattern has " +
+                                std::to_string(pattern.size()) + " values; the generator has " +
+                                std::to_string(elements.size()) + " elements");
+  double mean_square = 0.0;  // S <v^2> = (1/2) sum |v_e|^2 r_ds c_n
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    mean_square += 0.5 * pattern(e) * pattern(e) * elements[e].r_ds * axi_order_weight(n);
+  if (!(mean_square > 0.0))
+    throw std::invalid_argument("radiation efficiency: the velocity pattern vanishes (or is not "
+                                "finite): no mean-square velocity to refer the power to");
+  std::vector<Eigen::MatrixXd> patterns(n + 1);
+  patterns[n] = pattern;
+  const double power = radiated_power_matrices(generator, k, patterns, fluid, options)[n](0, 0).real();
+  return power / (fluid.impedance() * mean_square);
+}
+
+}  // namespace rollnoise::acoustics

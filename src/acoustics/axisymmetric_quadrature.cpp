@@ -1,0 +1,112 @@
+#include "acoustics/axisymmetric_quadrature.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rollnoise::acoustics {
+
+AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n) {
+  if (n < 1) throw std::invalid_argument("Gauss-Legendre rule: at least 1 point, got " +
+                                         std::to_string(n));
+  AxisymmetricQuadratureRule rule{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < (n + 1) / 2; ++i) {
+    // Initial guess of the i-th root of P_n on [-1, 1] (descending), then Newton with the
+    // three-term recurrence (2j+1) x P_j = (j+1) P_{j+1} + j P_{j-1} and
+    // P_n' = n (x P_n - P_{n-1}) / (x^2 - 1).
+    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = x;
+      for (int j = 1; j < n; ++j) {
+        const double p2 = ((2 * j + 1) * x * p1 - j * p0) / (j + 1);
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1.0);
+      const double dx = p1 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) break;
+    }
+    const double w = 2.0 / ((1.0 - x * x) * dp * dp);
+    // map [-1, 1] -> [0, 1], ascending
+    rule.nodes(i) = 0.5 * (1.0 - x);
+    rule.nodes(n - 1 - i) = 0.5 * (1.0 + x);
+    rule.weights(i) = rule.weights(n - 1 - i) = 0.5 * w;
+  }
+  return rule;
+}
+
+AxisymmetricQuadratureRule axisymmetric_log_gauss(int n) {
+  if (n < 1 || n > 24)
+    throw std::invalid_argument("logarithmic Gauss rule: 1 to 24 points, got " +
+                                std::to_string(n));
+  // Monic shifted Legendre polynomials pi_k on [0, 1]: pi_{k+1} = (t - a_k) pi_k - b_k pi_{k-1},
+  // a_k = 1/2, b_k = k^2 / (4 (4 k^2 - 1)); pi_k = P*_k (k!)^2 / (2k)!.
+  const int m = 2 * n;
+  std::vector<double> a(m, 0.5), b(m, 0.0), nu(m);
+  for (int k = 1; k < m; ++k) b[k] = double(k) * k / (4.0 * (4.0 * k * k - 1.0));
+  double monic = 1.0;  // (k!)^2 / (2k)!
+  nu[0] = 1.0;
+  for (int k = 1; k < m; ++k) {
+    monic *= double(k) * k / ((2.0 * k - 1.0) * (2.0 * k));
+    nu[k] = monic * ((k % 2) ? -1.0 : 1.0) / (double(k) * (k + 1));
+  }
+  // Modified Chebyshev algorithm (Gautschi 2004, Algorithm 2.1): sigma_{k,l} = int pi_k^~ pi_l,
+  // pi^~ the monic orthogonal polynomials of the weight.
+  std::vector<double> alpha(n), beta(n);
+  std::vector<double> sig_prev(m + 1, 0.0), sig(nu.begin(), nu.end()), sig_next(m + 1, 0.0);
+  sig.resize(m + 1, 0.0);
+  alpha[0] = a[0] + nu[1] / nu[0];
+  beta[0] = nu[0];
+  for (int k = 1; k < n; ++k) {
+    for (int l = k; l <= m - k - 1; ++l) {
+      sig_next[l] = sig[l + 1] - (alpha[k - 1] - a[l]) * sig[l] - beta[k - 1] * sig_prev[l] +
+                    b[l] * sig[l - 1];
+    }
+    alpha[k] = a[k] + sig_next[k + 1] / sig_next[k] - sig[k] / sig[k - 1];
+    beta[k] = sig_next[k] / sig[k - 1];
+    sig_prev.swap(sig);
+    sig.swap(sig_next);
+  }
+  // Golub-Welsch: nodes the eigenvalues of the Jacobi matrix, weights beta_0 v_0j^2.
+  Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 0; k < n; ++k) {
+    jacobi(k, k) = alpha[k];
+    if (k + 1 < n) jacobi(k, k + 1) = jacobi(k + 1, k) = std::sqrt(beta[k + 1]);
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(jacobi);
+  AxisymmetricQuadratureRule rule{eig.eigenvalues(), Eigen::VectorXd(n)};
+  for (int j = 0; j < n; ++j) rule.weights(j) = beta[0] * eig.eigenvectors()(0, j) *
+                                                eig.eigenvectors()(0, j);
+  return rule;
+}
+
+AxisymmetricEllipticKE axisymmetric_elliptic_ke(double m1) {
+  if (!(m1 > 0.0 && m1 <= 1.0))
+    throw std::invalid_argument("complete elliptic integrals: complementary parameter m1 = " +
+                                std::to_string(m1) + " outside (0, 1]");
+  const double pi = 3.14159265358979323846;
+  double a = 1.0, b = std::sqrt(m1);
+  double c2 = 1.0 - m1;      // c_0^2 = m
+  double sum = 0.5 * c2;     // sum_j 2^{j-1} c_j^2
+  double power = 0.5;
+  for (int it = 0; it < 64; ++it) {
+    const double c = 0.5 * (a - b);
+    const double an = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = an;
+    power *= 2.0;
+    sum += power * c * c;
+    if (std::abs(c) <= 1e-17 * a) break;
+  }
+  AxisymmetricEllipticKE ke;
+  ke.K = pi / (2.0 * a);
+  ke.E = ke.K * (1.0 - sum);
+  return ke;
+}
+
+}  // namespace rollnoise::acoustics

@@ -1,0 +1,41 @@
+// Quadrature rules and special functions of the axisymmetric boundary elements
+// (acoustics/axisymmetric_bem.hpp): Gauss-Legendre, Gauss with the weight ln(1/t), and the
+// complete elliptic integrals K and E of a parameter given by its complement.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace rollnoise::acoustics {
+
+/// Nodes and weights of a rule on [0, 1]: int_0^1 w(t) f(t) dt ~ sum_j weights_j f(nodes_j).
+struct AxisymmetricQuadratureRule {
+  Eigen::VectorXd nodes;
+  Eigen::VectorXd weights;
+};
+
+/// Gauss-Legendre on [0, 1] (w = 1), exact for polynomials of degree <= 2 n - 1; n >= 1. Nodes by
+/// Newton's method on P_n (Abramowitz & Stegun 25.4.29), ascending.
+AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n);
+
+/// Gauss rule of the logarithmic weight w(t) = ln(1/t) on [0, 1], exact for polynomials of degree
+/// <= 2 n - 1; 1 <= n <= 24. Recurrence coefficients by the modified Chebyshev algorithm from the
+/// modified moments against the shifted Legendre polynomials,
+///   int_0^1 P*_0 ln(1/t) dt = 1,  int_0^1 P*_k ln(1/t) dt = (-1)^k / (k (k + 1))  (k >= 1),
+/// which is well conditioned (Gautschi, Orthogonal Polynomials: Computation and Approximation,
+/// 2004, Sec. 2.1.7 and Example 2.27); nodes and weights from the Jacobi matrix (Golub & Welsch,
+/// Math. Comp. 23, 1969).
+AxisymmetricQuadratureRule axisymmetric_log_gauss(int n);
+
+/// The complete elliptic integrals of the first and second kind,
+///   K(m) = int_0^{pi/2} (1 - m sin^2 t)^{-1/2} dt,  E(m) = int_0^{pi/2} (1 - m sin^2 t)^{1/2} dt,
+/// of the parameter m = 1 - m1, given by its complement m1 in (0, 1] so that the logarithmic end
+/// m -> 1 (K ~ ln(4 / sqrt(m1))) keeps full relative accuracy. By the arithmetic-geometric mean
+/// (Abramowitz & Stegun 17.6.1-17.6.4): K = pi / (2 a_N), E = K (1 - sum_j 2^{j-1} c_j^2),
+/// a_0 = 1, b_0 = sqrt(m1), c_0 = sqrt(m).
+struct AxisymmetricEllipticKE {
+  double K = 0.0;
+  double E = 0.0;
+};
+AxisymmetricEllipticKE axisymmetric_elliptic_ke(double m1);
+
+}  // namespace rollnoise::acoustics
