@@ -152,8 +152,8 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
   // values (io/radiation_cache.hpp)
   const std::string identity = rail_identity(id, track);
   c.sound.rail_line_table = [identity](const dynamics::RailModel& rail, const std::vector<double>& positions,
-                                       const std::vector<double>& grid, int gauss) {
-    return rail_line_gram_cached(rail, identity, positions, grid, gauss);
+                                       const std::vector<double>& grid, int gauss, int threads) {
+    return rail_line_gram_cached(rail, identity, positions, grid, gauss, threads);
   };
   return id;
 }

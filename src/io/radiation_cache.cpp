@@ -160,7 +160,7 @@ std::string rail_identity(const std::string& model, const dynamics::TrackParamet
 
 std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
     const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
-    const std::vector<double>& grid, int gauss) {
+    const std::vector<double>& grid, int gauss, int threads) {
   std::ostringstream k;
   k << identity << "positions";
   for (double x : positions) k << " " << real_text(x);
@@ -185,7 +185,7 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
         g = std::make_shared<const pipeline::RailLineGram>(std::move(r));
     }
   if (!g) {
-    g = std::make_shared<const pipeline::RailLineGram>(pipeline::rail_line_gram(rail, positions, grid, gauss));
+    g = std::make_shared<const pipeline::RailLineGram>(pipeline::rail_line_gram(rail, positions, grid, gauss, threads));
     if (!key.empty()) {
       std::string out;
       put_matrices(out, g->z);
@@ -202,7 +202,7 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
 
 std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
     const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
-    bool cache) {
+    bool cache, int threads) {
   // this process's (a study's cases, a test's runs): by the wheel's identity, n_min and the grid
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const pipeline::WheelRadiation>> kept;
@@ -223,7 +223,7 @@ std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
     if (const auto body = read_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key))
       if (auto w = parse_wheel(*body)) return remember(std::make_shared<const pipeline::WheelRadiation>(std::move(*w)));
   auto w = std::make_shared<const pipeline::WheelRadiation>(
-      pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid));
+      pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid, threads));
   if (!key.empty())
     write_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key,
                         wheel_payload(*w), "wheel radiation");
@@ -232,7 +232,7 @@ std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
 
 std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
     const std::vector<Eigen::Vector2d>& outline, bool ground, const std::vector<double>& grid,
-    const acoustics::Fluid& fluid) {
+    const acoustics::Fluid& fluid, int threads) {
   std::ostringstream k;
   k << "section " << outline.size();
   for (const auto& p : outline) k << " " << real_text(p.x()) << " " << real_text(p.y());
@@ -254,7 +254,7 @@ std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
   if (!key.empty())
     if (const auto body = read_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key))
       if (auto r = parse_rail(*body)) return remember(std::make_shared<const pipeline::RailRadiation>(std::move(*r)));
-  auto r = std::make_shared<const pipeline::RailRadiation>(pipeline::rail_radiation(outline, ground, grid, fluid));
+  auto r = std::make_shared<const pipeline::RailRadiation>(pipeline::rail_radiation(outline, ground, grid, fluid, threads));
   if (!key.empty())
     write_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key, rail_payload(*r),
                         "rail radiation");

@@ -20,12 +20,12 @@ namespace rollnoise::io {
 /// wheel_fe_modes_once) and stored. `cache`: wheel.mode_cache = "user".
 std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
     const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
-    bool cache);
+    bool cache, int threads = 1);
 
 /// The rail section's radiation on `grid`: from the cache, else computed and stored.
 std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
     const std::vector<Eigen::Vector2d>& outline, bool ground, const std::vector<double>& grid,
-    const acoustics::Fluid& fluid);
+    const acoustics::Fluid& fluid, int threads = 1);
 
 /// What a rail's response along its length depends on, for the cache's key: `model` (the rail
 /// model's identity: file, model, support, position, section) and every value of `track`, so that a
@@ -36,6 +36,6 @@ std::string rail_identity(const std::string& model, const dynamics::TrackParamet
 /// cache under `identity` (rail_identity), else computed and stored. Kept in this process too.
 std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
     const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
-    const std::vector<double>& grid, int gauss);
+    const std::vector<double>& grid, int gauss, int threads = 1);
 
 }  // namespace rollnoise::io

@@ -1,5 +1,6 @@
 #include "io/sound_case.hpp"
 
+#include "core/task_pool.hpp"
 #include "dynamics/rail_section.hpp"
 #include "io/radiation_cache.hpp"
 
@@ -14,11 +15,13 @@ pipeline::SoundCase read_sound_case(const CaseReader& r, InputProblems& problems
   problems.check([&] { s.sleeper_length = r.real("sound.sleeper_length"); });
   problems.check([&] { s.sleeper_width = r.real("sound.sleeper_width"); });
   s.rail_section = rail_section.empty() ? dynamics::uic60_outline() : rail_section;
+  int threads = 1;  // the tables' frequencies (not in their keys: the values do not depend on it)
+  problems.check([&] { threads = resolved_threads(static_cast<int>(r.integer("solver.threads"))); });
   const acoustics::Fluid fluid = s.fluid;
   const std::vector<Eigen::Vector2d> outline = s.rail_section;
   const bool ground = s.rail_ground;
-  s.rail_table = [outline, ground, fluid](const std::vector<double>& grid) {
-    return rail_radiation_cached(outline, ground, grid, fluid);
+  s.rail_table = [outline, ground, fluid, threads](const std::vector<double>& grid) {
+    return rail_radiation_cached(outline, ground, grid, fluid, threads);
   };
   if (!fe) {
     s.wheel_missing = "wheel.model = \"table\": the mode table has no wheel surface to radiate from; "
@@ -34,8 +37,8 @@ pipeline::SoundCase read_sound_case(const CaseReader& r, InputProblems& problems
   s.wheel_options = contact_options(wheel, dynamics::wheel_fe_tread(wheel.section, wheel.options));
   s.wheel_tread = [wheel] { return wheel_tread_modes(wheel); };
   const int n_min = s.wheel_options.n_min;
-  s.wheel_table = [wheel, n_min, fluid](const std::vector<double>& grid) {
-    return wheel_radiation_cached(wheel, n_min, grid, fluid, wheel.mode_cache);
+  s.wheel_table = [wheel, n_min, fluid, threads](const std::vector<double>& grid) {
+    return wheel_radiation_cached(wheel, n_min, grid, fluid, wheel.mode_cache, threads);
   };
   return s;
 }

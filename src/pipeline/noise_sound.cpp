@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "acoustics/a_weighting.hpp"
 #include "core/constants.hpp"
 
 namespace rollnoise::pipeline {
@@ -83,7 +82,7 @@ SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) 
   for (std::size_t c = 0; c < 4; ++c) {
     std::vector<double> column;
     for (const auto& b : total.power) column.push_back(b[c]);
-    total.power_a[c] = acoustics::a_weighted_total(centres, column);
+    total.power_a[c] = a_weighted_column(centres, column);
   }
   return total;
 }

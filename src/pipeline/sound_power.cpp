@@ -144,7 +144,7 @@ std::array<double, 4> a_weighted(const std::vector<double>& centres, const Sound
   for (int c = 0; c < 4; ++c) {
     std::vector<double> levels;
     for (const auto& b : bands) levels.push_back(b[static_cast<std::size_t>(c)]);
-    out[static_cast<std::size_t>(c)] = acoustics::a_weighted_total(centres, levels);
+    out[static_cast<std::size_t>(c)] = a_weighted_column(centres, levels);
   }
   return out;
 }
@@ -157,8 +157,53 @@ double power_sum(double a, double b) {
 
 }  // namespace
 
+double a_weighted_column(const std::vector<double>& centres, const std::vector<double>& levels) {
+  for (double l : levels)
+    if (!std::isfinite(l)) return kNaN;  // an empty column (the table wheel) stays empty
+  return acoustics::a_weighted_total(centres, levels);
+}
+
+namespace {
+
+// (S2), (S3) at one frequency from the transfers at the points `pts` (p positions a point).
+void add_line_gram(const RailPoints& pts, std::size_t p, const std::vector<dynamics::Receptance6>& transfers,
+                   Eigen::MatrixXcd& z, Eigen::MatrixXcd& y, Eigen::MatrixXcd& sleepers) {
+  const Eigen::Index n = static_cast<Eigen::Index>(6 * p);
+  const std::size_t spans = static_cast<std::size_t>(pts.last_span - pts.first_span + 1);
+  // per span (and per sleeper) blocks, for the tails
+  std::vector<Eigen::MatrixXcd> span_z(spans, Eigen::MatrixXcd::Zero(n, n));
+  std::vector<Eigen::MatrixXcd> span_y = span_z, sleeper_z = span_z;
+  Eigen::RowVectorXcd az(n), ay(n);
+  for (std::size_t i = 0; i < pts.x.size(); ++i) {
+    for (std::size_t b = 0; b < p; ++b) {
+      const dynamics::Receptance6& alpha = transfers[i * p + b];
+      az.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(2);
+      ay.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(1);
+    }
+    const std::size_t s = static_cast<std::size_t>(pts.span[i] - pts.first_span);
+    if (pts.is_sleeper[i]) {
+      sleeper_z[s].noalias() += az.adjoint() * az;
+    } else {
+      span_z[s].noalias() += pts.weight[i] * az.adjoint() * az;
+      span_y[s].noalias() += pts.weight[i] * ay.adjoint() * ay;
+    }
+  }
+  auto summed = [&](const std::vector<Eigen::MatrixXcd>& blocks) {
+    Eigen::MatrixXcd total = Eigen::MatrixXcd::Zero(n, n);
+    for (const auto& b : blocks) total += b;
+    close_tail(total, blocks[0], blocks[1]);
+    close_tail(total, blocks[blocks.size() - 1], blocks[blocks.size() - 2]);
+    return total;
+  };
+  z = summed(span_z);
+  y = summed(span_y);
+  sleepers = summed(sleeper_z);
+}
+
+}  // namespace
+
 RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<double>& positions,
-                            const std::vector<double>& grid, int gauss) {
+                            const std::vector<double>& grid, int gauss, int threads) {
   RailLineGram g;
   g.positions = positions;
   if (positions.empty()) return g;
@@ -169,39 +214,23 @@ RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<d
   std::vector<dynamics::RailContactPair> pairs;
   for (double x : pts.x)
     for (double xb : positions) pairs.push_back({dynamics::RailContact{x, 0.0, 0.0}, dynamics::RailContact{xb, 0.0, 0.0}});
-  const auto transfers = rail.contact_transfers(grid, pairs, true);
-  const Eigen::Index n = static_cast<Eigen::Index>(6 * p);
-  const std::size_t spans = static_cast<std::size_t>(pts.last_span - pts.first_span + 1);
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    // per span (and per sleeper) blocks, for the tails
-    std::vector<Eigen::MatrixXcd> span_z(spans, Eigen::MatrixXcd::Zero(n, n));
-    std::vector<Eigen::MatrixXcd> span_y = span_z, sleeper_z = span_z;
-    for (std::size_t i = 0; i < pts.x.size(); ++i) {
-      Eigen::RowVectorXcd az(n), ay(n);
-      for (std::size_t b = 0; b < p; ++b) {
-        const dynamics::Receptance6& alpha = transfers[k][i * p + b];
-        az.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(2);
-        ay.segment<6>(static_cast<Eigen::Index>(6 * b)) = alpha.row(1);
-      }
-      const std::size_t s = static_cast<std::size_t>(pts.span[i] - pts.first_span);
-      if (pts.is_sleeper[i]) {
-        sleeper_z[s] += az.adjoint() * az;
-      } else {
-        span_z[s] += pts.weight[i] * az.adjoint() * az;
-        span_y[s] += pts.weight[i] * ay.adjoint() * ay;
-      }
-    }
-    auto summed = [&](const std::vector<Eigen::MatrixXcd>& blocks) {
-      Eigen::MatrixXcd total = Eigen::MatrixXcd::Zero(n, n);
-      for (const auto& b : blocks) total += b;
-      close_tail(total, blocks[0], blocks[1]);
-      close_tail(total, blocks[blocks.size() - 1], blocks[blocks.size() - 2]);
-      return total;
-    };
-    g.z.push_back(summed(span_z));
-    g.y.push_back(summed(span_y));
-    g.sleepers.push_back(summed(sleeper_z));
+  const std::size_t nf = grid.size();
+  g.z.resize(nf), g.y.resize(nf), g.sleepers.resize(nf);
+  if (rail.samples_grid()) {  // the waveguide samples the whole grid: one call
+    const auto transfers = rail.contact_transfers(grid, pairs, true);
+    for (std::size_t k = 0; k < nf; ++k) add_line_gram(pts, p, transfers[k], g.z[k], g.y[k], g.sleepers[k]);
+    return g;
   }
+  // every frequency alone (the beams): a few at a time on the threads, without keeping them all
+  constexpr std::size_t kChunk = 4;
+  parallel_for((nf + kChunk - 1) / kChunk, threads, [&](std::size_t c, int) {
+    const std::size_t k0 = c * kChunk, k1 = std::min(nf, k0 + kChunk);
+    const std::vector<double> chunk(grid.begin() + static_cast<std::ptrdiff_t>(k0),
+                                    grid.begin() + static_cast<std::ptrdiff_t>(k1));
+    const auto transfers = rail.contact_transfers(chunk, pairs, true);
+    for (std::size_t k = k0; k < k1; ++k)
+      add_line_gram(pts, p, transfers[k - k0], g.z[k], g.y[k], g.sleepers[k]);
+  });
   return g;
 }
 
@@ -255,7 +284,7 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   else
     r.rail = std::make_shared<const RailRadiation>(rail_radiation(
         sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section, sound.rail_ground,
-        grid, sound.fluid));
+        grid, sound.fluid, threads));
 
   // the rails' Gram matrices (S2), (S3): Gauss points a span from the bending wavelength at the top
   // of the grid (12 a span up to 5 kHz: 2.4 wavelengths of |u|^2 in a 0.6 m span)
@@ -265,8 +294,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     if (std::none_of(positions.begin(), positions.end(), [&](double x) { return std::abs(x - c.rail_x) <= 1e-12; }))
       positions.push_back(c.rail_x);
   const std::shared_ptr<const RailLineGram> line =
-      sound.rail_line_table ? sound.rail_line_table(rail, positions, grid, gauss)
-                            : std::make_shared<const RailLineGram>(rail_line_gram(rail, positions, grid, gauss));
+      sound.rail_line_table ? sound.rail_line_table(rail, positions, grid, gauss, threads)
+                            : std::make_shared<const RailLineGram>(rail_line_gram(rail, positions, grid, gauss, threads));
   std::vector<RailGram> rails;
   for (int side : {1, -1}) rails.push_back(rail_gram(*line, contacts, side));
 

@@ -68,7 +68,7 @@ struct RailLineGram {
   std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency
 };
 RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<double>& positions,
-                            const std::vector<double>& grid, int gauss);
+                            const std::vector<double>& grid, int gauss, int threads = 1);
 
 /// What the sound power needs besides the loop (read by io from the [sound] keys).
 struct SoundCase {
@@ -89,7 +89,7 @@ struct SoundCase {
   /// computed here.
   std::function<std::shared_ptr<const RailLineGram>(
       const dynamics::RailModel& rail, const std::vector<double>& positions,
-      const std::vector<double>& grid, int gauss)>
+      const std::vector<double>& grid, int gauss, int threads)>
       rail_line_table;
   /// Why the wheel has no sound (empty when it has): e.g. the table wheel.
   std::string wheel_missing;
@@ -128,6 +128,10 @@ struct RailGram {
   std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency, 4 m x 4 m
 };
 RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts, int side);
+
+/// The A-weighted total (IEC 61672-1) of one column of band levels; NaN when a band is not finite
+/// (the table wheel's empty column).
+double a_weighted_column(const std::vector<double>& centres, const std::vector<double>& levels);
 
 /// A physical wheel: the contacts (indices into the loop's contacts) on it.
 struct SoundWheel {

@@ -8,6 +8,7 @@
 #include "acoustics/axisymmetric_bem.hpp"
 #include "acoustics/bem2d.hpp"
 #include "core/constants.hpp"
+#include "core/task_pool.hpp"
 #include "noise/bands.hpp"
 
 namespace rollnoise::pipeline {
@@ -124,7 +125,8 @@ GridPlace grid_place(const std::vector<double>& grid, double f) {
 }
 
 WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
-                               const std::vector<double>& grid, const acoustics::Fluid& fluid) {
+                               const std::vector<double>& grid, const acoustics::Fluid& fluid,
+                               int threads) {
   if (w.mesh.boundary_edges.empty())
     throw std::invalid_argument("wheel radiation: the modes have no section mesh");
   const BoundaryElements b = boundary_elements(w.mesh);
@@ -160,12 +162,13 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
   acoustics::AxisymmetricGenerator generator;
   generator.points = b.points;
   generator.closed = true;
-  for (double f : grid) {
-    const double k = 2 * kPi * f / fluid.sound_speed;
+  for (auto& order : out.orders) order.power.resize(grid.size());
+  parallel_for(grid.size(), threads, [&](std::size_t i, int) {
+    const double k = 2 * kPi * grid[i] / fluid.sound_speed;
     const std::vector<Eigen::MatrixXcd> P =
         acoustics::radiated_power_matrices(generator, k, patterns, fluid);
-    for (auto& order : out.orders) order.power.push_back(P[static_cast<std::size_t>(order.n)]);
-  }
+    for (auto& order : out.orders) order.power[i] = P[static_cast<std::size_t>(order.n)];
+  });
 
   // sigma_k = P_kk / (rho c S <v_n^2>), S <v_n^2> = (1/2) c_n sum_e l_e r_e v_e^2,
   // c_n = Int cos^2(n theta) dtheta = 2 pi (n = 0), pi (n >= 1)
@@ -186,24 +189,32 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
 }
 
 RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool ground,
-                             const std::vector<double>& grid, const acoustics::Fluid& fluid) {
+                             const std::vector<double>& grid, const acoustics::Fluid& fluid,
+                             int threads) {
   acoustics::Section2d section;
   section.outline = outline;
-  acoustics::Bem2dOptions options;
-  options.ground_plane = ground;
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    perimeter += (outline[(i + 1) % outline.size()] - outline[i]).norm();
   RailRadiation out;
   out.frequency = grid;
   out.ground = ground;
-  for (double f : grid) {
-    const double k = 2 * kPi * f / fluid.sound_speed;
+  const std::size_t n = grid.size();
+  out.vertical.resize(n), out.lateral.resize(n), out.sigma_vertical.resize(n), out.sigma_lateral.resize(n);
+  parallel_for(n, threads, [&](std::size_t i, int) {
+    const double k = 2 * kPi * grid[i] / fluid.sound_speed;
+    acoustics::Bem2dOptions options;
+    options.ground_plane = ground;
+    // 10 elements a wavelength (within 0.5 % of 4 times as many, bem2d_test), at least 40
+    options.target_elements = std::clamp(static_cast<int>(std::ceil(10 * perimeter * k / (2 * kPi))), 40, 400);
     const std::vector<acoustics::RigidRadiation2d> r = acoustics::rigid_translation_radiation_2d(
         section, k, std::vector<Eigen::Vector2d>{{0.0, 1.0}, {1.0, 0.0}}, fluid, options);
     // per unit velocity amplitude squared: <v^2> = |V|^2 / 2
-    out.vertical.push_back(0.5 * r[0].power_per_mean_square_velocity);
-    out.lateral.push_back(0.5 * r[1].power_per_mean_square_velocity);
-    out.sigma_vertical.push_back(r[0].efficiency);
-    out.sigma_lateral.push_back(r[1].efficiency);
-  }
+    out.vertical[i] = 0.5 * r[0].power_per_mean_square_velocity;
+    out.lateral[i] = 0.5 * r[1].power_per_mean_square_velocity;
+    out.sigma_vertical[i] = r[0].efficiency;
+    out.sigma_lateral[i] = r[1].efficiency;
+  });
   return out;
 }
 

@@ -66,8 +66,10 @@ struct WheelRadiation {
 
 /// The radiation of the modes of `w` with n >= n_min (w from wheel_fe_modes: with its mesh and
 /// section shapes) on `grid`. std::invalid_argument for modes without section shapes.
+/// The grid's frequencies on `threads` threads (the same result for any number).
 WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
-                               const std::vector<double>& grid, const acoustics::Fluid& fluid);
+                               const std::vector<double>& grid, const acoustics::Fluid& fluid,
+                               int threads = 1);
 
 /// The rail section's radiation per unit length.
 struct RailRadiation {
@@ -81,7 +83,9 @@ struct RailRadiation {
 
 /// `outline`: the section (y, z) in m, closed polygon (dynamics::uic60_outline() or
 /// track.rail_section); `ground`: a rigid plane at the foot's lowest z.
+/// 10 boundary elements a wavelength (at least 40); the grid on `threads` threads.
 RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool ground,
-                             const std::vector<double>& grid, const acoustics::Fluid& fluid);
+                             const std::vector<double>& grid, const acoustics::Fluid& fluid,
+                             int threads = 1);
 
 }  // namespace rollnoise::pipeline
