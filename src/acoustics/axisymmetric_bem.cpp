@@ -95,13 +95,16 @@ double axi_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
-// Whether the closed segments [a, b] and [c, d] share a point (exact orientation tests).
+// Whether the closed segments [a, b] and [c, d] share a point. Orientation tests with the
+// round-off of collinear points (cross products below 1e-12 of their factors' lengths) taken as 0.
 bool axi_segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                        const Eigen::Vector2d& d) {
-  const double d1 = axi_cross(b - a, c - a), d2 = axi_cross(b - a, d - a);
-  const double d3 = axi_cross(d - c, a - c), d4 = axi_cross(d - c, b - c);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
+  auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& s) {
+    const double x = axi_cross(q - p, s - p);
+    return std::abs(x) <= 1e-12 * (q - p).norm() * (s - p).norm() ? 0 : (x > 0 ? 1 : -1);
+  };
+  const int d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
+  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
   auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& s) {
     return std::min(p.x(), q.x()) <= s.x() && s.x() <= std::max(p.x(), q.x()) &&
            std::min(p.y(), q.y()) <= s.y() && s.y() <= std::max(p.y(), q.y());
