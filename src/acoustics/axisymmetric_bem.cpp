@@ -7,30 +7,39 @@
 //      (y - x).n_y = q + 2 n_r r_x sin^2(phi/2),  q = n_r (r_y - r_x) + n_z (z_y - z_x),
 //      G = e^{-ikR} / (4 pi R),  dG/dn_y = -e^{-ikR} (1 + ikR) (y - x).n_y / (4 pi R^3),
 //    both written without the cancellations of R^2 = A - B cos phi near R = 0. The integrands are
-//    even and 2 pi-periodic in phi, so the trapezoidal rule on [0, pi] (end weights halved, all
-//    doubled) converges geometrically (Trefethen & Weideman, SIAM Rev. 56 (2014), Thm. 3.2): the
-//    error is ~ exp(-2 M a) for M intervals, a the distance of the integrand's nearest
-//    singularity from the real axis, and the rule is exact for trigonometric polynomials of
-//    degree < 2 M. One rule serves all orders: w_j cos(n phi_j) is tabulated once per call by the
-//    Chebyshev recurrence cos((n+1) phi) = 2 cos(phi) cos(n phi) - cos((n-1) phi), and the moments
-//    of all orders of all quadrature points of one observation point are one matrix product.
-//    M is chosen from the bandwidth of e^{-ikR(phi)} (its phase changes at most at the rate
-//    k sqrt(r_x r_y) <= k r_max per radian) and of cos(n phi): 2 M > k r_max + n_max plus a margin.
+//    even and 2 pi-periodic in phi: the trapezoidal rule on [0, pi] (end weights halved, all
+//    doubled; "the far rule", M intervals) is exact for trigonometric polynomials of degree < 2 M
+//    and converges geometrically for analytic integrands (Trefethen & Weideman, SIAM Rev. 56
+//    (2014) 385, Sec. 3): with a the distance of the nearest singularity from the real phi-axis
+//    and |e^{-ikR}| <= e^{k rho a} in that strip, the error is ~ exp(-(2 M - k rho) a). So M is
+//    chosen from the bandwidths of e^{-ikR(phi)} (phase rate at most k rho <= k r_max per radian)
+//    and of cos(n phi): 2 M = k r_max + n_max + 4 (k r_max)^{1/3} + 20. One rule serves all
+//    orders: w_j cos(n phi_j) is tabulated once per call by the Chebyshev recurrence
+//    cos((n+1) phi) = 2 cos(phi) cos(n phi) - cos((n-1) phi), and the moments of all orders of all
+//    quadrature points of one observation point are one matrix product (no work per order and
+//    phi-point and pair).
 //
-// 2. The near-singular phi-integrand. 1/R has its singularity at phi ~ +-i d / rho,
-//    rho = sqrt(r_x r_y): when the meridian distance d is small against rho the peak at phi = 0
-//    is too narrow for the rule. There (d < tau rho, tau = 10 / M, so that exp(-2 M tau) < 3e-9)
-//    the static kernel of order 0 is subtracted and integrated analytically:
-//      int G cos(n phi) = int (G - G0) cos(n phi) + int G0 (cos(n phi) - 1) + int G0,  G0 = 1/(4 pi R),
-//    the first two integrands bounded (no narrow peak; their residual kinks are O(d)), and with
-//    m = 4 r_x r_y / D^2, D^2 = (r_x + r_y)^2 + (z_x - z_y)^2, 1 - m = d^2 / D^2 (Gradshteyn &
-//    Ryzhik 3.674; the same forms in Seybert et al.):
+// 2. The near-singular phi-integrand. 1/R has its singularities at phi ~ +-i d / rho,
+//    rho = sqrt(r_x r_y), d the meridian distance: the far rule is used where
+//    d >= tau rho, tau = 12 / (2 M - k r_max) (error ~ e^{-12} = 6e-6). Nearer, the static kernel
+//    of order 0 is subtracted and integrated analytically:
+//      int G cos(n phi) = int (G - G0) cos(n phi) + int G0 (cos(n phi) - 1) + int G0,
+//    G0 = 1/(4 pi R), and the same for dG/dn. The first two integrands are bounded, but
+//    G - G0 = (-ik - k^2 R/2 + i k^3 R^2/6 + ...) / (4 pi) has the odd powers of R, whose kink at
+//    phi = 0 (R -> rho |phi| as d -> 0) limits a uniform rule to O((h k rho)^2) (Euler-Maclaurin:
+//    jumps of the odd derivatives), ~10 % at k rho = 20 with the far rule's h. These integrands
+//    take "the near rule": the trapezoidal rule in t with phi = t - sin t (Sidi's sin^2
+//    transformation, Sidi, ISNM 112 (1993) 359), 2 M intervals; phi ~ t^3/6 at t = 0 turns the kink
+//    into a t^5 term (error O(h^6)), and phi' = 1 - cos t <= 2 keeps the bandwidth at twice the far
+//    rule's. With m = 4 r_x r_y / D^2, D^2 = (r_x + r_y)^2 + (z_x - z_y)^2, 1 - m = d^2 / D^2,
 //      int_0^{2 pi} G0 dphi      = K(m) / (pi D),
 //      int_0^{2 pi} dG0/dn dphi  = -(1 / (pi D)) [ q E(m) / d^2 + (n_r / (2 r_y)) (K(m) - E(m)) ],
-//    from int (A - B cos phi)^{-1/2} = 4 K / sqrt(A + B), int (A - B cos phi)^{-3/2} =
-//    4 E / ((A - B) sqrt(A + B)) and (y - x).n_y = q - n_r d^2 / (2 r_y) + n_r R^2 / (2 r_y).
-//    The same for dG/dn. After the phi-integration the kernels are log-singular in d (through
-//    K ~ ln(4 D / d)) and the double layer has q / d^2 ~ 1 / d next to corners.
+//    from int_0^{2 pi} (A - B cos phi)^{-1/2} = 4 K / sqrt(A + B),
+//    int_0^{2 pi} (A - B cos phi)^{-3/2} = 4 E / ((A - B) sqrt(A + B)) (Gradshteyn & Ryzhik
+//    3.674; the forms of Seybert et al.) and
+//      (y - x).n_y = q - n_r d^2 / (2 r_y) + n_r R^2 / (2 r_y).
+//    After the phi-integration the kernels are log-singular in d (K ~ ln(4 D / d)) and the double
+//    layer has q / d^2 ~ 1 / d next to corners.
 //
 // 3. The integral along the generator. Gauss-Legendre on each segment; a segment nearer to the
 //    observation point than its length is bisected until each piece is no longer than its
@@ -86,13 +95,16 @@ double axi_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
-// Whether the closed segments [a, b] and [c, d] share a point (exact orientation tests).
+// Whether the closed segments [a, b] and [c, d] share a point. Orientation tests with the
+// round-off of collinear points (cross products below 1e-12 of their factors' lengths) taken as 0.
 bool axi_segments_meet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                        const Eigen::Vector2d& d) {
-  const double d1 = axi_cross(b - a, c - a), d2 = axi_cross(b - a, d - a);
-  const double d3 = axi_cross(d - c, a - c), d4 = axi_cross(d - c, b - c);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
+  auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& s) {
+    const double x = axi_cross(q - p, s - p);
+    return std::abs(x) <= 1e-12 * (q - p).norm() * (s - p).norm() ? 0 : (x > 0 ? 1 : -1);
+  };
+  const int d1 = side(a, b, c), d2 = side(a, b, d), d3 = side(c, d, a), d4 = side(c, d, b);
+  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
   auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& s) {
     return std::min(p.x(), q.x()) <= s.x() && s.x() <= std::max(p.x(), q.x()) &&
            std::min(p.y(), q.y()) <= s.y() && s.y() <= std::max(p.y(), q.y());
@@ -138,8 +150,8 @@ AxiMesh axi_mesh(const AxisymmetricGenerator& g) {
     for (std::size_t i : {std::size_t(0), np - 1}) {
       if (std::abs(pts[i].x()) > 1e-9 * size)
         throw std::invalid_argument(
-            "axisymmetric generator: an open generator must start and end on the axis (r = 0), "
-            "its end " + axi_point_text(pts[i]) + " does not");
+            "axisymmetric generator: an open generator must start and end on the axis (r = 0); " +
+            axi_point_text(pts[i]) + " is an end off it");
       pts[i].x() = 0.0;
     }
     for (std::size_t i = 1; i + 1 < np; ++i)
@@ -170,9 +182,9 @@ AxiMesh axi_mesh(const AxisymmetricGenerator& g) {
       const bool adjacent = b == a + 1 || (g.closed && a == 0 && b == ne - 1);
       if (adjacent) continue;
       if (axi_segments_meet(pts[a], pts[(a + 1) % np], pts[b], pts[(b + 1) % np]))
-        throw std::invalid_argument("axisymmetric generator: the outline crosses itself (segments "
-                                    "from " + axi_point_text(pts[a]) + " and from " +
-                                    axi_point_text(pts[b]) + ")");
+        throw std::invalid_argument("axisymmetric generator: the outline crosses itself; " +
+                                    std::string("the segments from ") + axi_point_text(pts[a]) +
+                                    " and from " + axi_point_text(pts[b]) + " meet");
     }
   const double sense = area2 > 0.0 ? 1.0 : -1.0;  // flip the right-hand normal if clockwise
   mesh.elements.resize(ne);
@@ -251,7 +263,8 @@ std::vector<Eigen::Vector2d> axi_chief_points(const AxiMesh& mesh, int count) {
   return chosen;
 }
 
-// The trapezoidal phi-rule on [0, pi] with its order tables.
+// A phi-rule on [0, pi] with its order tables: the trapezoidal rule in t, phi = t (the far rule)
+// or phi = t - sin t (the near rule, Sec. 2), weights w_j = 2 h phi'(t_j) (halved at the ends).
 struct AxiPhiRule {
   int intervals = 0;
   Eigen::VectorXd half_sin2;  // sin^2(phi_j / 2), j = 0..M
@@ -259,7 +272,7 @@ struct AxiPhiRule {
   Eigen::MatrixXd cos_n_m1;   // (n_max + 1) x (M + 1): w_j (cos(n phi_j) - 1)
 };
 
-AxiPhiRule axi_phi_rule(int intervals, int n_max) {
+AxiPhiRule axi_phi_rule(int intervals, int n_max, bool graded) {
   AxiPhiRule rule;
   rule.intervals = intervals;
   const int np = intervals + 1;
@@ -268,11 +281,13 @@ AxiPhiRule axi_phi_rule(int intervals, int n_max) {
   rule.cos_n_m1.resize(n_max + 1, np);
   const double h = kAxiPi / intervals;
   for (int j = 0; j < np; ++j) {
-    const double phi = j * h;
+    const double t = j * h;
+    const double phi = graded ? t - std::sin(t) : t;
+    const double dphi_dt = graded ? 2.0 * std::pow(std::sin(0.5 * t), 2) : 1.0;  // 1 - cos t
     const double s = std::sin(0.5 * phi);
     rule.half_sin2(j) = s * s;
     // 2 for [pi, 2 pi] (even integrands), 1/2 at the ends (trapezoid)
-    const double w = 2.0 * h * ((j == 0 || j == intervals) ? 0.5 : 1.0);
+    const double w = 2.0 * h * dphi_dt * ((j == 0 || j == intervals) ? 0.5 : 1.0);
     // d_n = cos(n phi) - 1 by the Chebyshev recurrence written for d: d_0 = 0,
     // d_1 = -2 sin^2(phi/2), d_{n+1} = 2 cos(phi) d_n - d_{n-1} + 2 d_1 (accurate near phi = 0).
     const double d1 = -2.0 * s * s, c1 = 1.0 + d1;
@@ -318,11 +333,11 @@ AxiStatic axi_static(double rx, double zx, const AxiNode& y) {
 // The shared rules and buffers of one call.
 struct AxiWork {
   AxisymmetricQuadratureRule gauss, gauss_singular, log_singular;
-  AxiPhiRule phi;
+  AxiPhiRule phi_far, phi_near;
   double k = 0.0;
   double tau = 0.0;  // subtract the static kernel where d < tau sqrt(r_x r_y)
   std::vector<AxiNode> nodes;
-  Eigen::MatrixXd f, f1, mom, mom1;
+  Eigen::MatrixXd f_far, f_near, f0_near, mom_far, mom_near, mom0_near;
   Eigen::MatrixXcd row_g, row_h;  // (n_max + 1) x elements
 };
 
@@ -341,10 +356,9 @@ void axi_graded_nodes(const AxisymmetricElement& el, int e, const Eigen::Vector2
   const double rho_x = x.x();
   for (Eigen::Index g = 0; g < w.gauss.nodes.size(); ++g) {
     const Eigen::Vector2d y = a + w.gauss.nodes(g) * (b - a);
-    AxiNode node{e, w.gauss.weights(g) * len * y.x(), y.x(), y.y(), el.normal.x(),
-                 el.normal.y(), false, false};
-    node.subtract = (y - x).norm() < w.tau * std::sqrt(rho_x * y.x());
-    w.nodes.push_back(node);
+    const double weight = w.gauss.weights(g) * len * y.x();
+    const bool near = (y - x).norm() < w.tau * std::sqrt(rho_x * y.x());
+    w.nodes.push_back({e, weight, y.x(), y.y(), el.normal.x(), el.normal.y(), near, false});
   }
 }
 
@@ -353,7 +367,7 @@ void axi_graded_nodes(const AxisymmetricElement& el, int e, const Eigen::Vector2
 // midpoint, or -1 for an interior point), into w.row_g, w.row_h.
 void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWork& w) {
   const int ne = static_cast<int>(mesh.elements.size());
-  const int nn = static_cast<int>(w.phi.cos_n.rows());
+  const int nn = static_cast<int>(w.phi_far.cos_n.rows());
   const double rx = x.x(), zx = x.y();
   w.nodes.clear();
   w.row_g.setZero(nn, ne);
@@ -412,31 +426,33 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
       static_h(y.element) += y.weight * s.h;
     }
 
-  // The phi-integrands at every node (Sec. 1, 2): columns Re G, Im G, Re dG/dn, Im dG/dn (for a
-  // subtracted node G - G0 and dG/dn - dG0/dn), and G0, dG0/dn for the subtracted ones.
-  const int nq = static_cast<int>(w.nodes.size());
-  int ns = 0;
-  for (const AxiNode& y : w.nodes) ns += y.subtract;
-  const int np = w.phi.intervals + 1;
-  w.f.resize(np, 4 * nq);
-  w.f1.resize(np, 2 * std::max(ns, 1));
+  // The phi-integrands at every node (Sec. 1, 2): columns Re G, Im G, Re dG/dn, Im dG/dn on the
+  // far rule; on the near rule G - G0, dG/dn - dG0/dn and the static G0, dG0/dn.
+  int n_far = 0, n_near = 0;
+  for (const AxiNode& y : w.nodes) (y.subtract ? n_near : n_far) += 1;
+  // (buffers grow only: no allocation per row once the largest row has been seen)
+  if (w.f_far.cols() < 4 * n_far) w.f_far.resize(w.phi_far.intervals + 1, 4 * n_far);
+  if (w.f_near.cols() < 4 * n_near) w.f_near.resize(w.phi_near.intervals + 1, 4 * n_near);
+  if (w.f0_near.cols() < 2 * n_near) w.f0_near.resize(w.phi_near.intervals + 1, 2 * n_near);
   const double k = w.k;
   const double inv4pi = 1.0 / (4.0 * kAxiPi);
-  int is = 0;
-  for (int iq = 0; iq < nq; ++iq) {
-    const AxiNode& y = w.nodes[iq];
+  int i_far = 0, i_near = 0;
+  for (const AxiNode& y : w.nodes) {
     const double dz = y.z - zx;
     const double d2 = (rx - y.r) * (rx - y.r) + dz * dz;
     const double c4 = 4.0 * rx * y.r;
     const double q = y.on_line ? 0.0 : y.nr * (y.r - rx) + y.nz * dz;
     const double p2 = 2.0 * y.nr * rx;
-    double* fg_re = w.f.col(4 * iq).data();
-    double* fg_im = w.f.col(4 * iq + 1).data();
-    double* fh_re = w.f.col(4 * iq + 2).data();
-    double* fh_im = w.f.col(4 * iq + 3).data();
+    Eigen::MatrixXd& f = y.subtract ? w.f_near : w.f_far;
+    const int col = 4 * (y.subtract ? i_near : i_far);
+    double* fg_re = f.col(col).data();
+    double* fg_im = f.col(col + 1).data();
+    double* fh_re = f.col(col + 2).data();
+    double* fh_im = f.col(col + 3).data();
     if (!y.subtract) {
-      for (int j = 0; j < np; ++j) {
-        const double s2 = w.phi.half_sin2(j);
+      const Eigen::VectorXd& half_sin2 = w.phi_far.half_sin2;
+      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+        const double s2 = half_sin2(j);
         const double r = std::sqrt(d2 + c4 * s2);
         const double inv_r = 1.0 / r;
         const double kr = k * r;
@@ -449,11 +465,13 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
         fh_re[j] = (c + kr * s) * hp;
         fh_im[j] = (kr * c - s) * hp;
       }
+      ++i_far;
     } else {
-      double* f0g = w.f1.col(2 * is).data();
-      double* f0h = w.f1.col(2 * is + 1).data();
-      for (int j = 0; j < np; ++j) {
-        const double s2 = w.phi.half_sin2(j);
+      double* f0g = w.f0_near.col(2 * i_near).data();
+      double* f0h = w.f0_near.col(2 * i_near + 1).data();
+      const Eigen::VectorXd& half_sin2 = w.phi_near.half_sin2;
+      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+        const double s2 = half_sin2(j);
         const double r = std::sqrt(d2 + c4 * s2);
         const double inv_r = 1.0 / r;
         const double kr = k * r;
@@ -469,26 +487,28 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
         f0g[j] = g;
         f0h[j] = hp;
       }
-      ++is;
+      ++i_near;
     }
   }
   // All orders at once: moments = (w_j cos(n phi_j)) x integrands.
-  w.mom.noalias() = w.phi.cos_n * w.f;
-  if (ns > 0) w.mom1.noalias() = w.phi.cos_n_m1 * w.f1.leftCols(2 * ns);
-  is = 0;
-  for (int iq = 0; iq < nq; ++iq) {
-    const AxiNode& y = w.nodes[iq];
+  w.mom_far.noalias() = w.phi_far.cos_n * w.f_far.leftCols(4 * n_far);
+  w.mom_near.noalias() = w.phi_near.cos_n * w.f_near.leftCols(4 * n_near);
+  w.mom0_near.noalias() = w.phi_near.cos_n_m1 * w.f0_near.leftCols(2 * n_near);
+  i_far = i_near = 0;
+  for (const AxiNode& y : w.nodes) {
+    const Eigen::MatrixXd& mom = y.subtract ? w.mom_near : w.mom_far;
+    const int col = 4 * (y.subtract ? i_near : i_far);
     for (int n = 0; n < nn; ++n) {
-      axi_cd g(w.mom(n, 4 * iq), w.mom(n, 4 * iq + 1));
-      axi_cd h(w.mom(n, 4 * iq + 2), w.mom(n, 4 * iq + 3));
+      axi_cd g(mom(n, col), mom(n, col + 1));
+      axi_cd h(mom(n, col + 2), mom(n, col + 3));
       if (y.subtract) {
-        g += w.mom1(n, 2 * is);
-        h += w.mom1(n, 2 * is + 1);
+        g += w.mom0_near(n, 2 * i_near);
+        h += w.mom0_near(n, 2 * i_near + 1);
       }
       w.row_g(n, y.element) += y.weight * g;
       w.row_h(n, y.element) += y.weight * h;
     }
-    is += y.subtract;
+    (y.subtract ? i_near : i_far) += 1;
   }
   for (int n = 0; n < nn; ++n) {
     w.row_g.row(n) += static_g.transpose().cast<axi_cd>();
@@ -496,7 +516,9 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
   }
 }
 
-double axi_order_weight(int n) { return n == 0 ? 2.0 * kAxiPi : kAxiPi; }
+double axi_order_weight(int n) {
+  return n == 0 ? 2.0 * kAxiPi : kAxiPi;
+}
 
 }  // namespace
 
@@ -520,7 +542,8 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
     throw std::invalid_argument("axisymmetric BEM: wavenumber k = " + std::to_string(k) +
                                 " 1/m; radiation needs a finite k > 0");
   if (!(fluid.density > 0.0) || !(fluid.sound_speed > 0.0))
-    throw std::invalid_argument("axisymmetric BEM: the fluid needs density > 0 and sound speed > 0");
+    throw std::invalid_argument(
+        "axisymmetric BEM: the fluid needs density > 0 and sound speed > 0");
   if (options.gauss_points < 1 || options.gauss_points > 20)
     throw std::invalid_argument("axisymmetric BEM: gauss_points " +
                                 std::to_string(options.gauss_points) + " outside 1..20");
@@ -562,9 +585,14 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
   const int intervals =
       options.phi_intervals > 0
           ? options.phi_intervals
-          : std::max(16, static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
-  w.phi = axi_phi_rule(intervals, n_max);
-  w.tau = 10.0 / intervals;
+          : std::max(16,
+                     static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
+  w.phi_far = axi_phi_rule(intervals, n_max, false);
+  w.phi_near = axi_phi_rule(2 * intervals, n_max, true);
+  w.f_far.resize(intervals + 1, 0);
+  w.f_near.resize(2 * intervals + 1, 0);
+  w.f0_near.resize(2 * intervals + 1, 0);
+  w.tau = 12.0 / std::max(1.0, 2.0 * intervals - kr);
 
   std::vector<Eigen::MatrixXcd> g_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
   std::vector<Eigen::MatrixXcd> h_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
@@ -585,11 +613,19 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
     a.topRows(ne).diagonal().array() += 0.5;
     const Eigen::MatrixXcd rhs = ik_rho_c * (g_n[n] * patterns[n].cast<axi_cd>());
     const Eigen::MatrixXcd p = a.householderQr().solve(rhs);
-    // W = (1/2) Re (V a)^H D (P a), D = diag(r_ds c_n): P_n = (M + M^H) / 4, M = V^T D P.
+    // W = (1/2) Re (V a)^H D (P a) = (1/2) Re a^H M a, M = V^T D P, D = diag(r_ds c_n).
+    // By reciprocity (int p_1 v_2 dS = int p_2 v_1 dS) the exact M is complex symmetric, so its
+    // Hermitian part is Re M: the power matrix of real patterns is real symmetric. Collocation
+    // keeps that symmetry only to the discretisation error, and the antisymmetric part of the
+    // discrete M, small against the reactive (mass-like) impedance, is not small against the
+    // radiation resistance of a weak radiator (a high-order pattern at low k a): taken into the
+    // Hermitian part (M + M^H)/2 it would make P_n indefinite. So M is symmetrised first:
+    // P_n = (1/2) Re (M + M^T)/2, exact where M is.
     Eigen::VectorXd d(ne);
     for (int e = 0; e < ne; ++e) d(e) = mesh.elements[e].r_ds * axi_order_weight(n);
     const Eigen::MatrixXcd m = patterns[n].transpose().cast<axi_cd>() * (d.asDiagonal() * p);
-    result[n] = 0.25 * (m + m.adjoint());
+    const Eigen::MatrixXd resistance = 0.5 * (m.real() + m.real().transpose());
+    result[n] = (0.5 * resistance).cast<axi_cd>();
   }
   return result;
 }
@@ -598,8 +634,8 @@ double radiation_efficiency(const AxisymmetricGenerator& generator, int n, doubl
                             const Eigen::VectorXd& pattern, const Fluid& fluid,
                             const AxisymmetricBemOptions& options) {
   if (n < 0)
-    throw std::invalid_argument("radiation efficiency: circumferential order " +
-                                std::to_string(n) + " < 0");
+    throw std::invalid_argument("radiation efficiency: circumferential order " + std::to_string(n) +
+                                " < 0");
   const std::vector<AxisymmetricElement> elements = axisymmetric_elements(generator);
   if (pattern.size() != static_cast<Eigen::Index>(elements.size()))
     throw std::invalid_argument("radiation efficiency: the pattern has " +
@@ -609,11 +645,13 @@ double radiation_efficiency(const AxisymmetricGenerator& generator, int n, doubl
   for (std::size_t e = 0; e < elements.size(); ++e)
     mean_square += 0.5 * pattern(e) * pattern(e) * elements[e].r_ds * axi_order_weight(n);
   if (!(mean_square > 0.0))
-    throw std::invalid_argument("radiation efficiency: the velocity pattern vanishes (or is not "
-                                "finite): no mean-square velocity to refer the power to");
+    throw std::invalid_argument(
+        "radiation efficiency: the velocity pattern vanishes (or is not "
+        "finite): no mean-square velocity to refer the power to");
   std::vector<Eigen::MatrixXd> patterns(n + 1);
   patterns[n] = pattern;
-  const double power = radiated_power_matrices(generator, k, patterns, fluid, options)[n](0, 0).real();
+  const double power =
+      radiated_power_matrices(generator, k, patterns, fluid, options)[n](0, 0).real();
   return power / (fluid.impedance() * mean_square);
 }
 

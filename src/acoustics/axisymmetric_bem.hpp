@@ -32,8 +32,8 @@
 //   0 = int_S [ p dG/dn - G dp/dn ] dS  at interior points x_c,
 // and solves the overdetermined system by least squares (Householder QR).
 //
-// Power. W = (1/2) Re int_S p v^* dS, with int_0^{2 pi} cos^2(n phi) dphi = 2 pi (n = 0), pi (n >= 1),
-// and int r ds over a segment = length * (r_a + r_b) / 2.
+// Power. W = (1/2) Re int_S p v^* dS, with int_0^{2 pi} cos^2(n phi) dphi = 2 pi (n = 0) or
+// pi (n >= 1), and int r ds over a segment = length (r_a + r_b) / 2.
 #pragma once
 
 #include <Eigen/Core>
@@ -55,7 +55,7 @@ struct AxisymmetricElement {
   Eigen::Vector2d midpoint;    ///< collocation point (r, z) (m)
   Eigen::Vector2d normal;      ///< outward unit normal (n_r, n_z) (into the fluid)
   double length = 0.0;         ///< segment length (m)
-  double r_ds = 0.0;  ///< int r ds over the segment = length (r_start + r_end) / 2 (m^2)
+  double r_ds = 0.0;           ///< int r ds over the segment = length (r_start + r_end) / 2 (m^2)
 };
 
 /// The elements of a generator, in its order, with outward normals; checks the generator (see
@@ -87,7 +87,9 @@ struct AxisymmetricBemOptions {
 /// normal-velocity amplitude per element, the pattern v_e cos(n phi), m/s per unit coefficient),
 /// result[n] is the m_n x m_n Hermitian matrix P_n with the time-averaged radiated power
 ///   W = a^H P_n a  (W)
-/// of the normal velocity V = patterns[n] a (complex a). Orders with an empty pattern get an empty
+/// of the normal velocity V = patterns[n] a (complex a). P_n is real symmetric (reciprocity makes
+/// the impedance of real patterns complex symmetric; its real part is the radiation resistance,
+/// see the source). Orders with an empty pattern get an empty
 /// matrix; result.size() == patterns.size(). All orders at one wavenumber k = omega / c (1/m) in
 /// one call: the phi-integrals of the kernels of all orders come from one phi-quadrature.
 ///

@@ -9,8 +9,8 @@
 namespace rollnoise::acoustics {
 
 AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n) {
-  if (n < 1) throw std::invalid_argument("Gauss-Legendre rule: at least 1 point, got " +
-                                         std::to_string(n));
+  if (n < 1)
+    throw std::invalid_argument("Gauss-Legendre rule: at least 1 point, got " + std::to_string(n));
   AxisymmetricQuadratureRule rule{Eigen::VectorXd(n), Eigen::VectorXd(n)};
   const double pi = 3.14159265358979323846;
   for (int i = 0; i < (n + 1) / 2; ++i) {
@@ -42,8 +42,7 @@ AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n) {
 
 AxisymmetricQuadratureRule axisymmetric_log_gauss(int n) {
   if (n < 1 || n > 24)
-    throw std::invalid_argument("logarithmic Gauss rule: 1 to 24 points, got " +
-                                std::to_string(n));
+    throw std::invalid_argument("logarithmic Gauss rule: 1 to 24 points, got " + std::to_string(n));
   // Monic shifted Legendre polynomials pi_k on [0, 1]: pi_{k+1} = (t - a_k) pi_k - b_k pi_{k-1},
   // a_k = 1/2, b_k = k^2 / (4 (4 k^2 - 1)); pi_k = P*_k (k!)^2 / (2k)!.
   const int m = 2 * n;
@@ -80,8 +79,8 @@ AxisymmetricQuadratureRule axisymmetric_log_gauss(int n) {
   }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(jacobi);
   AxisymmetricQuadratureRule rule{eig.eigenvalues(), Eigen::VectorXd(n)};
-  for (int j = 0; j < n; ++j) rule.weights(j) = beta[0] * eig.eigenvectors()(0, j) *
-                                                eig.eigenvectors()(0, j);
+  for (int j = 0; j < n; ++j)
+    rule.weights(j) = beta[0] * eig.eigenvectors()(0, j) * eig.eigenvectors()(0, j);
   return rule;
 }
 
@@ -91,8 +90,8 @@ AxisymmetricEllipticKE axisymmetric_elliptic_ke(double m1) {
                                 std::to_string(m1) + " outside (0, 1]");
   const double pi = 3.14159265358979323846;
   double a = 1.0, b = std::sqrt(m1);
-  double c2 = 1.0 - m1;      // c_0^2 = m
-  double sum = 0.5 * c2;     // sum_j 2^{j-1} c_j^2
+  double c2 = 1.0 - m1;   // c_0^2 = m
+  double sum = 0.5 * c2;  // sum_j 2^{j-1} c_j^2
   double power = 0.5;
   for (int it = 0; it < 64; ++it) {
     const double c = 0.5 * (a - b);
