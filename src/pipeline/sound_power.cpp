@@ -333,16 +333,21 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   lp.rail = lp.sleepers = lp.wheel;
   lp.input = lp.wheel_total;
 
+  // the sleepers' piston efficiency (smooth in f) on the grid, the modal rows as complex once
+  std::vector<double> piston;
+  for (double fg : grid)
+    piston.push_back(acoustics::rectangular_piston_efficiency(2 * kPi * fg / sound.fluid.sound_speed,
+                                                              sound.sleeper_length, sound.sleeper_width));
+  std::vector<Eigen::MatrixXcd> psi_cos, psi_sin;
+  for (const auto& m : modal) psi_cos.push_back(m.cos_set.cast<cdouble>()), psi_sin.push_back(m.sin_set.cast<cdouble>());
   parallel_for(nl, threads, [&](std::size_t k, int) {
     const double f = loop.frequency[k], omega = angular(f), w2 = omega * omega;
     const GridPlace at = grid_place(grid, f);
-    const double kk = omega / sound.fluid.sound_speed;
     const double pv = interpolated(r.rail->vertical, at), pl = interpolated(r.rail->lateral, at);
     const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
     const cdouble kb = cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
     const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * w2));
-    const double sleeper_factor =
-        tau2 * 0.5 * sound.fluid.impedance() * acoustics::rectangular_piston_efficiency(kk, sound.sleeper_length, sound.sleeper_width) * area;
+    const double sleeper_factor = tau2 * 0.5 * sound.fluid.impedance() * interpolated(piston, at) * area;
     std::vector<Eigen::MatrixXcd> gz, gy, gs;
     for (const RailGram& g : rails) {
       if (g.contacts.empty()) {
@@ -388,8 +393,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
         if (!r.wheel) continue;
         // (S1): the wheel's modes under its contacts' forces
         const Eigen::VectorXcd F = stacked_forces(loop, wheels[w].contacts, k, src);
-        const Eigen::VectorXcd qc = R[w].cwiseProduct(modal[w].cos_set.cast<cdouble>() * F);
-        const Eigen::VectorXcd qs = R[w].cwiseProduct(modal[w].sin_set.cast<cdouble>() * F);
+        const Eigen::VectorXcd qc = R[w].cwiseProduct(psi_cos[w] * F);
+        const Eigen::VectorXcd qs = R[w].cwiseProduct(psi_sin[w] * F);
         double power = 0.0;
         for (std::size_t o = 0; o < pw.size(); ++o) {
           const std::vector<int>& rows = order_rows[o];
