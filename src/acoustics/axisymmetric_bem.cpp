@@ -339,7 +339,8 @@ struct AxiWork {
   double tau = 0.0;  // subtract the static kernel where d < tau sqrt(r_x r_y)
   std::vector<AxiNode> nodes;
   Eigen::MatrixXd f_far, f_near, f0_near, mom_far, mom_near, mom0_near;
-  Eigen::MatrixXcd row_g, row_h;  // orders x elements
+  Eigen::MatrixXcd row_g, row_h;           // orders x elements
+  std::vector<double> kr, cos_kr, sin_kr;  // phase buffers, one phi-rule long
 };
 
 // The Gauss points of segment e between parameters ta < tb, bisected towards x (Sec. 3).
@@ -452,12 +453,14 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
     double* fh_im = f.col(col + 3).data();
     if (!y.subtract) {
       const Eigen::VectorXd& half_sin2 = w.phi_far.half_sin2;
-      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+      const int np = static_cast<int>(half_sin2.size());
+      for (int j = 0; j < np; ++j) w.kr[j] = k * std::sqrt(d2 + c4 * half_sin2(j));
+      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());
+      for (int j = 0; j < np; ++j) {
         const double s2 = half_sin2(j);
-        const double r = std::sqrt(d2 + c4 * s2);
-        const double inv_r = 1.0 / r;
-        const double kr = k * r;
-        const double c = std::cos(kr), s = std::sin(kr);
+        const double kr = w.kr[j];
+        const double inv_r = k / kr;
+        const double c = w.cos_kr[j], s = w.sin_kr[j];
         const double g = inv4pi * inv_r;
         fg_re[j] = c * g;
         fg_im[j] = -s * g;
@@ -471,12 +474,14 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
       double* f0g = w.f0_near.col(2 * i_near).data();
       double* f0h = w.f0_near.col(2 * i_near + 1).data();
       const Eigen::VectorXd& half_sin2 = w.phi_near.half_sin2;
-      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+      const int np = static_cast<int>(half_sin2.size());
+      for (int j = 0; j < np; ++j) w.kr[j] = 0.5 * k * std::sqrt(d2 + c4 * half_sin2(j));
+      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());  // of kR/2
+      for (int j = 0; j < np; ++j) {
         const double s2 = half_sin2(j);
-        const double r = std::sqrt(d2 + c4 * s2);
-        const double inv_r = 1.0 / r;
-        const double kr = k * r;
-        const double sh = std::sin(0.5 * kr), ch = std::cos(0.5 * kr);
+        const double kr = 2.0 * w.kr[j];
+        const double inv_r = k / kr;
+        const double sh = w.sin_kr[j], ch = w.cos_kr[j];
         const double s = 2.0 * sh * ch, cm1 = -2.0 * sh * sh;  // sin kR, cos kR - 1
         const double g = inv4pi * inv_r;
         fg_re[j] = cm1 * g;  // (e^{-ikR} - 1) / (4 pi R)
@@ -599,6 +604,9 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
   w.f_near.resize(near_intervals + 1, 0);
   w.f0_near.resize(near_intervals + 1, 0);
   w.tau = 12.0 / std::max(1.0, 2.0 * intervals - kr);
+  w.kr.resize(near_intervals + 1);
+  w.cos_kr.resize(near_intervals + 1);
+  w.sin_kr.resize(near_intervals + 1);
 
   // The order-n integrals of every row (surface collocation points, then CHIEF points).
   std::vector<Eigen::MatrixXcd> g_n(no), h_n(no);
