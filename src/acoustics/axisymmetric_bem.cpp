@@ -68,7 +68,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <stdexcept>
 #include <string>
 

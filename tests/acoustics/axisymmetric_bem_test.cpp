@@ -190,9 +190,15 @@ TEST(AxisymmetricBem, OutwardNormalsForBothOrientationsAndChiefPointsInside) {
   for (bool ccw : {true, false}) {
     for (const ac::AxisymmetricElement& e :
          ac::axisymmetric_elements(rectangular_ring(0.3, 0.4, 0.1, 100.0, ccw))) {
-      if (std::abs(e.midpoint.x() - 0.4) < 1e-12) EXPECT_NEAR(e.normal.x(), 1.0, 1e-12);
-      if (std::abs(e.midpoint.x() - 0.3) < 1e-12) EXPECT_NEAR(e.normal.x(), -1.0, 1e-12);
-      if (std::abs(e.midpoint.y() - 0.05) < 1e-12) EXPECT_NEAR(e.normal.y(), 1.0, 1e-12);
+      if (std::abs(e.midpoint.x() - 0.4) < 1e-12) {
+        EXPECT_NEAR(e.normal.x(), 1.0, 1e-12);
+      }
+      if (std::abs(e.midpoint.x() - 0.3) < 1e-12) {
+        EXPECT_NEAR(e.normal.x(), -1.0, 1e-12);
+      }
+      if (std::abs(e.midpoint.y() - 0.05) < 1e-12) {
+        EXPECT_NEAR(e.normal.y(), 1.0, 1e-12);
+      }
     }
   }
   const std::vector<Eigen::Vector2d> in_sphere = ac::axisymmetric_chief_points(sphere(40), 16);
@@ -382,7 +388,7 @@ TEST(AxisymmetricBem, RadiationEfficiencyLimits) {
   }
   const ac::AxisymmetricGenerator g = sphere(60);
   const std::vector<ac::AxisymmetricElement> els = ac::axisymmetric_elements(g);
-  for (const auto [l, n] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{2, 2}}) {
+  for (const auto& [l, n] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{2, 2}}) {
     const Eigen::VectorXd v = sphere_patterns(els, n, l).rightCols(1);
     const double s1 = ac::radiation_efficiency(g, n, 0.05, v, fluid);
     const double s2 = ac::radiation_efficiency(g, n, 0.1, v, fluid);
