@@ -29,9 +29,10 @@
 //    phi = 0 (R -> rho |phi| as d -> 0) limits a uniform rule to O((h k rho)^2) (Euler-Maclaurin:
 //    jumps of the odd derivatives), ~10 % at k rho = 20 with the far rule's h. These integrands
 //    take "the near rule": the trapezoidal rule in t with phi = t - sin t (Sidi's sin^2
-//    transformation, Sidi, ISNM 112 (1993) 359), 2 M intervals; phi ~ t^3/6 at t = 0 turns the kink
-//    into a t^5 term (error O(h^6)), and phi' = 1 - cos t <= 2 keeps the bandwidth at twice the far
-//    rule's. With m = 4 r_x r_y / D^2, D^2 = (r_x + r_y)^2 + (z_x - z_y)^2, 1 - m = d^2 / D^2,
+//    transformation, Sidi, ISNM 112 (1993) 359), 3 M / 2 intervals: phi ~ t^3/6 at t = 0 turns
+//    the kink into a t^5 term (error O(h^6)); the phase rate in t, k rho cos(phi/2) phi'(t) with
+//    phi' = 1 - cos t, stays below 1.2 k rho. With m = 4 r_x r_y / D^2,
+//    D^2 = (r_x + r_y)^2 + (z_x - z_y)^2, 1 - m = d^2 / D^2,
 //      int_0^{2 pi} G0 dphi      = K(m) / (pi D),
 //      int_0^{2 pi} dG0/dn dphi  = -(1 / (pi D)) [ q E(m) / d^2 + (n_r / (2 r_y)) (K(m) - E(m)) ],
 //    from int_0^{2 pi} (A - B cos phi)^{-1/2} = 4 K / sqrt(A + B),
@@ -67,7 +68,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -265,21 +265,24 @@ std::vector<Eigen::Vector2d> axi_chief_points(const AxiMesh& mesh, int count) {
 
 // A phi-rule on [0, pi] with its order tables: the trapezoidal rule in t, phi = t (the far rule)
 // or phi = t - sin t (the near rule, Sec. 2), weights w_j = 2 h phi'(t_j) (halved at the ends).
+// Rows of the tables: the requested orders, in their order.
 struct AxiPhiRule {
   int intervals = 0;
   Eigen::VectorXd half_sin2;  // sin^2(phi_j / 2), j = 0..M
-  Eigen::MatrixXd cos_n;      // (n_max + 1) x (M + 1): w_j cos(n phi_j)
-  Eigen::MatrixXd cos_n_m1;   // (n_max + 1) x (M + 1): w_j (cos(n phi_j) - 1)
+  Eigen::MatrixXd cos_n;      // orders x (M + 1): w_j cos(n phi_j)
+  Eigen::MatrixXd cos_n_m1;   // orders x (M + 1): w_j (cos(n phi_j) - 1)
 };
 
-AxiPhiRule axi_phi_rule(int intervals, int n_max, bool graded) {
+AxiPhiRule axi_phi_rule(int intervals, const std::vector<int>& orders, bool graded) {
   AxiPhiRule rule;
   rule.intervals = intervals;
   const int np = intervals + 1;
+  const int no = static_cast<int>(orders.size());
   rule.half_sin2.resize(np);
-  rule.cos_n.resize(n_max + 1, np);
-  rule.cos_n_m1.resize(n_max + 1, np);
+  rule.cos_n.resize(no, np);
+  rule.cos_n_m1.resize(no, np);
   const double h = kAxiPi / intervals;
+  std::vector<double> d(orders.back() + 1);
   for (int j = 0; j < np; ++j) {
     const double t = j * h;
     const double phi = graded ? t - std::sin(t) : t;
@@ -290,16 +293,13 @@ AxiPhiRule axi_phi_rule(int intervals, int n_max, bool graded) {
     const double w = 2.0 * h * dphi_dt * ((j == 0 || j == intervals) ? 0.5 : 1.0);
     // d_n = cos(n phi) - 1 by the Chebyshev recurrence written for d: d_0 = 0,
     // d_1 = -2 sin^2(phi/2), d_{n+1} = 2 cos(phi) d_n - d_{n-1} + 2 d_1 (accurate near phi = 0).
-    const double d1 = -2.0 * s * s, c1 = 1.0 + d1;
-    double d_prev = 0.0, d = d1;
-    rule.cos_n(0, j) = w;
-    rule.cos_n_m1(0, j) = 0.0;
-    for (int n = 1; n <= n_max; ++n) {
-      rule.cos_n(n, j) = w * (1.0 + d);
-      rule.cos_n_m1(n, j) = w * d;
-      const double d_next = 2.0 * c1 * d - d_prev + 2.0 * d1;
-      d_prev = d;
-      d = d_next;
+    d[0] = 0.0;
+    if (d.size() > 1) d[1] = -2.0 * s * s;
+    for (std::size_t n = 2; n < d.size(); ++n)
+      d[n] = 2.0 * (1.0 + d[1]) * d[n - 1] - d[n - 2] + 2.0 * d[1];
+    for (int o = 0; o < no; ++o) {
+      rule.cos_n(o, j) = w * (1.0 + d[orders[o]]);
+      rule.cos_n_m1(o, j) = w * d[orders[o]];
     }
   }
   return rule;
@@ -338,7 +338,8 @@ struct AxiWork {
   double tau = 0.0;  // subtract the static kernel where d < tau sqrt(r_x r_y)
   std::vector<AxiNode> nodes;
   Eigen::MatrixXd f_far, f_near, f0_near, mom_far, mom_near, mom0_near;
-  Eigen::MatrixXcd row_g, row_h;  // (n_max + 1) x elements
+  Eigen::MatrixXcd row_g, row_h;           // orders x elements
+  std::vector<double> kr, cos_kr, sin_kr;  // phase buffers, one phi-rule long
 };
 
 // The Gauss points of segment e between parameters ta < tb, bisected towards x (Sec. 3).
@@ -451,12 +452,14 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
     double* fh_im = f.col(col + 3).data();
     if (!y.subtract) {
       const Eigen::VectorXd& half_sin2 = w.phi_far.half_sin2;
-      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+      const int np = static_cast<int>(half_sin2.size());
+      for (int j = 0; j < np; ++j) w.kr[j] = k * std::sqrt(d2 + c4 * half_sin2(j));
+      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());
+      for (int j = 0; j < np; ++j) {
         const double s2 = half_sin2(j);
-        const double r = std::sqrt(d2 + c4 * s2);
-        const double inv_r = 1.0 / r;
-        const double kr = k * r;
-        const double c = std::cos(kr), s = std::sin(kr);
+        const double kr = w.kr[j];
+        const double inv_r = k / kr;
+        const double c = w.cos_kr[j], s = w.sin_kr[j];
         const double g = inv4pi * inv_r;
         fg_re[j] = c * g;
         fg_im[j] = -s * g;
@@ -470,12 +473,14 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
       double* f0g = w.f0_near.col(2 * i_near).data();
       double* f0h = w.f0_near.col(2 * i_near + 1).data();
       const Eigen::VectorXd& half_sin2 = w.phi_near.half_sin2;
-      for (Eigen::Index j = 0; j < half_sin2.size(); ++j) {
+      const int np = static_cast<int>(half_sin2.size());
+      for (int j = 0; j < np; ++j) w.kr[j] = 0.5 * k * std::sqrt(d2 + c4 * half_sin2(j));
+      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());  // of kR/2
+      for (int j = 0; j < np; ++j) {
         const double s2 = half_sin2(j);
-        const double r = std::sqrt(d2 + c4 * s2);
-        const double inv_r = 1.0 / r;
-        const double kr = k * r;
-        const double sh = std::sin(0.5 * kr), ch = std::cos(0.5 * kr);
+        const double kr = 2.0 * w.kr[j];
+        const double inv_r = k / kr;
+        const double sh = w.sin_kr[j], ch = w.cos_kr[j];
         const double s = 2.0 * sh * ch, cm1 = -2.0 * sh * sh;  // sin kR, cos kR - 1
         const double g = inv4pi * inv_r;
         fg_re[j] = cm1 * g;  // (e^{-ikR} - 1) / (4 pi R)
@@ -555,7 +560,7 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
                                 std::to_string(options.phi_intervals) + " < 0");
   const AxiMesh mesh = axi_mesh(generator);
   const int ne = static_cast<int>(mesh.elements.size());
-  int n_max = -1;
+  std::vector<int> orders;  // those with a pattern, ascending
   for (std::size_t n = 0; n < patterns.size(); ++n) {
     if (patterns[n].size() == 0) continue;
     if (patterns[n].rows() != ne)
@@ -565,10 +570,12 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
     if (!patterns[n].allFinite())
       throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
                                   " has non-finite velocities");
-    n_max = static_cast<int>(n);
+    orders.push_back(static_cast<int>(n));
   }
   std::vector<Eigen::MatrixXcd> result(patterns.size());
-  if (n_max < 0) return result;
+  if (orders.empty()) return result;
+  const int n_max = orders.back();
+  const int no = static_cast<int>(orders.size());
 
   const std::vector<Eigen::Vector2d> chief = axi_chief_points(mesh, options.chief_points);
   const int nc = static_cast<int>(chief.size());
@@ -580,38 +587,49 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
   w.gauss_singular = axisymmetric_gauss_legendre(8);
   w.log_singular = axisymmetric_log_gauss(8);
   // Sec. 1: 2 M > k r_max + n_max with a margin for the tails of the Fourier coefficients of
-  // e^{-ikR(phi)} (Bessel-like, decaying past order k r + (k r)^{1/3}).
+  // e^{-ikR(phi)} (Bessel-like, decaying past order k r + (k r)^{1/3}). Sec. 2: the near rule
+  // takes 3 M / 2 intervals: its integrands (d < tau rho) have the phase rate
+  // k rho cos(phi/2) phi'(t) <= 1.2 k rho in t, and cos(n phi) the rate n phi' <= 2 n.
   const double kr = k * mesh.r_max;
   const int intervals =
       options.phi_intervals > 0
           ? options.phi_intervals
           : std::max(16,
                      static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
-  w.phi_far = axi_phi_rule(intervals, n_max, false);
-  w.phi_near = axi_phi_rule(2 * intervals, n_max, true);
+  const int near_intervals = (3 * intervals + 1) / 2;
+  w.phi_far = axi_phi_rule(intervals, orders, false);
+  w.phi_near = axi_phi_rule(near_intervals, orders, true);
   w.f_far.resize(intervals + 1, 0);
-  w.f_near.resize(2 * intervals + 1, 0);
-  w.f0_near.resize(2 * intervals + 1, 0);
+  w.f_near.resize(near_intervals + 1, 0);
+  w.f0_near.resize(near_intervals + 1, 0);
   w.tau = 12.0 / std::max(1.0, 2.0 * intervals - kr);
+  w.kr.resize(near_intervals + 1);
+  w.cos_kr.resize(near_intervals + 1);
+  w.sin_kr.resize(near_intervals + 1);
 
-  std::vector<Eigen::MatrixXcd> g_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
-  std::vector<Eigen::MatrixXcd> h_n(n_max + 1, Eigen::MatrixXcd(rows, ne));
+  // The order-n integrals of every row (surface collocation points, then CHIEF points).
+  std::vector<Eigen::MatrixXcd> g_n(no), h_n(no);
+  for (int o = 0; o < no; ++o) {
+    g_n[o].resize(rows, ne);
+    h_n[o].resize(rows, ne);
+  }
   for (int row = 0; row < rows; ++row) {
     const bool surface = row < ne;
     axi_row(mesh, surface ? mesh.elements[row].midpoint : chief[row - ne], surface ? row : -1, w);
-    for (int n = 0; n <= n_max; ++n) {
-      g_n[n].row(row) = w.row_g.row(n);
-      h_n[n].row(row) = w.row_h.row(n);
+    for (int o = 0; o < no; ++o) {
+      g_n[o].row(row) = w.row_g.row(o);
+      h_n[o].row(row) = w.row_h.row(o);
     }
   }
 
   const axi_cd ik_rho_c(0.0, k * fluid.impedance());
-  for (int n = 0; n <= n_max; ++n) {
-    if (patterns[n].size() == 0) continue;
+  for (int o = 0; o < no; ++o) {
+    const int n = orders[o];
     // [1/2 I - H; -H_chief] p = i k rho c [G; G_chief] v, least squares (Householder QR).
-    Eigen::MatrixXcd a = -h_n[n];
+    Eigen::MatrixXcd& a = h_n[o];
+    a = -a;
     a.topRows(ne).diagonal().array() += 0.5;
-    const Eigen::MatrixXcd rhs = ik_rho_c * (g_n[n] * patterns[n].cast<axi_cd>());
+    const Eigen::MatrixXcd rhs = ik_rho_c * (g_n[o] * patterns[n].cast<axi_cd>());
     const Eigen::MatrixXcd p = a.householderQr().solve(rhs);
     // W = (1/2) Re (V a)^H D (P a) = (1/2) Re a^H M a, M = V^T D P, D = diag(r_ds c_n).
     // By reciprocity (int p_1 v_2 dS = int p_2 v_1 dS) the exact M is complex symmetric, so its

@@ -108,4 +108,43 @@ AxisymmetricEllipticKE axisymmetric_elliptic_ke(double m1) {
   return ke;
 }
 
+void axisymmetric_cos_sin(int n, const double* x, double* cos_x, double* sin_x) {
+  constexpr double two_over_pi = 0.636619772367581343076;
+  // pi/2 = p1 + p2 + p3, p1 and p2 with short mantissas (Cephes DP1..DP3, doubled)
+  constexpr double p1 = 1.57079625129699707031e+00, p2 = 7.54978941586159635336e-08,
+                   p3 = 5.39030285815811905290e-15;
+  for (int i = 0; i < n; ++i) {
+    const double q = std::nearbyint(x[i] * two_over_pi);
+    const double r = ((x[i] - q * p1) - q * p2) - q * p3;
+    const double r2 = r * r;
+    const double sin_r =
+        r + r * r2 *
+                (((((1.58962301576546568060e-10 * r2 - 2.50507477628578072866e-8) * r2 +
+                    2.75573136213857245213e-6) *
+                       r2 -
+                   1.98412698295895385996e-4) *
+                      r2 +
+                  8.33333333332211858878e-3) *
+                     r2 -
+                 1.66666666666666307295e-1);
+    const double cos_r =
+        1.0 - 0.5 * r2 +
+        r2 * r2 *
+            (((((-1.13585365213876817300e-11 * r2 + 2.08757008419747316778e-9) * r2 -
+                2.75573141792967388112e-7) *
+                   r2 +
+               2.48015872888517045348e-5) *
+                  r2 -
+              1.38888888888730564116e-3) *
+                 r2 +
+             4.16666666666665929218e-2);
+    // quadrant q mod 4: sin x = sin r, cos r, -sin r, -cos r; cos x = cos r, -sin r, -cos r, sin r
+    const double quadrant = q - 4.0 * std::floor(0.25 * q);
+    const bool odd = quadrant == 1.0 || quadrant == 3.0;
+    const double s = odd ? cos_r : sin_r, c = odd ? sin_r : cos_r;
+    sin_x[i] = quadrant >= 2.0 ? -s : s;
+    cos_x[i] = (quadrant == 1.0 || quadrant == 2.0) ? -c : c;
+  }
+}
+
 }  // namespace rollnoise::acoustics

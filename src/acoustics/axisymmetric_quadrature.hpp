@@ -1,6 +1,6 @@
 // Quadrature rules and special functions of the axisymmetric boundary elements
-// (acoustics/axisymmetric_bem.hpp): Gauss-Legendre, Gauss with the weight ln(1/t), and the
-// complete elliptic integrals K and E of a parameter given by its complement.
+// (acoustics/axisymmetric_bem.hpp): Gauss-Legendre, Gauss with the weight ln(1/t), the complete
+// elliptic integrals K and E of a parameter given by its complement, and cos and sin of a block.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,5 +37,12 @@ struct AxisymmetricEllipticKE {
   double E = 0.0;
 };
 AxisymmetricEllipticKE axisymmetric_elliptic_ke(double m1);
+
+/// cos(x_i) and sin(x_i) of a block of n arguments (|x_i| < 1e6), to ~2e-16 absolute: the phase
+/// factors e^{-ikR} of the kernels, ~4x faster than the C library's sin and cos. Cody-Waite
+/// reduction x = r + q pi/2 with pi/2 in three parts (q pi/2 exact for |q| < 2^26), then the
+/// minimax polynomials of Cephes (S. L. Moshier, Methods and Programs for Mathematical Functions,
+/// 1989; sin.c) on |r| <= pi/4 and the quadrant's swap and signs.
+void axisymmetric_cos_sin(int n, const double* x, double* cos_x, double* sin_x);
 
 }  // namespace rollnoise::acoustics
