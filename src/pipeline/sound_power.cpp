@@ -81,6 +81,28 @@ void close_tail(Eigen::MatrixXcd& total, const Eigen::MatrixXcd& last, const Eig
 Eigen::MatrixXcd interpolated(const std::vector<Eigen::MatrixXcd>& m, const GridPlace& p) {
   return (1.0 - p.w) * m[p.i] + p.w * m[p.i + 1];
 }
+// A power matrix P_n between grid points: its diagonal in log-log (a multipole's power law
+// P ~ f^(2n+2) below coincidence is then exact) and its correlation coefficients
+// P_ij / sqrt(P_ii P_jj) linearly, so that the interpolated matrix stays positive semi-definite.
+Eigen::MatrixXcd interpolated_power(const std::vector<Eigen::MatrixXcd>& m, const GridPlace& p) {
+  const Eigen::MatrixXcd& a = m[p.i];
+  const Eigen::MatrixXcd& b = m[p.i + 1];
+  const Eigen::Index n = a.rows();
+  constexpr double kTiny = 1e-300;  // a mode that does not radiate (round-off)
+  Eigen::VectorXd da(n), db(n), d(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    da(i) = std::max(a(i, i).real(), kTiny), db(i) = std::max(b(i, i).real(), kTiny);
+    d(i) = std::exp((1.0 - p.w) * std::log(da(i)) + p.w * std::log(db(i)));
+  }
+  Eigen::MatrixXcd out(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const cdouble c = (1.0 - p.w) * a(i, j) / std::sqrt(da(i) * da(j)) + p.w * b(i, j) / std::sqrt(db(i) * db(j));
+      out(i, j) = c * std::sqrt(d(i) * d(j));
+    }
+  return out;
+}
+
 double interpolated(const std::vector<double>& v, const GridPlace& p) {
   return (1.0 - p.w) * v[p.i] + p.w * v[p.i + 1];
 }
@@ -273,11 +295,11 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   const auto t0 = std::chrono::steady_clock::now();
   SoundResult r;
   r.centre = centres;
-  const std::vector<double> grid = radiation_grid(centres);
+  const std::vector<double> grid = radiation_grid(centres, kRailGridPerBand);
 
   // the radiation tables (from the cache where io gives one)
   std::shared_ptr<const dynamics::WheelFeModes> tread = sound.wheel_tread ? sound.wheel_tread() : nullptr;
-  if (tread && sound.wheel_table) r.wheel = sound.wheel_table(grid);
+  if (tread && sound.wheel_table) r.wheel = sound.wheel_table(radiation_grid(centres, kWheelGridPerBand));
   r.wheel_note = r.wheel ? "" : sound.wheel_missing;
   if (sound.rail_table)
     r.rail = sound.rail_table(grid);
@@ -359,8 +381,10 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
       gs.push_back(interpolated(g.sleepers, at));
     }
     std::vector<Eigen::MatrixXcd> pw;  // P_n at f
-    if (r.wheel)
-      for (const auto& order : r.wheel->orders) pw.push_back(interpolated(order.power, at));
+    if (r.wheel) {
+      const GridPlace on_wheel = grid_place(r.wheel->frequency, f);
+      for (const auto& order : r.wheel->orders) pw.push_back(interpolated_power(order.power, on_wheel));
+    }
     std::vector<Eigen::VectorXcd> R;  // each wheel's modal responses
     for (const auto& m : modal) R.push_back(dynamics::modal_responses(m, f));
 

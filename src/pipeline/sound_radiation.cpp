@@ -14,7 +14,6 @@
 namespace rollnoise::pipeline {
 namespace {
 
-constexpr int kGridPerBand = 6;
 
 // The section boundary of the FE mesh as one closed chain of nodes, counter-clockwise in (r, z):
 // end, mid, end, mid, ... (each boundary edge's end and mid-side nodes), the first not repeated.
@@ -53,12 +52,13 @@ std::vector<int> boundary_chain(const fem::QuadraticTriangleMesh& mesh) {
   return chain;
 }
 
-// The boundary elements of the chain: each boundary edge (end a, mid m, end b) split at m into
-// a-m and m-b. The normal velocity at an element's midpoint (the BEM's collocation point, constant
-// elements) from the edge's three nodes by the quadratic shape functions at xi = -+1/2:
+// The boundary elements of the chain. per_edge = 1: one straight element per quadratic boundary
+// edge (end a to end b), its collocation value that of the mid-side node m (the edge's midpoint);
+// per_edge = 2: each edge split at m into a-m and m-b, the values at their midpoints from the
+// edge's three nodes by the quadratic shape functions at xi = -+1/2:
 //   N_a = xi (xi - 1)/2, N_m = 1 - xi^2, N_b = xi (xi + 1)/2  ->  (3/8, 3/4, -1/8) and (-1/8, 3/4, 3/8).
 struct BoundaryElements {
-  std::vector<Eigen::Vector2d> points;  // generator points (r, z), counter-clockwise, closed
+  std::vector<Eigen::Vector2d> points;  // generator points (r, z): from the axis around the wheel back to it
   // per element: the three nodes of its edge and the weights at its midpoint
   std::vector<std::array<int, 3>> nodes;
   std::vector<std::array<double, 3>> weights;
@@ -66,24 +66,60 @@ struct BoundaryElements {
   std::vector<double> length, radius;   // element length and midpoint radius (m)
 };
 
-BoundaryElements boundary_elements(const fem::QuadraticTriangleMesh& mesh) {
+BoundaryElements boundary_elements(const fem::QuadraticTriangleMesh& mesh, int per_edge) {
   const std::vector<int> chain = boundary_chain(mesh);
+  // the quadratic edges in the chain's (counter-clockwise) order; the bore's (both ends at the
+  // smallest radius) are replaced by the axle's end faces below
+  std::vector<std::array<int, 3>> edges;
+  for (std::size_t i = 0; i + 1 < chain.size(); i += 2)
+    edges.push_back({chain[i], chain[i + 1], chain[(i + 2) % chain.size()]});
+  double r_min = 1e300;
+  for (int node : chain) r_min = std::min(r_min, mesh.nodes[static_cast<std::size_t>(node)].x());
+  const auto on_bore = [&](const std::array<int, 3>& e) {
+    return mesh.nodes[static_cast<std::size_t>(e[0])].x() <= r_min + 1e-9 &&
+           mesh.nodes[static_cast<std::size_t>(e[2])].x() <= r_min + 1e-9;
+  };
+  // rotate so that the first edge after the bore comes first, then drop the bore's edges
+  std::size_t first = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (on_bore(edges[i]) && !on_bore(edges[(i + 1) % edges.size()])) first = (i + 1) % edges.size();
+  std::rotate(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(first), edges.end());
+  while (!edges.empty() && on_bore(edges.back())) edges.pop_back();
+  if (edges.empty() || std::any_of(edges.begin(), edges.end(), on_bore))
+    throw std::invalid_argument("FE wheel: the bore is not one run of the section's boundary");
+
   BoundaryElements b;
-  for (int i : chain) b.points.push_back(mesh.nodes[static_cast<std::size_t>(i)]);
-  for (std::size_t i = 0; i + 1 < chain.size(); i += 2) {
-    const std::array<int, 3> edge{chain[i], chain[i + 1], chain[(i + 2) % chain.size()]};
-    for (int half = 0; half < 2; ++half) {
-      const Eigen::Vector2d& p = b.points[i + static_cast<std::size_t>(half)];
-      const Eigen::Vector2d& q = b.points[(i + static_cast<std::size_t>(half) + 1) % chain.size()];
-      const Eigen::Vector2d d = q - p;
-      b.nodes.push_back(edge);
-      b.weights.push_back(half == 0 ? std::array<double, 3>{0.375, 0.75, -0.125}
-                                    : std::array<double, 3>{-0.125, 0.75, 0.375});
-      b.length.push_back(d.norm());
-      b.normal.push_back(Eigen::Vector2d(d.y(), -d.x()) / d.norm());  // counter-clockwise: right
-      b.radius.push_back(0.5 * (p.x() + q.x()));
+  const auto node = [&](int i) { return mesh.nodes[static_cast<std::size_t>(i)]; };
+  auto add = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const std::array<int, 3>& edge,
+                 const std::array<double, 3>& weights) {
+    const Eigen::Vector2d d = q - p;
+    b.points.push_back(p);
+    b.nodes.push_back(edge);
+    b.weights.push_back(weights);
+    b.length.push_back(d.norm());
+    b.normal.push_back(Eigen::Vector2d(d.y(), -d.x()) / d.norm());  // counter-clockwise: right
+    b.radius.push_back(0.5 * (p.x() + q.x()));
+  };
+  // a face across the bore, from the axis to the bore's edge or back, at rest (zero weights)
+  const double h = (node(edges.front()[2]) - node(edges.front()[0])).norm();
+  auto face = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    const int n = std::max(2, static_cast<int>(std::ceil((to - from).norm() / h)));
+    for (int i = 0; i < n; ++i)
+      add(from + (to - from) * (static_cast<double>(i) / n), from + (to - from) * (static_cast<double>(i + 1) / n),
+          {0, 0, 0}, {0.0, 0.0, 0.0});
+  };
+  const Eigen::Vector2d start = node(edges.front()[0]), end = node(edges.back()[2]);
+  face({0.0, start.y()}, start);
+  for (const auto& e : edges) {
+    if (per_edge == 1) {
+      add(node(e[0]), node(e[2]), e, {0.0, 1.0, 0.0});
+    } else {
+      add(node(e[0]), node(e[1]), e, {0.375, 0.75, -0.125});
+      add(node(e[1]), node(e[2]), e, {-0.125, 0.75, 0.375});
     }
   }
+  face(end, {0.0, end.y()});
+  b.points.push_back({0.0, end.y()});
   return b;
 }
 
@@ -104,13 +140,13 @@ Eigen::VectorXd normal_pattern(const BoundaryElements& b, const Eigen::VectorXd&
 
 }  // namespace
 
-std::vector<double> radiation_grid(const std::vector<double>& centres) {
+std::vector<double> radiation_grid(const std::vector<double>& centres, int per_band) {
   if (centres.empty()) return {};
   const auto [lo, unused_lo] = noise::third_octave_edges(centres.front());
   const auto [unused_hi, hi] = noise::third_octave_edges(centres.back());
   (void)unused_lo, (void)unused_hi;
-  // 1/3 octave (base 10): a factor 10^{1/10}; kGridPerBand steps a band
-  const int steps = static_cast<int>(std::ceil(kGridPerBand * 10.0 * std::log10(hi / lo) - 1e-9));
+  // 1/3 octave (base 10): a factor 10^{1/10}; per_band steps a band
+  const int steps = static_cast<int>(std::ceil(per_band * 10.0 * std::log10(hi / lo) - 1e-9));
   std::vector<double> grid;
   for (int i = 0; i <= steps; ++i) grid.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / steps));
   return grid;
@@ -126,14 +162,15 @@ GridPlace grid_place(const std::vector<double>& grid, double f) {
 
 WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
                                const std::vector<double>& grid, const acoustics::Fluid& fluid,
-                               int threads) {
+                               int threads, int per_edge) {
   if (w.mesh.boundary_edges.empty())
     throw std::invalid_argument("wheel radiation: the modes have no section mesh");
-  const BoundaryElements b = boundary_elements(w.mesh);
+  const BoundaryElements b = boundary_elements(w.mesh, per_edge);
   WheelRadiation out;
   out.frequency = grid;
   out.elements = static_cast<int>(b.length.size());
-  for (std::size_t e = 0; e < b.length.size(); ++e) out.surface += 2 * kPi * b.radius[e] * b.length[e];
+  for (std::size_t e = 0; e < b.length.size(); ++e)  // the wheel's surface (not the faces across the bore)
+    if (b.weights[e][1] != 0.0) out.surface += 2 * kPi * b.radius[e] * b.length[e];
 
   // the modes by order, and their patterns
   int n_max = -1;
@@ -161,7 +198,7 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
   // the BEM at each grid frequency: every order in one call (its phi integrals shared)
   acoustics::AxisymmetricGenerator generator;
   generator.points = b.points;
-  generator.closed = true;
+  generator.closed = false;  // from the axis across the bore's face, around the wheel, back to the axis
   for (auto& order : out.orders) order.power.resize(grid.size());
   parallel_for(grid.size(), threads, [&](std::size_t i, int) {
     const double k = 2 * kPi * grid[i] / fluid.sound_speed;

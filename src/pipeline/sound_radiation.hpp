@@ -21,10 +21,10 @@
 // between the two, its patterns being even and odd in y). Optionally over a rigid ground plane at
 // the foot (sound.rail_ground = "rigid").
 //
-// The grid: radiation_grid(centres), 6 points per 1/3 octave over the bands' edges, log-spaced;
-// values between them are interpolated linearly in log f (interpolate_at): the radiation has no
-// resonance (the BEM's irregular frequencies are removed by CHIEF), so 6 points a band hold the
-// band levels within 0.05 dB (docs/sound.md Sec. 5, measured against 12 points a band).
+// The grids: radiation_grid(centres, per_band), log-spaced over the bands' edges; values between
+// them are interpolated linearly in log f (grid_place): the radiation has no resonance (the BEM's
+// irregular frequencies are removed by CHIEF), so a few points a band hold the band levels
+// (docs/sound.md Sec. 5, measured against twice as many).
 #pragma once
 
 #include <Eigen/Core>
@@ -35,9 +35,13 @@
 
 namespace rollnoise::pipeline {
 
-/// 6 log-spaced frequencies per 1/3 octave from the lower edge of the first band to the upper edge
-/// of the last (Hz, ascending).
-std::vector<double> radiation_grid(const std::vector<double>& centres);
+/// `per_band` log-spaced frequencies per 1/3 octave from the lower edge of the first band to the
+/// upper edge of the last (Hz, ascending): kRailGridPerBand for the rail's tables, kWheelGridPerBand
+/// for the wheel's (docs/sound.md Sec. 5: the wheel's modal efficiencies vary by a factor 2 within a
+/// sixth of an octave at 1-3 kHz; 6 a band hold its band levels within 0.2 dB of 12 a band).
+std::vector<double> radiation_grid(const std::vector<double>& centres, int per_band);
+constexpr int kRailGridPerBand = 6;
+constexpr int kWheelGridPerBand = 6;
 
 /// Position of f on `grid` for linear interpolation in log f: the lower index i and the weight w of
 /// grid[i + 1] (clamped to the grid's ends).
@@ -66,10 +70,12 @@ struct WheelRadiation {
 
 /// The radiation of the modes of `w` with n >= n_min (w from wheel_fe_modes: with its mesh and
 /// section shapes) on `grid`. std::invalid_argument for modes without section shapes.
-/// The grid's frequencies on `threads` threads (the same result for any number).
+/// The grid's frequencies on `threads` threads (the same result for any number). `per_edge`: boundary
+/// elements a quadratic edge of the FE mesh (1: the mesh's 8 mm edges, 8.6 elements a wavelength
+/// at 5 kHz; 2: each edge split at its mid-side node; docs/sound.md Sec. 2 compares them).
 WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
                                const std::vector<double>& grid, const acoustics::Fluid& fluid,
-                               int threads = 1);
+                               int threads = 1, int per_edge = 1);
 
 /// The rail section's radiation per unit length.
 struct RailRadiation {
