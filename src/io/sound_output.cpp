@@ -86,7 +86,6 @@ void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
           "outside 250 Hz - 5 kHz)");
   w.write("/track/decay_rate/limit_lateral", s.decay_limit_lateral, {s.decay_limit_lateral.size()},
           "dB/m (EN ISO 3095:2013 lower limit of the lateral decay rate; NaN outside 250 Hz - 5 kHz)");
-  w.write("/noise/sound/seconds", s.seconds, "s (wall time of the sound stage)");
 }
 
 }  // namespace rollnoise::io

@@ -208,7 +208,6 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   if (nc.band_refinement > 0)
     r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
   add_bands(r, nc, threads);
-  if (nc.sound.on) r.sound = std::make_shared<const SoundResult>(noise_sound(r, nc, threads));
   r.seconds_total = seconds_since(t0);
   return r;
 }
@@ -311,15 +310,18 @@ void add_bands(NoiseResult& r, const NoiseCase& nc, int threads) {
     const std::vector<noise::BandLevels> b = bogie_bands(loop, centres, source_levels);
     for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
     for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].bands = b[r.wheels.size() + k];
-    return;
+  } else {
+    for (std::size_t i = 0; i < r.wheels.size(); ++i) {
+      WheelNoise& w = r.wheels[i];
+      if (w.state.wheel == noise::WheelId::leading_outer)
+        w.bands = r.bands;
+      else
+        w.bands = wheel_bands(w, r.refined ? r.refined->wheel_loops[i] : w.loop, nc, centres);
+    }
   }
-  for (std::size_t i = 0; i < r.wheels.size(); ++i) {
-    WheelNoise& w = r.wheels[i];
-    if (w.state.wheel == noise::WheelId::leading_outer)
-      w.bands = r.bands;
-    else
-      w.bands = wheel_bands(w, r.refined ? r.refined->wheel_loops[i] : w.loop, nc, centres);
-  }
+  // 6. the sound powers (they follow the roughness too: a study's cases that share stages 1-4
+  // get their own)
+  r.sound = nc.sound.on ? std::make_shared<const SoundResult>(noise_sound(r, nc, threads)) : nullptr;
 }
 
 ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {

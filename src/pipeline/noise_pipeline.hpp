@@ -121,7 +121,8 @@ class NoiseReuse {
 /// roughness and the contact filter, which only stage 5 uses. `reuse` may be null.
 NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse = nullptr);
 /// Stage 5: the effective roughness (the case's roughness spectra and contact filter) and the band
-/// levels of every loop variant. Cases that differ only in roughness share stages 1-4: a copy of
+/// levels of every loop variant; then, with noise.sound = "on", the sound powers (noise_sound.hpp),
+/// which follow the roughness too. Cases that differ only in roughness share stages 1-4: a copy of
 /// one run_noise_loop result, then add_bands with each case's NoiseCase. The contacts' roughness
 /// levels on `threads` threads (the same result for any number).
 void add_bands(NoiseResult& r, const NoiseCase& nc, int threads = 1);

@@ -57,10 +57,12 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   return d;
 }
 
-/// The names in folder `d`, sorted.
-inline std::vector<std::string> listing(const std::filesystem::path& d) {
+/// The names in folder `d` that begin with `prefix` (all: ""), sorted; none when `d` is missing.
+inline std::vector<std::string> listing(const std::filesystem::path& d, const std::string& prefix = "") {
   std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(d)) names.push_back(e.path().filename().string());
+  if (!std::filesystem::exists(d)) return names;
+  for (const auto& e : std::filesystem::directory_iterator(d))
+    if (e.path().filename().string().rfind(prefix, 0) == 0) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

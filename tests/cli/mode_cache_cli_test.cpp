@@ -1,7 +1,7 @@
 // The wheel's mode cache through the program (wheel.mode_cache, ROLLNOISE_CACHE_DIR;
 // docs/interface.md "The wheel's mode cache"): the first run of an FE wheel stores its modes along
-// the tread, the second reads them and writes the same numbers; "off" (key or environment) stores
-// nothing.
+// the tread and its radiation (docs/sound.md Sec. 5), the second reads them and writes the same
+// numbers, sound powers included; "off" (key or environment) stores nothing of the wheel.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -42,17 +42,23 @@ TEST(ModeCache, SecondRunReadsTheModesAndWritesTheSameNumbers) {
   const auto first = dir / "first.h5", second = dir / "second.h5";
   const Invocation a = run("noise " + coarse_curve(first.string()));
   ASSERT_EQ(a.status, 0) << a.output;
-  ASSERT_EQ(listing(cache).size(), 1u);  // one file for the wheel, no temporary beside it
-  const auto stored = std::filesystem::last_write_time(cache / listing(cache).front());
+  // one file for the wheel's modes, one for its radiation, and the rail's two; no temporary
+  ASSERT_EQ(listing(cache, "wheel-modes-").size(), 1u);
+  ASSERT_EQ(listing(cache, "wheel-radiation-").size(), 1u);
+  const std::vector<std::string> files = listing(cache);
+  ASSERT_EQ(files.size(), 4u);
+  std::vector<std::filesystem::file_time_type> stored;
+  for (const auto& f : files) stored.push_back(std::filesystem::last_write_time(cache / f));
   const Invocation b = run("noise " + coarse_curve(second.string()));
   ASSERT_EQ(b.status, 0) << b.output;
-  EXPECT_EQ(listing(cache).size(), 1u);
-  EXPECT_EQ(std::filesystem::last_write_time(cache / listing(cache).front()),
-            stored);  // read, not rewritten
+  ASSERT_EQ(listing(cache), files);
+  for (std::size_t i = 0; i < files.size(); ++i)
+    EXPECT_EQ(std::filesystem::last_write_time(cache / files[i]), stored[i]) << files[i];  // read
   // the band levels of forces and wheel and rail velocities: the whole loop, the wheel's modes in
   // it
   for (const char* name : {"/noise/bands/force_level", "/noise/bands/velocity_level",
-                           "/noise/wheels/leading_outer/bands/velocity_level"}) {
+                           "/noise/wheels/leading_outer/bands/velocity_level", "/noise/sound/power",
+                           "/sound/radiation_efficiency/wheel/sigma", "/track/decay_rate/vertical"}) {
     const std::vector<double> x = dataset(first, name), y = dataset(second, name);
     ASSERT_FALSE(x.empty()) << name;
     ASSERT_EQ(x.size(), y.size()) << name;
@@ -68,8 +74,9 @@ TEST(ModeCache, OffInTheCaseOrTheEnvironmentStoresNothing) {
     const Invocation a =
         run("noise " + coarse_curve((dir / "a.h5").string(), "--set wheel.mode_cache=\\\"off\\\""));
     ASSERT_EQ(a.status, 0) << a.output;
-    EXPECT_FALSE(std::filesystem::exists(cache));
+    EXPECT_TRUE(listing(cache, "wheel-").empty());  // the rail's tables may be kept
   }
+  std::filesystem::remove_all(cache);
   const CacheFolder off("off");
   const Invocation b = run("noise " + coarse_curve((dir / "b.h5").string()));
   ASSERT_EQ(b.status, 0) << b.output;
