@@ -37,13 +37,15 @@ bool get_matrices(Bytes& in, std::vector<Eigen::MatrixXcd>& v) {
 }
 
 void put_beam(std::ostringstream& k, const dynamics::BeamSection& b) {
-  k << real_text(b.youngs_modulus) << " " << real_text(b.shear_modulus) << " " << real_text(b.area) << " "
-    << real_text(b.second_moment) << " " << real_text(b.mass_per_length) << " "
-    << real_text(b.shear_coefficient) << " " << real_text(b.loss_factor) << " " << b.timoshenko << "\n";
+  k << real_text(b.youngs_modulus) << " " << real_text(b.shear_modulus) << " " << real_text(b.area)
+    << " " << real_text(b.second_moment) << " " << real_text(b.mass_per_length) << " "
+    << real_text(b.shear_coefficient) << " " << real_text(b.loss_factor) << " " << b.timoshenko
+    << "\n";
 }
 void put_support(std::ostringstream& k, const dynamics::Support& s) {
-  k << real_text(s.pad_stiffness) << " " << real_text(s.pad_loss_factor) << " " << real_text(s.sleeper_mass)
-    << " " << real_text(s.ballast_stiffness) << " " << real_text(s.ballast_loss_factor) << "\n";
+  k << real_text(s.pad_stiffness) << " " << real_text(s.pad_loss_factor) << " "
+    << real_text(s.sleeper_mass) << " " << real_text(s.ballast_stiffness) << " "
+    << real_text(s.ballast_loss_factor) << "\n";
 }
 
 void put_doubles(std::string& out, const std::vector<double>& v) {
@@ -153,14 +155,14 @@ std::string rail_identity(const std::string& model, const dynamics::TrackParamet
   put_support(k, t.vertical_support);
   put_support(k, t.lateral_support);
   put_support(k, t.longitudinal_support);
-  k << real_text(t.sleeper_spacing) << " " << real_text(t.head_height) << " " << t.supports_each_side << " "
-    << static_cast<int>(t.discrete_solution) << "\n";
+  k << real_text(t.sleeper_spacing) << " " << real_text(t.head_height) << " "
+    << t.supports_each_side << " " << static_cast<int>(t.discrete_solution) << "\n";
   return k.str();
 }
 
 std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
-    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
-    const std::vector<double>& grid, int gauss, int threads) {
+    const dynamics::RailModel& rail, const std::string& identity,
+    const std::vector<double>& positions, const std::vector<double>& grid, int gauss, int threads) {
   std::ostringstream k;
   k << identity << "positions";
   for (double x : positions) k << " " << real_text(x);
@@ -176,16 +178,18 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
   const std::string key = build.empty() ? std::string() : build + k.str();
   std::shared_ptr<const pipeline::RailLineGram> g;
   if (!key.empty())
-    if (const auto body = read_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key)) {
+    if (const auto body =
+            read_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key)) {
       Bytes in(*body);
       pipeline::RailLineGram r;
       r.positions = positions;
-      if (get_matrices(in, r.z) && get_matrices(in, r.y) && get_matrices(in, r.sleepers) && in.left() == 0 &&
-          r.z.size() == grid.size())
+      if (get_matrices(in, r.z) && get_matrices(in, r.y) && get_matrices(in, r.sleepers) &&
+          in.left() == 0 && r.z.size() == grid.size())
         g = std::make_shared<const pipeline::RailLineGram>(std::move(r));
     }
   if (!g) {
-    g = std::make_shared<const pipeline::RailLineGram>(pipeline::rail_line_gram(rail, positions, grid, gauss, threads));
+    g = std::make_shared<const pipeline::RailLineGram>(
+        pipeline::rail_line_gram(rail, positions, grid, gauss, threads));
     if (!key.empty()) {
       std::string out;
       put_matrices(out, g->z);
@@ -206,7 +210,8 @@ std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
   // this process's (a study's cases, a test's runs): by the wheel's identity, n_min and the grid
   static std::mutex mutex;
   static std::map<std::string, std::shared_ptr<const pipeline::WheelRadiation>> kept;
-  const std::string memo = c.id + "\nn_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
+  const std::string memo =
+      c.id + "\nn_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (const auto it = kept.find(memo); it != kept.end()) return it->second;
@@ -220,8 +225,10 @@ std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
   std::string key = directory ? mode_cache_key(c) : std::string();
   if (!key.empty()) key += "n_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
   if (!key.empty())
-    if (const auto body = read_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key))
-      if (auto w = parse_wheel(*body)) return remember(std::make_shared<const pipeline::WheelRadiation>(std::move(*w)));
+    if (const auto body =
+            read_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key))
+      if (auto w = parse_wheel(*body))
+        return remember(std::make_shared<const pipeline::WheelRadiation>(std::move(*w)));
   auto w = std::make_shared<const pipeline::WheelRadiation>(
       pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid, threads));
   if (!key.empty())
@@ -252,12 +259,15 @@ std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
   const std::string build = directory ? build_identity() : std::string();
   const std::string key = build.empty() ? std::string() : build + k.str();
   if (!key.empty())
-    if (const auto body = read_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key))
-      if (auto r = parse_rail(*body)) return remember(std::make_shared<const pipeline::RailRadiation>(std::move(*r)));
-  auto r = std::make_shared<const pipeline::RailRadiation>(pipeline::rail_radiation(outline, ground, grid, fluid, threads));
+    if (const auto body =
+            read_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key))
+      if (auto r = parse_rail(*body))
+        return remember(std::make_shared<const pipeline::RailRadiation>(std::move(*r)));
+  auto r = std::make_shared<const pipeline::RailRadiation>(
+      pipeline::rail_radiation(outline, ground, grid, fluid, threads));
   if (!key.empty())
-    write_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key, rail_payload(*r),
-                        "rail radiation");
+    write_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key,
+                        rail_payload(*r), "rail radiation");
   return remember(r);
 }
 

@@ -35,7 +35,8 @@ std::string rail_identity(const std::string& model, const dynamics::TrackParamet
 /// The rail's line Gram matrices (pipeline::rail_line_gram) at `positions` on `grid`: from the
 /// cache under `identity` (rail_identity), else computed and stored. Kept in this process too.
 std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
-    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& positions,
-    const std::vector<double>& grid, int gauss, int threads = 1);
+    const dynamics::RailModel& rail, const std::string& identity,
+    const std::vector<double>& positions, const std::vector<double>& grid, int gauss,
+    int threads = 1);
 
 }  // namespace rollnoise::io

@@ -16,7 +16,8 @@ pipeline::SoundCase read_sound_case(const CaseReader& r, InputProblems& problems
   problems.check([&] { s.sleeper_width = r.real("sound.sleeper_width"); });
   s.rail_section = rail_section.empty() ? dynamics::uic60_outline() : rail_section;
   int threads = 1;  // the tables' frequencies (not in their keys: the values do not depend on it)
-  problems.check([&] { threads = resolved_threads(static_cast<int>(r.integer("solver.threads"))); });
+  problems.check(
+      [&] { threads = resolved_threads(static_cast<int>(r.integer("solver.threads"))); });
   const acoustics::Fluid fluid = s.fluid;
   const std::vector<Eigen::Vector2d> outline = s.rail_section;
   const bool ground = s.rail_ground;
@@ -24,13 +25,15 @@ pipeline::SoundCase read_sound_case(const CaseReader& r, InputProblems& problems
     return rail_radiation_cached(outline, ground, grid, fluid, threads);
   };
   if (!fe) {
-    s.wheel_missing = "wheel.model = \"table\": the mode table has no wheel surface to radiate from; "
-                      "the wheel's sound power needs wheel.model = \"fe\"";
+    s.wheel_missing =
+        "wheel.model = \"table\": the mode table has no wheel surface to radiate from; "
+        "the wheel's sound power needs wheel.model = \"fe\"";
     return s;
   }
   if (fe->imported) {
-    s.wheel_missing = "wheel.model = \"shapes\": imported modes along the tread have no section surface; "
-                      "the wheel's sound power needs wheel.model = \"fe\"";
+    s.wheel_missing =
+        "wheel.model = \"shapes\": imported modes along the tread have no section surface; "
+        "the wheel's sound power needs wheel.model = \"fe\"";
     return s;
   }
   const WheelFeCase wheel = *fe;

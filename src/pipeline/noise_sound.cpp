@@ -36,7 +36,8 @@ SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) 
       for (std::size_t w = 0; w < r.wheels.size(); ++w)
         if (contacts[a].wheelset == contacts[w].wheelset && contacts[a].side == contacts[w].side)
           wheels[w].contacts.push_back(static_cast<int>(a));
-    return sound_power(loop, contacts, wheels, r.source_levels, centres, *nc.rail, nc.sound, threads);
+    return sound_power(loop, contacts, wheels, r.source_levels, centres, *nc.rail, nc.sound,
+                       threads);
   }
   // each wheel's loop alone (noise.contact_coupling = "none"), or the case's single contact
   std::vector<noise::ContactSetLoopResult> loops;
@@ -51,11 +52,13 @@ SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) 
     levels.push_back(contact_roughness(nc, r.mean).levels(centres));
   } else {
     const std::vector<noise::ContactPoint> all = bogie_contacts(r.wheels, nc);
-    const std::vector<std::vector<double>> source = bogie_source_levels(r.wheels, nc, centres, {}, threads);
+    const std::vector<std::vector<double>> source =
+        bogie_source_levels(r.wheels, nc, centres, {}, threads);
     for (std::size_t i = 0; i < r.wheels.size(); ++i) {
       const bool main = r.wheels[i].state.wheel == noise::WheelId::leading_outer;
-      const noise::LoopResult& l = r.refined ? (main ? r.refined->variants.main : r.refined->wheel_loops[i])
-                                             : (main ? r.variants.main : r.wheels[i].loop);
+      const noise::LoopResult& l =
+          r.refined ? (main ? r.refined->variants.main : r.refined->wheel_loops[i])
+                    : (main ? r.variants.main : r.wheels[i].loop);
       loops.push_back(as_contact_set(l));
       points.push_back(all[i]);
       levels.push_back(source[i]);
@@ -63,21 +66,27 @@ SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) 
   }
   SoundResult total;
   for (std::size_t i = 0; i < loops.size(); ++i) {
-    const SoundResult one = sound_power(loops[i], {points[i]}, {SoundWheel{{0}}}, {levels[i]}, centres,
-                                        *nc.rail, nc.sound, threads);
+    const SoundResult one = sound_power(loops[i], {points[i]}, {SoundWheel{{0}}}, {levels[i]},
+                                        centres, *nc.rail, nc.sound, threads);
     if (i == 0) {
       total = one;
       total.contact_power.clear();
       total.contact_power_a.clear();
+      total.contact_family.clear();
     } else {
+      for (std::size_t b = 0; b < total.wheel_family.size() && b < one.wheel_family.size(); ++b)
+        for (std::size_t c = 0; c < 3; ++c)
+          total.wheel_family[b][c] = power_sum_db(total.wheel_family[b][c], one.wheel_family[b][c]);
       for (std::size_t b = 0; b < centres.size(); ++b)
-        for (std::size_t c = 0; c < 4; ++c) total.power[b][c] = power_sum_db(total.power[b][c], one.power[b][c]);
+        for (std::size_t c = 0; c < 4; ++c)
+          total.power[b][c] = power_sum_db(total.power[b][c], one.power[b][c]);
       for (std::size_t b = 0; b < centres.size(); ++b)
         total.input_power[b] = power_sum_db(total.input_power[b], one.input_power[b]);
       total.seconds += one.seconds;
     }
     total.contact_power.push_back(one.contact_power.front());
     total.contact_power_a.push_back(one.contact_power_a.front());
+    if (!one.contact_family.empty()) total.contact_family.push_back(one.contact_family.front());
   }
   for (std::size_t c = 0; c < 4; ++c) {
     std::vector<double> column;

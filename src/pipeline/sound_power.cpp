@@ -25,11 +25,14 @@ constexpr double kPowerReference = 1e-12;  // W (dB re 1 pW)
 // point; beyond them the tails are closed as geometric series (docs/sound.md Sec. 3.2).
 constexpr int kWindowSpans = 20;
 
-double angular(double f) { return 2 * kPi * f; }
+double angular(double f) {
+  return 2 * kPi * f;
+}
 
 // Gauss-Legendre nodes and weights on [0, 1].
 std::vector<std::pair<double, double>> gauss_unit(int n) {
-  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(static_cast<std::size_t>(n));
+  gsl_integration_glfixed_table* t =
+      gsl_integration_glfixed_table_alloc(static_cast<std::size_t>(n));
   std::vector<std::pair<double, double>> out;
   for (int i = 0; i < n; ++i) {
     double x = 0.0, w = 0.0;
@@ -44,8 +47,8 @@ std::vector<std::pair<double, double>> gauss_unit(int n) {
 // flagged), spans numbered outward on each side for the tail closure.
 struct RailPoints {
   std::vector<double> x, weight;
-  std::vector<int> span;           // the span [j L, (j + 1) L] of a Gauss point; j of a sleeper
-  std::vector<bool> is_sleeper;    // a sleeper at x = j L (weight 0)
+  std::vector<int> span;         // the span [j L, (j + 1) L] of a Gauss point; j of a sleeper
+  std::vector<bool> is_sleeper;  // a sleeper at x = j L (weight 0)
   int first_span = 0, last_span = 0;
 };
 
@@ -71,7 +74,8 @@ RailPoints rail_points(double x_min, double x_max, double spacing, int gauss) {
 
 // A geometric tail beyond the window: the last block times rho/(1 - rho), rho the ratio of the
 // last two blocks' traces (0 when the response does not decay there: no closure).
-void close_tail(Eigen::MatrixXcd& total, const Eigen::MatrixXcd& last, const Eigen::MatrixXcd& before) {
+void close_tail(Eigen::MatrixXcd& total, const Eigen::MatrixXcd& last,
+                const Eigen::MatrixXcd& before) {
   const double a = last.trace().real(), b = before.trace().real();
   if (!(a > 0.0) || !(b > 0.0)) return;
   const double rho = a / b;
@@ -97,7 +101,8 @@ Eigen::MatrixXcd interpolated_power(const std::vector<Eigen::MatrixXcd>& m, cons
   Eigen::MatrixXcd out(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
-      const cdouble c = (1.0 - p.w) * a(i, j) / std::sqrt(da(i) * da(j)) + p.w * b(i, j) / std::sqrt(db(i) * db(j));
+      const cdouble c = (1.0 - p.w) * a(i, j) / std::sqrt(da(i) * da(j)) +
+                        p.w * b(i, j) / std::sqrt(db(i) * db(j));
       out(i, j) = c * std::sqrt(d(i) * d(j));
     }
   return out;
@@ -108,8 +113,8 @@ double interpolated(const std::vector<double>& v, const GridPlace& p) {
 }
 
 // The forces of `which` contacts under source e at line k, stacked (4 per contact).
-Eigen::VectorXcd stacked_forces(const noise::ContactSetLoopResult& loop, const std::vector<int>& which,
-                                std::size_t k, int e) {
+Eigen::VectorXcd stacked_forces(const noise::ContactSetLoopResult& loop,
+                                const std::vector<int>& which, std::size_t k, int e) {
   Eigen::VectorXcd F(static_cast<Eigen::Index>(4 * which.size()));
   for (std::size_t j = 0; j < which.size(); ++j)
     F.segment<4>(static_cast<Eigen::Index>(4 * j)) = loop.force[k].block<4, 1>(4 * which[j], e);
@@ -124,24 +129,28 @@ struct LinePowers {
   std::vector<std::vector<std::vector<double>>> wheel, rail, sleepers;
   // [source][line]: the mechanical power the contact forces put into the wheels and the rails
   std::vector<std::vector<double>> input;
+  // [wheel][family][source][line]: the wheel's power with the modes of one family alone
+  std::vector<std::vector<std::vector<std::vector<double>>>> family;
 };
 
 // (S5): the power the contact forces put into the structures, (1/2) Re(F^H v_wheel - F^H v_rail)
 // summed over the contacts, with the velocities of the loop (z, x, y, rot z of each contact's local
 // frame) taken into its contact frame (T^T v; the rotations about x and y, which the loop does not
 // keep, taken as zero: they carry only the spin moment's share).
-double input_power(const noise::ContactSetLoopResult& loop, const std::vector<noise::ContactPoint>& contacts,
-                   std::size_t k, int e) {
+double input_power(const noise::ContactSetLoopResult& loop,
+                   const std::vector<noise::ContactPoint>& contacts, std::size_t k, int e) {
   if (loop.wheel_velocity.empty()) return kNaN;
   double p = 0.0;
   for (std::size_t a = 0; a < contacts.size(); ++a) {
-    const Eigen::Matrix<double, 6, 4> T = dynamics::contact_frame(contacts[a].position.contact_angle);
+    const Eigen::Matrix<double, 6, 4> T =
+        dynamics::contact_frame(contacts[a].position.contact_angle);
     Eigen::Matrix<cdouble, 6, 1> vw = Eigen::Matrix<cdouble, 6, 1>::Zero(), vr = vw;
     for (int i = 0; i < 4; ++i) {
       vw(dynamics::kSixOfFour[i]) = loop.wheel_velocity[k](static_cast<Eigen::Index>(4 * a) + i, e);
       vr(dynamics::kSixOfFour[i]) = loop.rail_velocity[k](static_cast<Eigen::Index>(4 * a) + i, e);
     }
-    const Eigen::Matrix<cdouble, 4, 1> F = loop.force[k].block<4, 1>(static_cast<Eigen::Index>(4 * a), e);
+    const Eigen::Matrix<cdouble, 4, 1> F =
+        loop.force[k].block<4, 1>(static_cast<Eigen::Index>(4 * a), e);
     const Eigen::Matrix<cdouble, 4, 1> dv = T.transpose().cast<cdouble>() * (vw - vr);
     p += 0.5 * F.dot(dv).real();
   }
@@ -149,7 +158,8 @@ double input_power(const noise::ContactSetLoopResult& loop, const std::vector<no
 }
 
 double band_level(const std::vector<double>& f, const std::vector<std::vector<double>>& by_source,
-                  const std::vector<std::vector<double>>& source_levels, std::size_t band, double centre) {
+                  const std::vector<std::vector<double>>& source_levels, std::size_t band,
+                  double centre) {
   double sum = 0.0;
   for (std::size_t e = 0; e < by_source.size(); ++e) {
     std::vector<double> twice(by_source[e].size());
@@ -188,8 +198,9 @@ double a_weighted_column(const std::vector<double>& centres, const std::vector<d
 namespace {
 
 // (S2), (S3) at one frequency from the transfers at the points `pts` (p positions a point).
-void add_line_gram(const RailPoints& pts, std::size_t p, const std::vector<dynamics::Receptance6>& transfers,
-                   Eigen::MatrixXcd& z, Eigen::MatrixXcd& y, Eigen::MatrixXcd& sleepers) {
+void add_line_gram(const RailPoints& pts, std::size_t p,
+                   const std::vector<dynamics::Receptance6>& transfers, Eigen::MatrixXcd& z,
+                   Eigen::MatrixXcd& y, Eigen::MatrixXcd& sleepers) {
   const Eigen::Index n = static_cast<Eigen::Index>(6 * p);
   const std::size_t spans = static_cast<std::size_t>(pts.last_span - pts.first_span + 1);
   // per span (and per sleeper) blocks, for the tails
@@ -235,12 +246,14 @@ RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<d
   const std::size_t p = positions.size();
   std::vector<dynamics::RailContactPair> pairs;
   for (double x : pts.x)
-    for (double xb : positions) pairs.push_back({dynamics::RailContact{x, 0.0, 0.0}, dynamics::RailContact{xb, 0.0, 0.0}});
+    for (double xb : positions)
+      pairs.push_back({dynamics::RailContact{x, 0.0, 0.0}, dynamics::RailContact{xb, 0.0, 0.0}});
   const std::size_t nf = grid.size();
   g.z.resize(nf), g.y.resize(nf), g.sleepers.resize(nf);
   if (rail.samples_grid()) {  // the waveguide samples the whole grid: one call
     const auto transfers = rail.contact_transfers(grid, pairs, true);
-    for (std::size_t k = 0; k < nf; ++k) add_line_gram(pts, p, transfers[k], g.z[k], g.y[k], g.sleepers[k]);
+    for (std::size_t k = 0; k < nf; ++k)
+      add_line_gram(pts, p, transfers[k], g.z[k], g.y[k], g.sleepers[k]);
     return g;
   }
   // every frequency alone (the beams): a few at a time on the threads, without keeping them all
@@ -256,7 +269,8 @@ RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<d
   return g;
 }
 
-RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts, int side) {
+RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts,
+                   int side) {
   RailGram g;
   for (std::size_t a = 0; a < contacts.size(); ++a)
     if (contacts[a].side == side) g.contacts.push_back(static_cast<int>(a));
@@ -273,7 +287,8 @@ RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoi
     if (p == line.positions.size())
       throw std::invalid_argument("rail_gram: a contact's position is not among the line Gram's");
     Eigen::Matrix<double, 6, 6> Lt = Eigen::Matrix<double, 6, 6>::Identity();
-    Lt.block<3, 3>(3, 0) = dynamics::cross_matrix(Eigen::Vector3d(0.0, c.position.rail_offset_y, 0.0));
+    Lt.block<3, 3>(3, 0) =
+        dynamics::cross_matrix(Eigen::Vector3d(0.0, c.position.rail_offset_y, 0.0));
     M.block(static_cast<Eigen::Index>(6 * p), static_cast<Eigen::Index>(4 * j), 6, 4) =
         Lt * dynamics::contact_frame(c.position.contact_angle);
   }
@@ -298,26 +313,30 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   const std::vector<double> grid = radiation_grid(centres, kRailGridPerBand);
 
   // the radiation tables (from the cache where io gives one)
-  std::shared_ptr<const dynamics::WheelFeModes> tread = sound.wheel_tread ? sound.wheel_tread() : nullptr;
-  if (tread && sound.wheel_table) r.wheel = sound.wheel_table(radiation_grid(centres, kWheelGridPerBand));
+  std::shared_ptr<const dynamics::WheelFeModes> tread =
+      sound.wheel_tread ? sound.wheel_tread() : nullptr;
+  if (tread && sound.wheel_table)
+    r.wheel = sound.wheel_table(radiation_grid(centres, kWheelGridPerBand));
   r.wheel_note = r.wheel ? "" : sound.wheel_missing;
   if (sound.rail_table)
     r.rail = sound.rail_table(grid);
   else
-    r.rail = std::make_shared<const RailRadiation>(rail_radiation(
-        sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section, sound.rail_ground,
-        grid, sound.fluid, threads));
+    r.rail = std::make_shared<const RailRadiation>(
+        rail_radiation(sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
+                       sound.rail_ground, grid, sound.fluid, threads));
 
   // the rails' Gram matrices (S2), (S3): Gauss points a span from the bending wavelength at the top
   // of the grid (12 a span up to 5 kHz: 2.4 wavelengths of |u|^2 in a 0.6 m span)
   const int gauss = std::max(12, static_cast<int>(std::ceil(12 * std::sqrt(grid.back() / 5000.0))));
   std::vector<double> positions;
   for (const noise::ContactPoint& c : contacts)
-    if (std::none_of(positions.begin(), positions.end(), [&](double x) { return std::abs(x - c.rail_x) <= 1e-12; }))
+    if (std::none_of(positions.begin(), positions.end(),
+                     [&](double x) { return std::abs(x - c.rail_x) <= 1e-12; }))
       positions.push_back(c.rail_x);
   const std::shared_ptr<const RailLineGram> line =
       sound.rail_line_table ? sound.rail_line_table(rail, positions, grid, gauss, threads)
-                            : std::make_shared<const RailLineGram>(rail_line_gram(rail, positions, grid, gauss, threads));
+                            : std::make_shared<const RailLineGram>(
+                                  rail_line_gram(rail, positions, grid, gauss, threads));
   std::vector<RailGram> rails;
   for (int side : {1, -1}) rails.push_back(rail_gram(*line, contacts, side));
 
@@ -334,12 +353,19 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     }
   // the position in the radiation table's orders of each participating mode
   std::vector<std::vector<int>> order_rows;  // [order][j] -> row in ModalParticipation
+  std::vector<std::vector<int>>
+      order_family;  // [order][j] -> the mode's family (0 axial, 1 radial, 2 circumferential)
   if (r.wheel && !modal.empty())
     for (const auto& order : r.wheel->orders) {
-      std::vector<int> rows;
+      std::vector<int> rows, families;
+      for (int k : order.modes)
+        families.push_back(static_cast<int>(tread->modes[static_cast<std::size_t>(k)].family));
+      order_family.push_back(families);
       for (int k : order.modes) {
         const auto it = std::find(modal.front().modes.begin(), modal.front().modes.end(), k);
-        rows.push_back(it == modal.front().modes.end() ? -1 : static_cast<int>(it - modal.front().modes.begin()));
+        rows.push_back(it == modal.front().modes.end()
+                           ? -1
+                           : static_cast<int>(it - modal.front().modes.begin()));
       }
       order_rows.push_back(rows);
     }
@@ -354,22 +380,26 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   lp.wheel.assign(nw, lp.wheel_total);
   lp.rail = lp.sleepers = lp.wheel;
   lp.input = lp.wheel_total;
+  lp.family.assign(nw, std::vector<std::vector<std::vector<double>>>(3, lp.wheel_total));
 
   // the sleepers' piston efficiency (smooth in f) on the grid, the modal rows as complex once
   std::vector<double> piston;
   for (double fg : grid)
-    piston.push_back(acoustics::rectangular_piston_efficiency(2 * kPi * fg / sound.fluid.sound_speed,
-                                                              sound.sleeper_length, sound.sleeper_width));
+    piston.push_back(acoustics::rectangular_piston_efficiency(
+        2 * kPi * fg / sound.fluid.sound_speed, sound.sleeper_length, sound.sleeper_width));
   std::vector<Eigen::MatrixXcd> psi_cos, psi_sin;
-  for (const auto& m : modal) psi_cos.push_back(m.cos_set.cast<cdouble>()), psi_sin.push_back(m.sin_set.cast<cdouble>());
+  for (const auto& m : modal)
+    psi_cos.push_back(m.cos_set.cast<cdouble>()), psi_sin.push_back(m.sin_set.cast<cdouble>());
   parallel_for(nl, threads, [&](std::size_t k, int) {
     const double f = loop.frequency[k], omega = angular(f), w2 = omega * omega;
     const GridPlace at = grid_place(grid, f);
     const double pv = interpolated(r.rail->vertical, at), pl = interpolated(r.rail->lateral, at);
     const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
-    const cdouble kb = cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
+    const cdouble kb =
+        cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
     const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * w2));
-    const double sleeper_factor = tau2 * 0.5 * sound.fluid.impedance() * interpolated(piston, at) * area;
+    const double sleeper_factor =
+        tau2 * 0.5 * sound.fluid.impedance() * interpolated(piston, at) * area;
     std::vector<Eigen::MatrixXcd> gz, gy, gs;
     for (const RailGram& g : rails) {
       if (g.contacts.empty()) {
@@ -383,7 +413,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     std::vector<Eigen::MatrixXcd> pw;  // P_n at f
     if (r.wheel) {
       const GridPlace on_wheel = grid_place(r.wheel->frequency, f);
-      for (const auto& order : r.wheel->orders) pw.push_back(interpolated_power(order.power, on_wheel));
+      for (const auto& order : r.wheel->orders)
+        pw.push_back(interpolated_power(order.power, on_wheel));
     }
     std::vector<Eigen::VectorXcd> R;  // each wheel's modal responses
     for (const auto& m : modal) R.push_back(dynamics::modal_responses(m, f));
@@ -402,12 +433,14 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
         // the wheel's own rail and sleepers under its contacts' forces alone
         for (std::size_t s = 0; s < rails.size(); ++s) {
           const RailGram& g = rails[s];
-          Eigen::VectorXcd F = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(4 * g.contacts.size()));
+          Eigen::VectorXcd F =
+              Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(4 * g.contacts.size()));
           bool any = false;
           for (std::size_t j = 0; j < g.contacts.size(); ++j)
             if (std::find(wheels[w].contacts.begin(), wheels[w].contacts.end(), g.contacts[j]) !=
                 wheels[w].contacts.end()) {
-              F.segment<4>(static_cast<Eigen::Index>(4 * j)) = loop.force[k].block<4, 1>(4 * g.contacts[j], src);
+              F.segment<4>(static_cast<Eigen::Index>(4 * j)) =
+                  loop.force[k].block<4, 1>(4 * g.contacts[j], src);
               any = true;
             }
           if (!any) continue;
@@ -419,18 +452,28 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
         const Eigen::VectorXcd F = stacked_forces(loop, wheels[w].contacts, k, src);
         const Eigen::VectorXcd qc = R[w].cwiseProduct(psi_cos[w] * F);
         const Eigen::VectorXcd qs = R[w].cwiseProduct(psi_sin[w] * F);
-        double power = 0.0;
-        for (std::size_t o = 0; o < pw.size(); ++o) {
-          const std::vector<int>& rows = order_rows[o];
-          Eigen::VectorXcd vc(static_cast<Eigen::Index>(rows.size())), vs(vc.size());
-          for (std::size_t j = 0; j < rows.size(); ++j) {
-            vc(static_cast<Eigen::Index>(j)) = rows[j] < 0 ? 0.0 : qc(rows[j]);
-            vs(static_cast<Eigen::Index>(j)) = rows[j] < 0 ? 0.0 : qs(rows[j]);
+        // all the modes (-1), then each family's alone (its modes' cross terms kept, the other
+        // families' left out)
+        for (int fam = -1; fam < 3; ++fam) {
+          double power = 0.0;
+          for (std::size_t o = 0; o < pw.size(); ++o) {
+            const std::vector<int>& rows = order_rows[o];
+            Eigen::VectorXcd vc = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(rows.size())),
+                             vs = vc;
+            for (std::size_t j = 0; j < rows.size(); ++j) {
+              if (rows[j] < 0 || (fam >= 0 && order_family[o][j] != fam)) continue;
+              vc(static_cast<Eigen::Index>(j)) = qc(rows[j]);
+              vs(static_cast<Eigen::Index>(j)) = qs(rows[j]);
+            }
+            power += w2 * (vc.dot(pw[o] * vc).real() + vs.dot(pw[o] * vs).real());
           }
-          power += w2 * (vc.dot(pw[o] * vc).real() + vs.dot(pw[o] * vs).real());
+          if (fam >= 0) {
+            lp.family[w][static_cast<std::size_t>(fam)][e][k] = power;
+            continue;
+          }
+          lp.wheel[w][e][k] = power;
+          lp.wheel_total[e][k] += power;
         }
-        lp.wheel[w][e][k] = power;
-        lp.wheel_total[e][k] += power;
       }
     }
   });
@@ -440,7 +483,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   r.power.resize(centres.size());
   r.contact_power.assign(nw, SoundBands(centres.size()));
   for (std::size_t b = 0; b < centres.size(); ++b) {
-    const double wheel = r.wheel ? band_level(f, lp.wheel_total, source_levels, b, centres[b]) : kNaN;
+    const double wheel =
+        r.wheel ? band_level(f, lp.wheel_total, source_levels, b, centres[b]) : kNaN;
     const double rl = band_level(f, lp.rail_total, source_levels, b, centres[b]);
     const double sl = band_level(f, lp.sleeper_total, source_levels, b, centres[b]);
     r.power[b] = {wheel, rl, sl, power_sum(power_sum(wheel, rl), sl)};
@@ -452,15 +496,32 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     }
   }
   for (std::size_t b = 0; b < centres.size(); ++b)
-    r.input_power.push_back(loop.wheel_velocity.empty() ? kNaN : band_level(f, lp.input, source_levels, b, centres[b]));
+    r.input_power.push_back(
+        loop.wheel_velocity.empty() ? kNaN : band_level(f, lp.input, source_levels, b, centres[b]));
+  if (r.wheel) {  // each family's band levels, per wheel and summed over the wheels
+    r.wheel_family.assign(centres.size(), {0.0, 0.0, 0.0});
+    r.contact_family.assign(nw, std::vector<std::array<double, 3>>(centres.size()));
+    for (std::size_t b = 0; b < centres.size(); ++b)
+      for (std::size_t fam = 0; fam < 3; ++fam) {
+        double sum = 0.0;
+        for (std::size_t w = 0; w < nw; ++w) {
+          const double l = band_level(f, lp.family[w][fam], source_levels, b, centres[b]);
+          r.contact_family[w][b][fam] = l;
+          sum += std::pow(10.0, l / 10);
+        }
+        r.wheel_family[b][fam] = 10 * std::log10(sum);
+      }
+  }
   r.power_a = a_weighted(centres, r.power);
   for (const SoundBands& c : r.contact_power) r.contact_power_a.push_back(a_weighted(centres, c));
 
   // decay rates (EN 15461) from a force at the centre line at track.position
-  const std::vector<double> measured_at = acoustics::en15461_positions(rail.track().sleeper_spacing);
+  const std::vector<double> measured_at =
+      acoustics::en15461_positions(rail.track().sleeper_spacing);
   std::vector<dynamics::RailContactPair> pairs;
   const double x0 = rail.position();
-  for (double d : measured_at) pairs.push_back({dynamics::RailContact{x0 + d, 0.0, 0.0}, dynamics::RailContact{x0, 0.0, 0.0}});
+  for (double d : measured_at)
+    pairs.push_back({dynamics::RailContact{x0 + d, 0.0, 0.0}, dynamics::RailContact{x0, 0.0, 0.0}});
   const auto along = rail.contact_transfers(grid, pairs, true);
   for (std::size_t b = 0; b < centres.size(); ++b) {
     const auto [lo, hi] = noise::third_octave_edges(centres[b]);
@@ -479,7 +540,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     // EN ISO 3095:2013's lower limits where the band has one
     double lv = kNaN, ll = kNaN;
     for (const acoustics::DecayRateLimit& l : acoustics::iso3095_decay_rate_limits())
-      if (std::abs(l.frequency / noise::nominal_centre(centres[b]) - 1.0) < 1e-3) lv = l.vertical, ll = l.lateral;
+      if (std::abs(l.frequency / noise::nominal_centre(centres[b]) - 1.0) < 1e-3)
+        lv = l.vertical, ll = l.lateral;
     r.decay_limit_vertical.push_back(lv);
     r.decay_limit_lateral.push_back(ll);
   }

@@ -11,7 +11,7 @@
 //  rail (each rail: the response at its centre line u(x) = sum_b alpha(x, b) T_b (-F_b) of the
 //  contacts b on it, RailModel::contact_transfers):
 //    W_rail = omega^2 Int [ P_v(f) |u_z(x)|^2 + P_l(f) |u_y(x)|^2 ] dx
-//           = omega^2 [ P_v F^H G_z F + P_l F^H G_y F ],   G_c = Int A_c(x)^H A_c(x) dx          (S2)
+//           = omega^2 [ P_v F^H G_z F + P_l F^H G_y F ],   G_c = Int A_c(x)^H A_c(x) dx (S2)
 //  with A_c(x) the row c of alpha(x, b) T_b over the contacts b. The integral: Gauss-Legendre
 //  points in each sleeper span over a window around the contacts, the tails beyond it closed as
 //  the geometric series of the last spans' ratio (the slowest Floquet wave's decay; docs/sound.md
@@ -20,13 +20,14 @@
 //  sleepers (a baffled rigid piston of the sleeper's area per rail seat, acoustics/piston.hpp;
 //  the seat's sleeper displacement tau u_z(x_j), tau = k_p* / (k_p* + k_b* - m_s omega^2) of
 //  Eq. (1) of dynamics/track.hpp):
-//    W_sleepers = omega^2 |tau|^2 (rho c / 2) sigma_p(k) A_s F^H G_s F,  G_s = sum_j A_z(x_j)^H A_z(x_j)  (S3)
+//    W_sleepers = omega^2 |tau|^2 (rho c / 2) sigma_p(k) A_s F^H G_s F,  G_s = sum_j A_z(x_j)^H
+//    A_z(x_j)  (S3)
 //
 // The G matrices vary smoothly with frequency; they are computed on the radiation grid
 // (sound_radiation.hpp) and interpolated to the lines. Band levels as (B1) of noise/bands.hpp with
 // each source's own roughness levels, the power per unit mean-square roughness being 2 W:
 //
-//    L_W(b) = 10 log10( sum_e r_e,b^2 <2 W_e>_b / W0 ),   W0 = 1 pW                             (S4)
+//    L_W(b) = 10 log10( sum_e r_e,b^2 <2 W_e>_b / W0 ),   W0 = 1 pW (S4)
 //
 // The bogie's wheel column sums the wheels, the rail column both rails (each coherently over its
 // contacts), the sleeper column both rails' sleepers; total = wheel + rail + sleepers. A wheel's
@@ -59,7 +60,8 @@ namespace rollnoise::pipeline {
 /// (S2), (S3) for loads on the rail's centre line: at each frequency of `grid`, with a_c(x) the
 /// row c of the rail's 6x6 transfer (RailModel::contact_transfers, centre line to centre line) from
 /// the loads at each of `positions` (6 per position: x, y, z, rot x, rot y, rot z),
-///   G_z = Int a_z^H a_z dx,  G_y = Int a_y^H a_y dx,  G_s = sum_j a_z(x_j)^H a_z(x_j)  (sleepers x_j = j L);
+///   G_z = Int a_z^H a_z dx,  G_y = Int a_y^H a_y dx,  G_s = sum_j a_z(x_j)^H a_z(x_j)  (sleepers
+///   x_j = j L);
 /// m^2/N^2 m and m^2/N^2 (6 p x 6 p). `gauss`: Gauss-Legendre points a sleeper span. The same for
 /// both rails (one track model); it depends on the track, the positions and the grid alone, so
 /// io keeps it in the cache (io/radiation_cache.hpp).
@@ -72,11 +74,11 @@ RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<d
 
 /// What the sound power needs besides the loop (read by io from the [sound] keys).
 struct SoundCase {
-  bool on = true;                       ///< noise.sound
+  bool on = true;  ///< noise.sound
   acoustics::Fluid fluid;
-  bool rail_ground = false;             ///< sound.rail_ground = "rigid"
-  double sleeper_length = 1.3;          ///< sound.sleeper_length: per rail seat (m)
-  double sleeper_width = 0.25;          ///< sound.sleeper_width (m)
+  bool rail_ground = false;                   ///< sound.rail_ground = "rigid"
+  double sleeper_length = 1.3;                ///< sound.sleeper_length: per rail seat (m)
+  double sleeper_width = 0.25;                ///< sound.sleeper_width (m)
   std::vector<Eigen::Vector2d> rail_section;  ///< (y, z) m; empty: dynamics::uic60_outline()
   /// The FE wheel along the tread and its contact options (null: the table wheel, no surface)
   std::function<std::shared_ptr<const dynamics::WheelFeModes>()> wheel_tread;
@@ -99,12 +101,18 @@ struct SoundCase {
 using SoundBands = std::vector<std::array<double, 4>>;
 
 struct SoundResult {
-  std::vector<double> centre;  ///< Hz
-  SoundBands power;            ///< the bogie
-  std::array<double, 4> power_a{};  ///< A-weighted totals of the columns, dB(A) re 1 pW
+  std::vector<double> centre;             ///< Hz
+  SoundBands power;                       ///< the bogie
+  std::array<double, 4> power_a{};        ///< A-weighted totals of the columns, dB(A) re 1 pW
   std::vector<SoundBands> contact_power;  ///< per physical wheel (wheels' order)
   std::vector<std::array<double, 4>> contact_power_a;
   std::string wheel_note;  ///< why the wheel column is empty (NaN), if it is
+  /// The wheels' power by mode family ([band][axial, radial, circumferential], dB re 1 pW): each
+  /// family's modes alone (their cross terms within an order kept, those with the other families
+  /// left out, so the three need not add up to the wheel column); the bogie's and each wheel's.
+  /// Empty without the wheel's surface.
+  std::vector<std::array<double, 3>> wheel_family;
+  std::vector<std::vector<std::array<double, 3>>> contact_family;
   std::shared_ptr<const WheelRadiation> wheel;  ///< null without the wheel's surface
   std::shared_ptr<const RailRadiation> rail;
   std::vector<double> decay_vertical, decay_lateral;  ///< dB/m per band
@@ -124,10 +132,11 @@ struct SoundResult {
 /// the response along the rail is taken from the centre-line load moved by the same lever arm
 /// (docs/sound.md Sec. 3.2).
 struct RailGram {
-  std::vector<int> contacts;  ///< indices into `contacts`, those on this side
+  std::vector<int> contacts;                     ///< indices into `contacts`, those on this side
   std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency, 4 m x 4 m
 };
-RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts, int side);
+RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts,
+                   int side);
 
 /// The A-weighted total (IEC 61672-1) of one column of band levels; NaN when a band is not finite
 /// (the table wheel's empty column).

@@ -14,7 +14,6 @@
 namespace rollnoise::pipeline {
 namespace {
 
-
 // The section boundary of the FE mesh as one closed chain of nodes, counter-clockwise in (r, z):
 // end, mid, end, mid, ... (each boundary edge's end and mid-side nodes), the first not repeated.
 std::vector<int> boundary_chain(const fem::QuadraticTriangleMesh& mesh) {
@@ -56,9 +55,11 @@ std::vector<int> boundary_chain(const fem::QuadraticTriangleMesh& mesh) {
 // edge (end a to end b), its collocation value that of the mid-side node m (the edge's midpoint);
 // per_edge = 2: each edge split at m into a-m and m-b, the values at their midpoints from the
 // edge's three nodes by the quadratic shape functions at xi = -+1/2:
-//   N_a = xi (xi - 1)/2, N_m = 1 - xi^2, N_b = xi (xi + 1)/2  ->  (3/8, 3/4, -1/8) and (-1/8, 3/4, 3/8).
+//   N_a = xi (xi - 1)/2, N_m = 1 - xi^2, N_b = xi (xi + 1)/2  ->  (3/8, 3/4, -1/8) and (-1/8, 3/4,
+//   3/8).
 struct BoundaryElements {
-  std::vector<Eigen::Vector2d> points;  // generator points (r, z): from the axis around the wheel back to it
+  std::vector<Eigen::Vector2d>
+      points;  // generator points (r, z): from the axis around the wheel back to it
   // per element: the three nodes of its edge and the weights at its midpoint
   std::vector<std::array<int, 3>> nodes;
   std::vector<std::array<double, 3>> weights;
@@ -82,7 +83,8 @@ BoundaryElements boundary_elements(const fem::QuadraticTriangleMesh& mesh, int p
   // rotate so that the first edge after the bore comes first, then drop the bore's edges
   std::size_t first = 0;
   for (std::size_t i = 0; i < edges.size(); ++i)
-    if (on_bore(edges[i]) && !on_bore(edges[(i + 1) % edges.size()])) first = (i + 1) % edges.size();
+    if (on_bore(edges[i]) && !on_bore(edges[(i + 1) % edges.size()]))
+      first = (i + 1) % edges.size();
   std::rotate(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(first), edges.end());
   while (!edges.empty() && on_bore(edges.back())) edges.pop_back();
   if (edges.empty() || std::any_of(edges.begin(), edges.end(), on_bore))
@@ -105,8 +107,8 @@ BoundaryElements boundary_elements(const fem::QuadraticTriangleMesh& mesh, int p
   auto face = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
     const int n = std::max(2, static_cast<int>(std::ceil((to - from).norm() / h)));
     for (int i = 0; i < n; ++i)
-      add(from + (to - from) * (static_cast<double>(i) / n), from + (to - from) * (static_cast<double>(i + 1) / n),
-          {0, 0, 0}, {0.0, 0.0, 0.0});
+      add(from + (to - from) * (static_cast<double>(i) / n),
+          from + (to - from) * (static_cast<double>(i + 1) / n), {0, 0, 0}, {0.0, 0.0, 0.0});
   };
   const Eigen::Vector2d start = node(edges.front()[0]), end = node(edges.back()[2]);
   face({0.0, start.y()}, start);
@@ -148,7 +150,8 @@ std::vector<double> radiation_grid(const std::vector<double>& centres, int per_b
   // 1/3 octave (base 10): a factor 10^{1/10}; per_band steps a band
   const int steps = static_cast<int>(std::ceil(per_band * 10.0 * std::log10(hi / lo) - 1e-9));
   std::vector<double> grid;
-  for (int i = 0; i <= steps; ++i) grid.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / steps));
+  for (int i = 0; i <= steps; ++i)
+    grid.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / steps));
   return grid;
 }
 
@@ -169,7 +172,8 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
   WheelRadiation out;
   out.frequency = grid;
   out.elements = static_cast<int>(b.length.size());
-  for (std::size_t e = 0; e < b.length.size(); ++e)  // the wheel's surface (not the faces across the bore)
+  for (std::size_t e = 0; e < b.length.size();
+       ++e)  // the wheel's surface (not the faces across the bore)
     if (b.weights[e][1] != 0.0) out.surface += 2 * kPi * b.radius[e] * b.length[e];
 
   // the modes by order, and their patterns
@@ -198,7 +202,8 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
   // the BEM at each grid frequency: every order in one call (its phi integrals shared)
   acoustics::AxisymmetricGenerator generator;
   generator.points = b.points;
-  generator.closed = false;  // from the axis across the bore's face, around the wheel, back to the axis
+  generator.closed =
+      false;  // from the axis across the bore's face, around the wheel, back to the axis
   for (auto& order : out.orders) order.power.resize(grid.size());
   parallel_for(grid.size(), threads, [&](std::size_t i, int) {
     const double k = 2 * kPi * grid[i] / fluid.sound_speed;
@@ -215,10 +220,11 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
     for (Eigen::Index j = 0; j < p.cols(); ++j) {
       double msq = 0.0;
       for (Eigen::Index e = 0; e < p.rows(); ++e)
-        msq += 0.5 * cn * b.length[static_cast<std::size_t>(e)] * b.radius[static_cast<std::size_t>(e)] *
-               p(e, j) * p(e, j);
+        msq += 0.5 * cn * b.length[static_cast<std::size_t>(e)] *
+               b.radius[static_cast<std::size_t>(e)] * p(e, j) * p(e, j);
       std::vector<double> sigma;
-      for (const Eigen::MatrixXcd& P : order.power) sigma.push_back(P(j, j).real() / (fluid.impedance() * msq));
+      for (const Eigen::MatrixXcd& P : order.power)
+        sigma.push_back(P(j, j).real() / (fluid.impedance() * msq));
       out.efficiency.push_back(std::move(sigma));
     }
   }
@@ -237,13 +243,15 @@ RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool g
   out.frequency = grid;
   out.ground = ground;
   const std::size_t n = grid.size();
-  out.vertical.resize(n), out.lateral.resize(n), out.sigma_vertical.resize(n), out.sigma_lateral.resize(n);
+  out.vertical.resize(n), out.lateral.resize(n), out.sigma_vertical.resize(n),
+      out.sigma_lateral.resize(n);
   parallel_for(n, threads, [&](std::size_t i, int) {
     const double k = 2 * kPi * grid[i] / fluid.sound_speed;
     acoustics::Bem2dOptions options;
     options.ground_plane = ground;
     // 10 elements a wavelength (within 0.5 % of 4 times as many, bem2d_test), at least 40
-    options.target_elements = std::clamp(static_cast<int>(std::ceil(10 * perimeter * k / (2 * kPi))), 40, 400);
+    options.target_elements =
+        std::clamp(static_cast<int>(std::ceil(10 * perimeter * k / (2 * kPi))), 40, 400);
     const std::vector<acoustics::RigidRadiation2d> r = acoustics::rigid_translation_radiation_2d(
         section, k, std::vector<Eigen::Vector2d>{{0.0, 1.0}, {1.0, 0.0}}, fluid, options);
     // per unit velocity amplitude squared: <v^2> = |V|^2 / 2

@@ -36,9 +36,10 @@
 namespace rollnoise::pipeline {
 
 /// `per_band` log-spaced frequencies per 1/3 octave from the lower edge of the first band to the
-/// upper edge of the last (Hz, ascending): kRailGridPerBand for the rail's tables, kWheelGridPerBand
-/// for the wheel's (docs/sound.md Sec. 5: the wheel's modal efficiencies vary by a factor 2 within a
-/// sixth of an octave at 1-3 kHz; 6 a band hold its band levels within 0.2 dB of 12 a band).
+/// upper edge of the last (Hz, ascending): kRailGridPerBand for the rail's tables,
+/// kWheelGridPerBand for the wheel's (docs/sound.md Sec. 5: the wheel's modal efficiencies vary by
+/// a factor 2 within a sixth of an octave at 1-3 kHz; 6 a band hold its band levels within 0.2 dB
+/// of 12 a band).
 std::vector<double> radiation_grid(const std::vector<double>& centres, int per_band);
 constexpr int kRailGridPerBand = 6;
 constexpr int kWheelGridPerBand = 6;
@@ -70,21 +71,22 @@ struct WheelRadiation {
 
 /// The radiation of the modes of `w` with n >= n_min (w from wheel_fe_modes: with its mesh and
 /// section shapes) on `grid`. std::invalid_argument for modes without section shapes.
-/// The grid's frequencies on `threads` threads (the same result for any number). `per_edge`: boundary
-/// elements a quadratic edge of the FE mesh (1: the mesh's 8 mm edges, 8.6 elements a wavelength
-/// at 5 kHz; 2: each edge split at its mid-side node; docs/sound.md Sec. 2 compares them).
+/// The grid's frequencies on `threads` threads (the same result for any number). `per_edge`:
+/// boundary elements a quadratic edge of the FE mesh (1: the mesh's 8 mm edges, 8.6 elements a
+/// wavelength at 5 kHz; 2: each edge split at its mid-side node; docs/sound.md Sec. 2 compares
+/// them).
 WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
                                const std::vector<double>& grid, const acoustics::Fluid& fluid,
                                int threads = 1, int per_edge = 1);
 
 /// The rail section's radiation per unit length.
 struct RailRadiation {
-  std::vector<double> frequency;      ///< the grid (Hz)
-  std::vector<double> vertical;       ///< P_v (W/m per (m/s)^2 velocity amplitude)
-  std::vector<double> lateral;        ///< P_l
-  std::vector<double> sigma_vertical; ///< P_v / (rho c (1/2) Int n_z^2 ds)
-  std::vector<double> sigma_lateral;  ///< P_l / (rho c (1/2) Int n_y^2 ds)
-  bool ground = false;                ///< over a rigid plane at the foot
+  std::vector<double> frequency;       ///< the grid (Hz)
+  std::vector<double> vertical;        ///< P_v (W/m per (m/s)^2 velocity amplitude)
+  std::vector<double> lateral;         ///< P_l
+  std::vector<double> sigma_vertical;  ///< P_v / (rho c (1/2) Int n_z^2 ds)
+  std::vector<double> sigma_lateral;   ///< P_l / (rho c (1/2) Int n_y^2 ds)
+  bool ground = false;                 ///< over a rigid plane at the foot
 };
 
 /// `outline`: the section (y, z) in m, closed polygon (dynamics::uic60_outline() or

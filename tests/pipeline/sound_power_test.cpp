@@ -1,6 +1,6 @@
-// The sound stage (pipeline/sound_power.hpp, docs/sound.md): the rail's integral along x against the
-// closed form of the continuously supported beam, the energy bound, the columns' sums, the table
-// wheel's empty column.
+// The sound stage (pipeline/sound_power.hpp, docs/sound.md): the rail's integral along x against
+// the closed form of the continuously supported beam, the energy bound, the columns' sums, the
+// table wheel's empty column.
 #include "pipeline/sound_power.hpp"
 
 #include <gtest/gtest.h>
@@ -44,7 +44,8 @@ double closed_form_square_integral(const dynamics::BeamSection& beam, const dyna
   const auto& k = b.wavenumbers();
   cdouble sum = 0.0;
   for (int j = 0; j < 2; ++j)
-    for (int l = 0; l < 2; ++l) sum += a[j] * std::conj(a[l]) / (cdouble(0, 1) * (k[j] - std::conj(k[l])));
+    for (int l = 0; l < 2; ++l)
+      sum += a[j] * std::conj(a[l]) / (cdouble(0, 1) * (k[j] - std::conj(k[l])));
   return 2 * sum.real();
 }
 
@@ -58,23 +59,25 @@ TEST(SoundPower, RailIntegralAlongXMatchesTheContinuousBeamsClosedForm) {
   noise::ContactPoint c;
   c.rail_x = 0.3;
   const std::vector<double> grid = {100, 250, 500, 1000, 2000, 3500, 5000};
-  const pipeline::RailGram g = pipeline::rail_gram(pipeline::rail_line_gram(rail, {0.3}, grid, 12), {c}, 1);
+  const pipeline::RailGram g =
+      pipeline::rail_gram(pipeline::rail_line_gram(rail, {0.3}, grid, 12), {c}, 1);
   ASSERT_EQ(g.z.size(), grid.size());
   double worst = 0.0;
   for (std::size_t k = 0; k < grid.size(); ++k) {
-    const double exact =
-        closed_form_square_integral(track.vertical, track.vertical_support, track.sleeper_spacing, grid[k]);
+    const double exact = closed_form_square_integral(track.vertical, track.vertical_support,
+                                                     track.sleeper_spacing, grid[k]);
     const double numeric = g.z[k](0, 0).real();
     worst = std::max(worst, std::abs(numeric / exact - 1.0));
-    std::printf("  %6.0f Hz: Int |w/F|^2 dx = %.4e (closed form %.4e) m^3/N^2\n", grid[k], numeric, exact);
+    std::printf("  %6.0f Hz: Int |w/F|^2 dx = %.4e (closed form %.4e) m^3/N^2\n", grid[k], numeric,
+                exact);
   }
   EXPECT_LT(worst, 5e-3);
 }
 
 // The energy bound (S5) and the columns: on the 300 m curve's bogie (FE wheel, coarse mesh, bands
-// to 2.5 kHz) the radiated total lies below the mechanical power the contact forces put in, in every
-// band; the total column is the power sum of wheel, rail and sleepers (0.01 dB); the A-weighted
-// totals follow from the bands (0.01 dB).
+// to 2.5 kHz) the radiated total lies below the mechanical power the contact forces put in, in
+// every band; the total column is the power sum of wheel, rail and sleepers (0.01 dB); the
+// A-weighted totals follow from the bands (0.01 dB).
 TEST(SoundPower, RadiatedPowerStaysBelowTheMechanicalInputInEveryBand) {
   const io::NoiseInputs in = sound_case("curve_300m.toml", {});
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
@@ -85,16 +88,20 @@ TEST(SoundPower, RadiatedPowerStaysBelowTheMechanicalInputInEveryBand) {
   for (std::size_t b = 0; b < s.power.size(); ++b) {
     const auto& p = s.power[b];
     for (double v : p) EXPECT_TRUE(std::isfinite(v)) << "band " << b;
-    const double sum = 10 * std::log10(std::pow(10, p[0] / 10) + std::pow(10, p[1] / 10) + std::pow(10, p[2] / 10));
+    const double sum = 10 * std::log10(std::pow(10, p[0] / 10) + std::pow(10, p[1] / 10) +
+                                       std::pow(10, p[2] / 10));
     EXPECT_NEAR(p[3], sum, 0.01) << "band " << b;
-    EXPECT_LT(p[3], s.input_power[b]) << "band " << s.centre[b] << " Hz radiates more than is put in";
-    std::printf("  %6.0f Hz: wheel %5.1f rail %5.1f sleepers %5.1f total %5.1f, input %5.1f dB re 1 pW\n",
-                s.centre[b], p[0], p[1], p[2], p[3], s.input_power[b]);
+    EXPECT_LT(p[3], s.input_power[b])
+        << "band " << s.centre[b] << " Hz radiates more than is put in";
+    std::printf(
+        "  %6.0f Hz: wheel %5.1f rail %5.1f sleepers %5.1f total %5.1f, input %5.1f dB re 1 pW\n",
+        s.centre[b], p[0], p[1], p[2], p[3], s.input_power[b]);
   }
   for (int c = 0; c < 4; ++c) {
     std::vector<double> column;
     for (const auto& p : s.power) column.push_back(p[static_cast<std::size_t>(c)]);
-    EXPECT_NEAR(s.power_a[static_cast<std::size_t>(c)], acoustics::a_weighted_total(s.centre, column), 0.01);
+    EXPECT_NEAR(s.power_a[static_cast<std::size_t>(c)],
+                acoustics::a_weighted_total(s.centre, column), 0.01);
   }
   ASSERT_EQ(s.contact_power.size(), r.wheels.size());
 }
@@ -111,8 +118,8 @@ TEST(SoundPower, RadiatedPowerStaysBelowTheMechanicalInputInEveryBand) {
 //  - high k a (5 and 5.6 kHz, k a = 42 to 47): sigma -> 1; the mean over the modes within 10 %,
 //    each within [0.5, 2] (the hub's and the rim's recesses make single modes swing about 1).
 TEST(SoundPower, WheelModesRadiateAsMultipolesAtLowAndTowardsOneAtHighFrequency) {
-  const dynamics::WheelSection section =
-      io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv");
+  const dynamics::WheelSection section = io::read_wheel_section(
+      std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv");
   dynamics::WheelFeOptions coarse;
   coarse.mesh_size = 0.02;
   coarse.f_max = 3000.0;
@@ -126,14 +133,16 @@ TEST(SoundPower, WheelModesRadiateAsMultipolesAtLowAndTowardsOneAtHighFrequency)
       const std::vector<double>& s = r.efficiency[column];
       for (std::size_t i = 0; i + 1 < low.size(); ++i) {
         const double slope = std::log(s[i + 1] / s[i]) / std::log(low[i + 1] / low[i]);
-        EXPECT_NEAR(slope, 2 * order.n + 2, 0.1) << "n = " << order.n << ", mode " << order.modes[j];
+        EXPECT_NEAR(slope, 2 * order.n + 2, 0.1)
+            << "n = " << order.n << ", mode " << order.modes[j];
         ++checked;
       }
     }
   EXPECT_GE(checked, 8u);
 
   const dynamics::WheelFeModes fine = dynamics::wheel_fe_modes(section, dynamics::WheelFeOptions{});
-  const pipeline::WheelRadiation h = pipeline::wheel_radiation(fine, 2, {5000.0, 5600.0}, acoustics::Fluid{}, 2);
+  const pipeline::WheelRadiation h =
+      pipeline::wheel_radiation(fine, 2, {5000.0, 5600.0}, acoustics::Fluid{}, 2);
   for (std::size_t i = 0; i < 2; ++i) {
     double mean = 0.0;
     for (const auto& s : h.efficiency) {
@@ -142,14 +151,16 @@ TEST(SoundPower, WheelModesRadiateAsMultipolesAtLowAndTowardsOneAtHighFrequency)
       mean += s[i] / static_cast<double>(h.efficiency.size());
     }
     EXPECT_NEAR(mean, 1.0, 0.1) << h.frequency[i] << " Hz";
-    std::printf("  %.0f Hz: mean sigma of %zu modes %.3f\n", h.frequency[i], h.efficiency.size(), mean);
+    std::printf("  %.0f Hz: mean sigma of %zu modes %.3f\n", h.frequency[i], h.efficiency.size(),
+                mean);
   }
 }
 
 // The table wheel has no surface: its sound column is NaN and the note names wheel.model; the rail
 // and the sleepers are still computed.
 TEST(SoundPower, TableWheelLeavesTheWheelColumnEmptyNamingWheelModel) {
-  const io::NoiseInputs in = sound_case("curve_300m_table.toml", {"curve.wheels=[\"leading_outer\"]"}, false);
+  const io::NoiseInputs in =
+      sound_case("curve_300m_table.toml", {"curve.wheels=[\"leading_outer\"]"}, false);
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_TRUE(r.sound);
   EXPECT_NE(r.sound->wheel_note.find("wheel.model"), std::string::npos);
