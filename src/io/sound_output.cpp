@@ -25,6 +25,60 @@ void write_bands(Hdf5Writer& w, const std::string& group, const pipeline::SoundB
       std::string("dB(A) re 1 pW (IEC 61672-1 A-weighting over the bands); [") + kColumns + "]");
 }
 
+// /sound/radiation_efficiency/{rail, wheel}: the tables the powers were made of.
+void write_efficiencies(Hdf5Writer& w, const pipeline::SoundResult& s) {
+  if (s.rail) {
+    w.write("/sound/radiation_efficiency/rail/frequency", s.rail->frequency,
+            {s.rail->frequency.size()}, "Hz");
+    w.write("/sound/radiation_efficiency/rail/vertical", s.rail->sigma_vertical,
+            {s.rail->sigma_vertical.size()},
+            "- (sigma of the section's rigid vertical motion, 2D BEM)");
+    w.write("/sound/radiation_efficiency/rail/lateral", s.rail->sigma_lateral,
+            {s.rail->sigma_lateral.size()},
+            "- (sigma of the section's rigid lateral motion, 2D BEM)");
+    w.attribute(
+        "/sound/radiation_efficiency/rail", "ground",
+        s.rail->ground ? "rigid plane at the foot (sound.rail_ground = \"rigid\")" : "free field");
+  }
+  if (s.wheel) {
+    const pipeline::WheelRadiation& wr = *s.wheel;
+    const std::string g = "/sound/radiation_efficiency/wheel";
+    w.write(g + "/frequency", wr.frequency, {wr.frequency.size()}, "Hz");
+    std::vector<double> sigma;
+    std::vector<int> n, mode;
+    for (const auto& o : wr.orders)
+      for (int k : o.modes) n.push_back(o.n), mode.push_back(k);
+    for (std::size_t f = 0; f < wr.frequency.size(); ++f)
+      for (const auto& e : wr.efficiency) sigma.push_back(e[f]);
+    w.write(g + "/sigma", sigma, {wr.frequency.size(), wr.efficiency.size()},
+            "- (each mode's radiation efficiency, axisymmetric BEM; [frequency][mode])");
+    w.write(g + "/n", n, {n.size()}, "- (nodal diameters of each column of sigma)");
+    w.write(g + "/mode", mode, {mode.size()},
+            "- (index of the FE mode, as /wheel/modes of `rollnoise modes`)");
+    w.write(g + "/surface", wr.surface,
+            "m^2 (the radiating surface: the section boundary swept around)");
+    w.write(g + "/elements", std::vector<int>{wr.elements}, {},
+            "- (boundary elements of the section)");
+  }
+}
+
+// /track/decay_rate/*: EN 15461 from the track model, and EN ISO 3095's lower limits.
+void write_decay_rates(Hdf5Writer& w, const pipeline::SoundResult& s) {
+  w.write("/track/decay_rate/band_centre", s.centre, {s.centre.size()}, "Hz");
+  w.write("/track/decay_rate/vertical", s.decay_vertical, {s.decay_vertical.size()},
+          "dB/m (EN 15461: vertical transfer receptances along the rail from a vertical force at "
+          "track.position, band means)");
+  w.write("/track/decay_rate/lateral", s.decay_lateral, {s.decay_lateral.size()},
+          "dB/m (EN 15461: lateral transfer receptances from a lateral force)");
+  w.write("/track/decay_rate/limit_vertical", s.decay_limit_vertical,
+          {s.decay_limit_vertical.size()},
+          "dB/m (EN ISO 3095:2013 lower limit of the vertical decay rate of a reference track; NaN "
+          "outside 250 Hz - 5 kHz)");
+  w.write(
+      "/track/decay_rate/limit_lateral", s.decay_limit_lateral, {s.decay_limit_lateral.size()},
+      "dB/m (EN ISO 3095:2013 lower limit of the lateral decay rate; NaN outside 250 Hz - 5 kHz)");
+}
+
 }  // namespace
 
 void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
@@ -68,52 +122,8 @@ void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
         "and sleepers under this wheel's contact forces alone (the bogie's columns are coherent "
         "sums over the contacts on each rail)");
   }
-  if (s.rail) {
-    w.write("/sound/radiation_efficiency/rail/frequency", s.rail->frequency,
-            {s.rail->frequency.size()}, "Hz");
-    w.write("/sound/radiation_efficiency/rail/vertical", s.rail->sigma_vertical,
-            {s.rail->sigma_vertical.size()},
-            "- (sigma of the section's rigid vertical motion, 2D BEM)");
-    w.write("/sound/radiation_efficiency/rail/lateral", s.rail->sigma_lateral,
-            {s.rail->sigma_lateral.size()},
-            "- (sigma of the section's rigid lateral motion, 2D BEM)");
-    w.attribute(
-        "/sound/radiation_efficiency/rail", "ground",
-        s.rail->ground ? "rigid plane at the foot (sound.rail_ground = \"rigid\")" : "free field");
-  }
-  if (s.wheel) {
-    const pipeline::WheelRadiation& wr = *s.wheel;
-    const std::string g = "/sound/radiation_efficiency/wheel";
-    w.write(g + "/frequency", wr.frequency, {wr.frequency.size()}, "Hz");
-    std::vector<double> sigma;
-    std::vector<int> n, mode;
-    for (const auto& o : wr.orders)
-      for (int k : o.modes) n.push_back(o.n), mode.push_back(k);
-    for (std::size_t f = 0; f < wr.frequency.size(); ++f)
-      for (const auto& e : wr.efficiency) sigma.push_back(e[f]);
-    w.write(g + "/sigma", sigma, {wr.frequency.size(), wr.efficiency.size()},
-            "- (each mode's radiation efficiency, axisymmetric BEM; [frequency][mode])");
-    w.write(g + "/n", n, {n.size()}, "- (nodal diameters of each column of sigma)");
-    w.write(g + "/mode", mode, {mode.size()},
-            "- (index of the FE mode, as /wheel/modes of `rollnoise modes`)");
-    w.write(g + "/surface", wr.surface,
-            "m^2 (the radiating surface: the section boundary swept around)");
-    w.write(g + "/elements", std::vector<int>{wr.elements}, {},
-            "- (boundary elements of the section)");
-  }
-  w.write("/track/decay_rate/band_centre", s.centre, {s.centre.size()}, "Hz");
-  w.write("/track/decay_rate/vertical", s.decay_vertical, {s.decay_vertical.size()},
-          "dB/m (EN 15461: vertical transfer receptances along the rail from a vertical force at "
-          "track.position, band means)");
-  w.write("/track/decay_rate/lateral", s.decay_lateral, {s.decay_lateral.size()},
-          "dB/m (EN 15461: lateral transfer receptances from a lateral force)");
-  w.write("/track/decay_rate/limit_vertical", s.decay_limit_vertical,
-          {s.decay_limit_vertical.size()},
-          "dB/m (EN ISO 3095:2013 lower limit of the vertical decay rate of a reference track; NaN "
-          "outside 250 Hz - 5 kHz)");
-  w.write(
-      "/track/decay_rate/limit_lateral", s.decay_limit_lateral, {s.decay_limit_lateral.size()},
-      "dB/m (EN ISO 3095:2013 lower limit of the lateral decay rate; NaN outside 250 Hz - 5 kHz)");
+  write_efficiencies(w, s);
+  write_decay_rates(w, s);
 }
 
 }  // namespace rollnoise::io

@@ -301,32 +301,28 @@ RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoi
   return g;
 }
 
-SoundResult sound_power(const noise::ContactSetLoopResult& loop,
-                        const std::vector<noise::ContactPoint>& contacts,
-                        const std::vector<SoundWheel>& wheels,
-                        const std::vector<std::vector<double>>& source_levels,
-                        const std::vector<double>& centres, const dynamics::RailModel& rail,
-                        const SoundCase& sound, int threads) {
-  const auto t0 = std::chrono::steady_clock::now();
-  SoundResult r;
-  r.centre = centres;
-  const std::vector<double> grid = radiation_grid(centres, kRailGridPerBand);
+namespace {
 
-  // the radiation tables (from the cache where io gives one)
-  std::shared_ptr<const dynamics::WheelFeModes> tread =
-      sound.wheel_tread ? sound.wheel_tread() : nullptr;
-  if (tread && sound.wheel_table)
-    r.wheel = sound.wheel_table(radiation_grid(centres, kWheelGridPerBand));
-  r.wheel_note = r.wheel ? "" : sound.wheel_missing;
-  if (sound.rail_table)
-    r.rail = sound.rail_table(grid);
-  else
-    r.rail = std::make_shared<const RailRadiation>(
-        rail_radiation(sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
-                       sound.rail_ground, grid, sound.fluid, threads));
+// What the lines' powers need, prepared once a run: the rails' Gram matrices, each wheel's modal
+// participation and where its modes sit in the radiation table, the sleepers' piston efficiency.
+struct SoundSetup {
+  std::vector<double> grid;                         // the rail's radiation grid
+  std::vector<RailGram> rails;                      // side +1, side -1
+  std::vector<dynamics::ModalParticipation> modal;  // per wheel
+  std::vector<Eigen::MatrixXcd> psi_cos, psi_sin;   // their rows, complex
+  // per order of the radiation table, per mode: its row in ModalParticipation (-1: none) and its
+  // family (0 axial, 1 radial, 2 circumferential)
+  std::vector<std::vector<int>> order_rows, order_family;
+  std::vector<double> piston;  // sigma of a sleeper on the grid
+};
 
-  // the rails' Gram matrices (S2), (S3): Gauss points a span from the bending wavelength at the top
-  // of the grid (12 a span up to 5 kHz: 2.4 wavelengths of |u|^2 in a 0.6 m span)
+// (S2), (S3): the Gram matrices of both rails, from the cache where io gives one. Gauss points a
+// span from the bending wavelength at the top of the grid (12 a span up to 5 kHz: 2.4 wavelengths
+// of |u|^2 in a 0.6 m span).
+std::vector<RailGram> rail_grams(const dynamics::RailModel& rail,
+                                 const std::vector<noise::ContactPoint>& contacts,
+                                 const std::vector<double>& grid, const SoundCase& sound,
+                                 int threads) {
   const int gauss = std::max(12, static_cast<int>(std::ceil(12 * std::sqrt(grid.back() / 5000.0))));
   std::vector<double> positions;
   for (const noise::ContactPoint& c : contacts)
@@ -339,165 +335,186 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
                                   rail_line_gram(rail, positions, grid, gauss, threads));
   std::vector<RailGram> rails;
   for (int side : {1, -1}) rails.push_back(rail_gram(*line, contacts, side));
+  return rails;
+}
 
-  // each wheel's modal participation (W2) at its contacts
-  std::vector<dynamics::ModalParticipation> modal;
-  if (r.wheel)
-    for (const SoundWheel& w : wheels) {
-      std::vector<dynamics::TreadContact> at;
-      for (int a : w.contacts) {
-        const noise::ContactPoint& c = contacts[static_cast<std::size_t>(a)];
-        at.push_back({c.position.wheel_shift_y, c.position.contact_angle});
-      }
-      modal.push_back(dynamics::modal_participation(*tread, sound.wheel_options, at));
+// (W2) of each wheel at its contacts, and where its modes sit in the radiation table's orders.
+void add_modal_setup(SoundSetup& s, const dynamics::WheelFeModes& tread,
+                     const WheelRadiation& table, const std::vector<noise::ContactPoint>& contacts,
+                     const std::vector<SoundWheel>& wheels, const SoundCase& sound) {
+  for (const SoundWheel& w : wheels) {
+    std::vector<dynamics::TreadContact> at;
+    for (int a : w.contacts) {
+      const noise::ContactPoint& c = contacts[static_cast<std::size_t>(a)];
+      at.push_back({c.position.wheel_shift_y, c.position.contact_angle});
     }
-  // the position in the radiation table's orders of each participating mode
-  std::vector<std::vector<int>> order_rows;  // [order][j] -> row in ModalParticipation
-  std::vector<std::vector<int>>
-      order_family;  // [order][j] -> the mode's family (0 axial, 1 radial, 2 circumferential)
-  if (r.wheel && !modal.empty())
-    for (const auto& order : r.wheel->orders) {
-      std::vector<int> rows, families;
-      for (int k : order.modes)
-        families.push_back(static_cast<int>(tread->modes[static_cast<std::size_t>(k)].family));
-      order_family.push_back(families);
-      for (int k : order.modes) {
-        const auto it = std::find(modal.front().modes.begin(), modal.front().modes.end(), k);
-        rows.push_back(it == modal.front().modes.end()
-                           ? -1
-                           : static_cast<int>(it - modal.front().modes.begin()));
-      }
-      order_rows.push_back(rows);
+    s.modal.push_back(dynamics::modal_participation(tread, sound.wheel_options, at));
+    s.psi_cos.push_back(s.modal.back().cos_set.cast<cdouble>());
+    s.psi_sin.push_back(s.modal.back().sin_set.cast<cdouble>());
+  }
+  if (s.modal.empty()) return;
+  const std::vector<int>& participating = s.modal.front().modes;
+  for (const auto& order : table.orders) {
+    std::vector<int> rows, families;
+    for (int k : order.modes) {
+      families.push_back(static_cast<int>(tread.modes[static_cast<std::size_t>(k)].family));
+      const auto it = std::find(participating.begin(), participating.end(), k);
+      rows.push_back(it == participating.end() ? -1 : static_cast<int>(it - participating.begin()));
     }
+    s.order_rows.push_back(rows);
+    s.order_family.push_back(families);
+  }
+}
 
-  const dynamics::Support& seat = rail.track().vertical_support;
-  const double area = sound.sleeper_length * sound.sleeper_width;
+// The structures' values at one line, interpolated from the grids.
+struct LineStructures {
+  double w2 = 0.0;                           // omega^2
+  double pv = 0.0, pl = 0.0;                 // the rail section's P_v, P_l
+  double sleeper = 0.0;                      // (S3)'s factor |tau|^2 (rho c / 2) sigma_p A_s
+  std::vector<Eigen::MatrixXcd> gz, gy, gs;  // each rail's Gram matrices
+  std::vector<Eigen::MatrixXcd> pw;          // the wheel's P_n
+  std::vector<Eigen::VectorXcd> R;           // each wheel's modal responses
+};
+
+LineStructures line_structures(double f, const SoundSetup& s, const SoundResult& r,
+                               const dynamics::Support& seat, const SoundCase& sound) {
+  LineStructures l;
+  const double omega = angular(f);
+  l.w2 = omega * omega;
+  const GridPlace at = grid_place(s.grid, f);
+  l.pv = interpolated(r.rail->vertical, at), l.pl = interpolated(r.rail->lateral, at);
+  // Eq. (1) of dynamics/track.hpp: the sleeper's displacement per the rail's at its seat
+  const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
+  const cdouble kb =
+      cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
+  const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * l.w2));
+  l.sleeper = tau2 * 0.5 * sound.fluid.impedance() * interpolated(s.piston, at) *
+              sound.sleeper_length * sound.sleeper_width;
+  for (const RailGram& g : s.rails) {
+    const bool any = !g.contacts.empty();
+    l.gz.push_back(any ? interpolated(g.z, at) : Eigen::MatrixXcd());
+    l.gy.push_back(any ? interpolated(g.y, at) : Eigen::MatrixXcd());
+    l.gs.push_back(any ? interpolated(g.sleepers, at) : Eigen::MatrixXcd());
+  }
+  if (r.wheel) {
+    const GridPlace on_wheel = grid_place(r.wheel->frequency, f);
+    for (const auto& order : r.wheel->orders)
+      l.pw.push_back(interpolated_power(order.power, on_wheel));
+  }
+  for (const auto& m : s.modal) l.R.push_back(dynamics::modal_responses(m, f));
+  return l;
+}
+
+// (S2), (S3) of the forces F on rail s: the rail's and its sleepers' power.
+std::pair<double, double> rail_power(const LineStructures& l, std::size_t s,
+                                     const Eigen::VectorXcd& F) {
+  return {l.w2 * (l.pv * F.dot(l.gz[s] * F).real() + l.pl * F.dot(l.gy[s] * F).real()),
+          l.w2 * l.sleeper * F.dot(l.gs[s] * F).real()};
+}
+
+// (S1) of wheel w under its contacts' forces F: all its modes (family -1) or one family's alone
+// (their cross terms within an order kept, the other families' left out).
+double wheel_power(const LineStructures& l, const SoundSetup& s, std::size_t w,
+                   const Eigen::VectorXcd& F, int family) {
+  const Eigen::VectorXcd qc = l.R[w].cwiseProduct(s.psi_cos[w] * F);
+  const Eigen::VectorXcd qs = l.R[w].cwiseProduct(s.psi_sin[w] * F);
+  double power = 0.0;
+  for (std::size_t o = 0; o < l.pw.size(); ++o) {
+    const std::vector<int>& rows = s.order_rows[o];
+    Eigen::VectorXcd vc = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(rows.size())), vs = vc;
+    for (std::size_t j = 0; j < rows.size(); ++j) {
+      if (rows[j] < 0 || (family >= 0 && s.order_family[o][j] != family)) continue;
+      vc(static_cast<Eigen::Index>(j)) = qc(rows[j]);
+      vs(static_cast<Eigen::Index>(j)) = qs(rows[j]);
+    }
+    power += l.w2 * (vc.dot(l.pw[o] * vc).real() + vs.dot(l.pw[o] * vs).real());
+  }
+  return power;
+}
+
+// The forces of rail g's contacts that belong to `wheel` (the others zero), or an empty vector.
+Eigen::VectorXcd own_forces(const noise::ContactSetLoopResult& loop, const RailGram& g,
+                            const SoundWheel& wheel, std::size_t k, int e) {
+  Eigen::VectorXcd F = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(4 * g.contacts.size()));
+  bool any = false;
+  for (std::size_t j = 0; j < g.contacts.size(); ++j)
+    if (std::find(wheel.contacts.begin(), wheel.contacts.end(), g.contacts[j]) !=
+        wheel.contacts.end()) {
+      F.segment<4>(static_cast<Eigen::Index>(4 * j)) =
+          loop.force[k].block<4, 1>(4 * g.contacts[j], e);
+      any = true;
+    }
+  return any ? F : Eigen::VectorXcd();
+}
+
+LinePowers line_powers(const noise::ContactSetLoopResult& loop,
+                       const std::vector<noise::ContactPoint>& contacts,
+                       const std::vector<SoundWheel>& wheels, const SoundSetup& s,
+                       const SoundResult& r, const dynamics::RailModel& rail,
+                       const SoundCase& sound, int threads) {
   const std::size_t nl = loop.frequency.size(), ne = static_cast<std::size_t>(loop.sources());
   const std::size_t nw = wheels.size();
   LinePowers lp;
   lp.wheel_total.assign(ne, std::vector<double>(nl, 0.0));
-  lp.rail_total = lp.sleeper_total = lp.wheel_total;
+  lp.rail_total = lp.sleeper_total = lp.input = lp.wheel_total;
   lp.wheel.assign(nw, lp.wheel_total);
   lp.rail = lp.sleepers = lp.wheel;
-  lp.input = lp.wheel_total;
   lp.family.assign(nw, std::vector<std::vector<std::vector<double>>>(3, lp.wheel_total));
-
-  // the sleepers' piston efficiency (smooth in f) on the grid, the modal rows as complex once
-  std::vector<double> piston;
-  for (double fg : grid)
-    piston.push_back(acoustics::rectangular_piston_efficiency(
-        2 * kPi * fg / sound.fluid.sound_speed, sound.sleeper_length, sound.sleeper_width));
-  std::vector<Eigen::MatrixXcd> psi_cos, psi_sin;
-  for (const auto& m : modal)
-    psi_cos.push_back(m.cos_set.cast<cdouble>()), psi_sin.push_back(m.sin_set.cast<cdouble>());
   parallel_for(nl, threads, [&](std::size_t k, int) {
-    const double f = loop.frequency[k], omega = angular(f), w2 = omega * omega;
-    const GridPlace at = grid_place(grid, f);
-    const double pv = interpolated(r.rail->vertical, at), pl = interpolated(r.rail->lateral, at);
-    const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
-    const cdouble kb =
-        cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
-    const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * w2));
-    const double sleeper_factor =
-        tau2 * 0.5 * sound.fluid.impedance() * interpolated(piston, at) * area;
-    std::vector<Eigen::MatrixXcd> gz, gy, gs;
-    for (const RailGram& g : rails) {
-      if (g.contacts.empty()) {
-        gz.emplace_back(), gy.emplace_back(), gs.emplace_back();
-        continue;
-      }
-      gz.push_back(interpolated(g.z, at));
-      gy.push_back(interpolated(g.y, at));
-      gs.push_back(interpolated(g.sleepers, at));
-    }
-    std::vector<Eigen::MatrixXcd> pw;  // P_n at f
-    if (r.wheel) {
-      const GridPlace on_wheel = grid_place(r.wheel->frequency, f);
-      for (const auto& order : r.wheel->orders)
-        pw.push_back(interpolated_power(order.power, on_wheel));
-    }
-    std::vector<Eigen::VectorXcd> R;  // each wheel's modal responses
-    for (const auto& m : modal) R.push_back(dynamics::modal_responses(m, f));
-
+    const LineStructures l =
+        line_structures(loop.frequency[k], s, r, rail.track().vertical_support, sound);
     for (std::size_t e = 0; e < ne; ++e) {
       const int src = static_cast<int>(e);
       lp.input[e][k] = input_power(loop, contacts, k, src);
-      // rails (S2), (S3): each coherently over its contacts
-      for (std::size_t s = 0; s < rails.size(); ++s) {
-        if (rails[s].contacts.empty()) continue;
-        const Eigen::VectorXcd F = stacked_forces(loop, rails[s].contacts, k, src);
-        lp.rail_total[e][k] += w2 * (pv * F.dot(gz[s] * F).real() + pl * F.dot(gy[s] * F).real());
-        lp.sleeper_total[e][k] += w2 * sleeper_factor * F.dot(gs[s] * F).real();
+      for (std::size_t side = 0; side < s.rails.size(); ++side) {  // each rail coherently
+        if (s.rails[side].contacts.empty()) continue;
+        const auto [rail_w, sleeper_w] =
+            rail_power(l, side, stacked_forces(loop, s.rails[side].contacts, k, src));
+        lp.rail_total[e][k] += rail_w;
+        lp.sleeper_total[e][k] += sleeper_w;
       }
       for (std::size_t w = 0; w < nw; ++w) {
-        // the wheel's own rail and sleepers under its contacts' forces alone
-        for (std::size_t s = 0; s < rails.size(); ++s) {
-          const RailGram& g = rails[s];
-          Eigen::VectorXcd F =
-              Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(4 * g.contacts.size()));
-          bool any = false;
-          for (std::size_t j = 0; j < g.contacts.size(); ++j)
-            if (std::find(wheels[w].contacts.begin(), wheels[w].contacts.end(), g.contacts[j]) !=
-                wheels[w].contacts.end()) {
-              F.segment<4>(static_cast<Eigen::Index>(4 * j)) =
-                  loop.force[k].block<4, 1>(4 * g.contacts[j], src);
-              any = true;
-            }
-          if (!any) continue;
-          lp.rail[w][e][k] += w2 * (pv * F.dot(gz[s] * F).real() + pl * F.dot(gy[s] * F).real());
-          lp.sleepers[w][e][k] += w2 * sleeper_factor * F.dot(gs[s] * F).real();
+        for (std::size_t side = 0; side < s.rails.size(); ++side) {  // under its own forces alone
+          const Eigen::VectorXcd F = own_forces(loop, s.rails[side], wheels[w], k, src);
+          if (F.size() == 0) continue;
+          const auto [rail_w, sleeper_w] = rail_power(l, side, F);
+          lp.rail[w][e][k] += rail_w;
+          lp.sleepers[w][e][k] += sleeper_w;
         }
         if (!r.wheel) continue;
-        // (S1): the wheel's modes under its contacts' forces
         const Eigen::VectorXcd F = stacked_forces(loop, wheels[w].contacts, k, src);
-        const Eigen::VectorXcd qc = R[w].cwiseProduct(psi_cos[w] * F);
-        const Eigen::VectorXcd qs = R[w].cwiseProduct(psi_sin[w] * F);
-        // all the modes (-1), then each family's alone (its modes' cross terms kept, the other
-        // families' left out)
-        for (int fam = -1; fam < 3; ++fam) {
-          double power = 0.0;
-          for (std::size_t o = 0; o < pw.size(); ++o) {
-            const std::vector<int>& rows = order_rows[o];
-            Eigen::VectorXcd vc = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(rows.size())),
-                             vs = vc;
-            for (std::size_t j = 0; j < rows.size(); ++j) {
-              if (rows[j] < 0 || (fam >= 0 && order_family[o][j] != fam)) continue;
-              vc(static_cast<Eigen::Index>(j)) = qc(rows[j]);
-              vs(static_cast<Eigen::Index>(j)) = qs(rows[j]);
-            }
-            power += w2 * (vc.dot(pw[o] * vc).real() + vs.dot(pw[o] * vs).real());
-          }
-          if (fam >= 0) {
-            lp.family[w][static_cast<std::size_t>(fam)][e][k] = power;
-            continue;
-          }
-          lp.wheel[w][e][k] = power;
-          lp.wheel_total[e][k] += power;
-        }
+        lp.wheel[w][e][k] = wheel_power(l, s, w, F, -1);
+        lp.wheel_total[e][k] += lp.wheel[w][e][k];
+        for (int fam = 0; fam < 3; ++fam)
+          lp.family[w][static_cast<std::size_t>(fam)][e][k] = wheel_power(l, s, w, F, fam);
       }
     }
   });
+  return lp;
+}
 
-  // (S4): band levels
-  const std::vector<double>& f = loop.frequency;
+// (S4) of every column, the wheels', the families' and the input's.
+void add_band_levels(SoundResult& r, const LinePowers& lp, const std::vector<double>& f,
+                     bool velocities, const std::vector<std::vector<double>>& source_levels) {
+  const std::vector<double>& centres = r.centre;
+  const std::size_t nw = lp.wheel.size();
+  auto level = [&](const std::vector<std::vector<double>>& x, std::size_t b) {
+    return band_level(f, x, source_levels, b, centres[b]);
+  };
+  auto row = [](double wheel, double rail, double sleepers) {
+    return std::array<double, 4>{wheel, rail, sleepers,
+                                 power_sum(power_sum(wheel, rail), sleepers)};
+  };
   r.power.resize(centres.size());
   r.contact_power.assign(nw, SoundBands(centres.size()));
   for (std::size_t b = 0; b < centres.size(); ++b) {
-    const double wheel =
-        r.wheel ? band_level(f, lp.wheel_total, source_levels, b, centres[b]) : kNaN;
-    const double rl = band_level(f, lp.rail_total, source_levels, b, centres[b]);
-    const double sl = band_level(f, lp.sleeper_total, source_levels, b, centres[b]);
-    r.power[b] = {wheel, rl, sl, power_sum(power_sum(wheel, rl), sl)};
-    for (std::size_t w = 0; w < nw; ++w) {
-      const double ww = r.wheel ? band_level(f, lp.wheel[w], source_levels, b, centres[b]) : kNaN;
-      const double wr = band_level(f, lp.rail[w], source_levels, b, centres[b]);
-      const double ws = band_level(f, lp.sleepers[w], source_levels, b, centres[b]);
-      r.contact_power[w][b] = {ww, wr, ws, power_sum(power_sum(ww, wr), ws)};
-    }
+    r.power[b] = row(r.wheel ? level(lp.wheel_total, b) : kNaN, level(lp.rail_total, b),
+                     level(lp.sleeper_total, b));
+    for (std::size_t w = 0; w < nw; ++w)
+      r.contact_power[w][b] = row(r.wheel ? level(lp.wheel[w], b) : kNaN, level(lp.rail[w], b),
+                                  level(lp.sleepers[w], b));
+    r.input_power.push_back(velocities ? level(lp.input, b) : kNaN);
   }
-  for (std::size_t b = 0; b < centres.size(); ++b)
-    r.input_power.push_back(
-        loop.wheel_velocity.empty() ? kNaN : band_level(f, lp.input, source_levels, b, centres[b]));
   if (r.wheel) {  // each family's band levels, per wheel and summed over the wheels
     r.wheel_family.assign(centres.size(), {0.0, 0.0, 0.0});
     r.contact_family.assign(nw, std::vector<std::array<double, 3>>(centres.size()));
@@ -505,17 +522,20 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
       for (std::size_t fam = 0; fam < 3; ++fam) {
         double sum = 0.0;
         for (std::size_t w = 0; w < nw; ++w) {
-          const double l = band_level(f, lp.family[w][fam], source_levels, b, centres[b]);
-          r.contact_family[w][b][fam] = l;
-          sum += std::pow(10.0, l / 10);
+          r.contact_family[w][b][fam] = level(lp.family[w][fam], b);
+          sum += std::pow(10.0, r.contact_family[w][b][fam] / 10);
         }
         r.wheel_family[b][fam] = 10 * std::log10(sum);
       }
   }
   r.power_a = a_weighted(centres, r.power);
   for (const SoundBands& c : r.contact_power) r.contact_power_a.push_back(a_weighted(centres, c));
+}
 
-  // decay rates (EN 15461) from a force at the centre line at track.position
+// The decay rates (EN 15461) from a force at the centre line at track.position, band means of
+// |A(x)|^2 on the grid, with EN ISO 3095:2013's lower limits where a band has one.
+void add_decay_rates(SoundResult& r, const dynamics::RailModel& rail,
+                     const std::vector<double>& grid) {
   const std::vector<double> measured_at =
       acoustics::en15461_positions(rail.track().sleeper_spacing);
   std::vector<dynamics::RailContactPair> pairs;
@@ -523,8 +543,8 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   for (double d : measured_at)
     pairs.push_back({dynamics::RailContact{x0 + d, 0.0, 0.0}, dynamics::RailContact{x0, 0.0, 0.0}});
   const auto along = rail.contact_transfers(grid, pairs, true);
-  for (std::size_t b = 0; b < centres.size(); ++b) {
-    const auto [lo, hi] = noise::third_octave_edges(centres[b]);
+  for (double centre : r.centre) {
+    const auto [lo, hi] = noise::third_octave_edges(centre);
     std::vector<double> az(measured_at.size(), 0.0), ay(measured_at.size(), 0.0);
     int count = 0;
     for (std::size_t k = 0; k < grid.size(); ++k) {
@@ -537,14 +557,47 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
     }
     r.decay_vertical.push_back(count ? acoustics::track_decay_rate(measured_at, az) : kNaN);
     r.decay_lateral.push_back(count ? acoustics::track_decay_rate(measured_at, ay) : kNaN);
-    // EN ISO 3095:2013's lower limits where the band has one
     double lv = kNaN, ll = kNaN;
     for (const acoustics::DecayRateLimit& l : acoustics::iso3095_decay_rate_limits())
-      if (std::abs(l.frequency / noise::nominal_centre(centres[b]) - 1.0) < 1e-3)
+      if (std::abs(l.frequency / noise::nominal_centre(centre) - 1.0) < 1e-3)
         lv = l.vertical, ll = l.lateral;
     r.decay_limit_vertical.push_back(lv);
     r.decay_limit_lateral.push_back(ll);
   }
+}
+
+}  // namespace
+
+SoundResult sound_power(const noise::ContactSetLoopResult& loop,
+                        const std::vector<noise::ContactPoint>& contacts,
+                        const std::vector<SoundWheel>& wheels,
+                        const std::vector<std::vector<double>>& source_levels,
+                        const std::vector<double>& centres, const dynamics::RailModel& rail,
+                        const SoundCase& sound, int threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SoundResult r;
+  r.centre = centres;
+  SoundSetup s;
+  s.grid = radiation_grid(centres, kRailGridPerBand);
+  // the radiation tables (from the cache where io gives one)
+  const std::shared_ptr<const dynamics::WheelFeModes> tread =
+      sound.wheel_tread ? sound.wheel_tread() : nullptr;
+  if (tread && sound.wheel_table)
+    r.wheel = sound.wheel_table(radiation_grid(centres, kWheelGridPerBand));
+  r.wheel_note = r.wheel ? "" : sound.wheel_missing;
+  r.rail = sound.rail_table
+               ? sound.rail_table(s.grid)
+               : std::make_shared<const RailRadiation>(rail_radiation(
+                     sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
+                     sound.rail_ground, s.grid, sound.fluid, threads));
+  s.rails = rail_grams(rail, contacts, s.grid, sound, threads);
+  if (r.wheel) add_modal_setup(s, *tread, *r.wheel, contacts, wheels, sound);
+  for (double fg : s.grid)  // the sleepers' piston efficiency, smooth in f
+    s.piston.push_back(acoustics::rectangular_piston_efficiency(
+        2 * kPi * fg / sound.fluid.sound_speed, sound.sleeper_length, sound.sleeper_width));
+  const LinePowers lp = line_powers(loop, contacts, wheels, s, r, rail, sound, threads);
+  add_band_levels(r, lp, loop.frequency, !loop.wheel_velocity.empty(), source_levels);
+  add_decay_rates(r, rail, s.grid);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
