@@ -92,18 +92,29 @@ Eigen::MatrixXcd interpolated_power(const std::vector<Eigen::MatrixXcd>& m, cons
   const Eigen::MatrixXcd& a = m[p.i];
   const Eigen::MatrixXcd& b = m[p.i + 1];
   const Eigen::Index n = a.rows();
-  constexpr double kTiny = 1e-300;  // a mode that does not radiate (round-off)
-  Eigen::VectorXd da(n), db(n), d(n);
+  // a mode that does not radiate (round-off, possibly negative): the smallest normal double
+  const auto floor = [](double v) {
+    return std::isfinite(v) ? std::max(v, std::numeric_limits<double>::min())
+                            : std::numeric_limits<double>::min();
+  };
+  Eigen::VectorXd ra(n), rb(n), rd(n);  // square roots of the diagonals (no underflow in products)
   for (Eigen::Index i = 0; i < n; ++i) {
-    da(i) = std::max(a(i, i).real(), kTiny), db(i) = std::max(b(i, i).real(), kTiny);
-    d(i) = std::exp((1.0 - p.w) * std::log(da(i)) + p.w * std::log(db(i)));
+    const double da = floor(a(i, i).real()), db = floor(b(i, i).real());
+    ra(i) = std::sqrt(da), rb(i) = std::sqrt(db);
+    rd(i) = std::exp(0.5 * ((1.0 - p.w) * std::log(da) + p.w * std::log(db)));
   }
   Eigen::MatrixXcd out(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
-      const cdouble c = (1.0 - p.w) * a(i, j) / std::sqrt(da(i) * da(j)) +
-                        p.w * b(i, j) / std::sqrt(db(i) * db(j));
-      out(i, j) = c * std::sqrt(d(i) * d(j));
+      // correlations: |c| <= 1 for a positive semi-definite matrix, which round-off may break
+      // where a mode does not radiate
+      const auto correlation = [](cdouble x, double ri, double rj) {
+        const cdouble c = x / ri / rj;
+        return std::isfinite(std::abs(c)) ? c / std::max(1.0, std::abs(c)) : cdouble(0.0);
+      };
+      const cdouble c = (1.0 - p.w) * correlation(a(i, j), ra(i), ra(j)) +
+                        p.w * correlation(b(i, j), rb(i), rb(j));
+      out(i, j) = c * rd(i) * rd(j);
     }
   return out;
 }
@@ -168,7 +179,9 @@ double band_level(const std::vector<double>& f, const std::vector<std::vector<do
                       std::pow(10.0, source_levels[e][band] / 10.0);
     sum += r2 * noise::band_mean(f, twice, centre);
   }
-  return 10 * std::log10(sum / kPowerReference);
+  // a band without power (a wheel far below coincidence, at round-off): the smallest normal
+  // double, so that the level stays finite (some -3000 dB) and the power sums hold
+  return 10 * std::log10(std::max(sum, std::numeric_limits<double>::min()) / kPowerReference);
 }
 
 std::array<double, 4> a_weighted(const std::vector<double>& centres, const SoundBands& bands) {
@@ -429,7 +442,9 @@ double wheel_power(const LineStructures& l, const SoundSetup& s, std::size_t w,
     }
     power += l.w2 * (vc.dot(l.pw[o] * vc).real() + vs.dot(l.pw[o] * vs).real());
   }
-  return power;
+  // a mode far below coincidence (sigma < 1e-13) radiates at round-off, which may come out
+  // negative through the cross terms: no power
+  return std::max(power, 0.0);
 }
 
 // The forces of rail g's contacts that belong to `wheel` (the others zero), or an empty vector.
