@@ -70,6 +70,7 @@
 #include <complex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "acoustics/axisymmetric_quadrature.hpp"
 
@@ -339,6 +340,7 @@ struct AxiWork {
   std::vector<AxiNode> nodes;
   Eigen::MatrixXd f_far, f_near, f0_near, mom_far, mom_near, mom0_near;
   Eigen::MatrixXcd row_g, row_h;           // orders x elements
+  Eigen::VectorXd static_g, static_h;      // per element: the row's analytic static parts
   std::vector<double> kr, cos_kr, sin_kr;  // phase buffers, one phi-rule long
 };
 
@@ -363,56 +365,60 @@ void axi_graded_nodes(const AxisymmetricElement& el, int e, const Eigen::Vector2
   }
 }
 
-// One row of the equations: the order-n integrals over every element, int r_y ds int K cos(n
-// phi) dphi for K = G and dG/dn_y, of the observation point x (on element `singular`, its
-// midpoint, or -1 for an interior point), into w.row_g, w.row_h.
-void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWork& w) {
-  const int ne = static_cast<int>(mesh.elements.size());
-  const int nn = static_cast<int>(w.phi_far.cos_n.rows());
-  const double rx = x.x(), zx = x.y();
-  w.nodes.clear();
-  w.row_g.setZero(nn, ne);
-  w.row_h.setZero(nn, ne);
-  Eigen::VectorXd static_g = Eigen::VectorXd::Zero(ne), static_h = Eigen::VectorXd::Zero(ne);
+// The coefficients of ln(1/u) in the static phi-integrals on the singular segment (Sec. 3):
+// K(m) = L(1 - m) ln(1/(1 - m)) + (smooth), L(m1) = K(m1)/pi ~ (1/2)(1 + m1/4 + 9 m1^2/64),
+// so S_g = 2 L(m1) / (pi D), S_h = -(n_r / (2 r_y)) S_g.
+AxiStatic axi_log_coefficients(double rx, double zx, const AxiNode& y) {
+  const double dz = y.z - zx;
+  const double big_d2 = (rx + y.r) * (rx + y.r) + dz * dz;
+  const double m1 = ((rx - y.r) * (rx - y.r) + dz * dz) / big_d2;
+  const double lm = 0.5 * (1.0 + m1 * (0.25 + m1 * 9.0 / 64.0));
+  const double sg = 2.0 * lm / (kAxiPi * std::sqrt(big_d2));
+  return {sg, -0.5 * y.nr / y.r * sg};
+}
 
+// One half of the singular segment e, from its midpoint x to `tip`, u = distance / (L/2) (Sec. 3).
+// The Gauss-Legendre nodes go to w.nodes (their subtracted phi-integrals are integrated with the
+// others); the static part goes to w.static_g(e), w.static_h(e): the analytic phi-integrals minus
+// their logarithm by Gauss-Legendre, plus the logarithm by the Gauss rule of the weight ln(1/u).
+void axi_singular_half(const AxisymmetricElement& el, int e, const Eigen::Vector2d& tip,
+                       const Eigen::Vector2d& x, AxiWork& w) {
+  const double rx = x.x(), zx = x.y();
+  const double half = 0.5 * el.length;
+  auto at = [&](double u) -> AxiNode {
+    const Eigen::Vector2d y = el.midpoint + u * (tip - el.midpoint);
+    return {e, 0.0, y.x(), y.y(), el.normal.x(), el.normal.y(), true, true};
+  };
+  for (Eigen::Index g = 0; g < w.gauss_singular.nodes.size(); ++g) {
+    const double u = w.gauss_singular.nodes(g);
+    AxiNode y = at(u);
+    y.weight = w.gauss_singular.weights(g) * half * y.r;
+    const AxiStatic s = axi_static(rx, zx, y);
+    const AxiStatic c = axi_log_coefficients(rx, zx, y);
+    const double log_u = std::log(1.0 / u);
+    w.static_g(e) += y.weight * (s.g - c.g * log_u);
+    w.static_h(e) += y.weight * (s.h - c.h * log_u);
+    w.nodes.push_back(y);
+  }
+  for (Eigen::Index g = 0; g < w.log_singular.nodes.size(); ++g) {
+    const AxiNode y = at(w.log_singular.nodes(g));
+    const double wt = w.log_singular.weights(g) * half * y.r;
+    const AxiStatic c = axi_log_coefficients(rx, zx, y);
+    w.static_g(e) += wt * c.g;
+    w.static_h(e) += wt * c.h;
+  }
+}
+
+// The quadrature nodes of the generator integral for the observation point x (on element
+// `singular`, or -1) into w.nodes (Sec. 3), with the singular segment's static part.
+void axi_row_nodes(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWork& w) {
+  w.nodes.clear();
+  const int ne = static_cast<int>(mesh.elements.size());
   for (int e = 0; e < ne; ++e) {
     const AxisymmetricElement& el = mesh.elements[e];
     if (e == singular) {
-      // Sec. 3: two halves from the midpoint, u = distance / (L/2).
-      const double half = 0.5 * el.length;
-      for (const Eigen::Vector2d& tip : {el.start, el.end}) {
-        auto at = [&](double u) -> AxiNode {
-          const Eigen::Vector2d y = el.midpoint + u * (tip - el.midpoint);
-          return {e, 0.0, y.x(), y.y(), el.normal.x(), el.normal.y(), true, true};
-        };
-        // log coefficients of ln(1/u): S_g = 2 L(m1) / (pi D), S_h = -(n_r / (2 r_y)) S_g
-        auto log_coefficients = [&](const AxiNode& y) -> AxiStatic {
-          const double dz = y.z - zx;
-          const double big_d2 = (rx + y.r) * (rx + y.r) + dz * dz;
-          const double m1 = ((rx - y.r) * (rx - y.r) + dz * dz) / big_d2;
-          const double lm = 0.5 * (1.0 + m1 * (0.25 + m1 * 9.0 / 64.0));
-          const double sg = 2.0 * lm / (kAxiPi * std::sqrt(big_d2));
-          return {sg, -0.5 * y.nr / y.r * sg};
-        };
-        for (Eigen::Index g = 0; g < w.gauss_singular.nodes.size(); ++g) {
-          const double u = w.gauss_singular.nodes(g);
-          AxiNode y = at(u);
-          y.weight = w.gauss_singular.weights(g) * half * y.r;
-          const AxiStatic s = axi_static(rx, zx, y);
-          const AxiStatic c = log_coefficients(y);
-          const double log_u = std::log(1.0 / u);
-          static_g(e) += y.weight * (s.g - c.g * log_u);
-          static_h(e) += y.weight * (s.h - c.h * log_u);
-          w.nodes.push_back(y);
-        }
-        for (Eigen::Index g = 0; g < w.log_singular.nodes.size(); ++g) {
-          const AxiNode y = at(w.log_singular.nodes(g));
-          const double wt = w.log_singular.weights(g) * half * y.r;
-          const AxiStatic c = log_coefficients(y);
-          static_g(e) += wt * c.g;
-          static_h(e) += wt * c.h;
-        }
-      }
+      axi_singular_half(el, e, el.start, x, w);
+      axi_singular_half(el, e, el.end, x, w);
       continue;
     }
     // Long segments first cut to k L <= 1.5, then graded towards x.
@@ -420,86 +426,129 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
     for (int p = 0; p < pieces; ++p)
       axi_graded_nodes(el, e, x, double(p) / pieces, double(p + 1) / pieces, 0, w);
   }
+}
+
+// The analytic static phi-integrals (Sec. 2) of the nodes off the singular segment whose static
+// kernel is subtracted, weighted into w.static_g, w.static_h.
+void axi_add_subtracted_statics(double rx, double zx, AxiWork& w) {
   for (const AxiNode& y : w.nodes)
     if (y.subtract && !y.on_line) {
       const AxiStatic s = axi_static(rx, zx, y);
-      static_g(y.element) += y.weight * s.g;
-      static_h(y.element) += y.weight * s.h;
+      w.static_g(y.element) += y.weight * s.g;
+      w.static_h(y.element) += y.weight * s.h;
     }
+}
 
-  // The phi-integrands at every node (Sec. 1, 2): columns Re G, Im G, Re dG/dn, Im dG/dn on the
-  // far rule; on the near rule G - G0, dG/dn - dG0/dn and the static G0, dG0/dn.
+// The meridian terms of one pair x, y (Sec. 1): R^2 = d2 + c4 sin^2(phi/2),
+// (y - x).n_y = q + p2 sin^2(phi/2).
+struct AxiPairTerms {
+  double d2, c4, q, p2;
+};
+AxiPairTerms axi_pair_terms(double rx, double zx, const AxiNode& y) {
+  const double dz = y.z - zx;
+  const double d2 = (rx - y.r) * (rx - y.r) + dz * dz;
+  const double c4 = 4.0 * rx * y.r;
+  const double q = y.on_line ? 0.0 : y.nr * (y.r - rx) + y.nz * dz;
+  const double p2 = 2.0 * y.nr * rx;
+  return {d2, c4, q, p2};
+}
+
+constexpr double kAxiInv4Pi = 1.0 / (4.0 * kAxiPi);
+
+// The far-rule phi-integrands of one pair (Sec. 1) into columns col..col + 3 of w.f_far:
+// Re G, Im G, Re dG/dn, Im dG/dn at the rule's points.
+void axi_far_integrands(const AxiPairTerms& t, int col, AxiWork& w) {
+  double* fg_re = w.f_far.col(col).data();
+  double* fg_im = w.f_far.col(col + 1).data();
+  double* fh_re = w.f_far.col(col + 2).data();
+  double* fh_im = w.f_far.col(col + 3).data();
+  const double k = w.k;
+  const Eigen::VectorXd& half_sin2 = w.phi_far.half_sin2;
+  const int np = static_cast<int>(half_sin2.size());
+  for (int j = 0; j < np; ++j) w.kr[j] = k * std::sqrt(t.d2 + t.c4 * half_sin2(j));
+  axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());
+  for (int j = 0; j < np; ++j) {
+    const double s2 = half_sin2(j);
+    const double kr = w.kr[j];
+    const double inv_r = k / kr;
+    const double c = w.cos_kr[j], s = w.sin_kr[j];
+    const double g = kAxiInv4Pi * inv_r;
+    fg_re[j] = c * g;
+    fg_im[j] = -s * g;
+    // dG/dn = -e^{-ikR} (1 + ikR) P / (4 pi R^3), e^{-ikR}(1 + ikR) = c + kR s + i (kR c - s)
+    const double hp = -(t.q + t.p2 * s2) * g * inv_r * inv_r;
+    fh_re[j] = (c + kr * s) * hp;
+    fh_im[j] = (kr * c - s) * hp;
+  }
+}
+
+// The near-rule phi-integrands of one pair (Sec. 2) into columns col..col + 3 of w.f_near:
+// G - G0 and dG/dn - dG0/dn (Re, Im), and into columns col0, col0 + 1 of w.f0_near: the static
+// G0 and dG0/dn. The phases come as cos, sin of kR/2, so that cos kR - 1 = -2 sin^2(kR/2) keeps
+// its accuracy at small kR.
+void axi_near_integrands(const AxiPairTerms& t, int col, int col0, AxiWork& w) {
+  double* fg_re = w.f_near.col(col).data();
+  double* fg_im = w.f_near.col(col + 1).data();
+  double* fh_re = w.f_near.col(col + 2).data();
+  double* fh_im = w.f_near.col(col + 3).data();
+  double* f0g = w.f0_near.col(col0).data();
+  double* f0h = w.f0_near.col(col0 + 1).data();
+  const double k = w.k;
+  const Eigen::VectorXd& half_sin2 = w.phi_near.half_sin2;
+  const int np = static_cast<int>(half_sin2.size());
+  for (int j = 0; j < np; ++j) w.kr[j] = 0.5 * k * std::sqrt(t.d2 + t.c4 * half_sin2(j));
+  axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());  // of kR/2
+  for (int j = 0; j < np; ++j) {
+    const double s2 = half_sin2(j);
+    const double kr = 2.0 * w.kr[j];
+    const double inv_r = k / kr;
+    const double sh = w.sin_kr[j], ch = w.cos_kr[j];
+    const double s = 2.0 * sh * ch, cm1 = -2.0 * sh * sh;  // sin kR, cos kR - 1
+    const double g = kAxiInv4Pi * inv_r;
+    fg_re[j] = cm1 * g;  // (e^{-ikR} - 1) / (4 pi R)
+    fg_im[j] = -s * g;
+    const double hp = -(t.q + t.p2 * s2) * g * inv_r * inv_r;  // dG0/dn
+    // e^{-ikR}(1 + ikR) - 1 = (cos kR - 1 + kR sin kR) + i (kR cos kR - sin kR)
+    fh_re[j] = (cm1 + kr * s) * hp;
+    fh_im[j] = (kr * (1.0 + cm1) - s) * hp;
+    f0g[j] = g;
+    f0h[j] = hp;
+  }
+}
+
+// The phi-integrands at every node of w.nodes (Sec. 1, 2), each on its rule: node i of the far
+// (near) ones in columns 4 i..4 i + 3 of w.f_far (w.f_near) and 2 i, 2 i + 1 of w.f0_near.
+// Returns the counts of far and near nodes.
+std::pair<int, int> axi_phi_integrands(double rx, double zx, AxiWork& w) {
   int n_far = 0, n_near = 0;
   for (const AxiNode& y : w.nodes) (y.subtract ? n_near : n_far) += 1;
   // (buffers grow only: no allocation per row once the largest row has been seen)
   if (w.f_far.cols() < 4 * n_far) w.f_far.resize(w.phi_far.intervals + 1, 4 * n_far);
   if (w.f_near.cols() < 4 * n_near) w.f_near.resize(w.phi_near.intervals + 1, 4 * n_near);
   if (w.f0_near.cols() < 2 * n_near) w.f0_near.resize(w.phi_near.intervals + 1, 2 * n_near);
-  const double k = w.k;
-  const double inv4pi = 1.0 / (4.0 * kAxiPi);
   int i_far = 0, i_near = 0;
   for (const AxiNode& y : w.nodes) {
-    const double dz = y.z - zx;
-    const double d2 = (rx - y.r) * (rx - y.r) + dz * dz;
-    const double c4 = 4.0 * rx * y.r;
-    const double q = y.on_line ? 0.0 : y.nr * (y.r - rx) + y.nz * dz;
-    const double p2 = 2.0 * y.nr * rx;
-    Eigen::MatrixXd& f = y.subtract ? w.f_near : w.f_far;
-    const int col = 4 * (y.subtract ? i_near : i_far);
-    double* fg_re = f.col(col).data();
-    double* fg_im = f.col(col + 1).data();
-    double* fh_re = f.col(col + 2).data();
-    double* fh_im = f.col(col + 3).data();
+    const AxiPairTerms t = axi_pair_terms(rx, zx, y);
     if (!y.subtract) {
-      const Eigen::VectorXd& half_sin2 = w.phi_far.half_sin2;
-      const int np = static_cast<int>(half_sin2.size());
-      for (int j = 0; j < np; ++j) w.kr[j] = k * std::sqrt(d2 + c4 * half_sin2(j));
-      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());
-      for (int j = 0; j < np; ++j) {
-        const double s2 = half_sin2(j);
-        const double kr = w.kr[j];
-        const double inv_r = k / kr;
-        const double c = w.cos_kr[j], s = w.sin_kr[j];
-        const double g = inv4pi * inv_r;
-        fg_re[j] = c * g;
-        fg_im[j] = -s * g;
-        // dG/dn = -e^{-ikR} (1 + ikR) P / (4 pi R^3), e^{-ikR}(1 + ikR) = c + kR s + i (kR c - s)
-        const double hp = -(q + p2 * s2) * g * inv_r * inv_r;
-        fh_re[j] = (c + kr * s) * hp;
-        fh_im[j] = (kr * c - s) * hp;
-      }
+      axi_far_integrands(t, 4 * i_far, w);
       ++i_far;
     } else {
-      double* f0g = w.f0_near.col(2 * i_near).data();
-      double* f0h = w.f0_near.col(2 * i_near + 1).data();
-      const Eigen::VectorXd& half_sin2 = w.phi_near.half_sin2;
-      const int np = static_cast<int>(half_sin2.size());
-      for (int j = 0; j < np; ++j) w.kr[j] = 0.5 * k * std::sqrt(d2 + c4 * half_sin2(j));
-      axisymmetric_cos_sin(np, w.kr.data(), w.cos_kr.data(), w.sin_kr.data());  // of kR/2
-      for (int j = 0; j < np; ++j) {
-        const double s2 = half_sin2(j);
-        const double kr = 2.0 * w.kr[j];
-        const double inv_r = k / kr;
-        const double sh = w.sin_kr[j], ch = w.cos_kr[j];
-        const double s = 2.0 * sh * ch, cm1 = -2.0 * sh * sh;  // sin kR, cos kR - 1
-        const double g = inv4pi * inv_r;
-        fg_re[j] = cm1 * g;  // (e^{-ikR} - 1) / (4 pi R)
-        fg_im[j] = -s * g;
-        const double hp = -(q + p2 * s2) * g * inv_r * inv_r;  // dG0/dn
-        // e^{-ikR}(1 + ikR) - 1 = (cos kR - 1 + kR sin kR) + i (kR cos kR - sin kR)
-        fh_re[j] = (cm1 + kr * s) * hp;
-        fh_im[j] = (kr * (1.0 + cm1) - s) * hp;
-        f0g[j] = g;
-        f0h[j] = hp;
-      }
+      axi_near_integrands(t, 4 * i_near, 2 * i_near, w);
       ++i_near;
     }
   }
-  // All orders at once: moments = (w_j cos(n phi_j)) x integrands.
+  return {n_far, n_near};
+}
+
+// The moments of all orders at once, (w_j cos(n phi_j)) x integrands (Sec. 1), and each node's,
+// weighted, added to its element's entry of w.row_g, w.row_h (near nodes: the subtracted part
+// with the static one's (cos(n phi) - 1)-moment, Sec. 2).
+void axi_add_moments(int n_far, int n_near, AxiWork& w) {
+  const int nn = static_cast<int>(w.phi_far.cos_n.rows());
   w.mom_far.noalias() = w.phi_far.cos_n * w.f_far.leftCols(4 * n_far);
   w.mom_near.noalias() = w.phi_near.cos_n * w.f_near.leftCols(4 * n_near);
   w.mom0_near.noalias() = w.phi_near.cos_n_m1 * w.f0_near.leftCols(2 * n_near);
-  i_far = i_near = 0;
+  int i_far = 0, i_near = 0;
   for (const AxiNode& y : w.nodes) {
     const Eigen::MatrixXd& mom = y.subtract ? w.mom_near : w.mom_far;
     const int col = 4 * (y.subtract ? i_near : i_far);
@@ -515,14 +564,154 @@ void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWor
     }
     (y.subtract ? i_near : i_far) += 1;
   }
+}
+
+// One row of the equations: the order-n integrals over every element, int r_y ds int K cos(n
+// phi) dphi for K = G and dG/dn_y, of the observation point x (on element `singular`, its
+// midpoint, or -1 for an interior point), into w.row_g, w.row_h: the phi-rules' moments plus the
+// static parts, which are the same for all orders.
+void axi_row(const AxiMesh& mesh, const Eigen::Vector2d& x, int singular, AxiWork& w) {
+  const int ne = static_cast<int>(mesh.elements.size());
+  const int nn = static_cast<int>(w.phi_far.cos_n.rows());
+  w.row_g.setZero(nn, ne);
+  w.row_h.setZero(nn, ne);
+  w.static_g.setZero(ne);
+  w.static_h.setZero(ne);
+  axi_row_nodes(mesh, x, singular, w);
+  axi_add_subtracted_statics(x.x(), x.y(), w);
+  const auto [n_far, n_near] = axi_phi_integrands(x.x(), x.y(), w);
+  axi_add_moments(n_far, n_near, w);
   for (int n = 0; n < nn; ++n) {
-    w.row_g.row(n) += static_g.transpose().cast<axi_cd>();
-    w.row_h.row(n) += static_h.transpose().cast<axi_cd>();
+    w.row_g.row(n) += w.static_g.transpose().cast<axi_cd>();
+    w.row_h.row(n) += w.static_h.transpose().cast<axi_cd>();
   }
 }
 
 double axi_order_weight(int n) {
   return n == 0 ? 2.0 * kAxiPi : kAxiPi;
+}
+
+// The wavenumber, fluid and options of a call checked (see radiated_power_matrices).
+void axi_check_call(double k, const Fluid& fluid, const AxisymmetricBemOptions& options) {
+  if (!(k > 0.0) || !std::isfinite(k))
+    throw std::invalid_argument("axisymmetric BEM: wavenumber k = " + std::to_string(k) +
+                                " 1/m; radiation needs a finite k > 0");
+  if (!(fluid.density > 0.0) || !(fluid.sound_speed > 0.0))
+    throw std::invalid_argument(
+        "axisymmetric BEM: the fluid needs density > 0 and sound speed > 0");
+  if (options.gauss_points < 1 || options.gauss_points > 20)
+    throw std::invalid_argument("axisymmetric BEM: gauss_points " +
+                                std::to_string(options.gauss_points) + " outside 1..20");
+  if (options.chief_points < 0)
+    throw std::invalid_argument("axisymmetric BEM: chief_points " +
+                                std::to_string(options.chief_points) + " < 0");
+  if (options.phi_intervals < 0)
+    throw std::invalid_argument("axisymmetric BEM: phi_intervals " +
+                                std::to_string(options.phi_intervals) + " < 0");
+}
+
+// The orders with a pattern, ascending; each pattern checked against the ne elements.
+std::vector<int> axi_pattern_orders(const std::vector<Eigen::MatrixXd>& patterns, int ne) {
+  std::vector<int> orders;
+  for (std::size_t n = 0; n < patterns.size(); ++n) {
+    if (patterns[n].size() == 0) continue;
+    if (patterns[n].rows() != ne)
+      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
+                                  " has " + std::to_string(patterns[n].rows()) +
+                                  " rows; the generator has " + std::to_string(ne) + " elements");
+    if (!patterns[n].allFinite())
+      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
+                                  " has non-finite velocities");
+    orders.push_back(static_cast<int>(n));
+  }
+  return orders;
+}
+
+// The rules and buffers of one call at wavenumber k for the given orders (ascending).
+AxiWork axi_work(const AxiMesh& mesh, double k, const std::vector<int>& orders,
+                 const AxisymmetricBemOptions& options) {
+  AxiWork w;
+  w.k = k;
+  w.gauss = axisymmetric_gauss_legendre(options.gauss_points);
+  w.gauss_singular = axisymmetric_gauss_legendre(8);
+  w.log_singular = axisymmetric_log_gauss(8);
+  // Sec. 1: 2 M > k r_max + n_max with a margin for the tails of the Fourier coefficients of
+  // e^{-ikR(phi)} (Bessel-like, decaying past order k r + (k r)^{1/3}). Sec. 2: the near rule
+  // takes 3 M / 2 intervals: its integrands (d < tau rho) have the phase rate
+  // k rho cos(phi/2) phi'(t) <= 1.2 k rho in t, and cos(n phi) the rate n phi' <= 2 n.
+  const int n_max = orders.back();
+  const double kr = k * mesh.r_max;
+  const int intervals =
+      options.phi_intervals > 0
+          ? options.phi_intervals
+          : std::max(16,
+                     static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
+  const int near_intervals = (3 * intervals + 1) / 2;
+  w.phi_far = axi_phi_rule(intervals, orders, false);
+  w.phi_near = axi_phi_rule(near_intervals, orders, true);
+  w.f_far.resize(intervals + 1, 0);
+  w.f_near.resize(near_intervals + 1, 0);
+  w.f0_near.resize(near_intervals + 1, 0);
+  w.tau = 12.0 / std::max(1.0, 2.0 * intervals - kr);
+  w.kr.resize(near_intervals + 1);
+  w.cos_kr.resize(near_intervals + 1);
+  w.sin_kr.resize(near_intervals + 1);
+  return w;
+}
+
+// The order-n integrals of every row (surface collocation points, then CHIEF points) into
+// g_n[o], h_n[o] (rows x elements), o indexing the orders of w's phi-rules.
+void axi_assemble(const AxiMesh& mesh, const std::vector<Eigen::Vector2d>& chief, AxiWork& w,
+                  std::vector<Eigen::MatrixXcd>& g_n, std::vector<Eigen::MatrixXcd>& h_n) {
+  const int ne = static_cast<int>(mesh.elements.size());
+  const int rows = ne + static_cast<int>(chief.size());
+  const int no = static_cast<int>(w.phi_far.cos_n.rows());
+  g_n.resize(no);
+  h_n.resize(no);
+  for (int o = 0; o < no; ++o) {
+    g_n[o].resize(rows, ne);
+    h_n[o].resize(rows, ne);
+  }
+  for (int row = 0; row < rows; ++row) {
+    const bool surface = row < ne;
+    axi_row(mesh, surface ? mesh.elements[row].midpoint : chief[row - ne], surface ? row : -1, w);
+    for (int o = 0; o < no; ++o) {
+      g_n[o].row(row) = w.row_g.row(o);
+      h_n[o].row(row) = w.row_h.row(o);
+    }
+  }
+}
+
+// The surface pressures of the patterns (a column each) from the order's integrals h (turned into
+// the system matrix in place) and g: [1/2 I - H; -H_chief] p = i k rho c [G; G_chief] v, least
+// squares (Householder QR).
+Eigen::MatrixXcd axi_surface_pressures(Eigen::MatrixXcd& h, const Eigen::MatrixXcd& g,
+                                       const Eigen::MatrixXd& pattern, axi_cd ik_rho_c) {
+  const Eigen::Index ne = g.cols();
+  Eigen::MatrixXcd& a = h;
+  a = -a;
+  a.topRows(ne).diagonal().array() += 0.5;
+  const Eigen::MatrixXcd rhs = ik_rho_c * (g * pattern.cast<axi_cd>());
+  return a.householderQr().solve(rhs);
+}
+
+// The power matrix of order n from the patterns and their surface pressures p.
+// W = (1/2) Re (V a)^H D (P a) = (1/2) Re a^H M a, M = V^T D P, D = diag(r_ds c_n).
+// By reciprocity (int p_1 v_2 dS = int p_2 v_1 dS) the exact M is complex symmetric, so its
+// Hermitian part is Re M: the power matrix of real patterns is real symmetric. Collocation
+// keeps that symmetry only to the discretisation error, and the antisymmetric part of the
+// discrete M, small against the reactive (mass-like) impedance, is not small against the
+// radiation resistance of a weak radiator (a high-order pattern at low k a): taken into the
+// Hermitian part (M + M^H)/2 it would make P_n indefinite. So M is symmetrised first:
+// P_n = (1/2) Re (M + M^T)/2, exact where M is.
+Eigen::MatrixXcd axi_power_matrix(const AxiMesh& mesh, int n, const Eigen::MatrixXd& pattern,
+                                  const Eigen::MatrixXcd& p) {
+  const int ne = static_cast<int>(mesh.elements.size());
+  Eigen::VectorXd d(ne);
+  for (int e = 0; e < ne; ++e) d(e) = mesh.elements[e].r_ds * axi_order_weight(n);
+  const Eigen::MatrixXcd m = pattern.transpose().cast<axi_cd>() * (d.asDiagonal() * p);
+  const Eigen::MatrixXd resistance = 0.5 * (m.real() + m.real().transpose());
+  return (0.5 * resistance).cast<axi_cd>();
 }
 
 }  // namespace
@@ -543,107 +732,21 @@ std::vector<Eigen::MatrixXcd> radiated_power_matrices(const AxisymmetricGenerato
                                                       const std::vector<Eigen::MatrixXd>& patterns,
                                                       const Fluid& fluid,
                                                       const AxisymmetricBemOptions& options) {
-  if (!(k > 0.0) || !std::isfinite(k))
-    throw std::invalid_argument("axisymmetric BEM: wavenumber k = " + std::to_string(k) +
-                                " 1/m; radiation needs a finite k > 0");
-  if (!(fluid.density > 0.0) || !(fluid.sound_speed > 0.0))
-    throw std::invalid_argument(
-        "axisymmetric BEM: the fluid needs density > 0 and sound speed > 0");
-  if (options.gauss_points < 1 || options.gauss_points > 20)
-    throw std::invalid_argument("axisymmetric BEM: gauss_points " +
-                                std::to_string(options.gauss_points) + " outside 1..20");
-  if (options.chief_points < 0)
-    throw std::invalid_argument("axisymmetric BEM: chief_points " +
-                                std::to_string(options.chief_points) + " < 0");
-  if (options.phi_intervals < 0)
-    throw std::invalid_argument("axisymmetric BEM: phi_intervals " +
-                                std::to_string(options.phi_intervals) + " < 0");
+  axi_check_call(k, fluid, options);
   const AxiMesh mesh = axi_mesh(generator);
-  const int ne = static_cast<int>(mesh.elements.size());
-  std::vector<int> orders;  // those with a pattern, ascending
-  for (std::size_t n = 0; n < patterns.size(); ++n) {
-    if (patterns[n].size() == 0) continue;
-    if (patterns[n].rows() != ne)
-      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
-                                  " has " + std::to_string(patterns[n].rows()) +
-                                  " rows; the generator has " + std::to_string(ne) + " elements");
-    if (!patterns[n].allFinite())
-      throw std::invalid_argument("axisymmetric BEM: the pattern of order " + std::to_string(n) +
-                                  " has non-finite velocities");
-    orders.push_back(static_cast<int>(n));
-  }
+  const std::vector<int> orders =
+      axi_pattern_orders(patterns, static_cast<int>(mesh.elements.size()));
   std::vector<Eigen::MatrixXcd> result(patterns.size());
   if (orders.empty()) return result;
-  const int n_max = orders.back();
-  const int no = static_cast<int>(orders.size());
-
   const std::vector<Eigen::Vector2d> chief = axi_chief_points(mesh, options.chief_points);
-  const int nc = static_cast<int>(chief.size());
-  const int rows = ne + nc;
-
-  AxiWork w;
-  w.k = k;
-  w.gauss = axisymmetric_gauss_legendre(options.gauss_points);
-  w.gauss_singular = axisymmetric_gauss_legendre(8);
-  w.log_singular = axisymmetric_log_gauss(8);
-  // Sec. 1: 2 M > k r_max + n_max with a margin for the tails of the Fourier coefficients of
-  // e^{-ikR(phi)} (Bessel-like, decaying past order k r + (k r)^{1/3}). Sec. 2: the near rule
-  // takes 3 M / 2 intervals: its integrands (d < tau rho) have the phase rate
-  // k rho cos(phi/2) phi'(t) <= 1.2 k rho in t, and cos(n phi) the rate n phi' <= 2 n.
-  const double kr = k * mesh.r_max;
-  const int intervals =
-      options.phi_intervals > 0
-          ? options.phi_intervals
-          : std::max(16,
-                     static_cast<int>(std::ceil(0.5 * (kr + n_max) + 2.0 * std::cbrt(kr) + 10)));
-  const int near_intervals = (3 * intervals + 1) / 2;
-  w.phi_far = axi_phi_rule(intervals, orders, false);
-  w.phi_near = axi_phi_rule(near_intervals, orders, true);
-  w.f_far.resize(intervals + 1, 0);
-  w.f_near.resize(near_intervals + 1, 0);
-  w.f0_near.resize(near_intervals + 1, 0);
-  w.tau = 12.0 / std::max(1.0, 2.0 * intervals - kr);
-  w.kr.resize(near_intervals + 1);
-  w.cos_kr.resize(near_intervals + 1);
-  w.sin_kr.resize(near_intervals + 1);
-
-  // The order-n integrals of every row (surface collocation points, then CHIEF points).
-  std::vector<Eigen::MatrixXcd> g_n(no), h_n(no);
-  for (int o = 0; o < no; ++o) {
-    g_n[o].resize(rows, ne);
-    h_n[o].resize(rows, ne);
-  }
-  for (int row = 0; row < rows; ++row) {
-    const bool surface = row < ne;
-    axi_row(mesh, surface ? mesh.elements[row].midpoint : chief[row - ne], surface ? row : -1, w);
-    for (int o = 0; o < no; ++o) {
-      g_n[o].row(row) = w.row_g.row(o);
-      h_n[o].row(row) = w.row_h.row(o);
-    }
-  }
-
+  AxiWork w = axi_work(mesh, k, orders, options);
+  std::vector<Eigen::MatrixXcd> g_n, h_n;
+  axi_assemble(mesh, chief, w, g_n, h_n);
   const axi_cd ik_rho_c(0.0, k * fluid.impedance());
-  for (int o = 0; o < no; ++o) {
+  for (std::size_t o = 0; o < orders.size(); ++o) {
     const int n = orders[o];
-    // [1/2 I - H; -H_chief] p = i k rho c [G; G_chief] v, least squares (Householder QR).
-    Eigen::MatrixXcd& a = h_n[o];
-    a = -a;
-    a.topRows(ne).diagonal().array() += 0.5;
-    const Eigen::MatrixXcd rhs = ik_rho_c * (g_n[o] * patterns[n].cast<axi_cd>());
-    const Eigen::MatrixXcd p = a.householderQr().solve(rhs);
-    // W = (1/2) Re (V a)^H D (P a) = (1/2) Re a^H M a, M = V^T D P, D = diag(r_ds c_n).
-    // By reciprocity (int p_1 v_2 dS = int p_2 v_1 dS) the exact M is complex symmetric, so its
-    // Hermitian part is Re M: the power matrix of real patterns is real symmetric. Collocation
-    // keeps that symmetry only to the discretisation error, and the antisymmetric part of the
-    // discrete M, small against the reactive (mass-like) impedance, is not small against the
-    // radiation resistance of a weak radiator (a high-order pattern at low k a): taken into the
-    // Hermitian part (M + M^H)/2 it would make P_n indefinite. So M is symmetrised first:
-    // P_n = (1/2) Re (M + M^T)/2, exact where M is.
-    Eigen::VectorXd d(ne);
-    for (int e = 0; e < ne; ++e) d(e) = mesh.elements[e].r_ds * axi_order_weight(n);
-    const Eigen::MatrixXcd m = patterns[n].transpose().cast<axi_cd>() * (d.asDiagonal() * p);
-    const Eigen::MatrixXd resistance = 0.5 * (m.real() + m.real().transpose());
-    result[n] = (0.5 * resistance).cast<axi_cd>();
+    const Eigen::MatrixXcd p = axi_surface_pressures(h_n[o], g_n[o], patterns[n], ik_rho_c);
+    result[n] = axi_power_matrix(mesh, n, patterns[n], p);
   }
   return result;
 }
