@@ -2,10 +2,11 @@
 // the frequency reported as counters with every timing:
 //   build/rollnoise_bench --benchmark_filter=Sound
 //   SoundWheelBem/f: the 920 mm FE wheel's modes (8 mm mesh, n = 2..8) through the axisymmetric BEM
-//                    at one frequency f (Hz): every order's P_n in one call (the wheel's table is 109
-//                    such calls for 100 Hz - 5 kHz);
+//                    at one frequency f (Hz): every order's P_n in one call (the wheel's table is
+//                    109 such calls for 100 Hz - 5 kHz);
 //   SoundRailBem/f:  the UIC60 section's 2D BEM, vertical and lateral rigid motion, at f (Hz);
-//   SoundRailLineGram/nf: the rail's line Gram matrices (S2, S3) of two contact positions 2.5 m apart
+//   SoundRailLineGram/nf: the rail's line Gram matrices (S2, S3) of two contact positions 2.5 m
+//   apart
 //                    on the periodically supported beam, at nf frequencies.
 #include <benchmark/benchmark.h>
 
@@ -26,9 +27,10 @@ using namespace rollnoise;
 namespace {
 
 const dynamics::WheelFeModes& bench_wheel() {
-  static const dynamics::WheelFeModes w = dynamics::wheel_fe_modes(
-      io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) + "/models/wheel/wheel_920mm_section.csv"),
-      dynamics::WheelFeOptions{});
+  static const dynamics::WheelFeModes w =
+      dynamics::wheel_fe_modes(io::read_wheel_section(std::string(ROLLNOISE_SOURCE_DIR) +
+                                                      "/models/wheel/wheel_920mm_section.csv"),
+                               dynamics::WheelFeOptions{});
   return w;
 }
 
@@ -58,7 +60,8 @@ void SoundRailBem(benchmark::State& state) {
 BENCHMARK(SoundRailBem)->Arg(500)->Arg(2000)->Arg(5000)->Unit(benchmark::kMillisecond);
 
 void SoundRailLineGram(benchmark::State& state) {
-  const dynamics::RailModel rail(dynamics::uic60_ballasted(), dynamics::TrackSupport::kDiscrete, 0.3);
+  const dynamics::RailModel rail(dynamics::uic60_ballasted(), dynamics::TrackSupport::kDiscrete,
+                                 0.3);
   std::vector<double> grid;
   const int nf = static_cast<int>(state.range(0));
   for (int i = 0; i < nf; ++i) grid.push_back(100.0 * std::pow(50.0, i / std::max(nf - 1.0, 1.0)));

@@ -160,6 +160,46 @@ std::string rail_identity(const std::string& model, const dynamics::TrackParamet
   return k.str();
 }
 
+namespace {
+
+// One table: from this process's memo (a study's cases, a test's runs) under `memo`, else from the
+// cache file `prefix`-<hash of key> in `directory` (none: no file), else made; kept in both. The
+// memo is one per kind of table T.
+template <class T, class Parse, class Payload, class Make>
+std::shared_ptr<const T> kept_or_made(const std::string& memo,
+                                      const std::optional<std::string>& directory,
+                                      const std::string& key, const char* prefix, const char* magic,
+                                      const char* what, const Parse& parse, const Payload& payload,
+                                      const Make& make) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const T>> kept;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = kept.find(memo); it != kept.end()) return it->second;
+  }
+  std::shared_ptr<const T> t;
+  const bool filed = directory && !key.empty();
+  if (filed)
+    if (const auto body = read_cache_payload(cache_file(*directory, prefix, key), magic, key))
+      if (std::optional<T> read = parse(*body)) t = std::make_shared<const T>(std::move(*read));
+  if (!t) {
+    t = std::make_shared<const T>(make());
+    if (filed)
+      write_cache_payload(cache_file(*directory, prefix, key), magic, key, payload(*t), what);
+  }
+  std::lock_guard<std::mutex> lock(mutex);
+  kept.emplace(memo, t);
+  return t;
+}
+
+// The key of a cache file: this build and `text`; empty (no file) when the build is unknown.
+std::string build_key(const std::optional<std::string>& directory, const std::string& text) {
+  const std::string build = directory ? build_identity() : std::string();
+  return build.empty() ? std::string() : build + text;
+}
+
+}  // namespace
+
 std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
     const dynamics::RailModel& rail, const std::string& identity,
     const std::vector<double>& positions, const std::vector<double>& grid, int gauss, int threads) {
@@ -167,74 +207,40 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
   k << identity << "positions";
   for (double x : positions) k << " " << real_text(x);
   k << "\ngauss " << gauss << "\n" << grid_text(grid, acoustics::Fluid{});
-  static std::mutex mutex;  // this process's: a study's cases, a test's runs
-  static std::map<std::string, std::shared_ptr<const pipeline::RailLineGram>> kept;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = kept.find(k.str()); it != kept.end()) return it->second;
-  }
   const std::optional<std::string> directory = cache_directory();
-  const std::string build = directory ? build_identity() : std::string();
-  const std::string key = build.empty() ? std::string() : build + k.str();
-  std::shared_ptr<const pipeline::RailLineGram> g;
-  if (!key.empty())
-    if (const auto body =
-            read_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key)) {
-      Bytes in(*body);
-      pipeline::RailLineGram r;
-      r.positions = positions;
-      if (get_matrices(in, r.z) && get_matrices(in, r.y) && get_matrices(in, r.sleepers) &&
-          in.left() == 0 && r.z.size() == grid.size())
-        g = std::make_shared<const pipeline::RailLineGram>(std::move(r));
-    }
-  if (!g) {
-    g = std::make_shared<const pipeline::RailLineGram>(
-        pipeline::rail_line_gram(rail, positions, grid, gauss, threads));
-    if (!key.empty()) {
-      std::string out;
-      put_matrices(out, g->z);
-      put_matrices(out, g->y);
-      put_matrices(out, g->sleepers);
-      write_cache_payload(cache_file(*directory, "rail-line-gram", key), kLineMagic, key, out,
-                          "rail line gram");
-    }
-  }
-  std::lock_guard<std::mutex> lock(mutex);
-  kept.emplace(k.str(), g);
-  return g;
+  const auto parse = [&](const std::string& body) -> std::optional<pipeline::RailLineGram> {
+    Bytes in(body);
+    pipeline::RailLineGram r;
+    r.positions = positions;
+    if (get_matrices(in, r.z) && get_matrices(in, r.y) && get_matrices(in, r.sleepers) &&
+        in.left() == 0 && r.z.size() == grid.size())
+      return r;
+    return std::nullopt;
+  };
+  const auto payload = [](const pipeline::RailLineGram& g) {
+    std::string out;
+    put_matrices(out, g.z);
+    put_matrices(out, g.y);
+    put_matrices(out, g.sleepers);
+    return out;
+  };
+  return kept_or_made<pipeline::RailLineGram>(
+      k.str(), directory, build_key(directory, k.str()), "rail-line-gram", kLineMagic,
+      "rail line gram", parse, payload,
+      [&] { return pipeline::rail_line_gram(rail, positions, grid, gauss, threads); });
 }
 
 std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
     const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
     bool cache, int threads) {
-  // this process's (a study's cases, a test's runs): by the wheel's identity, n_min and the grid
-  static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const pipeline::WheelRadiation>> kept;
-  const std::string memo =
-      c.id + "\nn_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = kept.find(memo); it != kept.end()) return it->second;
-  }
-  auto remember = [&](std::shared_ptr<const pipeline::WheelRadiation> w) {
-    std::lock_guard<std::mutex> lock(mutex);
-    kept.emplace(memo, w);
-    return w;
-  };
+  const std::string text = "n_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
   const std::optional<std::string> directory = cache ? cache_directory() : std::nullopt;
-  std::string key = directory ? mode_cache_key(c) : std::string();
-  if (!key.empty()) key += "n_min " + std::to_string(n_min) + "\n" + grid_text(grid, fluid);
-  if (!key.empty())
-    if (const auto body =
-            read_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key))
-      if (auto w = parse_wheel(*body))
-        return remember(std::make_shared<const pipeline::WheelRadiation>(std::move(*w)));
-  auto w = std::make_shared<const pipeline::WheelRadiation>(
-      pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid, threads));
-  if (!key.empty())
-    write_cache_payload(cache_file(*directory, "wheel-radiation", key), kWheelMagic, key,
-                        wheel_payload(*w), "wheel radiation");
-  return remember(w);
+  const std::string modes_key = directory ? mode_cache_key(c) : std::string();
+  return kept_or_made<pipeline::WheelRadiation>(
+      c.id + "\n" + text, directory, modes_key.empty() ? modes_key : modes_key + text,
+      "wheel-radiation", kWheelMagic, "wheel radiation", parse_wheel, wheel_payload, [&] {
+        return pipeline::wheel_radiation(*wheel_fe_modes_once(c), n_min, grid, fluid, threads);
+      });
 }
 
 std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
@@ -244,31 +250,11 @@ std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
   k << "section " << outline.size();
   for (const auto& p : outline) k << " " << real_text(p.x()) << " " << real_text(p.y());
   k << "\nground " << (ground ? 1 : 0) << "\n" << grid_text(grid, fluid);
-  static std::mutex mutex;  // this process's
-  static std::map<std::string, std::shared_ptr<const pipeline::RailRadiation>> kept;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = kept.find(k.str()); it != kept.end()) return it->second;
-  }
-  auto remember = [&](std::shared_ptr<const pipeline::RailRadiation> r) {
-    std::lock_guard<std::mutex> lock(mutex);
-    kept.emplace(k.str(), r);
-    return r;
-  };
   const std::optional<std::string> directory = cache_directory();
-  const std::string build = directory ? build_identity() : std::string();
-  const std::string key = build.empty() ? std::string() : build + k.str();
-  if (!key.empty())
-    if (const auto body =
-            read_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key))
-      if (auto r = parse_rail(*body))
-        return remember(std::make_shared<const pipeline::RailRadiation>(std::move(*r)));
-  auto r = std::make_shared<const pipeline::RailRadiation>(
-      pipeline::rail_radiation(outline, ground, grid, fluid, threads));
-  if (!key.empty())
-    write_cache_payload(cache_file(*directory, "rail-radiation", key), kRailMagic, key,
-                        rail_payload(*r), "rail radiation");
-  return remember(r);
+  return kept_or_made<pipeline::RailRadiation>(
+      k.str(), directory, build_key(directory, k.str()), "rail-radiation", kRailMagic,
+      "rail radiation", parse_rail, rail_payload,
+      [&] { return pipeline::rail_radiation(outline, ground, grid, fluid, threads); });
 }
 
 }  // namespace rollnoise::io

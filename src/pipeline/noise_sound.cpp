@@ -18,12 +18,6 @@ noise::ContactSetLoopResult as_contact_set(const noise::LoopResult& l) {
   return s;
 }
 
-double power_sum_db(double a, double b) {
-  if (std::isnan(a)) return b;
-  if (std::isnan(b)) return a;
-  return 10 * std::log10(std::pow(10.0, a / 10) + std::pow(10.0, b / 10));
-}
-
 }  // namespace
 
 SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) {
@@ -76,23 +70,19 @@ SoundResult noise_sound(const NoiseResult& r, const NoiseCase& nc, int threads) 
     } else {
       for (std::size_t b = 0; b < total.wheel_family.size() && b < one.wheel_family.size(); ++b)
         for (std::size_t c = 0; c < 3; ++c)
-          total.wheel_family[b][c] = power_sum_db(total.wheel_family[b][c], one.wheel_family[b][c]);
+          total.wheel_family[b][c] = power_sum(total.wheel_family[b][c], one.wheel_family[b][c]);
       for (std::size_t b = 0; b < centres.size(); ++b)
         for (std::size_t c = 0; c < 4; ++c)
-          total.power[b][c] = power_sum_db(total.power[b][c], one.power[b][c]);
+          total.power[b][c] = power_sum(total.power[b][c], one.power[b][c]);
       for (std::size_t b = 0; b < centres.size(); ++b)
-        total.input_power[b] = power_sum_db(total.input_power[b], one.input_power[b]);
+        total.input_power[b] = power_sum(total.input_power[b], one.input_power[b]);
       total.seconds += one.seconds;
     }
     total.contact_power.push_back(one.contact_power.front());
     total.contact_power_a.push_back(one.contact_power_a.front());
     if (!one.contact_family.empty()) total.contact_family.push_back(one.contact_family.front());
   }
-  for (std::size_t c = 0; c < 4; ++c) {
-    std::vector<double> column;
-    for (const auto& b : total.power) column.push_back(b[c]);
-    total.power_a[c] = a_weighted_column(centres, column);
-  }
+  total.power_a = a_weighted_columns(centres, total.power);
   return total;
 }
 

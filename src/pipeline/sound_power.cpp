@@ -184,7 +184,10 @@ double band_level(const std::vector<double>& f, const std::vector<std::vector<do
   return 10 * std::log10(std::max(sum, std::numeric_limits<double>::min()) / kPowerReference);
 }
 
-std::array<double, 4> a_weighted(const std::vector<double>& centres, const SoundBands& bands) {
+}  // namespace
+
+std::array<double, 4> a_weighted_columns(const std::vector<double>& centres,
+                                         const SoundBands& bands) {
   std::array<double, 4> out{};
   for (int c = 0; c < 4; ++c) {
     std::vector<double> levels;
@@ -199,8 +202,6 @@ double power_sum(double a, double b) {
   if (std::isnan(b)) return a;
   return 10 * std::log10(std::pow(10.0, a / 10) + std::pow(10.0, b / 10));
 }
-
-}  // namespace
 
 double a_weighted_column(const std::vector<double>& centres, const std::vector<double>& levels) {
   for (double l : levels)
@@ -543,8 +544,9 @@ void add_band_levels(SoundResult& r, const LinePowers& lp, const std::vector<dou
         r.wheel_family[b][fam] = 10 * std::log10(sum);
       }
   }
-  r.power_a = a_weighted(centres, r.power);
-  for (const SoundBands& c : r.contact_power) r.contact_power_a.push_back(a_weighted(centres, c));
+  r.power_a = a_weighted_columns(centres, r.power);
+  for (const SoundBands& c : r.contact_power)
+    r.contact_power_a.push_back(a_weighted_columns(centres, c));
 }
 
 // The decay rates (EN 15461) from a force at the centre line at track.position, band means of

@@ -142,6 +142,13 @@ RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoi
 /// (the table wheel's empty column).
 double a_weighted_column(const std::vector<double>& centres, const std::vector<double>& levels);
 
+/// a_weighted_column of each of the four columns of `bands`.
+std::array<double, 4> a_weighted_columns(const std::vector<double>& centres,
+                                         const SoundBands& bands);
+
+/// 10 log10(10^{a/10} + 10^{b/10}) (dB); a NaN term (an empty column) is left out.
+double power_sum(double a, double b);
+
 /// A physical wheel: the contacts (indices into the loop's contacts) on it.
 struct SoundWheel {
   std::vector<int> contacts;
