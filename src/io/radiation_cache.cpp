@@ -10,7 +10,7 @@
 namespace rollnoise::io {
 namespace {
 
-constexpr const char* kWheelMagic = "rollnoise wheel radiation 1\n";
+constexpr const char* kWheelMagic = "rollnoise wheel radiation 2\n";
 constexpr const char* kRailMagic = "rollnoise rail radiation 1\n";
 constexpr const char* kLineMagic = "rollnoise rail line gram 1\n";
 
@@ -85,6 +85,10 @@ std::string wheel_payload(const pipeline::WheelRadiation& w) {
   }
   put(out, static_cast<std::uint64_t>(w.efficiency.size()));
   for (const auto& s : w.efficiency) put_doubles(out, s);
+  for (std::size_t j = 0; j < w.efficiency.size(); ++j) {
+    put(out, static_cast<std::int64_t>(w.family[j]));
+    put(out, static_cast<std::int64_t>(w.nodal_circles[j]));
+  }
   return out;
 }
 
@@ -121,6 +125,12 @@ std::optional<pipeline::WheelRadiation> parse_wheel(const std::string& body) {
   w.efficiency.resize(ne);
   for (auto& s : w.efficiency)
     if (!get_doubles(in, s)) return std::nullopt;
+  for (std::uint64_t j = 0; j < ne; ++j) {
+    std::int64_t family = 0, circles = 0;
+    if (!in.get(family) || !in.get(circles)) return std::nullopt;
+    w.family.push_back(static_cast<int>(family));
+    w.nodal_circles.push_back(static_cast<int>(circles));
+  }
   if (in.left() != 0) return std::nullopt;
   return w;
 }

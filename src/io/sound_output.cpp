@@ -53,6 +53,12 @@ void write_efficiencies(Hdf5Writer& w, const pipeline::SoundResult& s) {
     w.write(g + "/sigma", sigma, {wr.frequency.size(), wr.efficiency.size()},
             "- (each mode's radiation efficiency, axisymmetric BEM; [frequency][mode])");
     w.write(g + "/n", n, {n.size()}, "- (nodal diameters of each column of sigma)");
+    std::vector<std::string> family;
+    for (int f : wr.family)
+      family.push_back(dynamics::family_name(static_cast<dynamics::ModeFamily>(f)));
+    w.write(g + "/family", family, "- (each column's mode family: axial, radial, circumferential)");
+    w.write(g + "/nodal_circles", wr.nodal_circles, {wr.nodal_circles.size()},
+            "- (each column's nodal circles; -1 unknown)");
     w.write(g + "/mode", mode, {mode.size()},
             "- (index of the FE mode, as /wheel/modes of `rollnoise modes`)");
     w.write(g + "/surface", wr.surface,

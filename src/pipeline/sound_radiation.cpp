@@ -222,6 +222,10 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
       for (Eigen::Index e = 0; e < p.rows(); ++e)
         msq += 0.5 * cn * b.length[static_cast<std::size_t>(e)] *
                b.radius[static_cast<std::size_t>(e)] * p(e, j) * p(e, j);
+      const dynamics::WheelFeMode& mode =
+          w.modes[static_cast<std::size_t>(order.modes[static_cast<std::size_t>(j)])];
+      out.family.push_back(static_cast<int>(mode.family));
+      out.nodal_circles.push_back(mode.nodal_circles);
       std::vector<double> sigma;
       for (const Eigen::MatrixXcd& P : order.power)
         sigma.push_back(P(j, j).real() / (fluid.impedance() * msq));

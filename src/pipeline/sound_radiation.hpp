@@ -65,6 +65,9 @@ struct WheelRadiation {
   /// Each mode's radiation efficiency sigma_k(f) = P_kk / (rho c S <v_n^2>) on the grid, in the
   /// order of `orders` and their modes.
   std::vector<std::vector<double>> efficiency;
+  /// Each efficiency column's mode: its family (dynamics::ModeFamily as int: 0 axial, 1 radial,
+  /// 2 circumferential) and nodal circles, as the FE wheel classifies it.
+  std::vector<int> family, nodal_circles;
   double surface = 0.0;  ///< the radiating surface (m^2): the section boundary swept around
   int elements = 0;      ///< boundary elements of the generator
 };
