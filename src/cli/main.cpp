@@ -30,6 +30,7 @@
 #include "cli/run_files.hpp"
 #include "core/errors.hpp"
 #include "io/case_schema.hpp"
+#include "io/output_files.hpp"
 
 namespace rollnoise::cli {
 
@@ -202,6 +203,9 @@ int run_command(int argc, char** argv) {
   gsl_set_error_handler_off();  // GSL errors are checked where they matter
   CLI::App app{"rollnoise: railway rolling contact and rolling noise in the frequency domain"};
   app.require_subcommand(1);
+  // the build's version (git describe at build time), as every result file records it
+  app.set_version_flag("--version", "rollnoise " + io::provenance().program_version,
+                       "print the program's version and exit");
   CommandLine cl;
   add_contact_commands(app, cl);
   add_noise_commands(app, cl);

@@ -36,6 +36,16 @@ std::string read_units(hid_t file, const char* path) {
 
 }  // namespace
 
+// rollnoise --version: the build's version (git describe at build time, as every result file's
+// program_version attribute holds it) on one line, exit status 0, no command needed.
+TEST(ProgramVersion, VersionFlagPrintsTheBuildsVersionAndExitsZero) {
+  const Invocation r = run("--version");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.rfind("rollnoise ", 0), 0u) << r.output;
+  EXPECT_GT(r.output.size(), std::string("rollnoise \n").size()) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
 TEST(SteadyCommand, WritesForcesTractionsAndUnitsInTheInterfaceLayout) {
   const fs::path out = temp_dir() / "steady.h5";
   const Invocation r = run("steady " + paper_case() + " -o " + out.string() + " --set grid.nx=20 --set grid.ny=15");
