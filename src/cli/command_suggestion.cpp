@@ -4,34 +4,15 @@
 #include <algorithm>
 #include <numeric>
 
-namespace rollnoise::cli {
+#include "core/edit_distance.hpp"
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), 0);
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
+namespace rollnoise::cli {
 
 std::string unknown_command_message(const std::string& given,
                                     const std::vector<std::string>& commands) {
   std::string msg = "unknown command '" + given + "'";
-  const std::string* best = nullptr;
-  std::size_t best_distance = 0;
-  for (const auto& c : commands) {
-    const std::size_t d = edit_distance(given, c);
-    if (!best || d < best_distance) best = &c, best_distance = d;
-  }
-  if (best && best_distance <= std::max<std::size_t>(2, best->size() / 3))
-    msg += "; did you mean '" + *best + "'?";
+  if (const std::string best = nearest_word(given, commands); !best.empty())
+    msg += "; did you mean '" + best + "'?";
   msg += "\n  commands:";
   for (const auto& c : commands) msg += " " + c;
   return msg + "\n  (rollnoise --help for all, rollnoise COMMAND --help for one)";

@@ -11,9 +11,6 @@ class App;
 
 namespace rollnoise::cli {
 
-/// Levenshtein distance (insertions, deletions, substitutions; each costs 1).
-std::size_t edit_distance(const std::string& a, const std::string& b);
-
 /// The message for `given`, not one of `commands`: the valid ones and, when one is within an
 /// edit distance of max(2, a third of its length), "did you mean 'X'?".
 std::string unknown_command_message(const std::string& given,

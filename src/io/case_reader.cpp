@@ -1,5 +1,7 @@
 #include "io/case_reader.hpp"
 
+#include "core/edit_distance.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -23,6 +25,18 @@ namespace rollnoise::io {
 struct CaseReader::Doc {
   toml::table table;
 };
+
+namespace {
+
+// "; did you mean 'KEY'?" for an unknown key near a declared one (a typing slip), else "".
+std::string key_suggestion(const std::string& key) {
+  std::vector<std::string> keys;
+  for (const KeySpec& k : case_schema()) keys.push_back(k.key);
+  const std::string best = nearest_word(key, keys);
+  return best.empty() ? std::string() : "; did you mean '" + best + "'?";
+}
+
+}  // namespace
 
 namespace {
 
@@ -65,11 +79,12 @@ std::string describe(const toml::node& n) {
 }  // namespace
 
 CaseReader::CaseReader(const CaseReader& o)
-    : doc_(std::make_unique<Doc>(*o.doc_)), name_(o.name_), source_(o.source_) {}
+    : doc_(std::make_unique<Doc>(*o.doc_)), name_(o.name_), source_(o.source_), set_keys_(o.set_keys_) {}
 CaseReader& CaseReader::operator=(const CaseReader& o) {
   doc_ = std::make_unique<Doc>(*o.doc_);
   name_ = o.name_;
   source_ = o.source_;
+  set_keys_ = o.set_keys_;
   return *this;
 }
 CaseReader::~CaseReader() = default;
@@ -88,7 +103,7 @@ CaseReader CaseReader::from_string(const std::string& text, const std::string& n
         << ": malformed TOML: " << e.description();
     throw InputError("(syntax)", msg.str());
   }
-  for (const auto& kv : overrides) r.apply_override(kv);
+  for (const auto& kv : overrides) r.set_keys_.push_back(r.apply_override(kv));
   r.check_keys();
   return r;
 }
@@ -121,13 +136,14 @@ CaseReader CaseReader::with(const std::string& kv) const {
   return r;
 }
 
-void CaseReader::apply_override(const std::string& kv) {
+std::string CaseReader::apply_override(const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set", "override '" + kv + "' is not of the form key=value");
   std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
   while (!key.empty() && key.back() == ' ') key.pop_back();
-  if (!find_key(key)) throw InputError(key, "--set " + key + ": unknown key (see 'rollnoise keys')");
+  if (!find_key(key))
+    throw InputError(key, "--set " + key + ": unknown key" + key_suggestion(key) + " (see 'rollnoise keys')");
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + value);
@@ -149,16 +165,21 @@ void CaseReader::apply_override(const std::string& kv) {
     part = next;
   }
   t->insert_or_assign(part, *parsed.get("v"));
+  return key;
 }
 
 void CaseReader::check_keys() const {
   std::vector<std::string> keys;
   flatten(doc_->table, "", keys);
   for (const auto& k : keys)
-    if (!find_key(k)) fail(k, "unknown key (see 'rollnoise keys' for the declared ones)");
+    if (!find_key(k))
+      fail(k, "unknown key" + key_suggestion(k) + " (see 'rollnoise keys' for the declared ones)");
 }
 
 [[noreturn]] void CaseReader::fail(const std::string& key, const std::string& message) const {
+  // a value the user's --set gave is named as that --set, not as the case file's
+  if (std::find(set_keys_.begin(), set_keys_.end(), key) != set_keys_.end())
+    throw InputError(key, "--set " + key + ": " + message);
   throw InputError(key, source_ + ": " + key + ": " + message);
 }
 

@@ -51,11 +51,14 @@ class CaseReader {
 
  private:
   CaseReader() = default;
-  void apply_override(const std::string& kv);
+  /// Applies KEY=VALUE; returns KEY.
+  std::string apply_override(const std::string& kv);
   void check_keys() const;
   struct Doc;
   std::unique_ptr<Doc> doc_;
   std::string name_, source_;
+  /// The keys the user's --set gave (from_file, from_string): their errors name the --set.
+  std::vector<std::string> set_keys_;
 };
 
 /// Run a stage of the pipeline on the case read by `r`: an InputError it throws (naming a case

@@ -4,6 +4,7 @@
 // its first problem ends that group only.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -13,14 +14,18 @@ namespace rollnoise::io {
 
 class InputProblems {
  public:
-  /// Run `check`; an InputError it throws is recorded. True when it passed.
+  /// Run `check`; an InputError it throws is recorded, once (two readers of one key find the
+  /// same problem: it is listed once). True when it passed.
   template <class Check>
   bool check(Check&& check) {
     try {
       check();
       return true;
     } catch (const InputError& e) {
-      problems_.push_back(e);
+      const bool known = std::any_of(problems_.begin(), problems_.end(), [&](const InputError& p) {
+        return std::string(p.what()) == e.what();
+      });
+      if (!known) problems_.push_back(e);
       return false;
     }
   }

@@ -153,15 +153,19 @@ TEST(ErrorKeys, EveryListedPseudoKeyIsStillUsed) {
 
 namespace {
 
-// The key in "rollnoise: error: CASE: KEY: ..." (or, for several problems, in the first line
-// "  CASE: KEY: ..." after "rollnoise: error: N problems in the case:"), or "".
+// The key in "rollnoise: error: CASE: KEY: ..." or, for a value a --set gave, "--set KEY: ..." (or,
+// for several problems, in the first such line after "rollnoise: error: N problems in the case:"),
+// or "".
 std::string key_after(const std::string& output, const std::string& case_file) {
   const auto error = output.find("rollnoise: error: ");
   if (error == std::string::npos) return "";
-  const auto at = output.find(case_file + ": ", error);
-  if (at == std::string::npos) return "";
-  const auto from = at + case_file.size() + 2;
-  return output.substr(from, output.find(':', from) - from);
+  for (const std::string& before : {case_file + ": ", std::string("--set ")}) {
+    const auto at = output.find(before, error);
+    if (at == std::string::npos) continue;
+    const auto from = at + before.size();
+    return output.substr(from, output.find(':', from) - from);
+  }
+  return "";
 }
 
 }  // namespace

@@ -76,4 +76,48 @@ TEST(CaseProblems, TheFirstProblemsKeyIsTheErrorsKey) {
   }
 }
 
+// A value the user's --set gave is blamed on the --set, not on the case file; one read by two
+// readers is listed once.
+TEST(CaseProblems, ABadSetValueNamesTheSetAndIsListedOnce) {
+  const std::string msg = case_with({"friction.mu=\"abc\""});
+  EXPECT_NE(msg.find("--set friction.mu: expected a number"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("problems.toml"), std::string::npos) << msg;
+  const std::string noise = [] {
+    try {
+      io::read_noise_inputs(io::CaseReader::from_string(kHertzCase, "problems.toml", {"rolling.speed=-3.0"}));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  }();
+  EXPECT_EQ(noise.find("problems in the case"), std::string::npos) << noise;
+  EXPECT_NE(noise.find("--set rolling.speed: must be positive"), std::string::npos) << noise;
+}
+
+// A mistyped key, in the file or in a --set, gets the nearest declared key as a suggestion.
+TEST(CaseProblems, AMistypedKeyGetsTheNearestDeclaredOne) {
+  std::string msg;
+  try {
+    io::CaseReader::from_string(kHertzCase, "problems.toml", {"friction.muu=0.3"});
+  } catch (const InputError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("did you mean 'friction.mu'?"), std::string::npos) << msg;
+  msg.clear();
+  try {
+    io::CaseReader::from_string(std::string(kHertzCase) + "[noise]\nband_maxx = 400.0\n", "problems.toml");
+  } catch (const InputError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("did you mean 'noise.band_max'?"), std::string::npos) << msg;
+  msg.clear();
+  try {  // far from every key: no suggestion
+    io::CaseReader::from_string(kHertzCase, "problems.toml", {"weather.rain=1.0"});
+  } catch (const InputError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("unknown key"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("did you mean"), std::string::npos) << msg;
+}
+
 }  // namespace
