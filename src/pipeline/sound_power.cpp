@@ -426,26 +426,37 @@ std::pair<double, double> rail_power(const LineStructures& l, std::size_t s,
           l.w2 * l.sleeper * F.dot(l.gs[s] * F).real()};
 }
 
-// (S1) of wheel w under its contacts' forces F: all its modes (family -1) or one family's alone
-// (their cross terms within an order kept, the other families' left out).
-double wheel_power(const LineStructures& l, const SoundSetup& s, std::size_t w,
-                   const Eigen::VectorXcd& F, int family) {
+// (S1) of wheel w under its contacts' forces F, in one pass over each order's P_n: [0] all its
+// modes, [1 + f] family f's alone (their cross terms within an order kept, the other families'
+// left out).
+std::array<double, 4> wheel_power(const LineStructures& l, const SoundSetup& s, std::size_t w,
+                                  const Eigen::VectorXcd& F) {
   const Eigen::VectorXcd qc = l.R[w].cwiseProduct(s.psi_cos[w] * F);
   const Eigen::VectorXcd qs = l.R[w].cwiseProduct(s.psi_sin[w] * F);
-  double power = 0.0;
+  std::array<double, 4> power{};
   for (std::size_t o = 0; o < l.pw.size(); ++o) {
     const std::vector<int>& rows = s.order_rows[o];
-    Eigen::VectorXcd vc = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(rows.size())), vs = vc;
-    for (std::size_t j = 0; j < rows.size(); ++j) {
-      if (rows[j] < 0 || (family >= 0 && s.order_family[o][j] != family)) continue;
-      vc(static_cast<Eigen::Index>(j)) = qc(rows[j]);
-      vs(static_cast<Eigen::Index>(j)) = qs(rows[j]);
+    const Eigen::MatrixXcd& P = l.pw[o];
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i] < 0) continue;
+      for (std::size_t j = 0; j < rows.size(); ++j) {
+        if (rows[j] < 0) continue;
+        const cdouble p = P(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        // conj(v_i) P_ij v_j of both sets (the cos and the sin set radiate alike, without cross
+        // power)
+        const double term =
+            (std::conj(qc(rows[i])) * p * qc(rows[j]) + std::conj(qs(rows[i])) * p * qs(rows[j]))
+                .real();
+        power[0] += term;
+        if (s.order_family[o][i] == s.order_family[o][j])
+          power[1 + static_cast<std::size_t>(s.order_family[o][i])] += term;
+      }
     }
-    power += l.w2 * (vc.dot(l.pw[o] * vc).real() + vs.dot(l.pw[o] * vs).real());
   }
   // a mode far below coincidence (sigma < 1e-13) radiates at round-off, which may come out
   // negative through the cross terms: no power
-  return std::max(power, 0.0);
+  for (double& p : power) p = std::max(l.w2 * p, 0.0);
+  return power;
 }
 
 // The forces of rail g's contacts that belong to `wheel` (the others zero), or an empty vector.
@@ -499,10 +510,12 @@ LinePowers line_powers(const noise::ContactSetLoopResult& loop,
         }
         if (!r.wheel) continue;
         const Eigen::VectorXcd F = stacked_forces(loop, wheels[w].contacts, k, src);
-        lp.wheel[w][e][k] = wheel_power(l, s, w, F, -1);
+        const std::array<double, 4> power = wheel_power(l, s, w, F);
+        lp.wheel[w][e][k] = power[0];
         lp.wheel_total[e][k] += lp.wheel[w][e][k];
         for (int fam = 0; fam < 3; ++fam)
-          lp.family[w][static_cast<std::size_t>(fam)][e][k] = wheel_power(l, s, w, F, fam);
+          lp.family[w][static_cast<std::size_t>(fam)][e][k] =
+              power[1 + static_cast<std::size_t>(fam)];
       }
     }
   });
