@@ -23,6 +23,12 @@ cdouble Support::dynamic_stiffness(double omega) const {
   return kp * below / (kp + below);                         // Eq. (1): pad in series
 }
 
+cdouble Support::sleeper_transfer(double omega) const {
+  const cdouble kp = pad_stiffness * cdouble(1.0, pad_loss_factor);
+  const cdouble kb = ballast_stiffness * cdouble(1.0, ballast_loss_factor);
+  return kp / (kp + kb - sleeper_mass * omega * omega);  // the pad's force moves the sleeper
+}
+
 void Support::validate(const std::string& prefix) const {
   auto check = [&](double v, const char* name, bool allow_zero) {
     const bool ok = std::isfinite(v) && (allow_zero ? v >= 0.0 : v > 0.0);

@@ -68,6 +68,9 @@ struct Support {
 
   /// K(omega) of Eq. (1) (N/m).
   cdouble dynamic_stiffness(double omega) const;
+  /// The sleeper's displacement per the rail's at the seat, k_p* / (k_p* + k_b* - m_s omega^2)
+  /// (the pad and the sleeper on the ballast of Eq. (1) in series; the sound of the sleepers).
+  cdouble sleeper_transfer(double omega) const;
   /// Eq. (1) at a complex angular frequency omega = -i s (loss factors continued as constants).
   cdouble dynamic_stiffness(cdouble omega) const;
   void validate(const std::string& prefix) const;

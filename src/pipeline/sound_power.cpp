@@ -25,10 +25,6 @@ constexpr double kPowerReference = 1e-12;  // W (dB re 1 pW)
 // point; beyond them the tails are closed as geometric series (docs/sound.md Sec. 3.2).
 constexpr int kWindowSpans = 20;
 
-double angular(double f) {
-  return 2 * kPi * f;
-}
-
 // Gauss-Legendre nodes and weights on [0, 1].
 std::vector<std::pair<double, double>> gauss_unit(int n) {
   gsl_integration_glfixed_table* t =
@@ -103,15 +99,15 @@ Eigen::MatrixXcd interpolated_power(const std::vector<Eigen::MatrixXcd>& m, cons
     ra(i) = std::sqrt(da), rb(i) = std::sqrt(db);
     rd(i) = std::exp(0.5 * ((1.0 - p.w) * std::log(da) + p.w * std::log(db)));
   }
+  const auto correlation = [](cdouble x, double ri, double rj) {
+    const cdouble c = x / ri / rj;
+    return std::isfinite(std::abs(c)) ? c / std::max(1.0, std::abs(c)) : cdouble(0.0);
+  };
   Eigen::MatrixXcd out(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
       // correlations: |c| <= 1 for a positive semi-definite matrix, which round-off may break
       // where a mode does not radiate
-      const auto correlation = [](cdouble x, double ri, double rj) {
-        const cdouble c = x / ri / rj;
-        return std::isfinite(std::abs(c)) ? c / std::max(1.0, std::abs(c)) : cdouble(0.0);
-      };
       const cdouble c = (1.0 - p.w) * correlation(a(i, j), ra(i), ra(j)) +
                         p.w * correlation(b(i, j), rb(i), rb(j));
       out(i, j) = c * rd(i) * rd(j);
@@ -171,13 +167,11 @@ double input_power(const noise::ContactSetLoopResult& loop,
 double band_level(const std::vector<double>& f, const std::vector<std::vector<double>>& by_source,
                   const std::vector<std::vector<double>>& source_levels, std::size_t band,
                   double centre) {
-  double sum = 0.0;
+  double sum = 0.0;  // the band mean is linear: <2 W> = 2 <W>
   for (std::size_t e = 0; e < by_source.size(); ++e) {
-    std::vector<double> twice(by_source[e].size());
-    for (std::size_t k = 0; k < twice.size(); ++k) twice[k] = 2.0 * by_source[e][k];
     const double r2 = noise::kRoughnessReference * noise::kRoughnessReference *
                       std::pow(10.0, source_levels[e][band] / 10.0);
-    sum += r2 * noise::band_mean(f, twice, centre);
+    sum += 2.0 * r2 * noise::band_mean(f, by_source[e], centre);
   }
   // a band without power (a wheel far below coincidence, at round-off): the smallest normal
   // double, so that the level stays finite (some -3000 dB) and the power sums hold
@@ -393,15 +387,11 @@ struct LineStructures {
 LineStructures line_structures(double f, const SoundSetup& s, const SoundResult& r,
                                const dynamics::Support& seat, const SoundCase& sound) {
   LineStructures l;
-  const double omega = angular(f);
+  const double omega = dynamics::angular(f);
   l.w2 = omega * omega;
   const GridPlace at = grid_place(s.grid, f);
   l.pv = interpolated(r.rail->vertical, at), l.pl = interpolated(r.rail->lateral, at);
-  // Eq. (1) of dynamics/track.hpp: the sleeper's displacement per the rail's at its seat
-  const cdouble kp = cdouble(seat.pad_stiffness, seat.pad_stiffness * seat.pad_loss_factor);
-  const cdouble kb =
-      cdouble(seat.ballast_stiffness, seat.ballast_stiffness * seat.ballast_loss_factor);
-  const double tau2 = std::norm(kp / (kp + kb - seat.sleeper_mass * l.w2));
+  const double tau2 = std::norm(seat.sleeper_transfer(omega));  // Eq. (1)'s seat
   l.sleeper = tau2 * 0.5 * sound.fluid.impedance() * interpolated(s.piston, at) *
               sound.sleeper_length * sound.sleeper_width;
   for (const RailGram& g : s.rails) {
