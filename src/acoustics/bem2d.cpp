@@ -1,6 +1,5 @@
 #include "acoustics/bem2d.hpp"
 
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_bessel.h>
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include <string>
 
 #include "core/constants.hpp"
+#include "linalg/gauss_legendre.hpp"
 
 namespace rollnoise::acoustics {
 
@@ -18,22 +18,8 @@ namespace {
 using cdouble = std::complex<double>;
 using Eigen::Vector2d;
 
-/// A Gauss-Legendre rule on [0, 1] (GSL's fixed tables).
-struct GaussRule {
-  std::vector<double> nodes, weights;
-};
-
-GaussRule gauss_rule_01(int n) {
-  gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(n);
-  if (table == nullptr) throw std::runtime_error("bem2d: GSL Gauss-Legendre table not allocated");
-  GaussRule rule;
-  rule.nodes.resize(n);
-  rule.weights.resize(n);
-  for (int i = 0; i < n; ++i)
-    gsl_integration_glfixed_point(0.0, 1.0, i, &rule.nodes[i], &rule.weights[i], table);
-  gsl_integration_glfixed_table_free(table);
-  return rule;
-}
+using linalg::GaussRule;
+const auto gauss_rule_01 = linalg::gauss_legendre_01;
 
 /// H_0^(2)(z) = J_0 - i Y_0 and H_1^(2)(z) = J_1 - i Y_1 (z > 0).
 inline void hankel2_01(double z, cdouble& h0, cdouble& h1) {

@@ -1,7 +1,5 @@
 #include "acoustics/piston.hpp"
 
-#include <gsl/gsl_integration.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
+#include "linalg/gauss_legendre.hpp"
 
 namespace rollnoise::acoustics {
 
@@ -20,20 +19,16 @@ struct Nodes {
 };
 
 Nodes gauss_nodes(double a, double b, int n, int panels) {
-  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
-  if (t == nullptr) throw std::runtime_error("piston: GSL Gauss-Legendre table not allocated");
+  const linalg::GaussRule rule = linalg::gauss_legendre_01(n);
   Nodes out;
   out.x.reserve(static_cast<size_t>(n) * panels);
   out.w.reserve(static_cast<size_t>(n) * panels);
   const double h = (b - a) / panels;
   for (int p = 0; p < panels; ++p)
-    for (int i = 0; i < n; ++i) {
-      double xi, wi;
-      gsl_integration_glfixed_point(a + p * h, a + (p + 1) * h, i, &xi, &wi, t);
-      out.x.push_back(xi);
-      out.w.push_back(wi);
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+      out.x.push_back(a + (p + rule.nodes[i]) * h);
+      out.w.push_back(rule.weights[i] * h);
     }
-  gsl_integration_glfixed_table_free(t);
   return out;
 }
 

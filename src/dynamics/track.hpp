@@ -53,6 +53,7 @@
 #include <vector>
 
 #include "dynamics/rail_contact.hpp"
+#include "dynamics/rail_surface_spectrum.hpp"
 #include "dynamics/receptance.hpp"
 #include "dynamics/track_beam.hpp"
 
@@ -126,8 +127,8 @@ class DiscretelySupportedRail {
   /// solution's Floquet multipliers and 4x4 LU (or, truncated, one Levinson recursion on S, each
   /// pair with its own window of supports) serve all of them: equal to transfer() per pair to the
   /// last bit (truncated: unless the recursion's residual check sends them to the dense LU).
-  std::vector<Eigen::Matrix2cd> transfers(double frequency,
-                                          const std::vector<std::pair<double, double>>& pairs) const;
+  std::vector<Eigen::Matrix2cd> transfers(
+      double frequency, const std::vector<std::pair<double, double>>& pairs) const;
 
   /// Eq. (2) at a complex angular frequency omega = -i s (s the Laplace variable, 1/s; see
   /// InfiniteBeam for the continuation).
@@ -234,6 +235,21 @@ class RailModel {
   /// setup (the waveguide's basis at those points) is done once, here.
   using LaplaceTransfers = std::function<std::vector<Receptance6>(cdouble s)>;
   virtual LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const;
+
+  /// Whether the rail's section deforms (surface_spectra is not null): the waveguides.
+  virtual bool section_deforms() const { return false; }
+  /// The rail's surface spectra (rail_surface_spectrum.hpp) under loads at `points`, of the normal
+  /// displacement patterns `patterns` over the outline pieces `pieces` (pieces x r: row = piece,
+  /// column = pattern; U's rows are the patterns' amplitudes u^T patterns), per frequency: what the
+  /// sound of a rail whose section deforms needs (pipeline/rail_section_sound.hpp). Null for a
+  /// model without a section (the beams: their section moves rigidly, and their sound takes the
+  /// centre line's response, line_transfers).
+  virtual SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
+                                         const std::vector<OutlinePiece>& pieces,
+                                         const Eigen::MatrixXd& patterns) const {
+    (void)points, (void)pieces, (void)patterns;
+    return nullptr;
+  }
 
   /// The case's contact position along the rail (track.position; m from a sleeper).
   double position() const { return x_; }

@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -83,13 +84,7 @@ DiscretelySupportedWaveguide::DiscretelySupportedWaveguide(RailWaveguide free_ra
 namespace {
 
 // A distribution's wave amplitudes for both signs of x (RailWaveguide::wave_amplitudes).
-struct Amplitudes {
-  Eigen::MatrixXcd plus, minus;
-};
-
-Amplitudes amplitudes(const RailWaveguide& rail, const RailWaves& w, const Eigen::MatrixXd& d) {
-  return {rail.wave_amplitudes(w, d, 1.0), rail.wave_amplitudes(w, d, -1.0)};
-}
+using Amplitudes = WaveAmplitudes;
 
 // Eq. (W4)'s weights -i e^{-i k_j |x|} / d_j.
 Eigen::VectorXcd green_weights(const RailWaves& w, double x) {
@@ -158,7 +153,7 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
             int n, cdouble omega) {
   Seats s;
   s.waves = rail.waves(omega);
-  s.foot = amplitudes(rail, s.waves, attachment.loads);
+  s.foot = wave_amplitudes(rail, s.waves, attachment.loads);
   s.n = n;
   s.spacing = support.sleeper_spacing;
   const int m = 2 * n + 1;
@@ -180,25 +175,32 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   return s;
 }
 
-// Eqs. (D2)-(D3) with the seats of one frequency: the response r at x_r per load f at x_l, the
-// 2N + 1 seats nearest the midpoint.
-Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double x_r,
-                                    const Amplitudes& f, double x_l) {
+// Eq. (D2) with the seats of one frequency: the seats' resultants v (4 (2N + 1) rows) under the
+// load f at x_l, the seats first L, (first + 1) L, ... .
+Eigen::MatrixXcd seat_resultants(const Seats& s, const Amplitudes& f, double x_l, long first) {
   const int m = 2 * s.n + 1;
-  const long first = std::lround(0.5 * (x_r + x_l) / s.spacing) - s.n;
   Eigen::MatrixXcd B(4 * m, f.plus.cols());
-  // the seats' positions from the load, x_i = x_first - x_l + i L, and from the response
-  const double from_load = first * s.spacing - x_l, from_response = x_r - first * s.spacing;
+  const double from_load = first * s.spacing - x_l;  // x_i - x_l = x_first - x_l + i L
   const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
   for (int i = 0; i < m; ++i) {
     const bool ahead = from_load + i * s.spacing >= 0.0;
     B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
                              to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
   }
-  const Eigen::MatrixXcd v = s.solve(B);
+  return s.solve(B);
+}
+
+// Eqs. (D2)-(D3) with the seats of one frequency: the response r at x_r per load f at x_l, the
+// 2N + 1 seats nearest the midpoint.
+Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double x_r,
+                                    const Amplitudes& f, double x_l) {
+  const int m = 2 * s.n + 1;
+  const long first = std::lround(0.5 * (x_r + x_l) / s.spacing) - s.n;
+  const double from_response = x_r - first * s.spacing;
+  const Eigen::MatrixXcd v = seat_resultants(s, f, x_l, first);
   // Eq. (D3): sum_n G_rf(x_r - x_n) K v_n = A_s(r)^T sum_n diag(weights) A_-s(foot) K v_n, the
   // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
-  Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), B.cols());
+  Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), v.cols());
   Eigen::MatrixXcd ahead = behind;
   const Eigen::MatrixXcd from_seats = green_weights_along(s.waves, from_response, -s.spacing, m);
   for (int i = 0; i < m; ++i) {
@@ -221,18 +223,49 @@ Eigen::MatrixXcd DiscretelySupportedWaveguide::transfer(cdouble omega,
                                                         const Eigen::MatrixXd& load,
                                                         double x_load) const {
   const Seats s = seats(rail_, foot_, support_, n_, omega);
-  return supported_transfer(s, amplitudes(rail_, s.waves, response), x_response,
-                            amplitudes(rail_, s.waves, load), x_load);
+  return supported_transfer(s, wave_amplitudes(rail_, s.waves, response), x_response,
+                            wave_amplitudes(rail_, s.waves, load), x_load);
 }
 
 std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
     cdouble omega, const Eigen::MatrixXd& points,
     const std::vector<std::pair<double, double>>& positions) const {
   const Seats s = seats(rail_, foot_, support_, n_, omega);
-  const Amplitudes p = amplitudes(rail_, s.waves, points);
+  const Amplitudes p = wave_amplitudes(rail_, s.waves, points);
   std::vector<Eigen::MatrixXcd> out;
   for (const auto& [x_r, x_l] : positions) out.push_back(supported_transfer(s, p, x_r, p, x_l));
   return out;
+}
+
+SurfaceSpectrum DiscretelySupportedWaveguide::surface_spectrum(
+    double omega, const Eigen::MatrixXd& response, const Eigen::MatrixXd& load,
+    const std::vector<double>& load_x) const {
+  if (static_cast<Eigen::Index>(load_x.size()) != load.cols())
+    throw std::invalid_argument("surface_spectrum: one position per load column");
+  Seats s = seats(rail_, foot_, support_, n_, omega);
+  SpectrumTerms t;
+  t.load = wave_amplitudes(rail_, s.waves, load);
+  t.response = wave_amplitudes(rail_, s.waves, response);
+  t.load_x = load_x;
+  t.spacing = s.spacing;
+  t.seat_forces.resize(4 * (2 * n_ + 1), load.cols());
+  // Eq. (D2) per load column, the 2N + 1 seats nearest the load (the columns at one x together)
+  for (Eigen::Index b = 0; b < load.cols(); ++b) {
+    const double x = load_x[static_cast<std::size_t>(b)];
+    const long first = std::lround(x / s.spacing) - n_;
+    t.first_seat_x.push_back(first * s.spacing);
+    if (b > 0 && load_x[static_cast<std::size_t>(b - 1)] == x) continue;
+    Eigen::Index e = b;
+    while (e < load.cols() && load_x[static_cast<std::size_t>(e)] == x) ++e;
+    const Amplitudes f{t.load.plus.middleCols(b, e - b), t.load.minus.middleCols(b, e - b)};
+    const Eigen::MatrixXcd v = seat_resultants(s, f, x, first);
+    for (int i = 0; i < 2 * n_ + 1; ++i)
+      t.seat_forces.block(4 * i, b, 4, e - b) = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
+  }
+  t.foot = std::move(s.foot);
+  t.wavenumbers = s.waves.wavenumbers;
+  t.norms = s.waves.norms;
+  return spectrum_of(std::move(t));
 }
 
 DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackParameters& track,
@@ -370,6 +403,19 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
   return between(*st, checked_complex_omega(frequency),
                  {{ordered ? 0 : 1, ordered ? 1 : 0, x_a, x_b}})
       .front();
+}
+
+SurfaceSpectra DiscreteWaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
+                                                           const std::vector<OutlinePiece>& pieces,
+                                                           const Eigen::MatrixXd& patterns) const {
+  const LoadPointColumns at = load_point_columns(points);
+  const std::shared_ptr<const Station> st = station(at.distinct);
+  auto response = std::make_shared<const Eigen::MatrixXd>(
+      outline_normal_distributions(st->rail.free_rail().mesh(), pieces) * patterns);
+  auto load = std::make_shared<const Eigen::MatrixXd>(at.columns(st->loads));
+  return [st, response, load, x = at.x](double frequency) {
+    return st->rail.surface_spectrum(angular(frequency), *response, *load, x);
+  };
 }
 
 Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {

@@ -49,6 +49,7 @@
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_surface_spectrum.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
@@ -81,6 +82,12 @@ class DiscretelySupportedWaveguide {
   std::vector<Eigen::MatrixXcd> transfers(
       cdouble omega, const Eigen::MatrixXd& points,
       const std::vector<std::pair<double, double>>& positions) const;
+
+  /// Eq. (D4) of rail_surface_spectrum.hpp at angular frequency omega: the spectrum of `response`
+  /// (dofs() x pieces) per loads `load` (dofs() x c) at `load_x` (m from a sleeper, per column).
+  SurfaceSpectrum surface_spectrum(double omega, const Eigen::MatrixXd& response,
+                                   const Eigen::MatrixXd& load,
+                                   const std::vector<double>& load_x) const;
 
   const RailWaveguide& free_rail() const { return rail_; }
   const FootAttachment& foot() const { return foot_; }
@@ -116,6 +123,13 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   /// b = (offset_b, angle_b) at x_b along the rail (m from a sleeper), one basis for both.
   Receptance4 contact_transfer(double frequency, double offset_a, double angle_a, double x_a,
                                double offset_b, double angle_b, double x_b) const;
+
+  /// Eq. (D4) of rail_surface_spectrum.hpp: the section loaded at the points (one Ritz basis of
+  /// the free rail with the foot's loads).
+  bool section_deforms() const override { return true; }
+  SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
+                                 const std::vector<OutlinePiece>& pieces,
+                                 const Eigen::MatrixXd& patterns) const override;
 
   const DiscretelySupportedWaveguide& rail() const { return parts_.get().rail; }
   const Eigen::MatrixXd& crown_loads() const { return parts_.get().crown; }

@@ -520,6 +520,39 @@ Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
   return loads;
 }
 
+LoadPointColumns load_point_columns(const std::vector<RailLoadPoint>& points) {
+  LoadPointColumns out;
+  for (const RailLoadPoint& p : points) {
+    const std::pair<double, double> at(p.offset_y, p.contact_angle);
+    const auto it = std::find(out.distinct.begin(), out.distinct.end(), at);
+    out.which.push_back(static_cast<int>(it - out.distinct.begin()));
+    if (it == out.distinct.end()) out.distinct.push_back(at);
+    out.x.insert(out.x.end(), 4, p.x);
+  }
+  return out;
+}
+
+Eigen::MatrixXd LoadPointColumns::columns(const Eigen::MatrixXd& distinct_loads) const {
+  Eigen::MatrixXd out(distinct_loads.rows(), 4 * static_cast<Eigen::Index>(which.size()));
+  for (std::size_t i = 0; i < which.size(); ++i)
+    out.middleCols(4 * static_cast<Eigen::Index>(i), 4) =
+        distinct_loads.middleCols(4 * which[i], 4);
+  return out;
+}
+
+SurfaceSpectra WaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
+                                                   const std::vector<OutlinePiece>& pieces,
+                                                   const Eigen::MatrixXd& patterns) const {
+  const LoadPointColumns at = load_point_columns(points);
+  const std::shared_ptr<const Station> st = station(at.distinct);
+  auto response = std::make_shared<const Eigen::MatrixXd>(
+      outline_normal_distributions(st->model.mesh(), pieces) * patterns);
+  auto load = std::make_shared<const Eigen::MatrixXd>(at.columns(st->loads));
+  return [st, response, load, x = at.x](double frequency) {
+    return surface_spectrum(st->model, angular(frequency), *response, *load, x);
+  };
+}
+
 RailPointSets rail_point_sets(const std::vector<RailContactPair>& pairs) {
   PointSets s = point_sets(pairs);
   return RailPointSets{std::move(s.points), std::move(s.set), std::move(s.within)};

@@ -169,6 +169,12 @@ class WaveguideRailModel : public GridSamplingRail {
   /// The point (y, z) (m) of the outline where a contact at (offset_y, contact_angle) is loaded.
   Eigen::Vector2d contact_point(double offset_y, double contact_angle) const;
 
+  /// Eq. (W7) of rail_surface_spectrum.hpp: the section loaded at the points (one Ritz basis).
+  bool section_deforms() const override { return true; }
+  SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
+                                 const std::vector<OutlinePiece>& pieces,
+                                 const Eigen::MatrixXd& patterns) const override;
+
   /// The crown's reduced model (built on first use: the loop at the contacts does not need it).
   const RailWaveguide& waveguide() const { return crown().model; }
   /// The load (and response) distributions at the crown, dofs() x 4 (Receptance4 order).
@@ -236,6 +242,12 @@ class WaveguideOnGrid final : public RailModel {
   LaplaceTransfers laplace_transfers(const std::vector<RailContactPair>& pairs) const override {
     return rail_.laplace_transfers(pairs);
   }
+  bool section_deforms() const override { return rail_.section_deforms(); }
+  SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
+                                 const std::vector<OutlinePiece>& pieces,
+                                 const Eigen::MatrixXd& patterns) const override {
+    return rail_.surface_spectra(points, pieces, patterns);
+  }
 
  private:
   const GridSamplingRail& rail_;
@@ -265,6 +277,17 @@ Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
                                     const std::vector<Eigen::Vector2d>& outline,
                                     const WaveguideRailOptions& options,
                                     const std::vector<std::pair<double, double>>& points);
+
+/// Loads at RailLoadPoints on one Ritz basis: the distinct (offset_y, contact_angle) of the points
+/// (a station's points) and, per point, which of them it is.
+struct LoadPointColumns {
+  std::vector<std::pair<double, double>> distinct;
+  std::vector<int> which;
+  std::vector<double> x;  ///< per column of columns() (m)
+  /// Each point's four columns of `distinct_loads` (dofs() x 4 per distinct point), side by side.
+  Eigen::MatrixXd columns(const Eigen::MatrixXd& distinct_loads) const;
+};
+LoadPointColumns load_point_columns(const std::vector<RailLoadPoint>& points);
 
 /// The pairs' contact points grouped into the sets that are coupled (a pair joins its two points),
 /// as WaveguideRailModel gives each set one Ritz basis: per set its points (offset_y,

@@ -12,15 +12,14 @@
 #include "dynamics/waveguide_rail_model.hpp"
 #include "io/cache_files.hpp"
 #include "io/frequency_axis.hpp"
+#include "io/radiation_cache.hpp"
 #include "io/rail_sampling_cache.hpp"
 #include "io/rail_section_file.hpp"
-#include "io/radiation_cache.hpp"
-#include "io/sound_case.hpp"
 #include "io/roughness_file.hpp"
+#include "io/sound_case.hpp"
 #include "io/track_file.hpp"
 #include "io/wheel_fe_case.hpp"
 #include "io/wheel_file.hpp"
-
 
 namespace rollnoise::io {
 
@@ -41,27 +40,31 @@ void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
   c.multibody = r.string("curve.creepage") == "multibody";
   if (c.multibody && r.string("contact.geometry") != "profiles")
     r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
-  for (const char* key : {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage",
-                          "wheelset.inner_wheel_load", "wheelset.inner_creepage",
-                          "trailing_wheelset.lateral_displacement", "trailing_wheelset.yaw",
-                          "trailing_wheelset.wheel_load", "trailing_wheelset.inner_wheel_load",
-                          "trailing_wheelset.creepage", "trailing_wheelset.inner_creepage"})
+  for (const char* key :
+       {"wheelset.lateral_displacement", "wheelset.yaw", "wheelset.wheel_load", "wheelset.creepage",
+        "wheelset.inner_wheel_load", "wheelset.inner_creepage",
+        "trailing_wheelset.lateral_displacement", "trailing_wheelset.yaw",
+        "trailing_wheelset.wheel_load", "trailing_wheelset.inner_wheel_load",
+        "trailing_wheelset.creepage", "trailing_wheelset.inner_creepage"})
     if (r.has(key) && !c.multibody) r.fail(key, "only used with curve.creepage = \"multibody\"");
   if (r.has("curve.wheels")) {
     if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
-      r.fail("curve.wheels", "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
-                             "\"multibody\"");
+      r.fail("curve.wheels",
+             "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
+             "\"multibody\"");
     c.wheels = r.string_list("curve.wheels");
     if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");
     for (std::size_t i = 0; i < c.wheels.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
-        if (c.wheels[i] == c.wheels[j]) r.fail("curve.wheels", "names \"" + c.wheels[i] + "\" twice");
+        if (c.wheels[i] == c.wheels[j])
+          r.fail("curve.wheels", "names \"" + c.wheels[i] + "\" twice");
   }
   if (r.string("contact.geometry") == "profiles" && r.string("curve.creepage") != "case")
     for (const char* key : {"contact.lateral_displacement", "contact.yaw", "creepage.mean"})
       if (r.has(key))
-        r.fail(key, "the curve contact state sets it (curve.creepage = \"case\" to give it, or "
-                    "\"multibody\" with [wheelset])");
+        r.fail(key,
+               "the curve contact state sets it (curve.creepage = \"case\" to give it, or "
+               "\"multibody\" with [wheelset])");
 }
 
 // The multibody contact state of the bogie's wheelsets (curve.creepage = "multibody"): positions,
@@ -141,19 +144,30 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
     else
       c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, o);
   } else {
-    c.rail = std::make_unique<dynamics::RailModel>(
-        track, support == "discrete" ? dynamics::TrackSupport::kDiscrete : dynamics::TrackSupport::kContinuous,
-        position);
+    c.rail = std::make_unique<dynamics::RailModel>(track,
+                                                   support == "discrete"
+                                                       ? dynamics::TrackSupport::kDiscrete
+                                                       : dynamics::TrackSupport::kContinuous,
+                                                   position);
   }
   char pos[32];
   std::snprintf(pos, sizeof pos, "%.17g", position);
-  const std::string id = "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
+  const std::string id =
+      "track " + file + ", " + model + ", " + support + ", " + pos + track_section;
   // the rail's response along its length for the sound power, kept in the cache under the track's
   // values (io/radiation_cache.hpp)
   const std::string identity = rail_identity(id, track);
-  c.sound.rail_line_table = [identity](const dynamics::RailModel& rail, const std::vector<double>& positions,
+  c.sound.rail_line_table = [identity](const dynamics::RailModel& rail,
+                                       const std::vector<double>& positions,
                                        const std::vector<double>& grid, int gauss, int threads) {
     return rail_line_gram_cached(rail, identity, positions, grid, gauss, threads);
+  };
+  c.sound.section_gram_table = [identity](const dynamics::RailModel& rail,
+                                          const std::vector<dynamics::RailLoadPoint>& points,
+                                          const pipeline::SectionRadiationTable& table,
+                                          const std::vector<double>& grid,
+                                          const acoustics::Fluid& fluid, int threads) {
+    return section_grams_cached(rail, identity, points, table, grid, fluid, threads);
   };
   return id;
 }
@@ -164,11 +178,13 @@ std::string read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& 
   std::string id;
   const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
   if ((fe = read_wheel_fe_case(r, problems))) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
-    c.wheel = std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &id));
+    c.wheel =
+        std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &id));
     return "wheel " + wheelset + ", " + id;
   }
   const std::string modes = resolve_model_file(r, "wheel.modes");
-  c.wheel = std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
+  c.wheel =
+      std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
   return "wheel " + wheelset + ", " + modes;
 }
 
@@ -195,8 +211,9 @@ void read_roughness_and_loop(const CaseReader& r, InputProblems& problems, Noise
   problems.check(
       [&] { c.second_patch_roughness = r.string("noise.second_patch_roughness") == "own"; });
   problems.check([&] {
-    c.contact_coupling = r.string("noise.contact_coupling") == "none" ? pipeline::NoiseCase::ContactCoupling::kNone
-                                                                      : pipeline::NoiseCase::ContactCoupling::kBogie;
+    c.contact_coupling = r.string("noise.contact_coupling") == "none"
+                             ? pipeline::NoiseCase::ContactCoupling::kNone
+                             : pipeline::NoiseCase::ContactCoupling::kBogie;
   });
   problems.check([&] {
     const std::string compare = r.string("noise.compare");
@@ -207,7 +224,8 @@ void read_roughness_and_loop(const CaseReader& r, InputProblems& problems, Noise
       const std::string mapped = r.string("noise.compare_kalker") == "yes" ? "kalker" : "none";
       if (r.has("noise.compare") && compare != mapped)
         r.fail("noise.compare_kalker", "deprecated alias of noise.compare = \"" + mapped +
-                                           "\" contradicts noise.compare = \"" + compare + "\"; remove it");
+                                           "\" contradicts noise.compare = \"" + compare +
+                                           "\"; remove it");
       c.compare = mapped == "kalker" ? NoiseCase::Baseline::kKalker : NoiseCase::Baseline::kNone;
       c.notice = "noise.compare_kalker is deprecated: read as noise.compare = \"" + mapped + "\"";
     }
@@ -236,9 +254,12 @@ NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
     const std::vector<Eigen::Vector2d> section =
         r.has("track.rail_section") ? read_rail_section(resolve_model_file(r, "track.rail_section"))
                                     : std::vector<Eigen::Vector2d>{};
-    auto line_table = std::move(c.sound.rail_line_table);  // read_track's (the track's identity)
+    // read_track's (the track's identity)
+    auto line_table = std::move(c.sound.rail_line_table);
+    auto section_grams = std::move(c.sound.section_gram_table);
     c.sound = read_sound_case(r, problems, fe, section);
     c.sound.rail_line_table = std::move(line_table);
+    c.sound.section_gram_table = std::move(section_grams);
   });
   return c;
 }

@@ -13,6 +13,8 @@ namespace {
 constexpr const char* kWheelMagic = "rollnoise wheel radiation 2\n";
 constexpr const char* kRailMagic = "rollnoise rail radiation 1\n";
 constexpr const char* kLineMagic = "rollnoise rail line gram 1\n";
+constexpr const char* kSectionMagic = "rollnoise rail section table 1\n";
+constexpr const char* kSectionGramMagic = "rollnoise rail section gram 1\n";
 
 void put_matrices(std::string& out, const std::vector<Eigen::MatrixXcd>& v) {
   put(out, static_cast<std::uint64_t>(v.size()));
@@ -240,6 +242,97 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
       [&] { return pipeline::rail_line_gram(rail, positions, grid, gauss, threads); });
 }
 
+namespace {
+
+std::string outline_text(const std::vector<Eigen::Vector2d>& outline, bool ground) {
+  std::ostringstream k;
+  k << "section " << outline.size();
+  for (const auto& p : outline) k << " " << real_text(p.x()) << " " << real_text(p.y());
+  k << "\nground " << (ground ? 1 : 0) << "\n";
+  return k.str();
+}
+
+std::string table_payload(const pipeline::SectionRadiationTable& t) {
+  std::string out;
+  put(out, static_cast<std::uint64_t>(t.ground ? 1 : 0));
+  put(out, t.step);
+  put(out, static_cast<std::uint64_t>(t.pieces.size()));
+  for (const dynamics::OutlinePiece& p : t.pieces)
+    for (const Eigen::Vector2d* v : {&p.start, &p.end, &p.normal})
+      put(out, v->x()), put(out, v->y());
+  put(out, static_cast<std::int64_t>(t.patterns.cols()));
+  for (Eigen::Index i = 0; i < t.patterns.size(); ++i) put(out, t.patterns(i));
+  put_matrices(out, t.power);
+  return out;
+}
+
+std::optional<pipeline::SectionRadiationTable> parse_table(const std::string& body) {
+  Bytes in(body);
+  pipeline::SectionRadiationTable t;
+  std::uint64_t ground = 0, pieces = 0;
+  std::int64_t r = 0;
+  if (!in.get(ground) || !in.get(t.step) || !in.get(pieces) || pieces > 10000) return std::nullopt;
+  t.ground = ground != 0;
+  t.pieces.resize(pieces);
+  for (dynamics::OutlinePiece& p : t.pieces)
+    for (Eigen::Vector2d* v : {&p.start, &p.end, &p.normal})
+      if (!in.get((*v)(0)) || !in.get((*v)(1))) return std::nullopt;
+  if (!in.get(r) || r < 0 || r > static_cast<std::int64_t>(pieces)) return std::nullopt;
+  t.patterns.resize(static_cast<Eigen::Index>(pieces), r);
+  for (Eigen::Index i = 0; i < t.patterns.size(); ++i)
+    if (!in.get(t.patterns(i))) return std::nullopt;
+  if (!get_matrices(in, t.power) || in.left() != 0 || t.power.size() < 2) return std::nullopt;
+  for (const Eigen::MatrixXcd& m : t.power)
+    if (m.rows() != r) return std::nullopt;
+  return t;
+}
+
+}  // namespace
+
+std::shared_ptr<const pipeline::SectionRadiationTable> section_radiation_table_cached(
+    const std::vector<Eigen::Vector2d>& outline, bool ground, double max_k,
+    const acoustics::Fluid& fluid, int threads) {
+  const std::string k =
+      outline_text(outline, ground) + "max_k " + real_text(max_k) + "\n" + grid_text({}, fluid);
+  const std::optional<std::string> directory = cache_directory();
+  return kept_or_made<pipeline::SectionRadiationTable>(
+      k, directory, build_key(directory, k), "rail-section-table", kSectionMagic,
+      "rail section table", parse_table, table_payload,
+      [&] { return pipeline::section_radiation_table(outline, ground, max_k, fluid, threads); });
+}
+
+std::vector<Eigen::MatrixXcd> section_grams_cached(
+    const dynamics::RailModel& rail, const std::string& identity,
+    const std::vector<dynamics::RailLoadPoint>& points,
+    const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid, int threads) {
+  std::ostringstream k;
+  k << identity << "loads";
+  for (const dynamics::RailLoadPoint& p : points)
+    k << " " << real_text(p.offset_y) << " " << real_text(p.contact_angle) << " " << real_text(p.x);
+  // the table: its air and ground, elements and reach (its values follow from them and the build)
+  k << "\ntable " << table.ground << " " << table.pieces.size() << " " << table.patterns.cols()
+    << " " << real_text(table.max_wavenumber()) << "\n"
+    << grid_text(grid, fluid);
+  using Grams = std::vector<Eigen::MatrixXcd>;
+  const std::optional<std::string> directory = cache_directory();
+  const auto parse = [&](const std::string& body) -> std::optional<Grams> {
+    Bytes in(body);
+    Grams g;
+    if (get_matrices(in, g) && in.left() == 0 && g.size() == grid.size()) return g;
+    return std::nullopt;
+  };
+  const auto payload = [](const Grams& g) {
+    std::string out;
+    put_matrices(out, g);
+    return out;
+  };
+  return *kept_or_made<Grams>(
+      k.str(), directory, build_key(directory, k.str()), "rail-section-gram", kSectionGramMagic,
+      "rail section gram", parse, payload,
+      [&] { return pipeline::section_grams(rail, points, table, grid, fluid, threads); });
+}
+
 std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
     const WheelFeCase& c, int n_min, const std::vector<double>& grid, const acoustics::Fluid& fluid,
     bool cache, int threads) {
@@ -256,14 +349,11 @@ std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(
 std::shared_ptr<const pipeline::RailRadiation> rail_radiation_cached(
     const std::vector<Eigen::Vector2d>& outline, bool ground, const std::vector<double>& grid,
     const acoustics::Fluid& fluid, int threads) {
-  std::ostringstream k;
-  k << "section " << outline.size();
-  for (const auto& p : outline) k << " " << real_text(p.x()) << " " << real_text(p.y());
-  k << "\nground " << (ground ? 1 : 0) << "\n" << grid_text(grid, fluid);
+  const std::string k = outline_text(outline, ground) + grid_text(grid, fluid);
   const std::optional<std::string> directory = cache_directory();
   return kept_or_made<pipeline::RailRadiation>(
-      k.str(), directory, build_key(directory, k.str()), "rail-radiation", kRailMagic,
-      "rail radiation", parse_rail, rail_payload,
+      k, directory, build_key(directory, k), "rail-radiation", kRailMagic, "rail radiation",
+      parse_rail, rail_payload,
       [&] { return pipeline::rail_radiation(outline, ground, grid, fluid, threads); });
 }
 

@@ -39,4 +39,19 @@ std::shared_ptr<const pipeline::RailLineGram> rail_line_gram_cached(
     const std::vector<double>& positions, const std::vector<double>& grid, int gauss,
     int threads = 1);
 
+/// The section's 2D power table up to max_k (pipeline::section_radiation_table): from the cache,
+/// else computed and stored.
+std::shared_ptr<const pipeline::SectionRadiationTable> section_radiation_table_cached(
+    const std::vector<Eigen::Vector2d>& outline, bool ground, double max_k,
+    const acoustics::Fluid& fluid, int threads = 1);
+
+/// The section Gram matrices (R2) of loads at `points` on `grid` (pipeline::section_grams): from
+/// the cache under `identity` (rail_identity) and the table's air and ground, else computed and
+/// stored. Kept in this process too.
+std::vector<Eigen::MatrixXcd> section_grams_cached(
+    const dynamics::RailModel& rail, const std::string& identity,
+    const std::vector<dynamics::RailLoadPoint>& points,
+    const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid, int threads = 1);
+
 }  // namespace rollnoise::io

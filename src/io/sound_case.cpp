@@ -24,6 +24,9 @@ pipeline::SoundCase read_sound_case(const CaseReader& r, InputProblems& problems
   s.rail_table = [outline, ground, fluid, threads](const std::vector<double>& grid) {
     return rail_radiation_cached(outline, ground, grid, fluid, threads);
   };
+  s.section_table = [outline, ground, fluid, threads](double max_k) {
+    return section_radiation_table_cached(outline, ground, max_k, fluid, threads);
+  };
   if (!fe) {
     s.wheel_missing =
         "wheel.model = \"table\": the mode table has no wheel surface to radiate from; "

@@ -1,7 +1,5 @@
 #include "pipeline/sound_power.hpp"
 
-#include <gsl/gsl_integration.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include "core/constants.hpp"
 #include "core/task_pool.hpp"
 #include "dynamics/rail_section.hpp"
+#include "linalg/gauss_legendre.hpp"
 #include "noise/bands.hpp"
 
 namespace rollnoise::pipeline {
@@ -27,15 +26,10 @@ constexpr int kWindowSpans = 20;
 
 // Gauss-Legendre nodes and weights on [0, 1].
 std::vector<std::pair<double, double>> gauss_unit(int n) {
-  gsl_integration_glfixed_table* t =
-      gsl_integration_glfixed_table_alloc(static_cast<std::size_t>(n));
+  const linalg::GaussRule rule = linalg::gauss_legendre_01(n);
   std::vector<std::pair<double, double>> out;
-  for (int i = 0; i < n; ++i) {
-    double x = 0.0, w = 0.0;
-    gsl_integration_glfixed_point(0.0, 1.0, static_cast<std::size_t>(i), &x, &w, t);
-    out.emplace_back(x, w);
-  }
-  gsl_integration_glfixed_table_free(t);
+  for (std::size_t i = 0; i < rule.nodes.size(); ++i)
+    out.emplace_back(rule.nodes[i], rule.weights[i]);
   return out;
 }
 
@@ -346,6 +340,40 @@ std::vector<RailGram> rail_grams(const dynamics::RailModel& rail,
   return rails;
 }
 
+// (S2)'s radiation of each rail on the grid: the rigid section's P_v z + P_l y, or, where the
+// rail's section deforms (the waveguide), the wavenumber integral (R2) of its loads
+// (rail_section_sound).
+void add_rail_radiation(std::vector<RailGram>& rails, const dynamics::RailModel& rail,
+                        const std::vector<noise::ContactPoint>& contacts,
+                        const RailRadiation& rigid, const std::vector<double>& grid,
+                        const SoundCase& sound, int threads) {
+  std::shared_ptr<const SectionRadiationTable> table;
+  if (rail.section_deforms()) {
+    const double max_k = 2 * kPi * grid.back() / sound.fluid.sound_speed;
+    table = sound.section_table
+                ? sound.section_table(max_k)
+                : std::make_shared<const SectionRadiationTable>(section_radiation_table(
+                      sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
+                      sound.rail_ground, max_k, sound.fluid, threads));
+  }
+  for (RailGram& g : rails) {
+    if (g.contacts.empty()) continue;
+    if (!table) {
+      for (std::size_t k = 0; k < grid.size(); ++k)
+        g.radiated.push_back(rigid.vertical[k] * g.z[k] + rigid.lateral[k] * g.y[k]);
+      continue;
+    }
+    std::vector<dynamics::RailLoadPoint> points;
+    for (int a : g.contacts) {
+      const noise::ContactPoint& c = contacts[static_cast<std::size_t>(a)];
+      points.push_back({c.position.rail_offset_y, c.position.contact_angle, c.rail_x});
+    }
+    g.radiated = sound.section_gram_table
+                     ? sound.section_gram_table(rail, points, *table, grid, sound.fluid, threads)
+                     : section_grams(rail, points, *table, grid, sound.fluid, threads);
+  }
+}
+
 // (W2) of each wheel at its contacts, and where its modes sit in the radiation table's orders.
 void add_modal_setup(SoundSetup& s, const dynamics::WheelFeModes& tread,
                      const WheelRadiation& table, const std::vector<noise::ContactPoint>& contacts,
@@ -376,12 +404,11 @@ void add_modal_setup(SoundSetup& s, const dynamics::WheelFeModes& tread,
 
 // The structures' values at one line, interpolated from the grids.
 struct LineStructures {
-  double w2 = 0.0;                           // omega^2
-  double pv = 0.0, pl = 0.0;                 // the rail section's P_v, P_l
-  double sleeper = 0.0;                      // (S3)'s factor |tau|^2 (rho c / 2) sigma_p A_s
-  std::vector<Eigen::MatrixXcd> gz, gy, gs;  // each rail's Gram matrices
-  std::vector<Eigen::MatrixXcd> pw;          // the wheel's P_n
-  std::vector<Eigen::VectorXcd> R;           // each wheel's modal responses
+  double w2 = 0.0;                       // omega^2
+  double sleeper = 0.0;                  // (S3)'s factor |tau|^2 (rho c / 2) sigma_p A_s
+  std::vector<Eigen::MatrixXcd> gr, gs;  // each rail's radiation and sleepers' Gram matrices
+  std::vector<Eigen::MatrixXcd> pw;      // the wheel's P_n
+  std::vector<Eigen::VectorXcd> R;       // each wheel's modal responses
 };
 
 LineStructures line_structures(double f, const SoundSetup& s, const SoundResult& r,
@@ -390,14 +417,12 @@ LineStructures line_structures(double f, const SoundSetup& s, const SoundResult&
   const double omega = dynamics::angular(f);
   l.w2 = omega * omega;
   const GridPlace at = grid_place(s.grid, f);
-  l.pv = interpolated(r.rail->vertical, at), l.pl = interpolated(r.rail->lateral, at);
   const double tau2 = std::norm(seat.sleeper_transfer(omega));  // Eq. (1)'s seat
   l.sleeper = tau2 * 0.5 * sound.fluid.impedance() * interpolated(s.piston, at) *
               sound.sleeper_length * sound.sleeper_width;
   for (const RailGram& g : s.rails) {
     const bool any = !g.contacts.empty();
-    l.gz.push_back(any ? interpolated(g.z, at) : Eigen::MatrixXcd());
-    l.gy.push_back(any ? interpolated(g.y, at) : Eigen::MatrixXcd());
+    l.gr.push_back(any ? interpolated(g.radiated, at) : Eigen::MatrixXcd());
     l.gs.push_back(any ? interpolated(g.sleepers, at) : Eigen::MatrixXcd());
   }
   if (r.wheel) {
@@ -412,7 +437,9 @@ LineStructures line_structures(double f, const SoundSetup& s, const SoundResult&
 // (S2), (S3) of the forces F on rail s: the rail's and its sleepers' power.
 std::pair<double, double> rail_power(const LineStructures& l, std::size_t s,
                                      const Eigen::VectorXcd& F) {
-  return {l.w2 * (l.pv * F.dot(l.gz[s] * F).real() + l.pl * F.dot(l.gy[s] * F).real()),
+  // a section whose radiation is far below its noise level (bem2d's P_2D is not positive to
+  // round-off) radiates nothing, not a negative power
+  return {std::max(l.w2 * F.dot(l.gr[s] * F).real(), 0.0),
           l.w2 * l.sleeper * F.dot(l.gs[s] * F).real()};
 }
 
@@ -611,6 +638,7 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
                      sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
                      sound.rail_ground, s.grid, sound.fluid, threads));
   s.rails = rail_grams(rail, contacts, s.grid, sound, threads);
+  add_rail_radiation(s.rails, rail, contacts, *r.rail, s.grid, sound, threads);
   if (r.wheel) add_modal_setup(s, *tread, *r.wheel, contacts, wheels, sound);
   for (double fg : s.grid)  // the sleepers' piston efficiency, smooth in f
     s.piston.push_back(acoustics::rectangular_piston_efficiency(

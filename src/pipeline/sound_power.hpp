@@ -53,6 +53,7 @@
 
 #include "dynamics/wheel_fe_contact.hpp"
 #include "noise/contact_set_loop.hpp"
+#include "pipeline/rail_section_sound.hpp"
 #include "pipeline/sound_radiation.hpp"
 
 namespace rollnoise::pipeline {
@@ -93,6 +94,16 @@ struct SoundCase {
       const dynamics::RailModel& rail, const std::vector<double>& positions,
       const std::vector<double>& grid, int gauss, int threads)>
       rail_line_table;
+  /// The section's 2D power table up to k_r = max_k (rail_section_sound.hpp), from the cache where
+  /// io gives one; null: computed here. Used where the rail's section deforms (the waveguide).
+  std::function<std::shared_ptr<const SectionRadiationTable>(double max_k)> section_table;
+  /// The section Gram matrices (R2) of one rail's loads on the grid, from the cache where io gives
+  /// one; null: computed here (section_grams).
+  std::function<std::vector<Eigen::MatrixXcd>(
+      const dynamics::RailModel& rail, const std::vector<dynamics::RailLoadPoint>& points,
+      const SectionRadiationTable& table, const std::vector<double>& grid,
+      const acoustics::Fluid& fluid, int threads)>
+      section_gram_table;
   /// Why the wheel has no sound (empty when it has): e.g. the table wheel.
   std::string wheel_missing;
 };
@@ -134,6 +145,11 @@ struct SoundResult {
 struct RailGram {
   std::vector<int> contacts;                     ///< indices into `contacts`, those on this side
   std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency, 4 m x 4 m
+  /// The rail's radiation per grid frequency, W_rail = omega^2 F^H radiated F (W/m^2 N^-2 s^-2 m
+  /// ...: m^2/N^2 times W/m per (m/s)^2): P_v z + P_l y where the section moves rigidly (the
+  /// beams, (S2)), the wavenumber integral (R2) of rail_section_sound.hpp where it deforms (the
+  /// waveguide).
+  std::vector<Eigen::MatrixXcd> radiated;
 };
 RailGram rail_gram(const RailLineGram& line, const std::vector<noise::ContactPoint>& contacts,
                    int side);

@@ -1,0 +1,194 @@
+// The sound of a rail whose section deforms, Eqs. (R1), (R2) of rail_section_sound.hpp.
+#include "pipeline/rail_section_sound.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "acoustics/bem2d.hpp"
+#include "core/constants.hpp"
+#include "core/task_pool.hpp"
+#include "linalg/gauss_legendre.hpp"
+
+namespace rollnoise::pipeline {
+
+namespace {
+
+using cdouble = std::complex<double>;
+constexpr int kPanelPoints = 10;  // Gauss-Legendre points a panel
+constexpr int kMaxDepth = 24;     // halvings of a starting panel
+
+// A panel of theta and its 10-point value of (R2)'s integrand.
+struct Panel {
+  double a = 0.0, b = 0.0;
+  Eigen::MatrixXcd value;
+  int depth = 0;
+};
+
+// (R2)'s integrand k U^H P_2D(k cos theta) U integrated over the panels [a_i, b_i] by the
+// 10-point rule, one spectrum call for all of them.
+std::vector<Eigen::MatrixXcd> panel_values(const dynamics::SurfaceSpectrum& spectrum,
+                                           const SectionRadiationTable& table, double k,
+                                           const std::vector<std::pair<double, double>>& panels) {
+  static const linalg::GaussRule rule = linalg::gauss_legendre_01(kPanelPoints);
+  std::vector<double> kappas;
+  for (const auto& [a, b] : panels)
+    for (double t : rule.nodes) kappas.push_back(k * std::sin(a + t * (b - a)));
+  const Eigen::MatrixXcd U = spectrum.at(kappas);
+  const Eigen::Index c = spectrum.columns;
+  std::vector<Eigen::MatrixXcd> out;
+  Eigen::Index q = 0;
+  for (const auto& [a, b] : panels) {
+    Eigen::MatrixXcd sum = Eigen::MatrixXcd::Zero(c, c);
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i, ++q) {
+      const double theta = a + rule.nodes[i] * (b - a);
+      const auto Uq = U.middleCols(c * q, c);
+      sum.noalias() +=
+          (rule.weights[i] * (b - a) * k) * (Uq.adjoint() * (table.at(k * std::cos(theta)) * Uq));
+    }
+    out.push_back(std::move(sum));
+  }
+  return out;
+}
+
+// The starting panels: [-pi/2, pi/2] cut at the poles +-Re k_j inside (-k, k) of the waves that
+// decay slowly (|Im k_j| < k / 2), each piece into panels no wider than `widest`.
+std::vector<std::pair<double, double>> starting_panels(const Eigen::VectorXcd& poles, double k,
+                                                       double widest) {
+  std::vector<double> cuts{-0.5 * kPi, 0.5 * kPi};
+  for (const cdouble& p : poles)
+    if (std::abs(p.real()) < k && std::abs(p.imag()) < 0.5 * k)
+      for (double s : {1.0, -1.0}) cuts.push_back(std::asin(s * p.real() / k));
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double a = cuts[i], b = cuts[i + 1];
+    if (!(b - a > 1e-12)) continue;
+    const int n = std::max(1, static_cast<int>(std::ceil((b - a) / widest)));
+    for (int j = 0; j < n; ++j) out.emplace_back(a + j * (b - a) / n, a + (j + 1) * (b - a) / n);
+  }
+  return out;
+}
+
+}  // namespace
+
+Eigen::MatrixXcd SectionRadiationTable::at(double k_r) const {
+  const int n = static_cast<int>(power.size());
+  if (n < 2 || !(k_r >= 0.0) || k_r > max_wavenumber() * (1.0 + 1e-12))
+    throw std::invalid_argument("SectionRadiationTable: k_r outside the table");
+  const int i = std::min(static_cast<int>(k_r / step), n - 2);
+  const double t = k_r / step - i;
+  // Catmull-Rom on the uniform grid, the neighbours beyond the ends extrapolated linearly
+  const auto p = [&](int j) -> Eigen::MatrixXcd {
+    if (j < 0) return 2.0 * power[0] - power[1];
+    if (j >= n)
+      return 2.0 * power[static_cast<std::size_t>(n - 1)] - power[static_cast<std::size_t>(n - 2)];
+    return power[static_cast<std::size_t>(j)];
+  };
+  const Eigen::MatrixXcd p0 = p(i - 1), p1 = p(i), p2 = p(i + 1), p3 = p(i + 2);
+  return p1 + 0.5 * t *
+                  ((p2 - p0) + t * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) +
+                                    t * (-p0 + 3.0 * p1 - 3.0 * p2 + p3)));
+}
+
+SectionRadiationTable section_radiation_table(const std::vector<Eigen::Vector2d>& outline,
+                                              bool ground, double max_k,
+                                              const acoustics::Fluid& fluid, int threads) {
+  if (!(max_k > 0.0) || !std::isfinite(max_k))
+    throw std::invalid_argument("section_radiation_table: max_k must be > 0");
+  acoustics::Section2d section;
+  section.outline = outline;
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    perimeter += (outline[(i + 1) % outline.size()] - outline[i]).norm();
+  acoustics::Bem2dOptions options;
+  options.ground_plane = ground;
+  // 10 elements a wavelength at the top (as rail_radiation), at least 40
+  options.target_elements =
+      std::clamp(static_cast<int>(std::ceil(10 * perimeter * max_k / (2 * kPi))), 40, 400);
+  SectionRadiationTable out;
+  out.ground = ground;
+  for (const acoustics::BoundaryElement2d& e : acoustics::boundary_elements_2d(section, options))
+    out.pieces.push_back({e.start, e.end, e.normal});
+  const int n = static_cast<int>(std::ceil(max_k / out.step)) + 1;
+  out.power.resize(static_cast<std::size_t>(n));
+  const Eigen::Index m = static_cast<Eigen::Index>(out.pieces.size());
+  out.power[0] = Eigen::MatrixXcd::Zero(m, m);  // no radiation at k_r = 0
+  const Eigen::MatrixXd unit = Eigen::MatrixXd::Identity(m, m);
+  parallel_for(static_cast<std::size_t>(n - 1), threads, [&](std::size_t i, int) {
+    out.power[i + 1] = acoustics::radiated_power_matrix_2d(section, out.step * double(i + 1), unit,
+                                                           fluid, options);
+  });
+  // The patterns that radiate: the eigenvectors of S = sum_i (Re P_i Re P_i^T + Im P_i Im P_i^T) /
+  // |P_i|^2 (each k_r weighted alike) above 1e-14 of its largest eigenvalue, so that
+  // P_i = W (W^T P_i W) W^T up to ~1e-7 |P_i| for every i.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m, m);
+  for (std::size_t i = 1; i < out.power.size(); ++i) {
+    const Eigen::MatrixXcd& P = out.power[i];
+    S += (P.real() * P.real().transpose() + P.imag() * P.imag().transpose()) / P.squaredNorm();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(S);
+  const Eigen::VectorXd& lambda = eigen.eigenvalues();  // ascending
+  Eigen::Index r = 0;
+  while (r < m && lambda(m - 1 - r) > 1e-8 * lambda(m - 1)) ++r;
+  out.patterns = eigen.eigenvectors().rightCols(r);
+  for (Eigen::MatrixXcd& P : out.power) P = out.patterns.transpose() * P * out.patterns;
+  return out;
+}
+
+Eigen::MatrixXcd section_gram(const dynamics::SurfaceSpectrum& spectrum,
+                              const SectionRadiationTable& table, double frequency, double spread,
+                              const acoustics::Fluid& fluid, double tolerance) {
+  const double k = 2 * kPi * frequency / fluid.sound_speed;
+  if (k > table.max_wavenumber() * (1.0 + 1e-12))
+    throw std::invalid_argument("section_gram: frequency above the radiation table");
+  // a period of e^{i kappa dx} in theta near theta = 0, 2 pi / (k dx): 10 Gauss points integrate
+  // it to ~1e-9
+  const double widest = std::min(kPi / 8.0, 2 * kPi / std::max(k * spread, 1.0));
+  std::vector<std::pair<double, double>> start = starting_panels(spectrum.wavenumbers, k, widest);
+  const std::vector<Eigen::MatrixXcd> first = panel_values(spectrum, table, k, start);
+  Eigen::MatrixXcd coarse_total = Eigen::MatrixXcd::Zero(spectrum.columns, spectrum.columns);
+  std::vector<Panel> todo;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    coarse_total += first[i];
+    todo.push_back({start[i].first, start[i].second, first[i], 0});
+  }
+  const double scale = std::max(coarse_total.norm(), 1e-300);
+  Eigen::MatrixXcd total = Eigen::MatrixXcd::Zero(spectrum.columns, spectrum.columns);
+  while (!todo.empty()) {
+    Panel p = std::move(todo.back());
+    todo.pop_back();
+    const double mid = 0.5 * (p.a + p.b);
+    const std::vector<Eigen::MatrixXcd> halves =
+        panel_values(spectrum, table, k, {{p.a, mid}, {mid, p.b}});
+    const Eigen::MatrixXcd fine = halves[0] + halves[1];
+    if ((fine - p.value).norm() <= tolerance * scale * (p.b - p.a) / kPi || p.depth >= kMaxDepth) {
+      total += fine;
+      continue;
+    }
+    todo.push_back({mid, p.b, halves[1], p.depth + 1});
+    todo.push_back({p.a, mid, halves[0], p.depth + 1});
+  }
+  return total / (2 * kPi);
+}
+
+std::vector<Eigen::MatrixXcd> section_grams(const dynamics::RailModel& rail,
+                                            const std::vector<dynamics::RailLoadPoint>& points,
+                                            const SectionRadiationTable& table,
+                                            const std::vector<double>& grid,
+                                            const acoustics::Fluid& fluid, int threads) {
+  const dynamics::SurfaceSpectra spectra =
+      rail.surface_spectra(points, table.pieces, table.patterns);
+  if (!spectra || points.empty()) return {};
+  double lo = points.front().x, hi = lo;
+  for (const dynamics::RailLoadPoint& p : points) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+  std::vector<Eigen::MatrixXcd> out(grid.size());
+  parallel_for(grid.size(), threads, [&](std::size_t i, int) {
+    out[i] = section_gram(spectra(grid[i]), table, grid[i], hi - lo, fluid);
+  });
+  return out;
+}
+
+}  // namespace rollnoise::pipeline
