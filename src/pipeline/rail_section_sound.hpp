@@ -31,8 +31,8 @@
 // about (elements / r)^2 where it is dominated by P_2D.
 //
 // Quadrature of (R2): adaptive Gauss-Legendre on panels of theta. The starting panels end at the
-// poles of U near the real axis (the waves with |Re k_j| < k) and are no wider than half a period
-// of the loads' relative phase e^{i kappa dx}; a panel's 10-point value is accepted when its two
+// poles of U near the real axis (the waves with |Re k_j| < k) and are no wider than one period of
+// the loads' relative phase e^{i kappa dx}; a panel's 10-point value is accepted when its two
 // halves agree with it within `tolerance` times the integral's norm times the panel's share of
 // the interval, else each half is refined in turn.
 #pragma once

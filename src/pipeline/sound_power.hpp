@@ -9,7 +9,8 @@
 //    W_wheel = omega^2 sum_n sum_{set} q_set,n^H P_n(f) q_set,n                              (S1)
 //
 //  rail (each rail: the response at its centre line u(x) = sum_b alpha(x, b) T_b (-F_b) of the
-//  contacts b on it, RailModel::contact_transfers):
+//  contacts b on it, RailModel::contact_transfers; where the section deforms, the waveguide, the
+//  wavenumber integral (R2) of rail_section_sound.hpp instead):
 //    W_rail = omega^2 Int [ P_v(f) |u_z(x)|^2 + P_l(f) |u_y(x)|^2 ] dx
 //           = omega^2 [ P_v F^H G_z F + P_l F^H G_y F ],   G_c = Int A_c(x)^H A_c(x) dx (S2)
 //  with A_c(x) the row c of alpha(x, b) T_b over the contacts b. The integral: Gauss-Legendre
@@ -138,10 +139,10 @@ struct SoundResult {
 /// The Gram matrices of one rail's contacts (those of `contacts` on `side`) in their frames
 /// (4 columns per contact): M^H G M, M the lever arm from each contact's offset on the head to the
 /// centre line and its contact frame ((G1), (G2) of dynamics/rail_contact.hpp). Exact for the
-/// beams and the discretely supported waveguide, which move their centre-line transfer rigidly to
-/// the contact; for the continuously supported waveguide, which loads its section at the contact,
-/// the response along the rail is taken from the centre-line load moved by the same lever arm
-/// (docs/sound.md Sec. 3.2).
+/// beams, which move their centre-line transfer rigidly to the contact; for the waveguides, which
+/// load their section at the contact, the centre line's response is that of the centre-line load
+/// moved by the same lever arm (docs/sound.md Sec. 3.2): what their sleepers take (the rail's own
+/// radiation comes from the section itself, `radiated`).
 struct RailGram {
   std::vector<int> contacts;                     ///< indices into `contacts`, those on this side
   std::vector<Eigen::MatrixXcd> z, y, sleepers;  ///< per grid frequency, 4 m x 4 m
