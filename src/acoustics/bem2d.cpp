@@ -19,7 +19,6 @@ using cdouble = std::complex<double>;
 using Eigen::Vector2d;
 
 using linalg::GaussRule;
-const auto gauss_rule_01 = linalg::gauss_legendre_01;
 
 /// H_0^(2)(z) = J_0 - i Y_0 and H_1^(2)(z) = J_1 - i Y_1 (z > 0).
 inline void hankel2_01(double z, cdouble& h0, cdouble& h1) {
@@ -321,8 +320,8 @@ Eigen::MatrixXcd solve_pressures(const Model& m, const std::vector<Vector2d>& ch
     throw std::invalid_argument("bem2d: " + std::to_string(v.rows()) + " velocity rows for " +
                                 std::to_string(n) + " boundary elements");
   const int nc = static_cast<int>(chief.size());
-  const GaussRule rule = gauss_rule_01(o.gauss_points);
-  const GaussRule far_rule = gauss_rule_01(std::max(2, o.gauss_points / 2));
+  const GaussRule rule = linalg::gauss_legendre_01(o.gauss_points);
+  const GaussRule far_rule = linalg::gauss_legendre_01(std::max(2, o.gauss_points / 2));
   // Rows: c p(x_i) - Int p dG/dn = -Int G dp/dn, i.e. A p = B q, q = dp/dn = -i k rho c v.
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(n + nc, n), B(n + nc, n);
   for (int i = 0; i < n + nc; ++i) {

@@ -306,7 +306,8 @@ const std::vector<KeySpec>& case_schema() {
       // the sound power (docs/sound.md; pipeline/sound_power.hpp)
       {"noise.sound", T::String, "\"on\"", "-",
        "the sound power of the wheels (axisymmetric BEM of the FE wheel's modes), the rails (2D BEM of "
-       "the section, the response along the rail) and the sleepers (baffled pistons) per band, "
+       "the section and the response along the rail; the waveguide's deforming section wavenumber by "
+       "wavenumber) and the sleepers (baffled pistons) per band, "
        "A-weighted totals and the track decay rates (/noise/sound, /track/decay_rate; docs/sound.md)",
        {"on", "off"}},
       {"sound.rail_ground", T::String, "\"free\"", "-",

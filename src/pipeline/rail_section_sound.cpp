@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "core/constants.hpp"
 #include "core/task_pool.hpp"
 #include "linalg/gauss_legendre.hpp"
+#include "pipeline/sound_radiation.hpp"
 
 namespace rollnoise::pipeline {
 
@@ -80,17 +82,18 @@ Eigen::MatrixXcd SectionRadiationTable::at(double k_r) const {
     throw std::invalid_argument("SectionRadiationTable: k_r outside the table");
   const int i = std::min(static_cast<int>(k_r / step), n - 2);
   const double t = k_r / step - i;
-  // Catmull-Rom on the uniform grid, the neighbours beyond the ends extrapolated linearly
-  const auto p = [&](int j) -> Eigen::MatrixXcd {
-    if (j < 0) return 2.0 * power[0] - power[1];
-    if (j >= n)
-      return 2.0 * power[static_cast<std::size_t>(n - 1)] - power[static_cast<std::size_t>(n - 2)];
-    return power[static_cast<std::size_t>(j)];
-  };
-  const Eigen::MatrixXcd p0 = p(i - 1), p1 = p(i), p2 = p(i + 1), p3 = p(i + 2);
-  return p1 + 0.5 * t *
-                  ((p2 - p0) + t * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) +
-                                    t * (-p0 + 3.0 * p1 - 3.0 * p2 + p3)));
+  // Catmull-Rom on the uniform grid, the weights of p_{i-1} .. p_{i+2}; a neighbour beyond an end
+  // is extrapolated linearly (p_{-1} = 2 p_0 - p_1, p_n = 2 p_{n-1} - p_{n-2}), its weight folded
+  // onto the two it is made of
+  std::array<double, 4> w{0.5 * t * (-1.0 + t * (2.0 - t)), 1.0 + 0.5 * t * t * (-5.0 + 3.0 * t),
+                          0.5 * t * (1.0 + t * (4.0 - 3.0 * t)), 0.5 * t * t * (t - 1.0)};
+  if (i == 0) w[1] += 2.0 * w[0], w[2] -= w[0], w[0] = 0.0;
+  if (i + 2 == n) w[2] += 2.0 * w[3], w[1] -= w[3], w[3] = 0.0;
+  Eigen::MatrixXcd out = Eigen::MatrixXcd::Zero(power[0].rows(), power[0].cols());
+  for (int j = 0; j < 4; ++j)
+    if (w[static_cast<std::size_t>(j)] != 0.0)
+      out += w[static_cast<std::size_t>(j)] * power[static_cast<std::size_t>(i - 1 + j)];
+  return out;
 }
 
 SectionRadiationTable section_radiation_table(const std::vector<Eigen::Vector2d>& outline,
@@ -100,14 +103,8 @@ SectionRadiationTable section_radiation_table(const std::vector<Eigen::Vector2d>
     throw std::invalid_argument("section_radiation_table: max_k must be > 0");
   acoustics::Section2d section;
   section.outline = outline;
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < outline.size(); ++i)
-    perimeter += (outline[(i + 1) % outline.size()] - outline[i]).norm();
-  acoustics::Bem2dOptions options;
-  options.ground_plane = ground;
-  // 10 elements a wavelength at the top (as rail_radiation), at least 40
-  options.target_elements =
-      std::clamp(static_cast<int>(std::ceil(10 * perimeter * max_k / (2 * kPi))), 40, 400);
+  // the elements of the grid's top (as rail_radiation's there)
+  const acoustics::Bem2dOptions options = rail_bem_options(outline, ground, max_k);
   SectionRadiationTable out;
   out.ground = ground;
   for (const acoustics::BoundaryElement2d& e : acoustics::boundary_elements_2d(section, options))

@@ -24,15 +24,6 @@ constexpr double kPowerReference = 1e-12;  // W (dB re 1 pW)
 // point; beyond them the tails are closed as geometric series (docs/sound.md Sec. 3.2).
 constexpr int kWindowSpans = 20;
 
-// Gauss-Legendre nodes and weights on [0, 1].
-std::vector<std::pair<double, double>> gauss_unit(int n) {
-  const linalg::GaussRule rule = linalg::gauss_legendre_01(n);
-  std::vector<std::pair<double, double>> out;
-  for (std::size_t i = 0; i < rule.nodes.size(); ++i)
-    out.emplace_back(rule.nodes[i], rule.weights[i]);
-  return out;
-}
-
 // The points along the rail: Gauss points of each span (weight > 0) and the sleepers (weight 0,
 // flagged), spans numbered outward on each side for the tail closure.
 struct RailPoints {
@@ -46,11 +37,11 @@ RailPoints rail_points(double x_min, double x_max, double spacing, int gauss) {
   RailPoints p;
   p.first_span = static_cast<int>(std::floor(x_min / spacing)) - kWindowSpans;
   p.last_span = static_cast<int>(std::floor(x_max / spacing)) + kWindowSpans;
-  const auto rule = gauss_unit(gauss);
+  const linalg::GaussRule rule = linalg::gauss_legendre_01(gauss);
   for (int j = p.first_span; j <= p.last_span; ++j) {
-    for (const auto& [u, w] : rule) {
-      p.x.push_back((j + u) * spacing);
-      p.weight.push_back(w * spacing);
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+      p.x.push_back((j + rule.nodes[i]) * spacing);
+      p.weight.push_back(rule.weights[i] * spacing);
       p.span.push_back(j);
       p.is_sleeper.push_back(false);
     }
@@ -340,6 +331,11 @@ std::vector<RailGram> rail_grams(const dynamics::RailModel& rail,
   return rails;
 }
 
+// The rail's section: the case's, else the built-in UIC60.
+std::vector<Eigen::Vector2d> rail_outline(const SoundCase& sound) {
+  return sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section;
+}
+
 // (S2)'s radiation of each rail on the grid: the rigid section's P_v z + P_l y, or, where the
 // rail's section deforms (the waveguide), the wavenumber integral (R2) of its loads
 // (rail_section_sound).
@@ -353,8 +349,7 @@ void add_rail_radiation(std::vector<RailGram>& rails, const dynamics::RailModel&
     table = sound.section_table
                 ? sound.section_table(max_k)
                 : std::make_shared<const SectionRadiationTable>(section_radiation_table(
-                      sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
-                      sound.rail_ground, max_k, sound.fluid, threads));
+                      rail_outline(sound), sound.rail_ground, max_k, sound.fluid, threads));
   }
   for (RailGram& g : rails) {
     if (g.contacts.empty()) continue;
@@ -635,8 +630,7 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   r.rail = sound.rail_table
                ? sound.rail_table(s.grid)
                : std::make_shared<const RailRadiation>(rail_radiation(
-                     sound.rail_section.empty() ? dynamics::uic60_outline() : sound.rail_section,
-                     sound.rail_ground, s.grid, sound.fluid, threads));
+                     rail_outline(sound), sound.rail_ground, s.grid, sound.fluid, threads));
   s.rails = rail_grams(rail, contacts, s.grid, sound, threads);
   add_rail_radiation(s.rails, rail, contacts, *r.rail, s.grid, sound, threads);
   if (r.wheel) add_modal_setup(s, *tread, *r.wheel, contacts, wheels, sound);

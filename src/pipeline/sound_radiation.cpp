@@ -235,14 +235,23 @@ WheelRadiation wheel_radiation(const dynamics::WheelFeModes& w, int n_min,
   return out;
 }
 
+acoustics::Bem2dOptions rail_bem_options(const std::vector<Eigen::Vector2d>& outline, bool ground,
+                                         double k) {
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    perimeter += (outline[(i + 1) % outline.size()] - outline[i]).norm();
+  acoustics::Bem2dOptions options;
+  options.ground_plane = ground;
+  options.target_elements =
+      std::clamp(static_cast<int>(std::ceil(10 * perimeter * k / (2 * kPi))), 40, 400);
+  return options;
+}
+
 RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool ground,
                              const std::vector<double>& grid, const acoustics::Fluid& fluid,
                              int threads) {
   acoustics::Section2d section;
   section.outline = outline;
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < outline.size(); ++i)
-    perimeter += (outline[(i + 1) % outline.size()] - outline[i]).norm();
   RailRadiation out;
   out.frequency = grid;
   out.ground = ground;
@@ -251,11 +260,7 @@ RailRadiation rail_radiation(const std::vector<Eigen::Vector2d>& outline, bool g
       out.sigma_lateral.resize(n);
   parallel_for(n, threads, [&](std::size_t i, int) {
     const double k = 2 * kPi * grid[i] / fluid.sound_speed;
-    acoustics::Bem2dOptions options;
-    options.ground_plane = ground;
-    // 10 elements a wavelength (within 0.5 % of 4 times as many, bem2d_test), at least 40
-    options.target_elements =
-        std::clamp(static_cast<int>(std::ceil(10 * perimeter * k / (2 * kPi))), 40, 400);
+    const acoustics::Bem2dOptions options = rail_bem_options(outline, ground, k);
     const std::vector<acoustics::RigidRadiation2d> r = acoustics::rigid_translation_radiation_2d(
         section, k, std::vector<Eigen::Vector2d>{{0.0, 1.0}, {1.0, 0.0}}, fluid, options);
     // per unit velocity amplitude squared: <v^2> = |V|^2 / 2

@@ -30,6 +30,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "acoustics/bem2d.hpp"
 #include "acoustics/fluid.hpp"
 #include "dynamics/wheel_fe.hpp"
 
@@ -91,6 +92,12 @@ struct RailRadiation {
   std::vector<double> sigma_lateral;   ///< P_l / (rho c (1/2) Int n_y^2 ds)
   bool ground = false;                 ///< over a rigid plane at the foot
 };
+
+/// The rail section's BEM options at wavenumber k (1/m): 10 elements a wavelength over the
+/// outline's perimeter (within 0.5 % of 4 times as many, bem2d_test), at least 40 and at most 400;
+/// `ground`: a rigid plane at the foot's lowest z.
+acoustics::Bem2dOptions rail_bem_options(const std::vector<Eigen::Vector2d>& outline, bool ground,
+                                         double k);
 
 /// `outline`: the section (y, z) in m, closed polygon (dynamics::uic60_outline() or
 /// track.rail_section); `ground`: a rigid plane at the foot's lowest z.

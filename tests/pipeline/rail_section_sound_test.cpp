@@ -151,12 +151,8 @@ TEST(RailSectionSound, TableInterpolatesTheSectionsPowerMatrix) {
       pipeline::section_radiation_table(dynamics::uic60_outline(), false, 45.0, fluid, 2);
   acoustics::Section2d section;
   section.outline = dynamics::uic60_outline();
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < section.outline.size(); ++i)
-    perimeter += (section.outline[(i + 1) % section.outline.size()] - section.outline[i]).norm();
-  acoustics::Bem2dOptions options;  // the table's elements (section_radiation_table)
-  options.target_elements =
-      std::max(40, static_cast<int>(std::ceil(10 * perimeter * 45.0 / (2 * kPi))));
+  // the table's elements
+  const acoustics::Bem2dOptions options = pipeline::rail_bem_options(section.outline, false, 45.0);
   ASSERT_EQ(acoustics::boundary_elements_2d(section, options).size(), table.pieces.size());
   for (double kr : {10.5, 40.5}) {
     const Eigen::MatrixXcd direct =
