@@ -7,7 +7,11 @@
 //   SoundRailBem/f:  the UIC60 section's 2D BEM, vertical and lateral rigid motion, at f (Hz);
 //   SoundRailLineGram/nf: the rail's line Gram matrices (S2, S3) of two contact positions 2.5 m
 //   apart
-//                    on the periodically supported beam, at nf frequencies.
+//                    on the periodically supported beam, at nf frequencies;
+//   SoundRailSectionGram/f: the waveguide's deforming section (R2 of rail_section_sound.hpp), the
+//                    discretely supported UIC60 waveguide (30 mm mesh) under two contacts 2.5 m
+//                    apart at f (Hz): one wave solution and the adaptive wavenumber integral (the
+//                    table of P_2D outside the timing).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -17,8 +21,10 @@
 #include "core/constants.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/track.hpp"
+#include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/wheel_fe.hpp"
 #include "io/wheel_section_file.hpp"
+#include "pipeline/rail_section_sound.hpp"
 #include "pipeline/sound_power.hpp"
 #include "pipeline/sound_radiation.hpp"
 
@@ -73,5 +79,35 @@ void SoundRailLineGram(benchmark::State& state) {
   state.counters["frequencies"] = nf;
 }
 BENCHMARK(SoundRailLineGram)->Arg(10)->Arg(109)->Unit(benchmark::kMillisecond);
+
+void SoundRailSectionGram(benchmark::State& state) {
+  const double f = static_cast<double>(state.range(0));
+  const acoustics::Fluid fluid;
+  dynamics::WaveguideRailOptions o;
+  o.mesh_size = 0.03;
+  o.sampling.per_octave = 0;
+  const dynamics::DiscreteWaveguideRailModel rail(dynamics::uic60_ballasted(), o, 0.3);
+  const pipeline::SectionRadiationTable table = pipeline::section_radiation_table(
+      dynamics::uic60_outline(), false, 2 * kPi * f / fluid.sound_speed, fluid, 1);
+  const dynamics::SurfaceSpectra spectra =
+      rail.surface_spectra({{0.0, 0.0, 0.3}, {-0.03, 0.5, 2.8}}, table.pieces, table.patterns);
+  double evaluations = 0.0, waves = 0.0;
+  for (auto _ : state) {
+    dynamics::SurfaceSpectrum s = spectra(f);
+    waves = static_cast<double>(s.wavenumbers.size());
+    evaluations = 0.0;
+    const auto at = s.at;
+    s.at = [&](const std::vector<double>& k) {
+      evaluations += static_cast<double>(k.size());
+      return at(k);
+    };
+    benchmark::DoNotOptimize(pipeline::section_gram(s, table, f, 2.5, fluid).data());
+  }
+  state.counters["elements"] = static_cast<double>(table.pieces.size());
+  state.counters["patterns"] = static_cast<double>(table.patterns.cols());
+  state.counters["waves"] = waves;
+  state.counters["kappas"] = evaluations;
+}
+BENCHMARK(SoundRailSectionGram)->Arg(250)->Arg(1000)->Arg(5000)->Unit(benchmark::kMillisecond);
 
 }  // namespace

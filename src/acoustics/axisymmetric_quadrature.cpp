@@ -6,38 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "linalg/gauss_legendre.hpp"
+
 namespace rollnoise::acoustics {
 
 AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n) {
   if (n < 1)
     throw std::invalid_argument("Gauss-Legendre rule: at least 1 point, got " + std::to_string(n));
-  AxisymmetricQuadratureRule rule{Eigen::VectorXd(n), Eigen::VectorXd(n)};
-  const double pi = 3.14159265358979323846;
-  for (int i = 0; i < (n + 1) / 2; ++i) {
-    // Initial guess of the i-th root of P_n on [-1, 1] (descending), then Newton with the
-    // three-term recurrence (2j+1) x P_j = (j+1) P_{j+1} + j P_{j-1} and
-    // P_n' = n (x P_n - P_{n-1}) / (x^2 - 1).
-    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    double dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = x;
-      for (int j = 1; j < n; ++j) {
-        const double p2 = ((2 * j + 1) * x * p1 - j * p0) / (j + 1);
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1.0);
-      const double dx = p1 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    const double w = 2.0 / ((1.0 - x * x) * dp * dp);
-    // map [-1, 1] -> [0, 1], ascending
-    rule.nodes(i) = 0.5 * (1.0 - x);
-    rule.nodes(n - 1 - i) = 0.5 * (1.0 + x);
-    rule.weights(i) = rule.weights(n - 1 - i) = 0.5 * w;
-  }
-  return rule;
+  const linalg::GaussRule rule = linalg::gauss_legendre_01(n);
+  return {Eigen::Map<const Eigen::VectorXd>(rule.nodes.data(), n),
+          Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), n)};
 }
 
 AxisymmetricQuadratureRule axisymmetric_log_gauss(int n) {

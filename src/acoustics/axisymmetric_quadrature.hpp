@@ -13,8 +13,8 @@ struct AxisymmetricQuadratureRule {
   Eigen::VectorXd weights;
 };
 
-/// Gauss-Legendre on [0, 1] (w = 1), exact for polynomials of degree <= 2 n - 1; n >= 1. Nodes by
-/// Newton's method on P_n (Abramowitz & Stegun 25.4.29), ascending.
+/// Gauss-Legendre on [0, 1] (w = 1), exact for polynomials of degree <= 2 n - 1; n >= 1; ascending
+/// (GSL's tables, linalg/gauss_legendre.hpp).
 AxisymmetricQuadratureRule axisymmetric_gauss_legendre(int n);
 
 /// Gauss rule of the logarithmic weight w(t) = ln(1/t) on [0, 1], exact for polynomials of degree
