@@ -38,7 +38,8 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
 // One wheel's (or patch's) line: axle position, contact on wheel and rail, angle, creepages,
 // vertical load, N, force on the wheel in the track frame; the Fz levels summed over the bands.
 void print_wheel_line(const pipeline::WheelNoise& wn, const char* label) {
-  const noise::WheelContact& w = wn.state;
+  if (!wn.state) return;  // the case's one contact: its state is the summary's
+  const noise::WheelContact& w = *wn.state;
   const auto f = w.force_track();
   double total = 0.0;  // the power sum of the Fz band levels (dB re 1 N)
   for (const auto& l : wn.bands.force_level) total += std::pow(10.0, 0.1 * l[0]);
@@ -64,15 +65,15 @@ void print_contact_work(const pipeline::WheelNoise& wn, const char* label) {
 
 // One line per wheel of curve.wheels, then one per second patch (noise.second_patch).
 void print_wheels(const pipeline::NoiseResult& r) {
-  if (r.wheels.empty()) return;
+  if (!r.wheels.front().state) return;  // the case's one contact
   std::printf("  wheels (%s; lateral force towards the outer rail; %.1f s):\n",
-              r.bogie ? "the wheels' patches coupled in one loop through wheelset and rails"
-                      : "each wheel's patch in the loop alone",
+              r.coupled_contacts ? "the wheels' patches coupled in one loop through wheelset and rails"
+                                 : "each wheel's patch in the loop alone",
               r.seconds_wheels);
-  for (const pipeline::WheelNoise& wn : r.wheels) print_wheel_line(wn, noise::wheel_name(wn.state.wheel));
+  for (const pipeline::WheelNoise& wn : r.wheels) print_wheel_line(wn, noise::wheel_name(wn.wheel));
   for (const pipeline::WheelNoise& p : r.patches) {
     std::printf("  second patch of %s (the flange patch, coupled; docs/noise_loop.md Sec. 7.4):\n",
-                noise::wheel_name(p.state.wheel));
+                noise::wheel_name(p.wheel));
     print_wheel_line(p, "  flange");
   }
   std::printf(
@@ -80,34 +81,41 @@ void print_wheels(const pipeline::NoiseResult& r) {
       "concurrently):\n",
       r.seconds_curve);
   for (const pipeline::WheelNoise& wn : r.wheels)
-    print_contact_work(wn, noise::wheel_name(wn.state.wheel));
+    print_contact_work(wn, noise::wheel_name(wn.wheel));
   for (const pipeline::WheelNoise& p : r.patches) print_contact_work(p, "  flange");
 }
 
-// The 1/3-octave band levels, one line per band (left out with -q).
+// The 1/3-octave band levels of the reported wheel in the case's loop, one line per band (left
+// out with -q).
 void print_band_table(const pipeline::NoiseResult& r) {
-  const auto& variants = r.variants;
+  const pipeline::WheelNoise& wn = r.reported_wheel();
+  const auto& loops = r.loops;
   const auto& centres = r.axis.centres;
-  std::printf("  levels dB re 1 N (Mz re 1 N m), %s coupling; d* = with minus without the coupling; "
-              "muFz = 20 log10|Fy_mean/N| + Fz; b* = minus the %s baseline\n",
-              r.coupled ? "with" : "without", variants.has_baseline() ? r.baseline_name.c_str() : "(no)");
+  std::printf("  %s, %s (/noise/bands = /noise/wheels/%s/bands):\n", noise::wheel_name(wn.wheel),
+              r.coupled_contacts ? "all contacts coupled in one loop" : "each contact alone",
+              noise::wheel_name(wn.wheel));
+  std::printf("  levels dB re 1 N (Mz re 1 N m), %s coupling; L_r = effective roughness dB re 1 um; d* = with minus "
+              "without the coupling; muFz = 20 log10|Fy_mean/N| + Fz; b* = minus the %s baseline\n",
+              r.coupled ? "with" : "without", loops.has_baseline() ? r.baseline_name.c_str() : "(no)");
   std::printf("  %6s %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %6s | %6s %6s\n", "band", "L_r", "Fz", "Fx", "Fy", "Mz",
               "dFz", "dFx", "dFy", "dMz", "muFz", "bFz", "bFy");
+  const auto d = loops.has_uncoupled() ? noise::force_level_difference(wn.bands, wn.uncoupled_bands)
+                                       : std::vector<std::array<double, 4>>{};
+  const double mu_db = 20 * std::log10(std::abs(wn.mean_force.Fy / wn.mean.contact().normal_force));
   for (size_t i = 0; i < centres.size(); ++i) {
-    const auto& L = r.bands.force_level[i];
-    std::printf("  %6.0f %6.1f %6.1f %6.1f %6.1f %6.1f |", noise::nominal_centre(centres[i]), r.bands.roughness_level[i], L[0], L[1], L[2], L[3]);
-    if (variants.has_uncoupled()) {
-      const auto& d = r.coupling_difference[i];
-      std::printf(" %6.1f %6.1f %6.1f %6.1f |", d[0], d[1], d[2], d[3]);
-    } else {
+    const auto& L = wn.bands.force_level[i];
+    std::printf("  %6.0f %6.1f %6.1f %6.1f %6.1f %6.1f |", noise::nominal_centre(centres[i]), wn.bands.roughness_level[i],
+                L[0], L[1], L[2], L[3]);
+    if (!d.empty())
+      std::printf(" %6.1f %6.1f %6.1f %6.1f |", d[i][0], d[i][1], d[i][2], d[i][3]);
+    else
       std::printf(" %6s %6s %6s %6s |", "-", "-", "-", "-");
-    }
-    if (std::isfinite(r.lateral_to_normal_db))
-      std::printf(" %6.1f |", r.lateral_to_normal_db + L[0]);
+    if (std::isfinite(mu_db))
+      std::printf(" %6.1f |", mu_db + L[0]);
     else
       std::printf(" %6s |", "-");  // no mean lateral force (e.g. tangent track)
-    if (variants.has_baseline())
-      std::printf(" %6.1f %6.1f\n", L[0] - r.baseline_bands.force_level[i][0], L[2] - r.baseline_bands.force_level[i][2]);
+    if (loops.has_baseline())
+      std::printf(" %6.1f %6.1f\n", L[0] - wn.baseline_bands.force_level[i][0], L[2] - wn.baseline_bands.force_level[i][2]);
     else
       std::printf(" %6s %6s\n", "-", "-");
   }
@@ -123,9 +131,9 @@ void print_sound(const pipeline::NoiseResult& r) {
   std::printf("  sound power, dB(A) re 1 pW (%.0f Hz - %.0f Hz; sound stage %.2f s)%s:\n",
               noise::nominal_centre(s.centre.front()), noise::nominal_centre(s.centre.back()), s.seconds,
               s.wheel_note.empty() ? "" : "; the wheel's column empty (see below)");
-  line(r.bogie ? "bogie" : "all wheels", s.power_a);
-  for (std::size_t i = 0; i < r.wheels.size() && i < s.contact_power_a.size(); ++i)
-    line(noise::wheel_name(r.wheels[i].state.wheel), s.contact_power_a[i]);
+  line(r.wheels.size() > 1 ? "all wheels" : "the wheel", s.power_a);
+  for (std::size_t i = 0; r.wheels.size() > 1 && i < s.contact_power_a.size(); ++i)
+    line(noise::wheel_name(r.wheels[i].wheel), s.contact_power_a[i]);
   if (!s.wheel_note.empty()) std::fprintf(stderr, "note: %s\n", s.wheel_note.c_str());
 }
 
@@ -152,9 +160,9 @@ int run_noise(const CommonOptions& o) {
               cc.speed, cc.creepage.xi_x, cc.creepage.xi_y, cc.creepage.phi, r.mean.curve().position.contact_angle);
   print_contact_state(r.mean.curve());
   std::printf("  contact: %d adhesion / %d slip elements; %zu frequencies in %zu bands; contact %.1f s, "
-              "structures %.1f s, total %.1f s\n",
+              "loop %.1f s, total %.1f s\n",
               r.mean.model()->adhesion_elements(), r.mean.model()->slip_elements(), r.axis.frequency.size(),
-              centres.size(), r.seconds_contact, r.seconds_structures, r.seconds_total);
+              centres.size(), r.seconds_contact, r.seconds_wheels, r.seconds_total);
   if (r.refined)
     std::printf("  band means: %ld lines added in %d refinement levels (noise.band_refinement = %d)%s\n",
                 r.refined->added_lines, r.refined->levels, nc.band_refinement,

@@ -61,13 +61,13 @@ int run_study(const StudyOptions& o) {
   const study::RunSummary s = study::run_study(plan, ro);
   if (progress) progress->finish();
   std::printf("study %s: %ld cases%s: %ld complete now, %ld already complete, %ld failed; %d workers, %.1f s, %.2f "
-              "cases/s; loops computed %ld, reused %ld; wheel/rail receptances computed %ld, reused %ld; output %s\n",
+              "cases/s; loops computed %ld, reused %ld; output %s\n",
               plan.file.c_str(), s.cases,
               shard.count > 1 ? (" in shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count)).c_str()
                               : "",
               s.completed, s.skipped, s.failed, ro.workers, s.seconds,
               s.seconds > 0 ? double(s.completed + s.failed) / s.seconds : 0.0, s.loops_computed, s.loops_reused,
-              s.spectra_computed, s.spectra_reused, plan.output.c_str());
+              plan.output.c_str());
   if (!s.failures.empty()) {  // the log of failures (also in OUTPUT/case_NNNN.error and the collected table)
     std::fprintf(stderr, "%zu cases failed:\n", s.failures.size());
     for (const auto& [index, message] : s.failures)

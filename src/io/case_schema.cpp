@@ -141,8 +141,8 @@ const std::vector<KeySpec>& case_schema() {
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
       {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
       {"curve.creepage", T::String, "\"estimate\"", "-",
-       "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp; with "
-       "contact.geometry = \"profiles\" the curve contact state of src/noise/curve_state.hpp), "
+       "mean creepages and contact position: the rigid bogie's quasi-static estimate (with "
+       "contact.geometry = \"profiles\" each wheel's contact state on the profiles), "
        "creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw (profiles), or "
        "the wheelset's position from a multibody run ([wheelset])", {"estimate", "case", "multibody"}},
       {"curve.cg_height", T::NonNegReal, "1.5", "m",

@@ -244,11 +244,9 @@ void read_roughness_and_loop(const CaseReader& r, InputProblems& problems, Noise
 NoiseCase read_noise_case(const CaseReader& r, InputProblems& problems) {
   NoiseCase c;
   read_curve(r, problems, c);
-  std::string track_id, wheel_id;
-  problems.check([&] { track_id = read_track(r, c); });
+  problems.check([&] { read_track(r, c); });
   std::optional<WheelFeCase> fe;
-  problems.check([&] { wheel_id = read_wheel(r, problems, c, fe); });
-  c.structures_id = track_id + "; " + wheel_id;
+  problems.check([&] { read_wheel(r, problems, c, fe); });
   read_roughness_and_loop(r, problems, c);
   problems.check([&] {
     const std::vector<Eigen::Vector2d> section =

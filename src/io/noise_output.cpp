@@ -113,31 +113,39 @@ void write_contact_work(Hdf5Writer& w, const std::string& g, const pipeline::Whe
 }
 
 void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelNoise& wn) {
-  const noise::WheelContact& st = wn.state;
-  const geometry::LoadedContact& loaded = *st.loaded;
   const std::string g = group + "/contact/";
   w.write(g + "normal_stiffness", wn.mean.normal_stiffness(), "N/m");
-  w.write(g + "angle", st.contact.contact_angle, "rad");
-  w.write(g + "position_wheel", st.contact.wheel_s,
-          "m (wheel profile coordinate from the nominal running circle, field side > 0)");
-  w.write(g + "position_rail", st.contact.rail_y,
-          "m (rail profile coordinate from the rail's centre line, field side > 0)");
-  w.write(g + "lateral_position", st.contact.y, "m (contact point from the track centre line, this side)");
-  w.write(g + "normal_force", st.normal_force(), "N");
-  w.write(g + "creepage", std::vector<double>{st.creepage(0), st.creepage(1), st.creepage(2)}, {3},
-          "-, -, rad/m (the wheel's own contact frame; mirrored for an inner wheel)");
-  w.write(g + "creepage_given", std::vector<int>{st.creepage_given ? 1 : 0}, {}, "-");
-  w.write(g + "rolling_radius", st.contact.rolling_radius, "m");
-  w.write(g + "vertical_load", st.vertical_load, "N");
-  w.write(g + "wheelset_lateral", st.lateral, "m");
-  w.write(g + "wheelset_yaw", st.yaw, "rad");
-  w.write(g + "creep_force", std::vector<double>{loaded.creep_force[0], loaded.creep_force[1]}, {2},
-          "N (on the wheel, contact frame of the curved patch at the contact point: Fx, Fy)");
-  const auto f = st.force_track();
-  w.write(g + "force_track", std::vector<double>{f[0], f[1], f[2]}, {3},
-          "N (on the wheel: longitudinal, lateral towards the outer rail, up)");
-  w.write(g + "angle_range", std::vector<double>{loaded.angle_min, loaded.angle_max}, {2},
-          "rad (contact angles over the loaded patch on the curved surface)");
+  if (wn.state) {
+    const noise::WheelContact& st = *wn.state;
+    const geometry::LoadedContact& loaded = *st.loaded;
+    w.write(g + "angle", st.contact.contact_angle, "rad");
+    w.write(g + "position_wheel", st.contact.wheel_s,
+            "m (wheel profile coordinate from the nominal running circle, field side > 0)");
+    w.write(g + "position_rail", st.contact.rail_y,
+            "m (rail profile coordinate from the rail's centre line, field side > 0)");
+    w.write(g + "lateral_position", st.contact.y, "m (contact point from the track centre line, this side)");
+    w.write(g + "normal_force", st.normal_force(), "N");
+    w.write(g + "creepage", std::vector<double>{st.creepage(0), st.creepage(1), st.creepage(2)}, {3},
+            "-, -, rad/m (the wheel's own contact frame; mirrored for an inner wheel)");
+    w.write(g + "creepage_given", std::vector<int>{st.creepage_given ? 1 : 0}, {}, "-");
+    w.write(g + "rolling_radius", st.contact.rolling_radius, "m");
+    w.write(g + "vertical_load", st.vertical_load, "N");
+    w.write(g + "wheelset_lateral", st.lateral, "m");
+    w.write(g + "wheelset_yaw", st.yaw, "rad");
+    w.write(g + "creep_force", std::vector<double>{loaded.creep_force[0], loaded.creep_force[1]}, {2},
+            "N (on the wheel, contact frame of the curved patch at the contact point: Fx, Fy)");
+    const auto f = st.force_track();
+    w.write(g + "force_track", std::vector<double>{f[0], f[1], f[2]}, {3},
+            "N (on the wheel: longitudinal, lateral towards the outer rail, up)");
+    w.write(g + "angle_range", std::vector<double>{loaded.angle_min, loaded.angle_max}, {2},
+            "rad (contact angles over the loaded patch on the curved surface)");
+  } else {  // the case's one contact (no curve contact state): its placed case
+    const pipeline::ContactCase& c = wn.mean.contact();
+    w.write(g + "angle", wn.position.contact_angle, "rad");
+    w.write(g + "normal_force", c.normal_force, "N");
+    w.write(g + "creepage", std::vector<double>{c.creepage.xi_x, c.creepage.xi_y, c.creepage.phi}, {3},
+            "-, -, rad/m (contact frame)");
+  }
   w.write(g + "loop_mean_force", std::vector<double>{wn.mean_force.Fx, wn.mean_force.Fy, wn.mean_force.Mz}, {3},
           "N, N, N m (steady state on the loop's planar patch at N: Fx, Fy, Mz)");
   w.write(group + "/bands/force_level", flatten_levels(wn.bands), {wn.bands.centre.size(), 4},
@@ -150,27 +158,28 @@ void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelN
           "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
 }
 
-// The narrow-band response of contact a (same layout and units as /noise/force, wheel_velocity,
-// rail_velocity): with the bogie loop under the contact's own roughness source (left out for a
-// contact without one) and `force_by_source` under every source; else the wheel's loop alone.
-void write_narrow_band(Hdf5Writer& w, const std::string& group, const pipeline::NoiseResult& r, int a,
-                       const pipeline::WheelNoise& wn) {
+// Contact a's response to its own roughness source (the source that drives it directly), as a
+// single-contact result; empty for a contact without a source of its own (a second patch).
+noise::LoopResult own_response(const noise::ContactSetLoopResult& loop, int a) {
+  for (int e = 0; e < loop.sources(); ++e)
+    if (loop.rho(a, e) != 0.0) return noise::contact_response(loop, a, e);
+  return {};
+}
+
+// The narrow-band response of contact a on the case's lines (same layout and units as
+// /noise/force, wheel_velocity, rail_velocity) under the contact's own roughness source (left out
+// for a contact without one), and `force_by_source` under every source.
+void write_narrow_band(Hdf5Writer& w, const std::string& group, const pipeline::NoiseResult& r, int a) {
   const std::size_t nf = r.axis.frequency.size();
   const std::string per = "per unit roughness of this contact's own source: ";
-  auto write_loop = [&](const noise::LoopResult& x) {
+  const noise::ContactSetLoopResult& loop = r.loops.main;
+  if (const noise::LoopResult x = own_response(loop, a); !x.frequency.empty()) {
     w.write(group + "/force", flatten4(x.force), {nf, 4},
             per + "Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
     w.write(group + "/wheel_velocity", flatten4(x.wheel_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
     w.write(group + "/rail_velocity", flatten4(x.rail_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
-  };
-  if (!r.bogie) {
-    write_loop(wn.loop);
-    return;
   }
-  const noise::ContactSetLoopResult& loop = *r.bogie;
   const int sources = loop.sources();
-  for (int e = 0; e < sources; ++e)
-    if (loop.rho(a, e) != 0.0) write_loop(noise::contact_response(loop, a, e));
   std::vector<std::complex<double>> f;
   f.reserve(nf * static_cast<std::size_t>(sources) * 4);
   for (const Eigen::MatrixXcd& F : loop.force)
@@ -184,43 +193,45 @@ void write_narrow_band(Hdf5Writer& w, const std::string& group, const pipeline::
 }  // namespace
 
 void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
-  if (r.wheels.empty()) return;
   std::vector<std::string> sources;  // the contacts with a roughness source, in the loop's order
   int a = 0;
   for (const pipeline::WheelNoise& wn : r.wheels) {
-    const std::string g = std::string("/noise/wheels/") + noise::wheel_name(wn.state.wheel);
+    const std::string g = std::string("/noise/wheels/") + noise::wheel_name(wn.wheel);
     write_wheel(w, g, wn);
-    write_narrow_band(w, g, r, a++, wn);
-    sources.push_back(noise::wheel_name(wn.state.wheel));
+    write_narrow_band(w, g, r, a++);
+    sources.push_back(noise::wheel_name(wn.wheel));
   }
   for (const pipeline::WheelNoise& p : r.patches) {  // one second patch per wheel (the flange)
-    const std::string name = std::string(noise::wheel_name(p.state.wheel)) + "/patches/1";
+    const std::string name = std::string(noise::wheel_name(p.wheel)) + "/patches/1";
     write_wheel(w, "/noise/wheels/" + name, p);
-    write_narrow_band(w, "/noise/wheels/" + name, r, a, p);
-    if (r.bogie && r.bogie->rho.row(a).cwiseAbs().maxCoeff() > 0.0) sources.push_back(name);
+    write_narrow_band(w, "/noise/wheels/" + name, r, a);
+    if (r.loops.main.rho.row(a).cwiseAbs().maxCoeff() > 0.0) sources.push_back(name);
     w.attribute("/noise/wheels/" + name, "patch",
                 "the flange patch of the two-point contact (noise.second_patch = \"coupled\", "
                 "docs/noise_loop.md Sec. 7.4): its own contact frame, position on the flank, contact "
                 "model at its own mean state; bands and force_by_source from the coupled loop");
     ++a;
   }
-  if (r.bogie) w.write("/noise/wheels/sources", sources, "-");
-  if (r.bogie)
-    w.attribute("/noise/wheels", "loop",
-                "coupled (noise.contact_coupling = \"bogie\"): the wheels' main patches in one loop with several "
-                "contacts (docs/noise_loop.md Sec. 5.2-5.3: rigid wheelset between the two wheels of an axle, each "
-                "rail's transfer receptance between the two axles, each wheel's own contact receptance), one "
-                "uncorrelated roughness source per wheel, band levels the power sum over the sources; the "
-                "top-level /noise is the leading outer wheel's single-contact loop");
-  else
-    w.attribute("/noise/wheels", "loop",
-                "each wheel's main patch runs the single-contact loop ALONE (noise.contact_coupling = \"none\": "
-                "its own patch, creepages and receptances at its contact; the wheels are not coupled through the "
-                "wheelset or the track); leading_outer is the top-level /noise run");
+  w.write("/noise/wheels/sources", sources, "-");
+  w.attribute("/noise/wheels", "loop", loop_description(r));
   w.attribute("/noise/wheels", "frames",
               "contact and creepage in each wheel's own contact frame (y_c to its field side, mirrored for "
               "the inner wheels); force_track in the track frame with the lateral component towards the "
               "outer rail");
+}
+
+std::string loop_description(const pipeline::NoiseResult& r) {
+  const std::size_t n = r.wheels.size() + r.patches.size();
+  const bool coupled = r.coupled_contacts;
+  std::string s = coupled ? "coupled (noise.contact_coupling = \"bogie\"): the " + std::to_string(n) +
+                                " contacts in one loop (docs/noise_loop.md Sec. 5.2-5.3: rigid wheelset between the "
+                                "two wheels of an axle, each rail's transfer receptance between the two axles, each "
+                                "contact's own contact receptance)"
+                          : "each contact alone (noise.contact_coupling = \"none\"; docs/noise_loop.md Sec. 5.2: "
+                            "its own patch, creepages and receptances at its contact, not coupled through the "
+                            "wheelset or the track)";
+  return s + "; one uncorrelated roughness source per wheel, band levels the power sum over the sources; the "
+             "top-level /noise is " + std::string(noise::wheel_name(r.reported_wheel().wheel)) + "'s answer in it";
 }
 
 CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve) {
@@ -234,20 +245,25 @@ CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, cons
 void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseCase& nc,
                  const pipeline::NoiseResult& r) {
   using Baseline = pipeline::NoiseCase::Baseline;
-  const auto& variants = r.variants;
+  const pipeline::WheelNoise& wn = r.reported_wheel();
+  const int a = static_cast<int>(r.reported);
   write_mean_state(w, case_as_run(reader, r.mean.contact(), r.mean.curve()), r.mean.patch(), r.mean.contact().creepage,
                    r.mean.steady());
   const std::vector<double>& freq = r.axis.frequency;
   const std::size_t nf = freq.size();
+  const std::string own = "per unit roughness of the wheel's own source: ";
+  const noise::LoopResult main = own_response(r.loops.main, a);
   w.write("/noise/frequency", freq, {nf}, "Hz");
-  w.write("/noise/force", flatten4(variants.main.force), {nf, 4},
-          "per unit roughness: Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
-  w.write("/noise/wheel_velocity", flatten4(variants.main.wheel_velocity), {nf, 4}, "per unit roughness: (m/s)/m, (rad/s)/m");
-  w.write("/noise/rail_velocity", flatten4(variants.main.rail_velocity), {nf, 4}, "per unit roughness: (m/s)/m, (rad/s)/m");
-  write_bands(w, "/noise/bands", r.bands, true);
+  w.write("/noise/force", flatten4(main.force), {nf, 4},
+          own + "Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
+  w.write("/noise/wheel_velocity", flatten4(main.wheel_velocity), {nf, 4}, own + "(m/s)/m, (rad/s)/m");
+  w.write("/noise/rail_velocity", flatten4(main.rail_velocity), {nf, 4}, own + "(m/s)/m, (rad/s)/m");
+  write_bands(w, "/noise/bands", wn.bands, true);
+  w.attribute("/noise", "wheel", noise::wheel_name(wn.wheel));
+  w.attribute("/noise", "loop", loop_description(r));
   w.attribute("/noise", "contact_model", nc.use_nss ? "linear NSS model" : "Kalker's steady linear theory");
   w.attribute("/noise", "normal_coupling", nc.normal_coupling ? "on" : "off");
-  w.attribute("/noise", "compare", variants.has_baseline() ? r.baseline_name : "none");
+  w.attribute("/noise", "compare", r.loops.has_baseline() ? r.baseline_name : "none");
   w.attribute("/noise", "band_average",
               r.refined ? "mean of |H|^2 over the narrow-band lines inside each band: the case's (/noise/frequency) and "
                           "those added where they did not resolve a peak (noise.band_refinement; docs/noise_loop.md Sec. 6.1)"
@@ -265,15 +281,16 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
     w.write("/noise/curving/lateral", r.mean.curve().curving.leading.lateral, "m");
     w.write("/noise/curving/flange_force", r.mean.curve().curving.leading.flange_force, "N");
   }
-  if (variants.has_uncoupled()) {
-    write_variant(w, "/noise/uncoupled", variants.uncoupled, r.uncoupled_bands, "the same contact with g = 0");
+  if (r.loops.has_uncoupled()) {
+    write_variant(w, "/noise/uncoupled", own_response(r.loops.uncoupled, a), wn.uncoupled_bands,
+                  "the same contacts with g = 0");
     std::vector<double> d;
-    for (const auto& x : r.coupling_difference) d.insert(d.end(), x.begin(), x.end());
+    for (const auto& x : noise::force_level_difference(wn.bands, wn.uncoupled_bands)) d.insert(d.end(), x.begin(), x.end());
     w.write("/noise/bands/coupling_difference", d, {r.axis.centres.size(), 4},
             "dB, force band levels with minus without the normal -> tangential coupling (Fz, Fx, Fy, Mz)");
   }
-  if (variants.has_baseline()) {
-    write_variant(w, "/noise/" + r.baseline_name, variants.baseline, r.baseline_bands,
+  if (r.loops.has_baseline()) {
+    write_variant(w, "/noise/" + r.baseline_name, own_response(r.loops.baseline, a), wn.baseline_bands,
                   nc.compare == Baseline::kKalker ? "Kalker's steady coefficients (full adhesion, g = 0)"
                                                   : "quasi-steady contact f(0), g(0) of the same state");
     if (nc.compare == Baseline::kQuasiSteady) {

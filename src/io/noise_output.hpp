@@ -21,6 +21,9 @@ void write_contact_state(Hdf5Writer& w, const std::string& group, const pipeline
 /// /noise/wheels/<wheel>/{contact, bands}: each wheel's contact state and its loop's band levels
 /// (curve.wheels), with the attribute `loop` saying that each ran alone.
 void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& res);
+/// One sentence on the loop the run solved: its contacts, how they are coupled, its sources and
+/// which wheel the top-level outputs report.
+std::string loop_description(const pipeline::NoiseResult& r);
 
 void write_noise(Hdf5Writer& w, const CaseReader& r, const pipeline::NoiseCase& nc, const pipeline::NoiseResult& res);
 

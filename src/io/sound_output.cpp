@@ -99,9 +99,9 @@ void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
           "the bound of the radiated power)");
   w.attribute(
       "/noise/sound", "sum",
-      r.bogie ? "the bogie: every wheel's power, each rail's power under all the contacts on it "
-                "(coherently), the sleepers of both rails; power sum over the roughness sources"
-              : "the power sums of each wheel's loop alone (noise.contact_coupling = \"none\")");
+      "all the contacts of the loop: every wheel's power, each rail's power under all the contacts "
+      "on it (coherently), the sleepers of both rails; power sum over the roughness sources (with "
+      "noise.contact_coupling = \"none\" each source drives its own contact alone)");
   if (!s.wheel_note.empty()) w.attribute("/noise/sound", "wheel_missing", s.wheel_note);
   const char* family_units =
       "dB re 1 pW; [band][axial, radial, circumferential]: the wheel's power with one mode "
@@ -117,7 +117,7 @@ void write_sound(Hdf5Writer& w, const pipeline::NoiseResult& r) {
             family_units);
   for (std::size_t i = 0; i < r.wheels.size() && i < s.contact_power.size(); ++i) {
     const std::string g =
-        std::string("/noise/wheels/") + noise::wheel_name(r.wheels[i].state.wheel) + "/sound";
+        std::string("/noise/wheels/") + noise::wheel_name(r.wheels[i].wheel) + "/sound";
     write_bands(w, g, s.contact_power[i], s.contact_power_a[i]);
     if (i < s.contact_family.size())
       w.write(g + "/wheel_by_family", flat3(s.contact_family[i]), {s.contact_family[i].size(), 3},

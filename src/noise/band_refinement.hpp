@@ -56,7 +56,7 @@ std::vector<std::vector<double>> sampled_powers(const ContactSetLoopResult& r);
 /// The union of two results on disjoint frequencies, sorted by frequency (b's rho is a's); the
 /// lines are moved out of a and b (pass std::move where they are not needed any more).
 LoopResult merged(LoopResult a, LoopResult b);
-LoopVariants merged(LoopVariants a, LoopVariants b);
 ContactSetLoopResult merged(ContactSetLoopResult a, ContactSetLoopResult b);
+LoopVariants merged(LoopVariants a, LoopVariants b);
 
 }  // namespace rollnoise::noise

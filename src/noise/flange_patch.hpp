@@ -20,7 +20,7 @@
 
 #include <optional>
 
-#include "noise/curve_state.hpp"
+#include "vehicle/curve_state.hpp"
 #include "noise/wheel_contact.hpp"
 
 namespace rollnoise::noise {

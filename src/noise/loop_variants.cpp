@@ -9,13 +9,15 @@ namespace rollnoise::noise {
 namespace {
 
 // alpha_c of one contact per frequency; g = 0 when `coupling` is off or the contact has none.
-std::vector<Receptance4> receptances(const StructuralReceptances& s, const LoopVariantsInput& in,
-                                     const ContactCoefficients& c, bool coupling) {
-  ROLLNOISE_ASSERT(c.creep.size() == s.frequency.size() && (c.load.empty() || c.load.size() == s.frequency.size()),
-                   "noise loop: one creep matrix (and load vector) per frequency is needed");
+std::vector<Receptance4> receptances(const std::vector<double>& frequency,
+                                     const LoopVariantsInput& in, const ContactCoefficients& c,
+                                     bool coupling) {
+  ROLLNOISE_ASSERT(
+      c.creep.size() == frequency.size() && (c.load.empty() || c.load.size() == frequency.size()),
+      "noise loop: one creep matrix (and load vector) per frequency is needed");
   if (coupling && !c.load.empty())
-    return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep, c.load);
-  return contact_receptances(s.frequency, in.normal_stiffness, in.speed, c.creep);
+    return contact_receptances(frequency, in.normal_stiffness, in.speed, c.creep, c.load);
+  return contact_receptances(frequency, in.normal_stiffness, in.speed, c.creep);
 }
 
 }  // namespace
@@ -32,13 +34,35 @@ ContactCoefficients quasi_steady_coefficients(const Eigen::Matrix3cd& f0,
   return constant_coefficients(f0.real().cast<cdouble>(), g0.real().cast<cdouble>(), n);
 }
 
-LoopVariants solve_loop_variants(const StructuralReceptances& s, const LoopVariantsInput& in) {
-  LoopVariants v;
-  v.main = solve_loop(s, receptances(s, in, in.model, in.normal_coupling), in.options);
+ContactVariants contact_variants(const std::vector<double>& frequency,
+                                 const LoopVariantsInput& in) {
+  ContactVariants v;
+  v.main = receptances(frequency, in, in.model, in.normal_coupling);
   if (in.normal_coupling && !in.model.load.empty())
-    v.uncoupled = solve_loop(s, receptances(s, in, in.model, false), in.options);
+    v.uncoupled = receptances(frequency, in, in.model, false);
   if (!in.baseline.empty())
-    v.baseline = solve_loop(s, receptances(s, in, in.baseline, in.normal_coupling), in.options);
+    v.baseline = receptances(frequency, in, in.baseline, in.normal_coupling);
+  return v;
+}
+
+LoopVariants solve_loop_variants(const ContactSetStructures& s,
+                                 const std::vector<ContactVariants>& contacts,
+                                 const Eigen::MatrixXd& sources, int threads) {
+  // One variant's alpha_c of every contact; empty unless every contact has it.
+  auto variant = [&](std::vector<Receptance4> ContactVariants::*which) {
+    std::vector<std::vector<Receptance4>> alpha;
+    for (const ContactVariants& c : contacts) {
+      if ((c.*which).empty()) return std::vector<std::vector<Receptance4>>{};
+      alpha.push_back(c.*which);
+    }
+    return alpha;
+  };
+  LoopVariants v;
+  v.main = solve_contact_set_loop(s, variant(&ContactVariants::main), sources, true, threads);
+  if (auto u = variant(&ContactVariants::uncoupled); !u.empty())
+    v.uncoupled = solve_contact_set_loop(s, u, sources, true, threads);
+  if (auto b = variant(&ContactVariants::baseline); !b.empty())
+    v.baseline = solve_contact_set_loop(s, b, sources, true, threads);
   return v;
 }
 

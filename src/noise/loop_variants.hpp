@@ -1,5 +1,5 @@
 // The rolling-noise loop for the variants the `noise` command compares (docs/noise_loop.md
-// Sec. 5.1), from one set of structural receptances:
+// Sec. 5.1), from one set of structures (every contact of the loop, the same sources):
 //
 //  * main      the contact model (the linear NSS model, or Kalker's theory) with the normal ->
 //              tangential friction coupling F~t = -f xi~ + g Fz (contact_receptance.hpp, Eq. C3)
@@ -17,6 +17,7 @@
 
 #include "noise/bands.hpp"
 #include "noise/contact_receptance.hpp"
+#include "noise/contact_set_loop.hpp"
 #include "noise/loop.hpp"
 
 namespace rollnoise::noise {
@@ -44,20 +45,33 @@ struct LoopVariantsInput {
   ContactCoefficients model;      ///< the main contact model, one entry per frequency
   bool normal_coupling = true;    ///< use g (Eq. C3) in the main and the baseline contact
   ContactCoefficients baseline;   ///< empty: no baseline
-  LoopOptions options;
 };
 
+/// One contact's alpha_c per frequency for each variant (contact frame, Eq. C1-C3 of
+/// contact_receptance.hpp). `uncoupled` is empty unless the coupling is on and the model has a g;
+/// `baseline` is empty without a baseline.
+struct ContactVariants {
+  std::vector<Receptance4> main, uncoupled, baseline;
+};
+ContactVariants contact_variants(const std::vector<double>& frequency,
+                                 const LoopVariantsInput& input);
+
+/// The loop of a set of contacts (contact_set_loop.hpp; a single wheel is a set of one) for each
+/// variant, on the same structures and sources.
 struct LoopVariants {
-  LoopResult main;       ///< with g when normal_coupling (and the model has one), else g = 0
-  LoopResult uncoupled;  ///< g = 0; no frequencies unless has_uncoupled()
-  LoopResult baseline;   ///< no frequencies unless has_baseline()
+  ContactSetLoopResult main;       ///< with g when normal_coupling (and the model has one)
+  ContactSetLoopResult uncoupled;  ///< g = 0; no frequencies unless has_uncoupled()
+  ContactSetLoopResult baseline;   ///< no frequencies unless has_baseline()
   bool has_uncoupled() const { return !uncoupled.frequency.empty(); }
   bool has_baseline() const { return !baseline.frequency.empty(); }
 };
 
-/// Solves (L1) for the variants above at every frequency of `structures`.
-LoopVariants solve_loop_variants(const StructuralReceptances& structures,
-                                 const LoopVariantsInput& input);
+/// Solves (M3) of contact_set_loop.hpp for each variant: `contacts[a]` is contact a's alpha_c of
+/// every variant (contact_variants); a variant is solved when every contact has it. The
+/// frequencies on `threads` threads (the same result for any count).
+LoopVariants solve_loop_variants(const ContactSetStructures& structures,
+                                 const std::vector<ContactVariants>& contacts,
+                                 const Eigen::MatrixXd& sources, int threads = 1);
 
 /// Force band levels a - b per band (dB): Fz, Fx, Fy, Mz. InputError unless the bands match.
 std::vector<std::array<double, 4>> force_level_difference(const BandLevels& a, const BandLevels& b);

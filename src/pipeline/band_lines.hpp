@@ -13,13 +13,9 @@
 namespace rollnoise::pipeline {
 
 struct RefinedLoops {
-  noise::LoopVariants variants;                              ///< the main wheel's loop variants
-  std::shared_ptr<const noise::ContactSetLoopResult> bogie;  ///< null without the bogie loop
-  /// Without the bogie loop: each wheel's loop alone (NoiseResult::wheels order; the leading outer
-  /// wheel's is variants.main).
-  std::vector<noise::LoopResult> wheel_loops;
-  int levels = 0;        ///< refinement levels that added lines
-  long added_lines = 0;  ///< lines added to the case's
+  noise::LoopVariants loops;  ///< the loop of all the contacts, every variant (NoiseResult::loops)
+  int levels = 0;             ///< refinement levels that added lines
+  long added_lines = 0;       ///< lines added to the case's
   /// a level would have passed 16 x the case's lines or the case's limits: not taken
   bool capped = false;
 };

@@ -12,9 +12,9 @@ namespace {
 
 noise::ContactPoint contact_point(const WheelNoise& w, const NoiseCase& nc) {
   noise::ContactPoint c;
-  const bool leading = noise::is_leading(w.state.wheel);
+  const bool leading = noise::is_leading(w.wheel);
   c.wheelset = leading ? 0 : 1;
-  c.side = noise::is_outer(w.state.wheel) ? 1 : -1;
+  c.side = noise::is_outer(w.wheel) ? 1 : -1;
   c.position = w.position;  // its own frame (mirrored for an inner wheel), as its loop alone
   c.rail_x = nc.rail->position() + (leading ? 0.0 : nc.wheelbase);
   return c;
@@ -41,7 +41,6 @@ std::vector<noise::ContactPoint> bogie_contacts(const std::vector<WheelNoise>& w
 
 std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCase& base,
                                        const NoiseCase& nc, const std::vector<WheelNoise>& wheels,
-                                       const noise::StructureSpectra& spectra,
                                        const std::vector<double>& frequency) {
   if (!nc.second_patch) return {};
   if (nc.contact_coupling != NoiseCase::ContactCoupling::kBogie)
@@ -49,14 +48,14 @@ std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCas
                      "a second patch is a contact of the bogie loop: \"coupled\" needs "
                      "noise.contact_coupling = \"bogie\"");
   const bool leading_outer = std::any_of(wheels.begin(), wheels.end(), [](const WheelNoise& w) {
-    return w.state.wheel == noise::WheelId::leading_outer;
+    return w.wheel == noise::WheelId::leading_outer;
   });
   if (!curve.state || !curve.state_input || !leading_outer) return {};
   const auto t0 = Clock::now();
   const std::optional<noise::WheelContact> flange =
       noise::flange_patch_contact(*curve.state_input, *curve.state);
   if (!flange) return {};
-  WheelNoise patch = wheel_noise(base, nc, *flange, spectra, frequency);
+  WheelNoise patch = wheel_contact_noise(base, nc, *flange, frequency);
   patch.seconds = seconds_since(t0);
   return {std::move(patch)};
 }
@@ -67,17 +66,23 @@ std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, cons
   return out;
 }
 
-noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
-                                       const std::vector<double>& frequency,
-                                       const noise::CrossCoupling& cross,
-                                       const std::vector<WheelNoise>& patches, int threads,
-                                       const dynamics::RailModel* rail) {
+noise::CrossCoupling loop_coupling(const NoiseCase& nc) {
+  return nc.contact_coupling == NoiseCase::ContactCoupling::kBogie ? noise::CrossCoupling{}
+                                                                   : noise::CrossCoupling::none();
+}
+
+noise::LoopVariants contact_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
+                                 const std::vector<double>& frequency,
+                                 const std::vector<WheelNoise>& patches, int threads,
+                                 const dynamics::RailModel* rail,
+                                 const std::optional<noise::CrossCoupling>& cross) {
   const noise::ContactSetStructures s = noise::contact_set_structures(
-      *nc.wheel, rail ? *rail : *nc.rail, bogie_contacts(wheels, nc, patches), frequency, cross, threads);
-  std::vector<std::vector<noise::Receptance4>> alpha;
-  for (const WheelNoise* w : all_contacts(wheels, patches)) alpha.push_back(w->contact_receptance);
-  return noise::solve_contact_set_loop(
-      s, alpha, noise::independent_sources(excited_contacts(wheels.size(), patches.size(), nc)), true,
+      *nc.wheel, rail ? *rail : *nc.rail, bogie_contacts(wheels, nc, patches), frequency,
+      cross.value_or(loop_coupling(nc)), threads);
+  std::vector<noise::ContactVariants> alpha;
+  for (const WheelNoise* w : all_contacts(wheels, patches)) alpha.push_back(w->receptance);
+  return noise::solve_loop_variants(
+      s, alpha, noise::independent_sources(excited_contacts(wheels.size(), patches.size(), nc)),
       threads);
 }
 

@@ -1,5 +1,6 @@
-// The loop with all the wheels of curve.wheels coupled (docs/noise_loop.md Sec. 5.3): one
-// noise::ContactPoint per wheel (wheelset 0 leading / 1 trailing, side +1 outer / -1 inner, its
+// The one loop of the noise pipeline (docs/noise_loop.md Sec. 5.3), whatever the number of
+// contacts: a single wheel is a loop of one contact, and noise.contact_coupling = "none" keeps
+// each contact alone (no cross terms). One noise::ContactPoint per wheel (wheelset 0 leading / 1 trailing, side +1 outer / -1 inner, its
 // contact position in its own frame, rail_x = track.position for the leading axle and
 // track.position + curve.wheelbase for the trailing), the structures between them once
 // (noise::contact_set_structures: rigid wheelset, flexible wheel, each rail's transfer receptance),
@@ -13,10 +14,12 @@
 // noise.second_patch_roughness = "own". Contacts: the wheels in their order, then the patches.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "noise/bands.hpp"
 #include "noise/contact_set_loop.hpp"
+#include "noise/loop_variants.hpp"
 #include "pipeline/curve_setup.hpp"
 #include "pipeline/noise_case.hpp"
 #include "pipeline/wheel_noise.hpp"
@@ -29,27 +32,31 @@ std::vector<noise::ContactPoint> bogie_contacts(const std::vector<WheelNoise>& w
                                                 const std::vector<WheelNoise>& patches = {});
 
 /// The second patches (noise.second_patch = "coupled"): the flange patch of the leading outer
-/// wheel when its state is a two-point contact and the wheel is among `wheels`, with its loop
-/// alone (wheel_noise on the shared spectra); empty otherwise. InputError naming
-/// noise.second_patch with noise.contact_coupling = "none".
+/// wheel when its state is a two-point contact and the wheel is among `wheels`, with its contact
+/// work (wheel_contact_noise); empty otherwise. InputError naming noise.second_patch with
+/// noise.contact_coupling = "none".
 std::vector<WheelNoise> second_patches(const CurveSetup& curve, const ContactCase& base,
                                        const NoiseCase& nc, const std::vector<WheelNoise>& wheels,
-                                       const noise::StructureSpectra& spectra,
                                        const std::vector<double>& frequency);
 
 /// Which contacts of bogie_contacts have a roughness source: every wheel; a second patch with
 /// noise.second_patch_roughness = "own".
 std::vector<bool> excited_contacts(std::size_t wheels, std::size_t patches, const NoiseCase& nc);
 
-/// (M3) with the wheels' contacts and one source per wheel, at `frequency`; `cross` selects the
-/// cross terms (CrossCoupling::none(): each wheel alone, at its own rail position). Any rail
-/// model: nc.rail between the contact points (RailModel::contact_transfers), or `rail` if given.
-/// The frequencies on `threads` threads (the same result for any count).
-noise::ContactSetLoopResult bogie_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
-                                       const std::vector<double>& frequency,
-                                       const noise::CrossCoupling& cross = {},
-                                       const std::vector<WheelNoise>& patches = {}, int threads = 1,
-                                       const dynamics::RailModel* rail = nullptr);
+/// The cross terms the case's loop keeps: all with noise.contact_coupling = "bogie", none with
+/// "none" (each contact alone at its own rail position).
+noise::CrossCoupling loop_coupling(const NoiseCase& nc);
+
+/// The loop (M3) of the contacts (the wheels, then the patches) with one source per excited
+/// contact, at `frequency`, for every variant of the contacts' receptances (WheelNoise::receptance,
+/// which must be at `frequency`); the cross terms of loop_coupling(nc), or `cross` if given. Any
+/// rail model: nc.rail between the contact points (RailModel::contact_transfers), or `rail` if
+/// given. The frequencies on `threads` threads (the same result for any count).
+noise::LoopVariants contact_loop(const std::vector<WheelNoise>& wheels, const NoiseCase& nc,
+                                 const std::vector<double>& frequency,
+                                 const std::vector<WheelNoise>& patches = {}, int threads = 1,
+                                 const dynamics::RailModel* rail = nullptr,
+                                 const std::optional<noise::CrossCoupling>& cross = std::nullopt);
 
 /// The effective roughness levels in the bands `centres` of each source of bogie_loop (its
 /// excited contacts, in order): each with its own contact's filter (a, b) on the case's roughness

@@ -40,9 +40,6 @@ struct NoiseCase {
   std::vector<std::string> wheels;
   std::unique_ptr<dynamics::RailModel> rail;
   std::unique_ptr<dynamics::WheelModel> wheel;
-  /// What the wheel and rail models were built from (files as resolved, support, position): equal
-  /// ids mean equal models, so a study may share their receptances (NoiseReuse).
-  std::string structures_id;
   noise::RoughnessSpectrum rail_roughness, wheel_roughness;
   noise::ContactFilterModel filter = noise::ContactFilterModel::kIsotropic;
   bool use_nss = true;

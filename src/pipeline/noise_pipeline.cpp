@@ -17,17 +17,11 @@
 
 namespace rollnoise::pipeline {
 
-noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n) {
-  noise::ContactCoefficients k = noise::constant_coefficients(
-      noise::kalker_creep_matrix(c.a, c.b, c.material).cast<std::complex<double>>(),
-      noise::LoadCoefficients::Zero(), n);
-  k.load.clear();
-  return k;
-}
-
-MeanContactOptions noise_contact_options(const NoiseCase& nc, const std::vector<double>& frequency) {
+MeanContactOptions noise_contact_options(const NoiseCase& nc,
+                                         const std::vector<double>& frequency) {
   MeanContactOptions o;
-  o.with_model = nc.use_nss;
+  // the model with the NSS contact, and for the quasi-steady baseline's f(0), g(0)
+  o.with_model = nc.use_nss || nc.compare == NoiseCase::Baseline::kQuasiSteady;
   o.frequencies = frequency;
   o.frequency_key = "noise.band_max";
   return o;
@@ -39,9 +33,11 @@ namespace {
 // run before the curve stage, so that a huge noise.points_per_band is refused at once).
 std::vector<double> band_centres(const ContactCase& c, const NoiseCase& nc) {
   std::vector<double> centres = noise::third_octave_centres(nc.band_min, nc.band_max);
-  if (centres.empty()) throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
+  if (centres.empty())
+    throw InputError("noise.band_max", "no 1/3-octave band between band_min and band_max");
   const double count = double(centres.size()) * double(nc.points_per_band);
-  check_size(c.limits, "noise.points_per_band", count, "narrow-band frequencies", frequency_bytes(count));
+  check_size(c.limits, "noise.points_per_band", count, "narrow-band frequencies",
+             frequency_bytes(count));
   return centres;
 }
 
@@ -52,27 +48,6 @@ BandAxis band_axis(const ContactCase& c, const NoiseCase& nc) {
   a.centres = band_centres(c, nc);
   a.frequency = noise::band_frequencies(a.centres, nc.points_per_band);
   return a;
-}
-
-std::shared_ptr<const noise::StructureSpectra> NoiseReuse::spectra(const NoiseCase& nc,
-                                                                   const std::vector<double>& frequency) {
-  if (nc.structures_id.empty()) {
-    ++computed_;
-    return std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, frequency));
-  }
-  // the key: the models' id and the frequencies' bits
-  std::string key = nc.structures_id;
-  key.append(reinterpret_cast<const char*>(frequency.data()), frequency.size() * sizeof(double));
-  auto it = spectra_.find(key);
-  if (it != spectra_.end()) {
-    ++reused_;
-    return it->second;
-  }
-  ++computed_;
-  if (spectra_.size() >= 64) spectra_.clear();  // a bound on memory (about 1 MB each)
-  auto s = std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, frequency));
-  spectra_.emplace(std::move(key), s);
-  return s;
 }
 
 namespace {
@@ -97,14 +72,19 @@ class FurtherWheels {
   // Each task also finds its wheel's contact state (noise::bogie_wheel_contacts of that wheel
   // alone: the wheels' states are independent given the curve state). `base`: the main wheel's
   // case as placed (each wheel's case is placed at its own contact from it: grid, a, b, N).
-  void start(const ContactCase& base, const CurveSetup& curve, const std::vector<double>& frequency) {
+  void start(const ContactCase& base, const CurveSetup& curve,
+             const std::vector<double>& frequency) {
     base_ = base;
     curve_ = curve;
     frequency_ = frequency;
-    for (noise::WheelId id : curve_wheel_ids(curve_, nc_)) {
+    const std::vector<noise::WheelId> listed = curve_wheel_ids(curve_, nc_);
+    if (listed.empty()) order_.push_back(-1);  // no curve contact state: the case's one contact
+    for (noise::WheelId id : listed) {
       order_.push_back(id == noise::WheelId::leading_outer ? -1 : int(ids_.size()));
-      if (id == noise::WheelId::leading_outer) main_state_ = curve_.state->wheel;
-      else ids_.push_back(id);
+      if (id == noise::WheelId::leading_outer)
+        main_state_ = curve_.state->wheel;
+      else
+        ids_.push_back(id);
     }
     results_.resize(ids_.size());
     // The outer wheels first: they carry the load transfer, so their patches are the larger ones
@@ -127,38 +107,20 @@ class FurtherWheels {
         TaskPool::Caller::busy);
   }
 
-  // Every wheel in the order of curve.wheels, the main one from the run; the loops alone (without
-  // the bogie loop) on the shared spectra, in parallel too.
-  std::vector<WheelNoise> finish(const NoiseResult& r, const noise::StructureSpectra& spectra) {
+  // Every wheel in the order of curve.wheels, the main one from the run.
+  std::vector<WheelNoise> finish(const NoiseResult& r) {
     if (pool_) pool_->finish();
-    if (nc_.contact_coupling != NoiseCase::ContactCoupling::kBogie)
-      parallel_for(results_.size(), threads_, [&](std::size_t i, int) {
-        results_[i].loop = wheel_loop_alone(results_[i], nc_, spectra);
-      });
     std::vector<WheelNoise> out;
-    for (int k : order_)
-      out.push_back(k >= 0 ? std::move(results_[k]) : main_wheel(r));
+    for (int k : order_) out.push_back(k >= 0 ? std::move(results_[k]) : main_wheel(r));
     return out;
   }
 
  private:
   WheelNoise main_wheel(const NoiseResult& r) const {
-    WheelNoise m;
-    m.state = main_state_;
-    m.mean = r.mean;
-    m.mean_force = r.mean_force;
-    if (r.mean.model()) {
-      m.adhesion_elements = r.mean.model()->adhesion_elements();
-      m.slip_elements = r.mean.model()->slip_elements();
-    }
-    m.loop = r.variants.main;
+    WheelNoise m = contact_noise(
+        noise::WheelId::leading_outer, main_state_, r.mean, nc_, r.axis.frequency,
+        nc_.use_nss ? noise::ContactCoefficients{r.creep, r.load} : noise::ContactCoefficients{});
     m.seconds = r.seconds_contact - r.seconds_curve;
-    const noise::ContactCoefficients model =
-        nc_.use_nss ? noise::ContactCoefficients{r.creep, r.load}
-                    : kalker_coefficients(r.mean.contact(), r.axis.frequency.size());
-    m.contact_receptance = main_contact_receptance(r.axis.frequency, r.mean.normal_stiffness(),
-                                                   r.mean.contact().speed, model, nc_.normal_coupling);
-    m.position = r.mean.curve().position;
     return m;
   }
 
@@ -167,24 +129,41 @@ class FurtherWheels {
   ContactCase base_;
   CurveSetup curve_;
   std::vector<double> frequency_;
-  noise::WheelContact main_state_;
-  std::vector<noise::WheelId> ids_;  // the further wheels
-  std::vector<int> order_;  // curve.wheels: index into ids_, -1 the main wheel
+  std::optional<noise::WheelContact> main_state_;
+  std::vector<noise::WheelId> ids_;    // the further wheels
+  std::vector<int> order_;             // curve.wheels: index into ids_, -1 the main wheel
   std::vector<std::size_t> schedule_;  // task -> index into ids_ (the order the tasks start in)
   std::vector<WheelNoise> results_;
   std::unique_ptr<TaskPool> pool_;  // last: joined before the members its tasks use go
 };
 
-using CurveHook = std::function<void(const ContactCase&, const CurveSetup&, const std::vector<double>&)>;
+using CurveHook =
+    std::function<void(const ContactCase&, const CurveSetup&, const std::vector<double>&)>;
 
-// run_noise_loop, calling `on_curve` with the main wheel's placed case and the curve state as soon
-// as they exist (before the main wheel's mean contact).
-NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                                 const CurveHook& on_curve);
+// Stages 1-3 of the case's main contact (the leading outer wheel's placement, or the case's one
+// contact), calling `on_curve` with the placed case and the curve state as soon as they exist
+// (before the main contact's mean contact): the further wheels start from there.
+NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on_curve);
 
 }  // namespace
 
-NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
+const noise::LoopVariants& NoiseResult::band_loops() const {
+  return refined ? refined->loops : loops;
+}
+
+namespace {
+
+// The wheel the top-level outputs report: the leading outer wheel if it is a contact, else the
+// first.
+std::size_t reported_wheel(const std::vector<WheelNoise>& wheels) {
+  for (std::size_t i = 0; i < wheels.size(); ++i)
+    if (wheels[i].wheel == noise::WheelId::leading_outer) return i;
+  return 0;
+}
+
+}  // namespace
+
+NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   const auto t0 = Clock::now();
   // solver.threads: the wheels share the threads, so each wheel's model (the main one's too) runs
   // on one while there are several (the model checks the key's range itself)
@@ -192,18 +171,18 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   const bool parallel = threads > 1 && listed_wheel_count(nc) > 1;
   if (parallel && c.threads >= 0 && c.threads <= nss::kMaxThreads) c.threads = 1;
   FurtherWheels further(nc, parallel ? threads : 1);
-  NoiseResult r = noise_loop_with_hook(
-      std::move(c), nc, reuse,
+  NoiseResult r = main_contact(
+      std::move(c), nc,
       [&](const ContactCase& base, const CurveSetup& curve, const std::vector<double>& frequency) {
         further.start(base, curve, frequency);
       });
-  // r.seconds_wheels: what the wheels took after the main wheel's loop (their work overlaps it)
+  // r.seconds_wheels: what the wheels took after the main wheel's contact (their work overlaps it)
   const auto t1 = Clock::now();
-  r.wheels = further.finish(r, *r.spectra);
-  r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, *r.spectra, r.axis.frequency);
-  if (!r.wheels.empty() && nc.contact_coupling == NoiseCase::ContactCoupling::kBogie)
-    r.bogie = std::make_shared<const noise::ContactSetLoopResult>(
-        bogie_loop(r.wheels, nc, r.axis.frequency, {}, r.patches, threads));
+  r.wheels = further.finish(r);
+  r.patches = second_patches(r.mean.curve(), r.mean.contact(), nc, r.wheels, r.axis.frequency);
+  r.reported = reported_wheel(r.wheels);
+  r.loops = contact_loop(r.wheels, nc, r.axis.frequency, r.patches, threads);
+  r.coupled_contacts = nc.contact_coupling == NoiseCase::ContactCoupling::kBogie;
   r.seconds_wheels = seconds_since(t1);
   if (nc.band_refinement > 0)
     r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
@@ -212,14 +191,9 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
   return r;
 }
 
-NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse) {
-  return noise_loop_with_hook(std::move(c), nc, reuse, {});
-}
-
 namespace {
 
-NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse* reuse,
-                                 const CurveHook& on_curve) {
+NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on_curve) {
   const auto t0 = Clock::now();
   NoiseResult r;
   r.axis = band_axis(c, nc);  // 1, the sizes before any work
@@ -230,7 +204,7 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
   options.with_model = true;
   CurvePlacement placed = resolve_curve(c, nc);  // as curve_mean_contact
   r.seconds_curve = seconds_since(t0);
-  if (on_curve) on_curve(placed.contact, placed.curve, freq);  // the further wheels from here on
+  on_curve(placed.contact, placed.curve, freq);  // the further wheels from here on
   r.mean = solve_mean_contact(std::move(placed.contact), std::move(placed.curve), options);
   const ContactCase& cc = r.mean.contact();
   const nss::LinearContactModel& model = *r.mean.model();
@@ -238,93 +212,39 @@ NoiseResult noise_loop_with_hook(ContactCase c, const NoiseCase& nc, NoiseReuse*
   r.load = model.normal_load_coefficients(freq);  // g, the same sweep
   r.f0 = model.creep_coefficients({0.0})[0];
   r.g0 = model.normal_load_coefficients({0.0})[0];
-  r.seconds_contact = seconds_since(t0);
-
-  // 4. structures once, then the loop per contact model
-  const auto t1 = Clock::now();
-  const std::shared_ptr<const noise::StructureSpectra> spectra =
-      reuse ? reuse->spectra(nc, freq)
-            : std::make_shared<const noise::StructureSpectra>(noise::structure_spectra(*nc.wheel, freq));
-  r.seconds_structures = seconds_since(t1);
-  r.variants = loop_variants(r, nc, *spectra, freq, r.creep, r.load);
   r.coupled = nc.normal_coupling && nc.use_nss && !r.load.empty();
   r.baseline_name = nc.compare == NoiseCase::Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
   r.mean_force = contact::total_forces(r.mean.patch().grid, r.mean.steady().px, r.mean.steady().py);
   r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
-  r.spectra = spectra;
-  r.seconds_total = seconds_since(t0);
+  r.seconds_contact = seconds_since(t0);
   return r;
 }
 
 }  // namespace
 
-noise::LoopVariants loop_variants(const NoiseResult& r, const NoiseCase& nc,
-                                  const noise::StructureSpectra& spectra,
-                                  const std::vector<double>& freq,
-                                  const std::vector<nss::CreepMatrix>& creep,
-                                  const std::vector<nss::LoadVector>& load,
-                                  const dynamics::RailModel* rail) {
-  using Baseline = NoiseCase::Baseline;
-  const ContactCase& cc = r.mean.contact();
-  const noise::StructuralReceptances structures = noise::structural_receptances(
-      *nc.wheel, rail ? *rail : *nc.rail, spectra, r.mean.curve().position);
-  noise::LoopVariantsInput in;
-  in.normal_stiffness = r.mean.normal_stiffness();
-  in.speed = cc.speed;
-  in.normal_coupling = nc.normal_coupling;
-  const bool kalker_needed = !nc.use_nss || nc.compare == Baseline::kKalker;
-  const noise::ContactCoefficients kalker = kalker_needed ? kalker_coefficients(cc, freq.size()) : noise::ContactCoefficients{};
-  in.model = nc.use_nss ? noise::ContactCoefficients{creep, load} : kalker;
-  if (nc.compare == Baseline::kQuasiSteady)  // the same mean state, frequency-independent
-    in.baseline = noise::quasi_steady_coefficients(r.f0, r.g0, freq.size());
-  else if (nc.compare == Baseline::kKalker && nc.use_nss)
-    in.baseline = kalker;
-  return noise::solve_loop_variants(structures, in);
-}
-
 void add_bands(NoiseResult& r, const NoiseCase& nc, int threads) {
   // 5. roughness and bands
   const std::vector<double>& centres = r.axis.centres;
   // The band means on the refined lines where noise.band_refinement added some (band_lines.hpp).
-  const noise::LoopVariants& variants = r.refined ? r.refined->variants : r.variants;
-  // The sources' effective roughness once each (the contact filter's band means are quadratures):
-  // the leading outer wheel's is the main run's (every wheel is a source: wheel i is source i).
-  std::vector<std::vector<double>> source_levels;
-  if (r.bogie) source_levels = bogie_source_levels(r.wheels, nc, centres, r.patches, threads);
-  r.source_levels = source_levels;
-  const auto main_source = std::find_if(r.wheels.begin(), r.wheels.end(), [](const WheelNoise& w) {
-    return w.state.wheel == noise::WheelId::leading_outer;
-  });
-  const std::vector<double> rough_levels =
-      r.bogie && main_source != r.wheels.end()
-          ? source_levels[static_cast<std::size_t>(main_source - r.wheels.begin())]
-          : contact_roughness(nc, r.mean).levels(centres);
-  r.bands = noise::band_levels(variants.main, centres, rough_levels);
-  if (variants.has_uncoupled()) {
-    r.uncoupled_bands = noise::band_levels(variants.uncoupled, centres, rough_levels);
-    r.coupling_difference = noise::force_level_difference(r.bands, r.uncoupled_bands);
-  }
-  if (variants.has_baseline()) r.baseline_bands = noise::band_levels(variants.baseline, centres, rough_levels);
-  if (r.bogie) {
-    const noise::ContactSetLoopResult& loop = r.refined ? *r.refined->bogie : *r.bogie;
-    const std::vector<noise::BandLevels> b = bogie_bands(loop, centres, source_levels);
-    for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].bands = b[i];
-    for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].bands = b[r.wheels.size() + k];
-  } else {
-    for (std::size_t i = 0; i < r.wheels.size(); ++i) {
-      WheelNoise& w = r.wheels[i];
-      if (w.state.wheel == noise::WheelId::leading_outer)
-        w.bands = r.bands;
-      else
-        w.bands = wheel_bands(w, r.refined ? r.refined->wheel_loops[i] : w.loop, nc, centres);
-    }
-  }
+  const noise::LoopVariants& loops = r.band_loops();
+  // The sources' effective roughness once each (the contact filter's band means are quadratures).
+  r.source_levels = bogie_source_levels(r.wheels, nc, centres, r.patches, threads);
+  auto set = [&](const noise::ContactSetLoopResult& loop, noise::BandLevels WheelNoise::*bands) {
+    const std::vector<noise::BandLevels> b = bogie_bands(loop, centres, r.source_levels);
+    for (std::size_t i = 0; i < r.wheels.size(); ++i) r.wheels[i].*bands = b[i];
+    for (std::size_t k = 0; k < r.patches.size(); ++k) r.patches[k].*bands = b[r.wheels.size() + k];
+  };
+  set(loops.main, &WheelNoise::bands);
+  if (loops.has_uncoupled()) set(loops.uncoupled, &WheelNoise::uncoupled_bands);
+  if (loops.has_baseline()) set(loops.baseline, &WheelNoise::baseline_bands);
   // 6. the sound powers (they follow the roughness too: a study's cases that share stages 1-4
   // get their own)
-  r.sound = nc.sound.on ? std::make_shared<const SoundResult>(noise_sound(r, nc, threads)) : nullptr;
+  r.sound =
+      nc.sound.on ? std::make_shared<const SoundResult>(noise_sound(r, nc, threads)) : nullptr;
 }
 
-ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::vector<double>& freq) {
+ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc,
+                                const std::vector<double>& freq) {
   for (double f : freq)  // before any work
     if (!(f > 0.0)) throw InputError("frequency.f_min", "receptances need positive frequencies");
   ReceptanceResult r;
@@ -339,7 +259,8 @@ ReceptanceResult run_receptance(ContactCase c, const NoiseCase& nc, const std::v
     const nss::LinearContactModel& model = *r.mean.model();
     const auto f = model.creep_coefficients(freq);
     r.contact_receptance = nc.normal_coupling
-                               ? noise::contact_receptances(freq, kN, cc.speed, f, model.normal_load_coefficients(freq))
+                               ? noise::contact_receptances(freq, kN, cc.speed, f,
+                                                            model.normal_load_coefficients(freq))
                                : noise::contact_receptances(freq, kN, cc.speed, f);
   } else {
     r.contact_receptance = noise::contact_receptances(

@@ -1,22 +1,22 @@
-// The noise loop for each wheel of the bogie (curve.wheels, docs/noise_loop.md Sec. 7.3): until the
-// loop couples several contacts (issue 25), every wheel's main patch runs the single-contact loop
-// ALONE on its own contact state (noise/wheel_contact.hpp): its patch, normal stiffness, steady
-// rolling, linear model, f(w) and g(w), the structures at its contact position and its band levels.
-// The wheel and rail spectra are shared (one structure_spectra for all wheels); the leading outer
-// wheel is the main run's (not repeated). Under the bogie loop (noise.contact_coupling = "bogie",
-// pipeline/bogie_noise.hpp) a wheel's loop alone is not computed: the coupled loop takes its
-// contact receptance instead.
+// One contact of the noise loop (docs/noise_loop.md Sec. 5.3, 7.3): a wheel of curve.wheels on its
+// own contact state (noise/wheel_contact.hpp), or the case's one contact when there is no curve
+// contact state (a Hertzian case). Each contact's own work: its patch, normal stiffness, steady
+// rolling, linear model, f(w) and g(w), and its contact receptance alpha_c of every loop variant
+// (noise/loop_variants.hpp). The loop then couples the contacts (pipeline/bogie_noise.hpp): all of
+// them through wheelsets and rails with noise.contact_coupling = "bogie", each alone with "none";
+// a single wheel is a loop with one contact.
 #pragma once
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "contact/forces.hpp"
 #include "noise/bands.hpp"
-#include "noise/roughness.hpp"
 #include "noise/loop.hpp"
 #include "noise/loop_variants.hpp"
+#include "noise/roughness.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/contact_case.hpp"
 #include "pipeline/mean_contact.hpp"
@@ -24,9 +24,12 @@
 
 namespace rollnoise::pipeline {
 
-/// One wheel's loop alone: its state, what the loop ran on and its levels.
+/// One contact of the loop: its wheel, state, what the loop ran on and its levels.
 struct WheelNoise {
-  noise::WheelContact state;
+  noise::WheelId wheel = noise::WheelId::leading_outer;
+  /// The wheel's contact state in the curve; empty for the case's one contact without a curve
+  /// contact state (a Hertzian case: the case's contact point, N and creepages).
+  std::optional<noise::WheelContact> state;
   /// The wheel's mean contact: the case placed at its contact with its creepages and N, patch, k_N,
   /// steady state, model
   MeanContact mean;
@@ -37,59 +40,43 @@ struct WheelNoise {
   /// concurrently, so the times of several wheels do not add up to the run's). The curve state
   /// they all start from (the bogie's curving estimate) is not in it.
   double seconds = 0.0;
-  /// The main variant (with g when normal_coupling), the wheel alone. Under the bogie loop
-  /// (noise.contact_coupling = "bogie") only the leading outer wheel's (the main run's); the
-  /// others' are not computed (the bogie loop replaces them; wheel_loop_alone gives them).
-  noise::LoopResult loop;
-  /// alpha_c of the main loop per frequency (contact frame) and the contact position it ran at:
-  /// what the loop with several contacts takes (pipeline/bogie_noise.hpp).
-  std::vector<noise::Receptance4> contact_receptance;
+  /// f(w), g(w) of the linear NSS model on the case's lines (empty with noise.contact_model =
+  /// "kalker").
+  noise::ContactCoefficients coefficients;
+  /// alpha_c of every loop variant per frequency (contact frame) and the contact position the loop
+  /// takes (pipeline/bogie_noise.hpp).
+  noise::ContactVariants receptance;
   noise::ContactPosition position;
-  noise::BandLevels bands;  ///< set by add_wheel_bands
+  /// The contact's band levels in the loop (set by add_bands): the main variant, and without the
+  /// coupling g and of the baseline when the case has them.
+  noise::BandLevels bands, uncoupled_bands, baseline_bands;
 };
 
-/// The loop of each wheel but the leading outer one (the main run's), on the shared spectra at
-/// `frequency` (its loop alone only without the bogie loop, WheelNoise::loop). `base`: the case as
-/// read (placed or not); InputError naming noise.band_max when a wheel's grid cannot resolve the
-/// frequencies.
-WheelNoise wheel_noise(const ContactCase& base, const NoiseCase& nc, const noise::WheelContact& w,
-                       const noise::StructureSpectra& spectra,
-                       const std::vector<double>& frequency);
+/// Kalker's linear theory (full adhesion) of the case's semi-axes at n frequencies: constant f,
+/// g = 0 (no load coefficients).
+noise::ContactCoefficients kalker_coefficients(const ContactCase& c, std::size_t n);
 
-/// wheel_noise without the loop alone (WheelNoise::loop empty): the wheel's contact work (mean
-/// contact, NSS model, f(w), g(w), contact receptance), which needs no spectra. Independent of the
-/// other wheels: run_noise runs the further wheels' on a pool of threads.
+/// The contact work of wheel `w` (mean contact, NSS model, f(w), g(w), the variants' contact
+/// receptances), which needs no structures. Independent of the other wheels: run_noise runs them
+/// on a pool of threads. `base`: the case as read (placed or not); InputError naming noise.band_max
+/// when a wheel's grid cannot resolve the frequencies.
 WheelNoise wheel_contact_noise(const ContactCase& base, const NoiseCase& nc,
                                const noise::WheelContact& w, const std::vector<double>& frequency);
 
-/// The wheel's single-contact loop alone (its structures at its contact position from the shared
-/// spectra, its contact receptance): WheelNoise::loop. `rail`: the rail model, if not nc.rail.
-noise::LoopResult wheel_loop_alone(const WheelNoise& w, const NoiseCase& nc,
-                                   const noise::StructureSpectra& spectra,
-                                   const dynamics::RailModel* rail = nullptr);
+/// The contact of an already solved mean contact `m` (the case's main contact), with f(w), g(w)
+/// already computed on `frequency` (`coefficients`; empty with Kalker's model).
+WheelNoise contact_noise(noise::WheelId wheel, std::optional<noise::WheelContact> state,
+                         MeanContact m, const NoiseCase& nc, const std::vector<double>& frequency,
+                         noise::ContactCoefficients coefficients);
 
-/// The wheel's alpha_c (as wheel_contact_noise computes it) at other frequencies.
-std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
-                                                         const std::vector<double>& frequency);
-/// The same from the wheel's f and g at `frequency` where the caller has them already (the NSS
-/// model's; with noise.contact_model = "kalker" Kalker's are taken, as wheel_contact_receptance).
-std::vector<noise::Receptance4> wheel_contact_receptance(const WheelNoise& w, const NoiseCase& nc,
-                                                         const std::vector<double>& frequency,
-                                                         const noise::ContactCoefficients& nss);
-/// alpha_c of the main loop: with g when `normal_coupling` and the model has one (as
-/// noise::solve_loop_variants's main variant).
-std::vector<noise::Receptance4> main_contact_receptance(const std::vector<double>& frequency,
-                                                        double normal_stiffness, double speed,
-                                                        const noise::ContactCoefficients& model,
-                                                        bool normal_coupling);
+/// The contact's alpha_c of every variant at other frequencies (f and g of its model there):
+/// `nss` are its model's f and g at `frequency` where the caller has them (else computed).
+noise::ContactVariants contact_variants_at(const WheelNoise& w, const NoiseCase& nc,
+                                           const std::vector<double>& frequency,
+                                           const noise::ContactCoefficients* nss = nullptr);
 
-/// The band levels of a wheel's loop (w.loop, or its lines refined: noise.band_refinement) with
-/// its contact filter's semi-axes and the case's roughness.
 /// The effective roughness (the case's wheel and rail roughness, its contact filter on the patch
 /// semi-axes a, b) of the mean contact `m` at its rolling speed: what each contact's bands take.
 noise::ContactRoughness contact_roughness(const NoiseCase& nc, const MeanContact& m);
-
-noise::BandLevels wheel_bands(const WheelNoise& w, const noise::LoopResult& loop,
-                              const NoiseCase& nc, const std::vector<double>& centres);
 
 }  // namespace rollnoise::pipeline

@@ -35,7 +35,7 @@ constexpr int kMaxWorkers = 256;
 // Counters the workers share with the parent (anonymous shared memory: they are separate processes).
 struct Shared {
   std::atomic<long> next_group{0}, done{0}, failed{0};
-  std::atomic<long> loops_computed{0}, loops_reused{0}, spectra_computed{0}, spectra_reused{0};
+  std::atomic<long> loops_computed{0}, loops_reused{0};
   std::atomic<long> current[kMaxWorkers];  ///< the case each worker is running, -1: none
   /// Several worker processes share the cores: a case whose solver.threads is automatic (0) runs
   /// on one thread (its wheels one after the other) instead of one per core in every worker.
@@ -83,7 +83,7 @@ void record_failure(const pipeline::StudyPlan& plan, std::size_t index, const st
 // The cases of one reuse group, in this process: stages 1-4 once (when reusing), each case's bands,
 // each case's file.
 void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
-               const std::vector<std::size_t>& group, pipeline::NoiseReuse* reuse, Shared& shared, int slot,
+               const std::vector<std::size_t>& group, bool reuse, Shared& shared, int slot,
                const std::function<void()>& after_case) {
   std::optional<pipeline::NoiseResult> loop;
   for (std::size_t index : group) {
@@ -101,7 +101,7 @@ void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::Stud
         io::within_case(reader, [&] { pipeline::add_bands(r, in.noise); });
       } else {
         // as `rollnoise noise`: the main loop, every wheel of curve.wheels (/noise/wheels) and the bands
-        r = io::within_case(reader, [&] { return pipeline::run_noise(std::move(in.contact), in.noise, reuse); });
+        r = io::within_case(reader, [&] { return pipeline::run_noise(std::move(in.contact), in.noise); });
         ++shared.loops_computed;
         if (reuse) loop = r;
       }
@@ -129,11 +129,8 @@ void run_group(const pipeline::StudyPlan& plan, const std::vector<pipeline::Stud
 void work(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
           const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot,
           const std::function<void()>& after_case) {
-  pipeline::NoiseReuse spectra;
   for (long g = shared.next_group++; g < long(groups.size()); g = shared.next_group++)
-    run_group(plan, cases, groups[g], reuse ? &spectra : nullptr, shared, slot, after_case);
-  shared.spectra_computed += spectra.spectra_computed();
-  shared.spectra_reused += spectra.spectra_reused();
+    run_group(plan, cases, groups[g], reuse, shared, slot, after_case);
 }
 
 // A worker process in `slot`; it dies with the parent (a killed study leaves no orphans).
@@ -157,8 +154,6 @@ void add_counts(RunSummary& s, const Shared& shared) {
   s.failed = shared.failed;
   s.loops_computed = shared.loops_computed;
   s.loops_reused = shared.loops_reused;
-  s.spectra_computed = shared.spectra_computed;
-  s.spectra_reused = shared.spectra_reused;
 }
 
 // Byte K of OUTPUT/.lock locked (fcntl, exclusive, released when the run ends however it ends) for

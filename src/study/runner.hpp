@@ -12,10 +12,8 @@
 // Reuse (what a case does not need to compute again):
 //   - cases that differ only in roughness.* keys share the curve state, the contact, the creep
 //     sweep and the loop (stages 1-4 of pipeline/noise_pipeline.hpp): the study runs them as one
-//     group in one worker, computes the loop once and adds each case's bands;
-//   - cases with the same wheel, track and frequencies share the wheel's modal and the rail's
-//     receptances (pipeline::NoiseReuse), whatever their contact position.
-// Both give the same bits as computing again.
+//     group in one worker, computes the loop once and adds each case's bands (the same bits as
+//     computing again).
 #pragma once
 
 #include <cstddef>
@@ -44,7 +42,6 @@ struct RunSummary {
   long completed = 0;  ///< run now, complete
   long failed = 0;
   long loops_computed = 0, loops_reused = 0;      ///< stages 1-4
-  long spectra_computed = 0, spectra_reused = 0;  ///< wheel and rail receptances
   double seconds = 0.0;
   /// The cases that failed in this run, with their messages (also in their .error files).
   std::vector<std::pair<std::size_t, std::string>> failures;

@@ -692,3 +692,49 @@ TEST(ValidateCommand, NormalLoadVariationIsComparedWithTheLinearModelsLoadInput)
   EXPECT_NEAR(fhi - flo, 0.3 * 2 * 981.0, 0.03 * 0.3 * 2 * 981.0) << "Fx follows mu N";
   EXPECT_LT(rms[0], 1e-3) << "linear model vs unsteady solver, Fx";
 }
+
+namespace {
+
+// A string attribute of a group ("(missing)" without it).
+std::string read_group_attribute(hid_t file, const char* group, const char* name) {
+  if (H5Aexists_by_name(file, group, name, H5P_DEFAULT) <= 0) return "(missing)";
+  const hid_t attr = H5Aopen_by_name(file, group, name, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t type = H5Aget_type(attr);
+  std::string s(H5Tget_size(type), '\0');
+  H5Aread(attr, type, s.data());
+  H5Tclose(type);
+  H5Aclose(attr);
+  return s.c_str();
+}
+
+}  // namespace
+
+// One answer per wheel: the top-level bands of `noise` are the answer of
+// the loop the case asks for (the four wheels coupled by default) for the leading outer wheel,
+// the same numbers as its group /noise/wheels/leading_outer (exactly), named in /noise's
+// attributes and in the printed table; with curve.wheels naming another wheel alone, the top
+// level is that wheel's.
+TEST(NoiseCommand, TopLevelBandsAreTheReportedWheelsAnswerInTheCasesLoop) {
+  auto check = [](const std::string& wheels, const std::string& reported) {
+    const fs::path out = temp_dir() / ("noise_one_answer_" + reported + ".h5");
+    std::string set = " --set noise.band_max=630.0 --set noise.points_per_band=12";
+    if (!wheels.empty()) set += " --set 'curve.wheels=" + wheels + "'";
+    const Invocation r = run("noise " + curve_case() + set + " -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("  " + reported + ", "), std::string::npos) << r.output;
+    const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const std::string g = "/noise/wheels/" + reported;
+    for (const char* d : {"/bands/force_level", "/bands/velocity_level"}) {
+      const auto top = read_doubles(f, (std::string("/noise") + d).c_str());
+      const auto own = read_doubles(f, (g + d).c_str());
+      ASSERT_FALSE(top.empty()) << d;
+      EXPECT_EQ(top, own) << d;
+    }
+    EXPECT_EQ(read_group_attribute(f, "/noise", "wheel"), reported);
+    EXPECT_NE(read_group_attribute(f, "/noise", "loop").find(reported), std::string::npos);
+    H5Fclose(f);
+  };
+  check("", "leading_outer");
+  check("[\"trailing_inner\"]", "trailing_inner");
+}

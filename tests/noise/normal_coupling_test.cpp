@@ -47,6 +47,23 @@ rn::LoopVariantsInput spring_damper_input(const std::vector<double>& freq) {
   return in;
 }
 
+// The variants of one contact (contact_variants) through the single-contact loop (solve_loop).
+struct SingleContactVariants {
+  rn::LoopResult main, uncoupled, baseline;
+  bool has_uncoupled() const { return !uncoupled.frequency.empty(); }
+  bool has_baseline() const { return !baseline.frequency.empty(); }
+};
+SingleContactVariants solve_variants(const rn::StructuralReceptances& s,
+                                     const rn::LoopVariantsInput& in,
+                                     const rn::LoopOptions& options = {}) {
+  const rn::ContactVariants c = rn::contact_variants(s.frequency, in);
+  SingleContactVariants v;
+  v.main = rn::solve_loop(s, c.main, options);
+  if (!c.uncoupled.empty()) v.uncoupled = rn::solve_loop(s, c.uncoupled, options);
+  if (!c.baseline.empty()) v.baseline = rn::solve_loop(s, c.baseline, options);
+  return v;
+}
+
 }  // namespace
 
 // From the receptance alone: a force (Fz, F~t) applied to the contact deforms it by e = -alpha_c F
@@ -120,8 +137,9 @@ TEST(NormalCoupling, LoopSatisfiesCreepLawWithNormalLoad) {
   rn::LoopVariantsInput in = spring_damper_input(freq);
   in.model.load.assign(freq.size(),
                        rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
-  in.options.roughness = cdouble(0.3e-6, -0.4e-6);
-  const rn::LoopVariants v = rn::solve_loop_variants(s, in);
+  rn::LoopOptions options;
+  options.roughness = cdouble(0.3e-6, -0.4e-6);
+  const SingleContactVariants v = solve_variants(s, in, options);
   ASSERT_TRUE(v.has_uncoupled());
   EXPECT_FALSE(v.has_baseline());
   double worst = 0.0, worst_n = 0.0, worst_off = 0.0, change = 0.0;
@@ -131,8 +149,8 @@ TEST(NormalCoupling, LoopSatisfiesCreepLawWithNormalLoad) {
     const Eigen::Vector3cd xi = creepage_from_loop(s, k, F, &e);
     const Eigen::Vector3cd law = -in.model.creep[k] * xi + in.model.load[k] * F(0);
     worst = std::max(worst, (law - F.tail<3>()).norm() / F.tail<3>().norm());
-    worst_n = std::max(worst_n, std::abs(e(0) + F(0) / in.normal_stiffness + in.options.roughness) /
-                                    std::abs(in.options.roughness));
+    worst_n = std::max(worst_n, std::abs(e(0) + F(0) / in.normal_stiffness + options.roughness) /
+                                    std::abs(options.roughness));
     // the uncoupled result satisfies the law with g = 0
     const rn::Vector4c& U = v.uncoupled.force[k];
     const Eigen::Vector3cd xu = creepage_from_loop(s, k, U, nullptr);
@@ -161,7 +179,7 @@ TEST(NormalCoupling, ZeroLoadCoefficientsGiveTheUncoupledLoop) {
   in.model.load.assign(freq.size(), rn::LoadCoefficients::Zero());
   in.baseline = rn::constant_coefficients(kalker().cast<cdouble>(), rn::LoadCoefficients::Zero(),
                                           freq.size());
-  const rn::LoopVariants v = rn::solve_loop_variants(s, in);
+  const SingleContactVariants v = solve_variants(s, in);
   const rn::LoopResult old =
       rn::solve_loop(s, rn::contact_receptances(freq, in.normal_stiffness, kSpeed, creep));
   const rn::LoopResult kalker_old = rn::solve_loop(
@@ -177,10 +195,10 @@ TEST(NormalCoupling, ZeroLoadCoefficientsGiveTheUncoupledLoop) {
   // coupling off, or a model without g: no uncoupled variant
   in.normal_coupling = false;
   in.model.load.assign(freq.size(), rn::LoadCoefficients(0.0, 0.3, 0.0));
-  EXPECT_FALSE(rn::solve_loop_variants(s, in).has_uncoupled());
+  EXPECT_FALSE(solve_variants(s, in).has_uncoupled());
   in.normal_coupling = true;
   in.model.load.clear();
-  EXPECT_FALSE(rn::solve_loop_variants(s, in).has_uncoupled());
+  EXPECT_FALSE(solve_variants(s, in).has_uncoupled());
 }
 
 // Saturated contact (full slip at the mean lateral creepage xi_y, no spin, N = 98.1 kN, mu = 0.3):
@@ -206,7 +224,7 @@ TEST(NormalCoupling, SaturatedContactLateralForceFollowsMuScaledNormalForce) {
   const rn::LoadCoefficients g(0.0, Fy_mean / kN, 0.0);
   rn::LoopVariantsInput in = spring_damper_input({});
   in.model = rn::constant_coefficients(f.cast<cdouble>(), g, freq.size());
-  const rn::LoopVariants v = rn::solve_loop_variants(s, in);
+  const SingleContactVariants v = solve_variants(s, in);
   const std::vector<double> flat(centres.size(), 0.0);  // roughness level cancels in the check
   const rn::BandLevels coupled = rn::band_levels(v.main, centres, flat);
   const rn::BandLevels uncoupled = rn::band_levels(v.uncoupled, centres, flat);
@@ -234,4 +252,43 @@ TEST(NormalCoupling, QuasiSteadyCoefficientsAreRealAndConstant) {
   EXPECT_TRUE(c.creep[3] == f0 && c.load[2] == g0);
   f0(1, 1) += cdouble(0.0, 1e-3 * f0(1, 1).real());
   EXPECT_THROW(rn::quasi_steady_coefficients(f0, g0, 4), rollnoise::NumericalError);
+}
+
+// One loop: a single wheel is a contact set of one. The loop variants of solve_loop_variants on a
+// set with one contact (main with g, uncoupled, a Kalker baseline) equal the single-contact
+// loop's (solve_loop on the same alpha_c) to 1e-10 relative, forces and velocities.
+TEST(NormalCoupling, ContactSetOfOneGivesTheSingleContactVariants) {
+  const std::vector<double> freq = log_frequencies(80.0, 4000.0, 13);
+  const rn::StructuralReceptances s =
+      rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
+  rn::LoopVariantsInput in = spring_damper_input(freq);
+  in.model.load.assign(freq.size(),
+                       rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
+  in.baseline = rn::constant_coefficients(kalker().cast<cdouble>(), rn::LoadCoefficients::Zero(),
+                                          freq.size());
+  const SingleContactVariants single = solve_variants(s, in);
+  rn::ContactPoint c;
+  c.position = kCurvePosition;
+  c.rail_x = rail_midspan().position();
+  const rn::ContactSetStructures set =
+      rn::contact_set_structures(wheel(), rail_midspan(), {c}, freq, rn::CrossCoupling::none());
+  const rn::LoopVariants v = rn::solve_loop_variants(set, {rn::contact_variants(freq, in)},
+                                                     rn::independent_sources({true}));
+  ASSERT_TRUE(v.has_uncoupled() && v.has_baseline());
+  double worst = 0.0;
+  auto compare = [&](const rn::ContactSetLoopResult& x, const rn::LoopResult& y) {
+    const rn::LoopResult one = rn::contact_response(x, 0, 0);
+    for (std::size_t k = 0; k < freq.size(); ++k)
+      worst = std::max(
+          {worst, (one.force[k] - y.force[k]).norm() / y.force[k].norm(),
+           (one.wheel_velocity[k] - y.wheel_velocity[k]).norm() / y.wheel_velocity[k].norm(),
+           (one.rail_velocity[k] - y.rail_velocity[k]).norm() / y.rail_velocity[k].norm()});
+  };
+  compare(v.main, single.main);
+  compare(v.uncoupled, single.uncoupled);
+  compare(v.baseline, single.baseline);
+  std::printf(
+      "contact set of one vs single-contact loop, three variants: max relative difference %.2e\n",
+      worst);
+  EXPECT_LT(worst, 1e-10);
 }

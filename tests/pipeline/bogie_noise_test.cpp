@@ -29,12 +29,14 @@ double difference_relative_to_first(const noise::Vector4c& a, const noise::Vecto
   return (a - b).norm() / std::max(a.norm(), 1e-300);
 }
 
-// Four wheels of the 300 m curve (continuous support: the point receptance is the same at every
-// rail position, so the trailing axle's rail_x changes nothing): the bogie loop without cross
-// terms gives each wheel's forces and velocities of its loop alone to 1e-10 (relative, per
-// frequency) and its band levels to 1e-10 dB (both on the case's lines: noise.band_refinement = 0,
+// One loop: four wheels of the 300 m curve with noise.contact_coupling = "none" (continuous
+// support: the point receptance is the same at every rail position, so the trailing axle's rail_x
+// changes nothing): the pipeline's loop of the four contacts gives each wheel's forces and
+// velocities of its single-contact loop (loop.hpp, solve_loop) to 1e-10 (relative, per frequency)
+// and its band levels to 1e-10 dB (both on the case's lines: noise.band_refinement = 0,
 // so that the band means compare the loops, not the lines). The case's FE wheel (each wheel's modes
-// at its own contact on the tread) on a coarse mesh (20 mm, modes to 3 kHz: the bands end at 1 kHz).
+// at its own contact on the tread) on a coarse mesh (20 mm, modes to 3 kHz: the bands end at 1
+// kHz).
 TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
   const io::NoiseInputs in =
       read_case("curve_300m.toml",
@@ -42,26 +44,29 @@ TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
                  "wheel.mesh_size=0.02", "wheel.f_max=3000", "noise.band_refinement=0"});
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_EQ(r.wheels.size(), 4u);
-  ASSERT_FALSE(r.bogie);
-  const noise::ContactSetLoopResult alone =
-      pipeline::bogie_loop(r.wheels, in.noise, r.axis.frequency, noise::CrossCoupling::none());
-  const std::vector<noise::BandLevels> bands =
-      pipeline::bogie_bands(alone, r.wheels, in.noise, r.axis.centres);
+  ASSERT_FALSE(r.coupled_contacts);
   double worst = 0.0, worst_db = 0.0;
   for (int a = 0; a < 4; ++a) {
-    const noise::LoopResult& single = r.wheels[a].loop;
-    const noise::LoopResult set = noise::contact_response(alone, a, a);
+    // the wheel's single-contact loop (loop.hpp) on its own structures and alpha_c
+    const pipeline::WheelNoise& w = r.wheels[a];
+    const noise::LoopResult single =
+        noise::solve_loop(noise::structural_receptances(*in.noise.wheel, *in.noise.rail, w.position,
+                                                        r.axis.frequency),
+                          w.receptance.main);
+    const noise::LoopResult set = noise::contact_response(r.loops.main, a, a);
     for (std::size_t k = 0; k < single.frequency.size(); ++k) {
       worst = std::max(worst, difference_relative_to_first(set.force[k], single.force[k]));
-      worst = std::max(worst, difference_relative_to_first(set.wheel_velocity[k],
-                                                           single.wheel_velocity[k]));
-      worst = std::max(worst, difference_relative_to_first(set.rail_velocity[k],
-                                                           single.rail_velocity[k]));
+      worst = std::max(
+          worst, difference_relative_to_first(set.wheel_velocity[k], single.wheel_velocity[k]));
+      worst = std::max(worst,
+                       difference_relative_to_first(set.rail_velocity[k], single.rail_velocity[k]));
     }
-    for (std::size_t j = 0; j < bands[a].centre.size(); ++j)
+    const noise::BandLevels bands =
+        noise::band_levels(single, r.axis.centres, pipeline::contact_roughness(in.noise, w.mean));
+    for (std::size_t j = 0; j < bands.centre.size(); ++j)
       for (int i = 0; i < 4; ++i)
-        worst_db = std::max(
-            worst_db, std::abs(bands[a].force_level[j][i] - r.wheels[a].bands.force_level[j][i]));
+        worst_db =
+            std::max(worst_db, std::abs(bands.force_level[j][i] - w.bands.force_level[j][i]));
   }
   EXPECT_LT(worst, 1e-10);
   EXPECT_LT(worst_db, 1e-10);
@@ -79,7 +84,7 @@ TEST(BogieNoise, TangentTrackGivesEqualLevelsOnBothSides) {
   ASSERT_EQ(in.noise.contact_coupling, pipeline::NoiseCase::ContactCoupling::kBogie);
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_EQ(r.wheels.size(), 4u);
-  ASSERT_TRUE(r.bogie);
+  ASSERT_TRUE(r.coupled_contacts);
   double worst = 0.0, coupling = 0.0;
   for (int axle = 0; axle < 2; ++axle) {
     const noise::BandLevels& outer = r.wheels[2 * axle].bands;
@@ -94,9 +99,13 @@ TEST(BogieNoise, TangentTrackGivesEqualLevelsOnBothSides) {
       }
   }
   // the coupling changes the levels (so the check is not trivially of the single loops)
-  for (std::size_t j = 0; j < r.bands.centre.size(); ++j)
-    coupling = std::max(coupling,
-                        std::abs(r.wheels[0].bands.force_level[j][0] - r.bands.force_level[j][0]));
+  const noise::LoopVariants alone = pipeline::contact_loop(
+      r.wheels, in.noise, r.axis.frequency, {}, 1, nullptr, noise::CrossCoupling::none());
+  const std::vector<noise::BandLevels> bands_alone =
+      pipeline::bogie_bands(alone.main, r.wheels, in.noise, r.axis.centres);
+  for (std::size_t j = 0; j < bands_alone[0].centre.size(); ++j)
+    coupling = std::max(
+        coupling, std::abs(r.wheels[0].bands.force_level[j][0] - bands_alone[0].force_level[j][0]));
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(coupling, 0.01);
   std::printf(

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
+#include "../noise/noise_fixture.hpp"
 #include "core/errors.hpp"
 #include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/noise_pipeline.hpp"
-#include "../noise/noise_fixture.hpp"
 
 namespace {
 
@@ -40,7 +40,6 @@ double relative_difference(const noise::Vector4c& a, const noise::Vector4c& b) {
   return (a - b).norm() / std::max(b.norm(), 1e-300);
 }
 
-
 class SecondPatch : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -65,8 +64,8 @@ TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
   ASSERT_TRUE(r_->mean.curve().state && r_->mean.curve().state->two_point);
   ASSERT_EQ(r_->patches.size(), 1u);
   const noise::CurveContactState& s = *r_->mean.curve().state;
-  const noise::WheelContact& p = r_->patches[0].state;
-  const noise::WheelContact& tread = r_->wheels[0].state;
+  const noise::WheelContact& p = *r_->patches[0].state;
+  const noise::WheelContact& tread = *r_->wheels[0].state;
   EXPECT_EQ(p.wheel, noise::WheelId::leading_outer);
   EXPECT_GE(p.contact.contact_angle, s.flange_angle - 0.1);
   EXPECT_LT(p.contact.wheel_s, tread.contact.wheel_s);  // towards the flange (field side > 0)
@@ -86,17 +85,20 @@ TEST_F(SecondPatch, FlangePatchSitsOnTheFlankUnderTheFlangeLoad) {
 // each wheel's forces and velocities equal its loop alone to 1e-10 (relative, per frequency), and
 // the second patch, without a roughness source of its own, carries no force at all.
 TEST_F(SecondPatch, WithoutCouplingTheTreadContactsAreTheirSingleLoopsAndThePatchIsAtRest) {
-  const noise::ContactSetLoopResult alone = pipeline::bogie_loop(
-      r_->wheels, in_->noise, r_->axis.frequency, noise::CrossCoupling::none(), r_->patches);
+  const noise::ContactSetLoopResult alone =
+      pipeline::contact_loop(r_->wheels, in_->noise, r_->axis.frequency, r_->patches, 1, nullptr,
+                             noise::CrossCoupling::none())
+          .main;
   ASSERT_EQ(alone.contacts(), 3);
   ASSERT_EQ(alone.sources(), 2);
   double worst = 0.0, patch = 0.0;
   for (int a = 0; a < 2; ++a) {
-    // under the bogie loop only the main run's wheel keeps its loop alone (WheelNoise::loop)
+    // the wheel's single-contact loop (loop.hpp); both wheels on the leading axle
+    const pipeline::WheelNoise& w = r_->wheels[a];
     const noise::LoopResult single =
-        r_->wheels[a].loop.frequency.empty()
-            ? pipeline::wheel_loop_alone(r_->wheels[a], in_->noise, *r_->spectra)
-            : r_->wheels[a].loop;
+        noise::solve_loop(noise::structural_receptances(*in_->noise.wheel, *in_->noise.rail,
+                                                        w.position, r_->axis.frequency),
+                          w.receptance.main);
     const noise::LoopResult set = noise::contact_response(alone, a, a);
     for (std::size_t k = 0; k < single.frequency.size(); ++k) {
       worst = std::max(worst, relative_difference(set.force[k], single.force[k]));
@@ -114,14 +116,14 @@ TEST_F(SecondPatch, WithoutCouplingTheTreadContactsAreTheirSingleLoopsAndThePatc
 // Coupled, the flange patch is driven through the wheel and the rail: its force is not zero, and
 // the tread contact's levels move (the coupling does something).
 TEST_F(SecondPatch, CoupledPatchIsDrivenThroughTheStructures) {
-  ASSERT_TRUE(r_->bogie);
-  ASSERT_EQ(r_->bogie->contacts(), 3);
+  ASSERT_TRUE(r_->coupled_contacts);
+  ASSERT_EQ(r_->loops.main.contacts(), 3);
   double patch = 0.0;
-  for (const Eigen::MatrixXcd& F : r_->bogie->force)
+  for (const Eigen::MatrixXcd& F : r_->loops.main.force)
     patch = std::max(patch, F.middleRows(8, 4).norm());
   EXPECT_GT(patch, 0.0);
   const std::vector<noise::BandLevels> off =
-      pipeline::bogie_bands(pipeline::bogie_loop(r_->wheels, in_->noise, r_->axis.frequency),
+      pipeline::bogie_bands(pipeline::contact_loop(r_->wheels, in_->noise, r_->axis.frequency).main,
                             r_->wheels, in_->noise, r_->axis.centres);
   double moved = 0.0;
   for (std::size_t j = 0; j < off[0].centre.size(); ++j)
