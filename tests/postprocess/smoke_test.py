@@ -81,6 +81,10 @@ def main():
               *COARSE, "--set", "transient.duration=0.002")
     rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "noise.h5", *COARSE,
               "--set", "noise.points_per_band=4", "--set", "track.support=\"continuous\"")
+    # the bogie: per-wheel groups /noise/wheels/* (the table-wheel profile case, coarse: ~1.5 s)
+    rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_table.toml"), "-o", "noise_wheels.h5",
+              "--set", "grid.nx=12", "--set", "grid.ny=10", "--set", "noise.points_per_band=4",
+              "--set", "track.support=\"continuous\"", "--set", "noise.band_max=800")
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
@@ -103,7 +107,14 @@ def main():
         ("plot_creep.py", [j("creep.h5"), "--entries", "11,22,23,33", "-o", j("creep.png")], ["creep.png"]),
         ("plot_statespace.py", [j("statespace.h5"), "-o", j("statespace.png")], ["statespace.png"]),
         ("plot_validate.py", [j("validate.h5"), "--prefix", j("val")], ["val_time.png", "val_spectra.png"]),
-        ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png"]),
+        ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png",
+                                                                   "noise_velocity.png", "noise_sound.png"]),
+        ("plot_noise.py", [j("noise_wheels.h5"), "--wheel", "trailing_inner", "--prefix", j("noise_ti")],
+         ["noise_ti_bands.png", "noise_ti_wheels.png", "noise_ti_sound.png"]),
+        # two runs overlaid (different band ranges), labelled
+        ("plot_noise.py", [j("noise.h5"), j("noise_wheels.h5"), "--label", "Hertz", "--label", "bogie", "--prefix",
+                           j("noise_cmp")], ["noise_cmp_bands.png", "noise_cmp_transfer.png", "noise_cmp_velocity.png",
+                                             "noise_cmp_wheels.png", "noise_cmp_sound.png"]),
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
@@ -148,6 +159,13 @@ def main():
         lines = err.strip().splitlines()
         check(f"{script} {os.path.basename(bad)} refused", status == 2 and len(lines) == 1 and bad in lines[0]
               and "Traceback" not in err, f"status {status}, stderr {err!r}")
+    # several files: a wrong one among them, or --label not once per file
+    for script, args, bad in [("plot_noise.py", [j("noise.h5"), j("not_hdf5.h5")], j("not_hdf5.h5")),
+                              ("plot_noise.py", [j("noise.h5"), j("noise_wheels.h5"), "--label", "one"], "--label")]:
+        status, err = plot(script, *args)
+        lines = err.strip().splitlines()
+        check(f"{script} {' '.join(os.path.basename(a) for a in args)} refused", status == 2 and len(lines) == 1
+              and bad in lines[0] and "Traceback" not in err, f"status {status}, stderr {err!r}")
     # the same through a real process: the exit status a shell sees
     r = subprocess.run(["/usr/bin/python3", os.path.join(POST, "plot_noise.py"), j("not_hdf5.h5")],
                        capture_output=True, text=True)
