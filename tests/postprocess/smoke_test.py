@@ -91,6 +91,8 @@ def main():
     rollnoise(binary, work, "receptance", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "rail_waves.h5",
               *COARSE, "--set", "frequency.count=4", "--set", "track.support=\"continuous\"",
               "--set", "track.model=\"waveguide\"")
+    rollnoise(binary, work, "receptance", os.path.join(CASES, "tangent.toml"), "-o", "receptance.h5", *COARSE,
+              "--set", "frequency.count=40")
     with open(os.path.join(work, "study.toml"), "w") as f:  # 4 cases of the small study case
         f.write(f'base = "{os.path.join(ROOT, "tests/data/study/curve_small.toml")}"\noutput = "study"\n[axes]\n'
                 '"curve.radius" = [300.0, 600.0]\n"roughness.wheel" = ["cast-iron", "disc-braked"]\n')
@@ -119,6 +121,9 @@ def main():
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
         ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
+        ("plot_receptance.py", [j("receptance.h5"), "-o", j("receptance.png")], ["receptance.png"]),
+        ("plot_receptance.py", [j("receptance.h5"), j("rail_waves.h5"), "--label", "tangent", "--label", "waveguide",
+                                "--entries", "11,33,13", "-o", j("receptance_cmp.png")], ["receptance_cmp.png"]),
         ("plot_study.py", [j("study/study.h5"), "--x", "curve.radius", "--curves", "roughness.wheel", "-o",
                            j("study.png")], ["study.png"]),
         # runs `rollnoise squeal` itself: 2 x 2 runs on a coarse grid (~1 s)
@@ -151,7 +156,7 @@ def main():
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
-                                "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py",
+                                "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_receptance.py", "plot_bench.py", "plot_study.py",
                                 "plot_modes.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
