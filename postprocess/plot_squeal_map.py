@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Curve-squeal map: runs `rollnoise squeal` over curve radius x one friction parameter (--set on a
 case), collects /squeal/* of every run and plots the occurrence (stable / squeal / contact alone
-unstable) and the largest growth rate Re s with the labels of the unstable modes (docs/squeal.md).
+unstable) and the largest growth rate Re s with the labels of the unstable modes (docs/squeal.md);
+legends explain the cell colours, titles name the contact the map shows (the top-level /squeal: the
+leading outer wheel's single contact, as the files' `loop` attribute says) and the wheelsets' loop.
 
   /usr/bin/python3 postprocess/plot_squeal_map.py [--case cases/squeal_150m.toml]
       [--radii 100,150,200,300,500,1000] [--param friction.decay --values 0.5,1,2,3,4]
@@ -21,6 +23,7 @@ import argparse
 import concurrent.futures
 import csv
 import os
+import re
 import subprocess
 
 import numpy as np
@@ -30,6 +33,8 @@ import rollnoise_h5 as rh
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STABLE, SQUEAL, CONTACT_UNSTABLE, FAILED = 0, 1, 2, 3
 CLASS_NAMES = ["stable", "squeal", "contact alone unstable", "failed"]
+PARAM_UNITS = {"friction.mu": "-", "friction.decay": "s/m", "friction.kinetic_ratio": "-",
+               "curve.cant_deficiency": "m", "rolling.speed": "m/s"}  # the axis unit of the varied key
 
 
 def floats(text):
@@ -75,12 +80,13 @@ def wheel_roots(path):
     """The unstable roots of the wheelsets (/squeal/wheels/unstable) by wheel, and the wheelsets left
     out (attribute left_out); empty when the run has no per-wheelset squeal."""
     import h5py
-    out = {"wheel_modes": {}, "left_out": "", "wheelsets": False}
+    out = {"wheel_modes": {}, "left_out": "", "wheelsets": False, "loop": ""}
     with h5py.File(path, "r") as f:
         if "/squeal/wheels" not in f:
             return out
         g = f["/squeal/wheels"]
         out["wheelsets"] = True
+        out["loop"] = rh.text(g.attrs.get("loop", ""))
         out["left_out"] = rh.text(g.attrs["left_out"]) if "left_out" in g.attrs else ""
         if "unstable" in g and "wheel" in g["unstable"]:
             u = g["unstable"]
@@ -153,47 +159,69 @@ def main():
     import matplotlib.pyplot as plt
     from matplotlib.colors import ListedColormap
 
+    from matplotlib.patches import Patch
+
     nr, nv = len(radii), len(values)
     cls = np.array([c["class"] for c in cells]).reshape(nr, nv)
     growth = np.array([c["growth"] for c in cells]).reshape(nr, nv)
     with_wheels = any(c.get("wheelsets") for c in cells)
-    fig, axes = plt.subplots(1, 3 if with_wheels else 2, figsize=(19.5 if with_wheels else 13, 5.5))
+    # which contact the top-level /squeal is: the file's `loop` attribute of /squeal/wheels says so
+    loop = next((c["loop"] for c in cells if c.get("loop")), "")
+    m = re.search(r"top-level /squeal is (the [^;.]*)", loop)
+    top = m.group(1) if m else "the case's single contact"
+    plt.rcParams.update({"font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10})
+    cell_font = 9  # >= 9 pt at the saved dpi
+    fig, axes = plt.subplots(1, 3 if with_wheels else 2, figsize=(19 if with_wheels else 12.5, 7))
     ax1, ax2 = axes[0], axes[1]
-    cmap = ListedColormap(["#9ecae1", "#de2d26", "#fdae6b", "#bdbdbd"])
-    ax1.imshow(cls.T, origin="lower", cmap=cmap, vmin=-0.5, vmax=3.5, aspect="auto")
+    class_colours = ["#c6dbef", "#fc9272", "#fdd0a2", "#d9d9d9"]  # light: black text stays readable
+    ax1.imshow(cls.T, origin="lower", cmap=ListedColormap(class_colours), vmin=-0.5, vmax=3.5, aspect="auto")
     for i in range(nr):
         for j in range(nv):
             c = cells[i * nv + j]
             txt = CLASS_NAMES[c["class"]] if c["class"] != SQUEAL else "\n".join(c["modes"][:3])
-            ax1.text(i, j, txt, ha="center", va="center", fontsize=6)
-    ax1.set_title("squeal occurrence (labels: unstable wheel modes)")
-    im = ax2.imshow(growth.T, origin="lower", cmap="coolwarm", aspect="auto",
-                    vmin=-np.nanmax(np.abs(growth)) if np.isfinite(growth).any() else -1,
-                    vmax=np.nanmax(np.abs(growth)) if np.isfinite(growth).any() else 1)
-    fig.colorbar(im, ax=ax2, label="largest Re s (1/s; > 0: growing)")
+            ax1.text(i, j, txt, ha="center", va="center", fontsize=cell_font)
+    ax1.set_title(f"squeal occurrence\n{top}\n(text: unstable wheel modes, frequency)")
+    ax1.legend([Patch(facecolor=c, edgecolor="0.3") for c in class_colours], CLASS_NAMES, loc="upper center",
+               bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=9, title="cell colour", title_fontsize=9)
+    g_max = np.nanmax(np.abs(growth)) if np.isfinite(growth).any() else 1.0
+    im = ax2.imshow(growth.T, origin="lower", cmap="coolwarm", aspect="auto", vmin=-g_max, vmax=g_max)
+    fig.colorbar(im, ax=ax2, label="largest Re s [1/s] (> 0: growing, squeal)")
     for i in range(nr):
         for j in range(nv):
             if np.isfinite(growth[i, j]):
-                ax2.text(i, j, f"{growth[i, j]:.3g}\n{cells[i * nv + j]['frequency']:.0f} Hz", ha="center",
-                         va="center", fontsize=6)
-    ax2.set_title("largest growth rate of the coupled roots")
+                strong = abs(growth[i, j]) > 0.6 * g_max  # white on the saturated colours
+                ax2.text(i, j, f"{growth[i, j]:.3g} 1/s\n{cells[i * nv + j]['frequency']:.0f} Hz", ha="center",
+                         va="center", fontsize=cell_font, color="w" if strong else "k")
+    ax2.set_title(f"largest growth rate of the coupled roots\n{top}\n(text: Re s and the root's frequency)")
     if with_wheels:  # which wheels squeal (the wheelsets with both contacts)
         ax3 = axes[2]
         wcls = np.array([wheel_class(c) for c in cells]).reshape(nr, nv)
-        colours = ["#9ecae1", "#de2d26", "#31a354", "#756bb1", "#e6550d", "#636363"]
-        ax3.imshow(wcls.T % 6, origin="lower", cmap=ListedColormap(colours), vmin=-0.5, vmax=5.5, aspect="auto")
+        wheel_colours = ["#c6dbef", "#fc9272", "#a1d99b", "#bcbddc", "#fdd0a2", "#fa9fb5"]
+        wheel_names = ["no wheel squeals", "LO only", "LI only", "TO only", "TI only", "several wheels"]
+        ax3.imshow(wcls.T % 6, origin="lower", cmap=ListedColormap(wheel_colours), vmin=-0.5, vmax=5.5,
+                   aspect="auto")
         for i in range(nr):
             for j in range(nv):
-                ax3.text(i, j, wheel_cell_text(cells[i * nv + j]), ha="center", va="center", fontsize=6)
-        ax3.set_title("which wheels squeal (LO, LI, TO, TI: leading/trailing outer/inner)")
+                if wcls[i, j] >= 6:  # a wheelset left out: hatched
+                    ax3.add_patch(plt.Rectangle((i - 0.5, j - 0.5), 1, 1, fill=False, hatch="//", edgecolor="0.4",
+                                                lw=0))
+                ax3.text(i, j, wheel_cell_text(cells[i * nv + j]), ha="center", va="center", fontsize=cell_font,
+                         bbox=dict(facecolor="w", alpha=0.6, lw=0) if wcls[i, j] >= 6 else None)
+        ax3.set_title("which wheels squeal\neach wheelset's two contacts coupled (LO, LI, TO, TI: leading/"
+                      "trailing outer/inner)\n(text: wheel, its unstable roots, the first root)")
+        handles = [Patch(facecolor=c, edgecolor="0.3") for c in wheel_colours]
+        handles.append(Patch(facecolor="w", edgecolor="0.4", hatch="//"))
+        names = wheel_names + ["hatched: a wheelset left out (contact alone unstable)"]
+        ax3.legend(handles, names, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, fontsize=9,
+                   title="cell colour", title_fontsize=9)
     for ax in axes:
         ax.set_xticks(range(nr), [f"{r:g}" for r in radii])
         ax.set_yticks(range(nv), [f"{v:g}" for v in values])
-        ax.set_xlabel("curve radius (m)")
-        ax.set_ylabel(a.param)
-    fig.suptitle(f"rollnoise squeal {os.path.basename(a.case)}: radius x {a.param}")
+        ax.set_xlabel("curve radius [m]")
+        ax.set_ylabel(f"{a.param} [{PARAM_UNITS.get(a.param, 'as in the case')}]")
+    fig.suptitle(f"rollnoise squeal {os.path.basename(a.case)}: radius x {a.param}", fontsize=12)
     fig.tight_layout()
-    fig.savefig(a.output, dpi=130)
+    fig.savefig(a.output, dpi=110)
     print(f"{len(cells)} runs: {sum(c['class'] == SQUEAL for c in cells)} squeal, "
           f"{sum(c['class'] == CONTACT_UNSTABLE for c in cells)} contact unstable, "
           f"{sum(c['class'] == FAILED for c in cells)} failed; {a.output}, {os.path.join(a.work, 'summary.csv')}")

@@ -174,8 +174,8 @@ def matrix_entries(text, rows=3, cols=3):
 
 
 def pretty(u):
-    """A unit for an axis label: "N m^2" -> "N m²"."""
-    return u.replace("^2", "\u00b2").replace("^3", "\u00b3")
+    """A unit for an axis label: "N m^2" -> "N m²", "1 um" -> "1 µm"."""
+    return re.sub(r"\bum\b", "\u00b5m", u.replace("^2", "\u00b2").replace("^3", "\u00b3"))
 
 
 # ---- 1/3-octave bands ----
@@ -203,3 +203,85 @@ def set_band_axis(ax, centres, every=1, label=True):
     if label:
         ax.set_xlabel("1/3-octave band, nominal centre [Hz]")
     return x
+
+
+# ---- several files on the same axes ----
+
+def file_labels(files, labels):
+    """The legend label of each file: the `--label` options in order (as many as files), else each
+    file's stem (its name without directory and last extension)."""
+    if labels:
+        if len(labels) != len(files):
+            fail(f"--label given {len(labels)} times for {len(files)} files (give it once per file or not at all)")
+        return list(labels)
+    return [os.path.splitext(os.path.basename(p))[0] for p in files]
+
+
+FILE_STYLES = ["-", "--", ":", "-."]
+FILE_COLOURS = ["k", "tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange", "tab:brown", "tab:olive"]
+
+
+def file_style(i):
+    """Line style of the i-th file where colour means something else (a wheel, a source)."""
+    return FILE_STYLES[i % len(FILE_STYLES)]
+
+
+def file_colour(i):
+    """Colour of the i-th file where it is the only distinction."""
+    return FILE_COLOURS[i % len(FILE_COLOURS)]
+
+
+def band_union(centre_lists):
+    """The sorted nominal centres of all the files' bands, and for each file the x positions of its
+    bands on that common axis (files with different band ranges share one band axis)."""
+    nominal = sorted({nominal_centre(c) for cs in centre_lists for c in cs})
+    index = {n: i for i, n in enumerate(nominal)}
+    return np.array(nominal), [np.array([index[nominal_centre(c)] for c in cs]) for cs in centre_lists]
+
+
+# ---- which wheel and which loop a noise output's levels belong to ----
+
+WHEELS = ["leading_outer", "leading_inner", "trailing_outer", "trailing_inner"]
+
+
+def wheel_words(name):
+    """"leading_outer" -> "leading outer"."""
+    return name.replace("_", " ")
+
+
+def noise_group(f, wheel=None):
+    """The group of a `rollnoise noise` output holding the band levels to plot, and a description of
+    it for a title: the wheel's own group /noise/wheels/WHEEL when the file has per-wheel groups
+    (WHEEL defaults to leading_outer), else the top-level /noise. The description names the wheel and
+    the loop from the attributes the file carries (`loop` of /noise/wheels), e.g. "leading outer
+    wheel, bogie loop (4 contacts coupled)"."""
+    if "/noise/wheels" in f and any(f"/noise/wheels/{w}/bands/force_level" in f for w in WHEELS):
+        w = wheel or "leading_outer"
+        group = f"/noise/wheels/{w}"
+        if group + "/bands/force_level" not in f:
+            present = [x for x in WHEELS if f"/noise/wheels/{x}/bands/force_level" in f]
+            fail(f"{f.filename}: no wheel {w} (the file has {', '.join(present)})")
+        loop = attribute(f["/noise/wheels"], "loop", "") or ""
+        if loop.startswith("coupled"):
+            contacts = sum(f"/noise/wheels/{x}/bands/force_level" in f for x in WHEELS)
+            contacts += sum(f"/noise/wheels/{x}/patches/1/bands/force_level" in f for x in WHEELS)
+            where = f"bogie loop ({contacts} contacts coupled)"
+        else:
+            where = "its single-contact loop alone (wheels not coupled)"
+        return group, f"{wheel_words(w)} wheel, {where}", loop.startswith("coupled")
+    if wheel:
+        fail(f"{f.filename}: no per-wheel groups /noise/wheels/* (a run with one wheel); leave out --wheel")
+    return "/noise", "the case's single contact, single-contact loop", False
+
+
+def top_level_words(f):
+    """What the top-level /noise of a file with per-wheel groups is, as its `loop` attribute says
+    ("the leading outer wheel's single-contact loop"), or "top-level /noise"."""
+    loop = attribute(f["/noise/wheels"], "loop", "") if "/noise/wheels" in f else ""
+    m = re.search(r"top-level /noise is (the [^;.]*)", loop or "")
+    if m:
+        return m.group(1)
+    m = re.search(r"(\w+) is the top-level /noise run", loop or "")
+    if m:
+        return f"the {wheel_words(m.group(1))} wheel's loop"
+    return "top-level /noise"

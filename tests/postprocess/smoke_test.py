@@ -81,12 +81,18 @@ def main():
               *COARSE, "--set", "transient.duration=0.002")
     rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "noise.h5", *COARSE,
               "--set", "noise.points_per_band=4", "--set", "track.support=\"continuous\"")
+    # the bogie: per-wheel groups /noise/wheels/* (the table-wheel profile case, coarse: ~1.5 s)
+    rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_table.toml"), "-o", "noise_wheels.h5",
+              "--set", "grid.nx=12", "--set", "grid.ny=10", "--set", "noise.points_per_band=4",
+              "--set", "track.support=\"continuous\"", "--set", "noise.band_max=800")
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
     rollnoise(binary, work, "receptance", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "rail_waves.h5",
               *COARSE, "--set", "frequency.count=4", "--set", "track.support=\"continuous\"",
               "--set", "track.model=\"waveguide\"")
+    rollnoise(binary, work, "receptance", os.path.join(CASES, "tangent.toml"), "-o", "receptance.h5", *COARSE,
+              "--set", "frequency.count=40")
     with open(os.path.join(work, "study.toml"), "w") as f:  # 4 cases of the small study case
         f.write(f'base = "{os.path.join(ROOT, "tests/data/study/curve_small.toml")}"\noutput = "study"\n[axes]\n'
                 '"curve.radius" = [300.0, 600.0]\n"roughness.wheel" = ["cast-iron", "disc-braked"]\n')
@@ -103,11 +109,21 @@ def main():
         ("plot_creep.py", [j("creep.h5"), "--entries", "11,22,23,33", "-o", j("creep.png")], ["creep.png"]),
         ("plot_statespace.py", [j("statespace.h5"), "-o", j("statespace.png")], ["statespace.png"]),
         ("plot_validate.py", [j("validate.h5"), "--prefix", j("val")], ["val_time.png", "val_spectra.png"]),
-        ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png"]),
+        ("plot_noise.py", [j("noise.h5"), "--prefix", j("noise")], ["noise_bands.png", "noise_transfer.png",
+                                                                   "noise_velocity.png", "noise_sound.png"]),
+        ("plot_noise.py", [j("noise_wheels.h5"), "--wheel", "trailing_inner", "--prefix", j("noise_ti")],
+         ["noise_ti_bands.png", "noise_ti_wheels.png", "noise_ti_sound.png"]),
+        # two runs overlaid (different band ranges), labelled
+        ("plot_noise.py", [j("noise.h5"), j("noise_wheels.h5"), "--label", "Hertz", "--label", "bogie", "--prefix",
+                           j("noise_cmp")], ["noise_cmp_bands.png", "noise_cmp_transfer.png", "noise_cmp_velocity.png",
+                                             "noise_cmp_wheels.png", "noise_cmp_sound.png"]),
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
         ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
+        ("plot_receptance.py", [j("receptance.h5"), "-o", j("receptance.png")], ["receptance.png"]),
+        ("plot_receptance.py", [j("receptance.h5"), j("rail_waves.h5"), "--label", "tangent", "--label", "waveguide",
+                                "--entries", "11,33,13", "-o", j("receptance_cmp.png")], ["receptance_cmp.png"]),
         ("plot_study.py", [j("study/study.h5"), "--x", "curve.radius", "--curves", "roughness.wheel", "-o",
                            j("study.png")], ["study.png"]),
         # runs `rollnoise squeal` itself: 2 x 2 runs on a coarse grid (~1 s)
@@ -140,7 +156,7 @@ def main():
     with open(j("not_hdf5.h5"), "w") as f:
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
-                                "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_bench.py", "plot_study.py",
+                                "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_receptance.py", "plot_bench.py", "plot_study.py",
                                 "plot_modes.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
@@ -148,6 +164,13 @@ def main():
         lines = err.strip().splitlines()
         check(f"{script} {os.path.basename(bad)} refused", status == 2 and len(lines) == 1 and bad in lines[0]
               and "Traceback" not in err, f"status {status}, stderr {err!r}")
+    # several files: a wrong one among them, or --label not once per file
+    for script, args, bad in [("plot_noise.py", [j("noise.h5"), j("not_hdf5.h5")], j("not_hdf5.h5")),
+                              ("plot_noise.py", [j("noise.h5"), j("noise_wheels.h5"), "--label", "one"], "--label")]:
+        status, err = plot(script, *args)
+        lines = err.strip().splitlines()
+        check(f"{script} {' '.join(os.path.basename(a) for a in args)} refused", status == 2 and len(lines) == 1
+              and bad in lines[0] and "Traceback" not in err, f"status {status}, stderr {err!r}")
     # the same through a real process: the exit status a shell sees
     r = subprocess.run(["/usr/bin/python3", os.path.join(POST, "plot_noise.py"), j("not_hdf5.h5")],
                        capture_output=True, text=True)
