@@ -135,7 +135,9 @@ def read_run(path, label, wheel):
                 patch = f"/noise/wheels/{name}/patches/1/bands/force_level"
                 if patch in f:  # noise.second_patch = "coupled": the flange patch (noise_loop.md 7.4)
                     r["wheels"].append((name + " flange patch", f[patch][:]))
-            r["wheels_loop"] = (f"bogie loop ({len(r['wheels'])} contacts coupled)" if coupled_loop
+            r["wheels_loop"] = (f"bogie loop ({len(r['wheels'])} contacts coupled)"
+                                if coupled_loop and len(r["wheels"]) > 1
+                                else "a loop of one contact" if len(r["wheels"]) == 1
                                 else "each wheel's single-contact loop alone (wheels not coupled)")
         r["sound"] = read_sound(f)
     return r

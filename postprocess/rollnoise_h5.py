@@ -265,7 +265,9 @@ def noise_group(f, wheel=None):
         if loop.startswith("coupled"):
             contacts = sum(f"/noise/wheels/{x}/bands/force_level" in f for x in WHEELS)
             contacts += sum(f"/noise/wheels/{x}/patches/1/bands/force_level" in f for x in WHEELS)
-            where = f"bogie loop ({contacts} contacts coupled)"
+            where = f"bogie loop ({contacts} contacts coupled)" if contacts > 1 else "a loop of one contact"
+        elif loop.startswith("one contact"):
+            where = "a loop of one contact"
         else:
             where = "its single-contact loop alone (wheels not coupled)"
         return group, f"{wheel_words(w)} wheel, {where}", loop.startswith("coupled")

@@ -222,14 +222,17 @@ void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
 
 std::string loop_description(const pipeline::NoiseResult& r) {
   const std::size_t n = r.wheels.size() + r.patches.size();
-  const bool coupled = r.coupled_contacts;
-  std::string s = coupled ? "coupled (noise.contact_coupling = \"bogie\"): the " + std::to_string(n) +
-                                " contacts in one loop (docs/noise_loop.md Sec. 5.2-5.3: rigid wheelset between the "
-                                "two wheels of an axle, each rail's transfer receptance between the two axles, each "
-                                "contact's own contact receptance)"
-                          : "each contact alone (noise.contact_coupling = \"none\"; docs/noise_loop.md Sec. 5.2: "
-                            "its own patch, creepages and receptances at its contact, not coupled through the "
-                            "wheelset or the track)";
+  std::string s;
+  if (n == 1)
+    s = "one contact (a loop of one contact: the wheel's and the rail's receptances at its contact and its own "
+        "contact receptance; docs/noise_loop.md Sec. 5.1)";
+  else if (r.coupled_contacts)
+    s = "coupled (noise.contact_coupling = \"bogie\"): the " + std::to_string(n) +
+        " contacts in one loop (docs/noise_loop.md Sec. 5.2-5.3: rigid wheelset between the two wheels of an axle, "
+        "each rail's transfer receptance between the two axles, each contact's own contact receptance)";
+  else
+    s = "each contact alone (noise.contact_coupling = \"none\"; docs/noise_loop.md Sec. 5.2: its own patch, "
+        "creepages and receptances at its contact, not coupled through the wheelset or the track)";
   return s + "; one uncorrelated roughness source per wheel, band levels the power sum over the sources; the "
              "top-level /noise is " + std::string(noise::wheel_name(r.reported_wheel().wheel)) + "'s answer in it";
 }
