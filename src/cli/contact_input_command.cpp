@@ -53,9 +53,9 @@ int write_curve_wheels(const io::CaseReader& reader, const std::string& dir) {
       io::within_case(reader, [&] { return pipeline::resolve_curve(in.contact, in.noise); });
   const pipeline::CurveSetup& curve = placement.curve;
   if (!curve.state || !curve.state_input)
-    throw InputError("curve.creepage",
-                     "contact-input: a curve is written from its curve contact state "
-                     "(curve.creepage = \"estimate\" or \"multibody\")");
+    reader.fail("curve.creepage",
+                "contact-input: a curve is written from its curve contact state (curve.creepage = "
+                "\"estimate\" or \"multibody\"); \"case\" has none");
   const std::vector<noise::WheelId> ids(noise::kAllWheels.begin(), noise::kAllWheels.end());
   const std::vector<noise::WheelContact> wheels = io::within_case(
       reader, [&] { return noise::bogie_wheel_contacts(*curve.state_input, *curve.state, ids); });
