@@ -63,6 +63,13 @@ int run_statespace(const CommonOptions& o, const std::string& csv_prefix) {
                  "warning: the fit error %.3g is above statespace.tolerance = %.3g (raise "
                  "statespace.max_poles)\n",
                  r.fit.error, opt.tolerance);
+  if (r.sampling_filter_peak_gain > 2.0)
+    std::printf(
+        "  note: above the band the sampling filter amplifies up to %.3g times (the exact factor "
+        "is "
+        "at most 1): keep a coupled code's creepages within the band, or feed "
+        "/statespace/discrete/recursion the step creepages (docs/statespace.md Sec. 3)\n",
+        r.sampling_filter_peak_gain);
   if (r.sampling_filter_error > opt.tolerance)
     std::fprintf(
         stderr,

@@ -108,6 +108,8 @@ void write_statespace(Hdf5Writer& w, const CaseReader& r, const pipeline::StateS
           "- (against /creep/f, /creep/g, the norm of /statespace/fit_error)");
   w.write("/statespace/discrete/sampling_filter_error", s.sampling_filter_error,
           "- (max over /creep/frequency of |R(exp(i 2 pi f dt)) - S(f)|, S the sampling's factor)");
+  w.write("/statespace/discrete/sampling_filter_peak_gain", s.sampling_filter_peak_gain,
+          "- (max |R(exp(i 2 pi f dt))| from the band's top to the Nyquist limit; |S| <= 1)");
   w.write("/statespace/discrete/sampling_filter_order", double(s.sampling_filter.order()),
           "- (states per creepage input)");
 

@@ -131,6 +131,13 @@ StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq,
         r.sampling_filter_error,
         std::abs(r.sampling_filter.discrete_frequency_response(r.frequency[k], r.dt)(0, 0) -
                  factor[k]));
+  const double nyquist = 0.5 / r.dt;
+  for (int k = 0; k <= 400; ++k) {  // above the band: 401 points to the Nyquist limit
+    const double fr = r.band_max + (nyquist - r.band_max) * k / 400.0;
+    r.sampling_filter_peak_gain =
+        std::max(r.sampling_filter_peak_gain,
+                 std::abs(r.sampling_filter.discrete_frequency_response(fr, r.dt)(0, 0)));
+  }
   r.discrete = with_sampling_filter(r.recursion.model, r.sampling_filter);
   std::vector<Eigen::MatrixXcd> Hd;
   for (double fr : r.frequency) Hd.push_back(r.discrete.discrete_frequency_response(fr, r.dt));

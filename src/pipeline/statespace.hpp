@@ -57,8 +57,11 @@ struct StateSpaceResult {
   contact::CreepageSampling input_sampling = contact::CreepageSampling::contact;
   double recursion_error = 0.0;  ///< recursion x the exact factor S against f, g (the fit's norm)
   linalg::StateSpace sampling_filter;  ///< R(z), 1 x 1 discrete (order 0, D = 1 for contact)
-  double sampling_filter_error =
-      0.0;  ///< max over the fitted frequencies of |R(e^{i w dt}) - S(w dt)|
+  /// max over the fitted frequencies of |R(e^{i w dt}) - S(w dt)|
+  double sampling_filter_error = 0.0;
+  /// max |R(e^{i w dt})| from the band's top to the Nyquist limit (|S| <= 1 there; R is fitted in
+  /// the band only and may amplify above it, docs/statespace.md Sec. 3)
+  double sampling_filter_peak_gain = 1.0;
   linalg::StateSpace
       discrete;          ///< the discrete model (input: the samples xi~(t_k), N~(t_k)), step dt
   double dt = 0.0;       ///< s
