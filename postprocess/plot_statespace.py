@@ -7,7 +7,8 @@ Entry ij: output i (1 Fx [N], 2 Fy [N], 3 Mz [N m]) per input j (1 xi_x [-], 2 x
 4 N [N]); the transfer is [-f | g], so entries with j <= 3 are -f_ij and those with j = 4 are g_i.
 Magnitude (top) and phase (bottom): the exact values at the fitted frequencies (/creep/frequency,
 dots), the continuous model C (sI - A)^-1 B + D from /statespace/{A, B, C, D} (line, on a dense
-axis over the band) and the discrete model's D + C (zI - A)^-1 B, z = exp(i 2 pi f dt) (dashed).
+axis over the band) and the discrete model's D + C (zI - A)^-1 B, z = exp(i 2 pi f dt) (dashed;
+docs/statespace.md Sec. 3: its inputs are the samples at t_k, no correction applied).
 The title gives /statespace/fit_error.
 """
 import argparse
@@ -44,7 +45,6 @@ def main():
         A, B, C, D = (rh.values(f, f"/statespace/{m}") for m in "ABCD")
         Ad, Bd, Cd, Dd = (rh.values(f, f"/statespace/discrete/{m}") for m in "ABCD")
         dt = float(rh.values(f, "/statespace/discrete/dt"))
-        delay = float(rh.values(f, "/statespace/discrete/input_delay"))
         band = rh.values(f, "/statespace/band")
         err = float(rh.values(f, "/statespace/fit_error"))
         fr = rh.values(f, "/creep/frequency")
@@ -53,7 +53,6 @@ def main():
     dense = np.geomspace(lo, band[1], 400)
     Hc = response(A, B, C, D, 2j * np.pi * dense)
     Hd = response(Ad, Bd, Cd, Dd, np.exp(2j * np.pi * dense * dt))
-    Hd[:, :, :3] *= np.exp(-2j * np.pi * dense * dt * delay)[:, None, None]  # creepage sampled delay*dt early
     shown = fr > 0
     fig, axes = plt.subplots(2, len(entries), figsize=(3.6 * len(entries), 6), sharex=True, squeeze=False)
     for c, (i, j) in enumerate(entries):

@@ -132,7 +132,7 @@ void add_tool_commands(CLI::App& app, CommandLine& cl) {
       ->delimiter(',');
   cl.contact_input = app.add_subcommand("contact-input", "CONTACT's input (.inp) for the case (docs/contact_interop.md)");
   cl.contact_input->add_option("case", cl.common.case_file, "case file (TOML)")->required();
-  cl.contact_input->add_option("-o,--output", cl.common.output, "folder of CASENAME.inp (default: the current folder)");
+  cl.contact_input->add_option("-o,--output", cl.common.output, "folder of CASENAME.inp (a profile case in a curve: CASENAME_<wheel>.inp per wheel; default: the current folder)");
   cl.contact_input->add_option("--set", cl.common.overrides, "override a case entry: --set grid.nx=60")->take_all();
   cl.contact_input->add_flag("--steady", cl.contact_input_steady, "only the steady case, also when the case has an [excitation]");
   cl.contact_input->add_flag("-q,--quiet", cl.common.quiet, "no progress output");

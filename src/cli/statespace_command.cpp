@@ -52,19 +52,31 @@ int run_statespace(const CommonOptions& o, const std::string& csv_prefix) {
       r.fit.reached_target ? "met" : "NOT met", r.fit.worst_frequency, r.fit.element_error,
       r.fit.flipped, 1e3 * r.seconds_fit);
   std::printf(
-      "  discrete: dt = %.6g s, order %d from %d Markov parameters, Markov error %.3g, response "
-      "error %.3g%s; "
-      "%.0f ms\n",
-      r.dt, r.discrete.model.order(), r.markov_count, r.discrete.markov_error, r.discrete_error,
-      r.input_sampling == contact::CreepageSampling::midstep   ? " (creepage input at t_k - dt/2)"
-      : r.input_sampling == contact::CreepageSampling::average ? " (creepage input: its mean over [t_k - dt, t_k])"
-                                                               : "",
-      1e3 * r.seconds_discrete);
+      "  discrete: dt = %.6g s, order %d (the recursion's %d from %d Markov parameters, Markov "
+      "error %.3g, and 3 x %d of the %s sampling filter, error %.3g), response error %.3g; %.0f "
+      "ms\n",
+      r.dt, r.discrete.order(), r.recursion.model.order(), r.markov_count, r.recursion.markov_error,
+      r.sampling_filter.order(), contact::sampling_name(r.input_sampling), r.sampling_filter_error,
+      r.discrete_error, 1e3 * r.seconds_discrete);
   if (!r.fit.reached_target)
     std::fprintf(stderr,
                  "warning: the fit error %.3g is above statespace.tolerance = %.3g (raise "
                  "statespace.max_poles)\n",
                  r.fit.error, opt.tolerance);
+  if (r.sampling_filter_peak_gain > 2.0)
+    std::printf(
+        "  note: above the band the sampling filter amplifies up to %.3g times (the exact factor "
+        "is "
+        "at most 1): keep a coupled code's creepages within the band, or feed "
+        "/statespace/discrete/recursion the step creepages (docs/statespace.md Sec. 3)\n",
+        r.sampling_filter_peak_gain);
+  if (r.sampling_filter_error > opt.tolerance)
+    std::fprintf(
+        stderr,
+        "warning: the sampling filter's error %.3g is above statespace.tolerance = %.3g: the "
+        "band reaches too close to the Nyquist limit for a rational filter of the step's "
+        "creepage (docs/statespace.md Sec. 3; lower frequency.f_max or refine the grid)\n",
+        r.sampling_filter_error, opt.tolerance);
   std::printf("wrote %s", out.c_str());
   if (!csv_prefix.empty()) std::printf(" and %s_{A,B,C,D,Ad,Bd,Cd,Dd}.csv", csv_prefix.c_str());
   std::printf("\n");

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "noise/wheel_contact.hpp"
 #include "pipeline/contact_case.hpp"
 
 namespace rollnoise::io {
@@ -21,5 +22,17 @@ namespace rollnoise::io {
 /// input gives the profiles. InputError naming the key that cannot be mapped.
 std::string module1_input(const pipeline::ContactCase& c, const std::vector<std::string>& comments,
                           const std::string& rail_file, const std::string& wheel_file);
+
+/// The module-1 input of one wheel `w` of a curve's bogie (noise::bogie_wheel_contacts) on the
+/// case `c` placed at that wheel's contact (pipeline::placed_contact_at): CONTACT's right wheel
+/// (C = 1) in the wheel's own frame (the inner wheels mirrored y -> -y, as rollnoise computes
+/// them): Y = the axle's lateral position, YAW, ROLL of that frame, FZ = the wheel's vertical load
+/// Q, CURV = -kappa (kappa = +1/R outer, -1/R inner; `inverse_radius` = 1/R; CONTACT's sign, as its
+/// C1 run), VPITCH = -2 V/(r_c + r_other) ((K2') creepages) or -V (1 + kappa y_c - xi_x)/r_c
+/// (given), VY = V (psi + xi_y / cos delta). InputError naming the key of a state that cannot be
+/// mapped.
+std::string module1_wheel_input(const pipeline::ContactCase& c, const noise::WheelContact& w,
+                                double inverse_radius, const std::vector<std::string>& comments,
+                                const std::string& rail_file, const std::string& wheel_file);
 
 }  // namespace rollnoise::io

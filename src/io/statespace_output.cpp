@@ -16,10 +16,16 @@ const char* kConvention =
     "M~z) [N, N, N m] "
     "(variations about the mean state); C (sI - A)^-1 B + D at s = 2 pi i f equals [-f(f) | g(f)]";
 const char* kDiscreteConvention =
-    "x_{k+1} = Ad x_k + Bd u_k, y_k = Cd x_k + Dd u_k at t_k = k dt; u_k = (xi~x, xi~y, phi~ at "
-    "t_k - input_delay dt (input_sampling = average: the mean over [t_k - dt, t_k]), "
-    "N~ at t_k), y_k = (F~x, F~y, M~z) at t_k; D + C (zI - A)^-1 B at z = exp(i 2 pi f dt) equals "
-    "[-f(f) | g(f)]";
+    "x_{k+1} = Ad x_k + Bd u_k, y_k = Cd x_k + Dd u_k at t_k = k dt; u_k = (xi~x, xi~y, phi~, N~) "
+    "at t_k (samples), y_k = (F~x, F~y, M~z) at t_k; D + C (zI - A)^-1 B at z = exp(i 2 pi f dt) "
+    "equals [-f(f) | g(f)] over the band (to /statespace/discrete/response_error); the states: "
+    "the recursion's (/statespace/discrete/recursion) and 3 copies of the sampling filter's";
+const char* kRecursionConvention =
+    "the linear NSS recursion alone: x_{k+1} = A x_k + B v_k, y_k = C x_k + D v_k, v_k = (the "
+    "creepage of step k in input_sampling: xi~(t_k) (contact), xi~(t_k - dt/2) (midstep), the mean "
+    "of xi~ over [t_k - dt, t_k] (average); N~(t_k)); D + C (zI - A)^-1 B at z = exp(i 2 pi f dt) "
+    "equals [-f(f)/S(f) | g(f)], S the sampling's factor 1, exp(-i pi f dt), "
+    "exp(-i pi f dt) sinc(pi f dt)";
 const char* kDUnits =
     "(output i)/(input j): rows Fx [N], Fy [N], Mz [N m]; columns xi_x [-], xi_y [-], phi [rad/m], "
     "N [N]";
@@ -94,23 +100,34 @@ void write_statespace(Hdf5Writer& w, const CaseReader& r, const pipeline::StateS
   w.write("/statespace/poles", fit.poles, {fit.poles.size()}, "1/s");
   w.write("/statespace/flipped_poles", double(fit.flipped), "-");
 
-  const linalg::Realisation& d = s.discrete;
-  write_model(w, "/statespace/discrete", d.model, "step", "");
+  write_model(w, "/statespace/discrete", s.discrete, "step", "");
   w.attribute("/statespace/discrete", "convention", kDiscreteConvention);
   w.attribute("/statespace/discrete", "dt", std::to_string(s.dt) + " s");
   w.write("/statespace/discrete/dt", s.dt, "s");
-  w.write("/statespace/discrete/input_delay", s.input_delay_steps,
-          "steps (the creepage input is xi~(t_k - input_delay dt), or with input_sampling = average its mean over "
-          "[t_k - dt, t_k], centred there)");
-  w.attribute("/statespace/discrete/input_delay", "input_sampling", contact::sampling_name(s.input_sampling));
-  w.write("/statespace/discrete/hankel_singular_values",
+  w.write("/statespace/discrete/response_error", s.discrete_error,
+          "- (against /creep/f, /creep/g, the norm of /statespace/fit_error)");
+  w.write("/statespace/discrete/sampling_filter_error", s.sampling_filter_error,
+          "- (max over /creep/frequency of |R(exp(i 2 pi f dt)) - S(f)|, S the sampling's factor)");
+  w.write("/statespace/discrete/sampling_filter_peak_gain", s.sampling_filter_peak_gain,
+          "- (max |R(exp(i 2 pi f dt))| from the band's top to the Nyquist limit; |S| <= 1)");
+  w.write("/statespace/discrete/sampling_filter_order", double(s.sampling_filter.order()),
+          "- (states per creepage input)");
+
+  const linalg::Realisation& d = s.recursion;
+  write_model(w, "/statespace/discrete/recursion", d.model, "step", "");
+  w.attribute("/statespace/discrete/recursion", "convention", kRecursionConvention);
+  w.attribute("/statespace/discrete/recursion", "input_sampling",
+              contact::sampling_name(s.input_sampling));
+  w.write("/statespace/discrete/recursion/hankel_singular_values",
           std::vector<double>(d.singular_values.data(),
                               d.singular_values.data() + d.singular_values.size()),
           {std::size_t(d.singular_values.size())}, "- (of the equilibrated Markov parameters)");
-  w.write("/statespace/discrete/markov_parameters", double(s.markov_count), "- (realised)");
-  w.write("/statespace/discrete/markov_error", d.markov_error, "-");
-  w.write("/statespace/discrete/response_error", s.discrete_error,
-          "- (against /creep/f, /creep/g, the norm of /statespace/fit_error)");
+  w.write("/statespace/discrete/recursion/markov_parameters", double(s.markov_count),
+          "- (realised)");
+  w.write("/statespace/discrete/recursion/markov_error", d.markov_error, "-");
+  w.write("/statespace/discrete/recursion/response_error", s.recursion_error,
+          "- (times the sampling's factor, against /creep/f, /creep/g; the norm of "
+          "/statespace/fit_error)");
 }
 
 std::vector<std::string> statespace_csv_paths(const std::string& prefix) {
@@ -124,7 +141,7 @@ std::vector<TemporaryFile> write_statespace_csv(const std::string& prefix,
                                                 const pipeline::StateSpaceResult& s) {
   const std::vector<std::string> paths = statespace_csv_paths(prefix);
   const linalg::StateSpace& c = s.fit.model;
-  const linalg::StateSpace& d = s.discrete.model;
+  const linalg::StateSpace& d = s.discrete;
   const Eigen::MatrixXd* mats[] = {&c.A, &c.B, &c.C, &c.D, &d.A, &d.B, &d.C, &d.D};
   std::vector<TemporaryFile> files;
   for (size_t i = 0; i < paths.size(); ++i)

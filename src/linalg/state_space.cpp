@@ -26,6 +26,22 @@ Eigen::MatrixXcd StateSpace::discrete_frequency_response(double frequency, doubl
   return response(std::polar(1.0, 2.0 * M_PI * frequency * dt));
 }
 
+StateSpace bilinear_discretisation(const StateSpace& c, double dt) {
+  // Franklin-Powell-Workman Eq. 6.48: s' = a (z - 1)/(z + 1), a = 2/dt; (s'I - A)^{-1} in z gives
+  // the four matrices below (the sqrt(2a) split between B and C keeps them balanced).
+  const double a = 2.0 / dt;
+  const Eigen::Index n = c.A.rows();
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+  const Eigen::MatrixXd M = (a * I - c.A).partialPivLu().inverse();  // n small: the fit's order
+  StateSpace d;
+  d.A = M * (a * I + c.A);
+  const Eigen::MatrixXd MB = M * c.B;
+  d.B = std::sqrt(2.0 * a) * MB;
+  d.C = std::sqrt(2.0 * a) * (c.C * M);
+  d.D = c.D + c.C * MB;
+  return d;
+}
+
 std::vector<Eigen::MatrixXd> StateSpace::markov_parameters(int count) const {
   std::vector<Eigen::MatrixXd> h;
   if (count <= 0) return h;

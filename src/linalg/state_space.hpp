@@ -26,6 +26,14 @@ struct StateSpace {
   std::vector<Eigen::MatrixXd> markov_parameters(int count) const;
 };
 
+/// The discrete model with step dt whose transfer is the continuous model's at the bilinear
+/// (Tustin) map of z: G_d(z) = G_c(s'), s' = (2/dt)(z - 1)/(z + 1), identically in z (Franklin,
+/// Powell, Workman, Digital Control of Dynamic Systems, 3rd ed., Sec. 6.3.1, Eq. 6.48), so that on
+/// the unit circle G_d(e^{i w dt}) = G_c(i (2/dt) tan(w dt/2)) (the frequency warped, not
+/// approximated). With a = 2/dt and M = (aI - A)^{-1}: Ad = M (aI + A), Bd = sqrt(2a) M B,
+/// Cd = sqrt(2a) C M, Dd = D + C M B. A stable pole (Re < 0) maps into the unit disc.
+StateSpace bilinear_discretisation(const StateSpace& continuous, double dt);
+
 /// The continuous model's output y(t_k), t_k = k h, from x(0) = 0, for the input u(t) linear
 /// between the samples u_k = u(t_k) (first-order hold): exact, by the matrix exponential of the
 /// augmented system [[A, B, 0], [0, 0, I], [0, 0, 0]] h (Franklin, Powell, Workman, Digital Control

@@ -9,22 +9,28 @@
 //     `rollnoise creep` uses) and 0 Hz: the static gain [-f(0) | g(0)] is always a fitted sample (a
 //     time-domain code needs the quasi-static creep forces right), so the fitted frequencies are
 //     0 Hz (when the axis starts above it) and the axis;
-//  2. discrete time at the model's step dt = dx/V: x_{k+1} = Ad x_k + Bd u_k, y_k = Cd x_k + Dd
-//  u_k,
-//     the minimal realisation (linalg::eigensystem_realisation, Hankel singular values to
-//     `hankel_tolerance` of the largest) of the fast sweep's Markov parameters H_j = [h_j | gm_j]
-//     (-f = sum_j h_j z^j, g = sum_j gm_j z^j, z = e^{-i w dt}, so F_k = sum_j H_j u_{k-j};
-//     nss/linear_model.hpp): the reduced model the sweep
-//     builds, exact up to that truncation. Its response at z = e^{i w dt} is compared with f and g
-//     of the sweep on the fitted frequencies. The Markov parameters are those of the recursion with
-//     the creepage of step k as its input, whatever the sampling; f carries the sampling's factor
-//     (1, exp(-i w dt/2), exp(-i w dt/2) sinc(w dt/2): contact::step_sampling_factor). The comparison
-//     names the discrete model's creepage input u_k: xi~(t_k) (contact), xi~(t_k - dt/2) (midstep)
-//     or the mean of xi~ over [t_{k-1}, t_k] (average); input_sampling says which, and
-//     input_delay_steps the centre of the input, 0 or 0.5 steps before t_k (the normal-load input
-//     is N~(t_k) in every sampling).
+//  2. discrete time at the model's step dt = dx/V, with the samples u_k = (xi~(t_k), N~(t_k)) as
+//     its input: x_{k+1} = Ad x_k + Bd u_k, y_k = Cd x_k + Dd u_k with Dd + Cd (zI - Ad)^{-1} Bd =
+//     [-f | g] at z = e^{i w dt} over the band. Two parts in series (docs/statespace.md Sec. 3):
+//     a. the recursion: the minimal realisation (linalg::eigensystem_realisation, Hankel singular
+//        values to `hankel_tolerance` of the largest) of the fast sweep's Markov parameters H_j =
+//        [h_j | gm_j] (-f_contact = sum_j h_j z^{-j}, so F_k = sum_j H_j v_{k-j};
+//        nss/linear_model.hpp), exact up to that truncation, whose creepage input v_k is the
+//        creepage of step k in the case's rolling.creepage_sampling: xi~(t_k) (contact), xi~(t_k -
+//        dt/2) (midstep) or the mean of xi~ over [t_{k-1}, t_k] (average); f = f_contact S(w dt)
+//        with S the sampling's factor 1, e^{-i w dt/2}, e^{-i w dt/2} sinc(w dt/2)
+//        (contact::step_sampling_factor);
+//     b. the sampling filter: v_k from the samples xi~(t_k) by a stable rational R(z) with
+//        R(e^{i w dt}) = S(w dt) over the band. S is not a rational function of z for midstep and
+//        average (e^{-i w dt/2} = z^{-1/2}, and (1 - z^{-1})/log z), so no finite realisation has
+//        it at every frequency: R is fitted (linalg::fit_rational) over the fitted frequencies in
+//        the bilinear variable s' = (2/dt) i tan(w dt/2) and mapped to z exactly
+//        (linalg::bilinear_discretisation), one copy per creepage input (R = 1 for contact).
+//     Ad, Bd, Cd, Dd are the series connection (the filter's states appended); its response is
+//     compared with f and g of the sweep on the fitted frequencies (discrete_error).
 #pragma once
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -45,15 +51,22 @@ struct StateSpaceResult {
   CreepResult creep;              ///< f, g at `frequency` (and the mean state, the linear model)
   std::vector<double> frequency;  ///< the fitted frequencies (Hz)
   double band_min = 0.0, band_max = 0.0;  ///< the case's axis (Hz)
-  linalg::RationalFit fit;         ///< continuous model, its error over the fitted frequencies
-  linalg::Realisation discrete;    ///< discrete model at step dt
-  double dt = 0.0;                 ///< s
-  int markov_count = 0;            ///< Markov parameters realised
-  double discrete_error = 0.0;     ///< the discrete model's response against f, g (the fit's norm)
-  /// the discrete model's creepage input u_k: xi~(t_k) (contact), xi~(t_k - dt/2) (midstep), the
-  /// mean of xi~ over [t_{k-1}, t_k] (average)
+  linalg::RationalFit fit;        ///< continuous model, its error over the fitted frequencies
+  linalg::Realisation recursion;  ///< the recursion's realisation (input: the step creepage v_k)
+  /// the creepage sampling of the recursion's input v_k (the case's rolling.creepage_sampling)
   contact::CreepageSampling input_sampling = contact::CreepageSampling::contact;
-  double input_delay_steps = 0.0;  ///< 0 (contact) or 0.5 (midstep, average): the centre of u_k is t_k - delay dt
+  double recursion_error = 0.0;  ///< recursion x the exact factor S against f, g (the fit's norm)
+  linalg::StateSpace sampling_filter;  ///< R(z), 1 x 1 discrete (order 0, D = 1 for contact)
+  /// max over the fitted frequencies of |R(e^{i w dt}) - S(w dt)|
+  double sampling_filter_error = 0.0;
+  /// max |R(e^{i w dt})| from the band's top to the Nyquist limit (|S| <= 1 there; R is fitted in
+  /// the band only and may amplify above it, docs/statespace.md Sec. 3)
+  double sampling_filter_peak_gain = 1.0;
+  linalg::StateSpace
+      discrete;          ///< the discrete model (input: the samples xi~(t_k), N~(t_k)), step dt
+  double dt = 0.0;       ///< s
+  int markov_count = 0;  ///< Markov parameters realised
+  double discrete_error = 0.0;  ///< the discrete model's response against f, g (the fit's norm)
   double seconds_fit = 0.0, seconds_discrete = 0.0;
 };
 
@@ -64,6 +77,17 @@ std::vector<Eigen::MatrixXcd> contact_transfer(const std::vector<nss::CreepMatri
 /// The Markov parameters H_j = [h_j | gm_j] (3 x 4) of the model's fast sweep (built by a sweep
 /// first); NumericalError when the sweep fell back to the Hessenberg form (no Markov parameters).
 std::vector<Eigen::MatrixXd> contact_markov_parameters(const nss::LinearContactModel& model);
+
+/// The sampling filter R (1 x 1, discrete, step dt): stable, R(e^{2 pi i f dt}) = factor at the
+/// given frequencies to o.tolerance (vector fitting in the bilinear variable; the
+/// identity, order 0, when every factor is 1).
+linalg::StateSpace sampling_filter(const std::vector<double>& frequency,
+                                   const std::vector<std::complex<double>>& factor, double dt,
+                                   const StateSpaceOptions& o);
+
+/// The discrete model `m` (3 x 4) with R applied to each of its three creepage inputs (the series
+/// connection, R's states appended): transfer m(z) diag(R, R, R, 1).
+linalg::StateSpace with_sampling_filter(const linalg::StateSpace& m, const linalg::StateSpace& R);
 
 /// `freq` is the case's frequency axis; InputError naming `frequency_key` above the Nyquist limit.
 StateSpaceResult run_statespace(ContactCase c, const std::vector<double>& freq,

@@ -11,15 +11,22 @@
 //  - module 1 for a profile case: the numbers of the C1 u3 run that map, and the signs of its
 //  forces
 //    read back in rollnoise's conventions;
+//  - a curve case: one module-1 input per wheel with the curve state's position, yaw, load;
 //  - a cut CONTACT file: exit 2 naming file and line, no output.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "cli_support.hpp"
+#include "io/case_reader.hpp"
 #include "io/contact_results.hpp"
 #include "io/hdf5_reader.hpp"
+#include "io/noise_case.hpp"
+#include "noise/wheel_contact.hpp"
+#include "pipeline/curve_setup.hpp"
+#include "vehicle/curve_state.hpp"
 
 namespace rollnoise::cli_test {
 namespace {
@@ -220,6 +227,69 @@ TEST(ContactInterop, UnmappableKeysExitTwoNamingTheKeyWithoutOutput) {
     EXPECT_NE(r.output.find(key), std::string::npos) << r.output;
   }
   EXPECT_TRUE(!std::filesystem::exists(dir) || std::filesystem::is_empty(dir));
+}
+
+TEST(ContactInterop, CurveCaseWritesEachWheelsStateOfTheCurve) {
+  // cases/curve_300m.toml: one module-1 input per wheel of the bogie, each with the state rollnoise
+  // places that wheel in (pipeline::resolve_curve, noise::bogie_wheel_contacts; the noise
+  // command's): the leading outer wheel's Y (axle lateral position), YAW and FZ (vertical load)
+  // equal the library's to the 15 digits written (1e-12 relative), CURV is -1/R (CONTACT's sign for
+  // the right wheel on the outer rail, its C1 run), and the inner wheels are mirrored (Y = -u).
+  const std::string curve = source_file("cases/curve_300m.toml");
+  const auto dir = fresh_dir("contact_input_curve");
+  const Invocation r = run("contact-input " + curve + " -o " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const char* w : {"leading_outer", "leading_inner", "trailing_outer", "trailing_inner"})
+    EXPECT_TRUE(std::filesystem::exists(dir / (std::string("curve_300m_") + w + ".inp"))) << w;
+  EXPECT_FALSE(std::filesystem::exists(dir / "curve_300m.inp"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "MBench_S1002_v3.prw"));
+
+  const io::CaseReader reader = io::CaseReader::from_file(curve);
+  const io::NoiseInputs in = io::read_noise_inputs(reader);
+  const pipeline::CurvePlacement p = pipeline::resolve_curve(in.contact, in.noise);
+  ASSERT_TRUE(p.curve.state && p.curve.state_input);
+  const std::vector<noise::WheelId> ids(noise::kAllWheels.begin(), noise::kAllWheels.end());
+  const auto wheels = noise::bogie_wheel_contacts(*p.curve.state_input, *p.curve.state, ids);
+  ASSERT_EQ(wheels.size(), 4u);
+  for (const noise::WheelContact& w : wheels) {
+    const auto inp = io::read_contact_inp(
+        (dir / ("curve_300m_" + std::string(noise::wheel_name(w.wheel)) + ".inp")).string());
+    ASSERT_EQ(inp.size(), 1u);
+    ASSERT_EQ(inp[0].module, 1);
+    const io::ContactInpLine* pos = inp[0].find("S, Y, FZ");
+    const io::ContactInpLine* track = inp[0].find("GAUGHT");
+    ASSERT_TRUE(pos && track);
+    const double side = noise::is_outer(w.wheel) ? 1.0 : -1.0;  // the inner wheel mirrored
+    EXPECT_NEAR(pos->numbers[1], side * 1e3 * w.lateral, 1e-12 * std::abs(1e3 * w.lateral))
+        << noise::wheel_name(w.wheel);
+    EXPECT_NEAR(pos->numbers[2], w.vertical_load, 1e-12 * w.vertical_load)
+        << noise::wheel_name(w.wheel);
+    EXPECT_NEAR(pos->numbers[4], side * w.yaw, 1e-12 * std::abs(w.yaw))
+        << noise::wheel_name(w.wheel);
+    EXPECT_NEAR(track->numbers[4], -side / (in.noise.curve_radius * 1e3),
+                1e-12 / (in.noise.curve_radius * 1e3));
+  }
+  // the leading outer wheel: displaced, yawed and loaded above the static wheel load (the load
+  // transfer), unlike a centred wheelset
+  const noise::WheelContact& lo = wheels[0];
+  ASSERT_EQ(lo.wheel, noise::WheelId::leading_outer);
+  EXPECT_GT(lo.lateral, 1e-3);
+  EXPECT_GT(lo.yaw, 1e-3);
+  EXPECT_GT(lo.vertical_load, in.contact.normal_force);
+  const std::string text = file_contents((dir / "curve_300m_leading_outer.inp").string());
+  char y[32];
+  std::snprintf(y, sizeof y, "%.3g", 1e3 * lo.lateral);  // e.g. "6.2" mm in the data line
+  EXPECT_NE(text.find(std::string(" ") + y), std::string::npos) << y << "\n" << text;
+}
+
+TEST(ContactInterop, CurveCaseWithoutCurveStateExitsTwoNamingTheKey) {
+  // curve.creepage = "case" has no curve contact state to write the wheels from
+  const auto dir = fresh_dir("contact_input_curve_case");
+  const Invocation r = run("contact-input " + source_file("cases/curve_300m.toml") +
+                           " --set 'curve.creepage=\"case\"' -o " + dir.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("curve.creepage"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
 }  // namespace

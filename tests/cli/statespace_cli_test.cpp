@@ -49,7 +49,10 @@ TEST(StatespaceCommand, WritesTheModelTheCreepCoefficientsAndOneCsvPerMatrix) {
   EXPECT_EQ(freq[0], 0.0);
   for (const char* d :
        {"/statespace/discrete/A", "/statespace/discrete/B", "/statespace/discrete/C",
-        "/statespace/discrete/D", "/statespace/discrete/dt"})
+        "/statespace/discrete/D", "/statespace/discrete/dt", "/statespace/discrete/response_error",
+        "/statespace/discrete/sampling_filter_error",
+        "/statespace/discrete/sampling_filter_peak_gain", "/statespace/discrete/recursion/A",
+        "/statespace/discrete/recursion/markov_error"})
     EXPECT_TRUE(h.numbers(d)) << d;
   // one CSV per matrix, rows as lines
   for (const char* m : {"A", "B", "C", "D", "Ad", "Bd", "Cd", "Dd"}) {
