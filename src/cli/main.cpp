@@ -35,7 +35,8 @@
 namespace rollnoise::cli {
 
 std::string output_path(const CommonOptions& o, const std::string& case_name) {
-  return o.output.empty() ? case_name + ".h5" : o.output;
+  if (!o.output.empty()) return o.output;
+  return case_name + (o.command.empty() ? "" : "." + o.command) + ".h5";
 }
 
 }  // namespace rollnoise::cli
@@ -71,7 +72,7 @@ struct CommandLine {
 
 void add_common(CLI::App* sub, cli::CommonOptions& common) {
   sub->add_option("case", common.case_file, "case file (TOML)")->required();
-  sub->add_option("-o,--output", common.output, "output file (HDF5), default CASENAME.h5");
+  sub->add_option("-o,--output", common.output, "output file (HDF5), default CASENAME.COMMAND.h5");
   sub->add_option("--set", common.overrides, "override a case entry: --set grid.nx=60")->take_all();
   sub->add_flag("-q,--quiet", common.quiet, "no progress output");
 }
@@ -174,6 +175,9 @@ int dispatch(CommandLine& cl) {
       throw InputError("--reference", "--reference " + cl.reference[0] + ": the known reference is 'contact DIR'");
     cl.common.contact_reference = cl.reference[1];
   }
+  for (const CLI::App* sub : {cl.steady, cl.transient, cl.creep, cl.response, cl.validate, cl.noise,
+                              cl.receptance, cl.modes, cl.squeal, cl.bench, cl.statespace})
+    if (sub->parsed()) cl.common.command = sub->get_name();
   const cli::CommonOptions& common = cl.common;
   if (cl.study->parsed()) return cli::run_study(cl.study_options);  // its own output folder (docs/study.md)
   if (cl.collect->parsed()) return cli::run_collect(cl.study_options);

@@ -19,8 +19,9 @@ void start_process(int argc, char** argv);
 int finish_process(int status);
 
 /// InputError (exit 2, naming the option and the path) unless every output of the run can be
-/// written without overwriting an input or another output: -o (or CASENAME.h5) and `csv` (--csv,
-/// if not empty).
+/// written without overwriting an input or another output: -o (or CASENAME.COMMAND.h5) and `csv`
+/// (--csv, if not empty). The default output (no -o) also must not replace an existing file that
+/// another command wrote (or that is no rollnoise result): only -o naming it replaces such a file.
 void check_run_files(const CommonOptions& o, const std::string& csv);
 
 }  // namespace rollnoise::cli
