@@ -1,5 +1,8 @@
 #include "cli/run_files.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -30,6 +33,15 @@ int finish_process(int status) {
   std::fprintf(stderr, "rollnoise: error: cannot write the standard output%s%s: output lost\n",
                err ? ": " : "", err ? std::strerror(err) : "");
   return 1;
+}
+
+void silence_stdout() {
+  std::cout.flush();
+  std::fflush(stdout);
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (null < 0) return;  // no /dev/null: the summary is printed after all
+  ::dup2(null, STDOUT_FILENO);
+  ::close(null);
 }
 
 namespace {
