@@ -64,6 +64,7 @@ void check_run_files(const CommonOptions& o, const std::string& csv) {
   std::vector<io::OutputFile> outputs;
   outputs.push_back({"-o", output_path(o, reader.name())});
   check_default_output(o, outputs.back().path);
+  for (const std::string& line : io::physical_range_warnings(reader)) std::fprintf(stderr, "%s\n", line.c_str());
   if (!csv.empty()) outputs.push_back({"--csv", csv});
   io::check_outputs(outputs, io::case_input_files(reader));
 }

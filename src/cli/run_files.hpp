@@ -27,6 +27,7 @@ void silence_stdout();
 /// written without overwriting an input or another output: -o (or CASENAME.COMMAND.h5) and `csv`
 /// (--csv, if not empty). The default output (no -o) also must not replace an existing file that
 /// another command wrote (or that is no rollnoise result): only -o naming it replaces such a file.
+/// Prints the case's physical-range warnings (io::physical_range_warnings) on stderr, once.
 void check_run_files(const CommonOptions& o, const std::string& csv);
 
 }  // namespace rollnoise::cli

@@ -9,6 +9,35 @@
 
 namespace rollnoise::io {
 
+namespace {
+
+// The physical ranges of the keys whose valid values include obviously unphysical ones: outside
+// them a value is accepted with a warning (KeySpec::warn_min, warn_max, warn_why).
+struct PhysicalRange {
+  const char* key;
+  double lo, hi;
+  const char* why;
+};
+const PhysicalRange kPhysicalRanges[] = {
+    {"friction.mu", 0.0, 1.0, "wheel-rail friction is about 0.1 (wet, contaminated) to 0.6 (dry, sanded)"},
+    {"rolling.speed", 0.0, 150.0, "the model is for railway speeds; 150 m/s is 540 km/h"},
+    {"contact.normal_force", 0.0, 250e3, "a wheel load above 250 kN is a 50 t axle load"},
+    {"wheel.poisson_ratio", 0.0, 0.5, "steel's is about 0.28-0.3; a negative one is an auxetic material"},
+    {"curve.cant_deficiency", -0.3, 0.3,
+     "cant deficiency and excess are limited to about 0.3 m even for tilting trains (EN 13803)"},
+    {"curve.conicity", 0.0, 0.5, "equivalent conicities of worn and new profiles lie below about 0.5"},
+    {"curve.wheel_radius", 0.2, 0.65, "railway wheels have rolling radii of about 0.3-0.6 m"},
+};
+
+std::vector<KeySpec> with_physical_ranges(std::vector<KeySpec> schema) {
+  for (const PhysicalRange& r : kPhysicalRanges)
+    for (KeySpec& k : schema)
+      if (k.key == r.key) k.warn_min = r.lo, k.warn_max = r.hi, k.warn_why = r.why;
+  return schema;
+}
+
+}  // namespace
+
 const std::vector<KeySpec>& case_schema() {
   using T = KeyType;
   static const std::string memory_default = [] {
@@ -16,7 +45,7 @@ const std::vector<KeySpec>& case_schema() {
     std::snprintf(text, sizeof text, "%.6e", pipeline::default_memory_limit());
     return std::string(text);
   }();
-  static const std::vector<KeySpec> schema = {
+  static const std::vector<KeySpec> schema = with_physical_ranges({
       // material, friction, rolling
       {"material.E", T::PositiveReal, "210e9", "Pa", "Young's modulus of wheel and rail"},
       {"material.nu", T::Real, "0.28", "-", "Poisson's ratio of wheel and rail (0 <= nu < 0.5)"},
@@ -323,7 +352,7 @@ const std::vector<KeySpec>& case_schema() {
       {"limits.steps", T::Integer, "1000000", "-",
        "the most time steps of a run, points of a sweep, or frequencies of an axis, excitation or bands",
        {}, 1, "", LONG_MAX},
-  };
+  });
   return schema;
 }
 
@@ -358,6 +387,8 @@ std::string describe_schema() {
         os << ")";
       }
       if (k.type == KeyType::Integer) os << " (integer >= " << k.minimum << ")";
+      if (!k.warn_why.empty())
+        os << "; physical range [" << k.warn_min << ", " << k.warn_max << "], a warning outside";
       os << "\n";
     }
   }
