@@ -25,6 +25,7 @@ const PhysicalRange kPhysicalRanges[] = {
     {"wheel.poisson_ratio", 0.0, 0.5, "steel's is about 0.28-0.3; a negative one is an auxetic material"},
     {"curve.cant_deficiency", -0.3, 0.3,
      "cant deficiency and excess are limited to about 0.3 m even for tilting trains (EN 13803)"},
+    {"curve.cant", 0.0, 0.2, "track cant is limited to 0.16-0.2 m (EN 13803)"},
     {"curve.conicity", 0.0, 0.5, "equivalent conicities of worn and new profiles lie below about 0.5"},
     {"curve.wheel_radius", 0.2, 0.65, "railway wheels have rolling radii of about 0.3-0.6 m"},
 };
@@ -180,7 +181,12 @@ const std::vector<KeySpec>& case_schema() {
        "discrete model: Hankel singular values kept, relative to the largest"},
       // curving (noise)
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
-      {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
+      {"curve.cant_deficiency", T::Real, "0.0", "m",
+       "cant deficiency (positive: unbalanced force outwards); fixed whatever the speed (see curve.cant)"},
+      {"curve.cant", T::Real, "", "m",
+       "the track's cant D, the height difference of the rail heads; with it the cant deficiency follows from "
+       "the speed: I = s V^2 / (g R) - D, s = 1.5 m (EN 13803), so that another rolling.speed gives another I",
+       {}, 0, "optional (curve.radius > 0): instead of curve.cant_deficiency (both are refused)"},
       {"curve.creepage", T::String, "\"estimate\"", "-",
        "mean creepages and contact position: quasi-static bogie estimate (src/noise/curving.hpp; with "
        "contact.geometry = \"profiles\" the curve contact state of src/noise/curve_state.hpp), "
