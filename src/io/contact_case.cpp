@@ -9,13 +9,11 @@
 namespace rollnoise::io {
 namespace {
 
-// The grid of a Hertzian case: given bounds or a scale around the ellipse, and at least 4
-// elements across each axis of the patch.
 // The semi-axes of a Hertzian case: given (contact.a, contact.b), or from the radii of wheel and
 // rail at the case's load. The undeformed distance of two bodies touching at principal curvatures
 // aligned with x and y is h = A x^2 + B y^2 with A = 1/(2 R_w) (the rail is straight along x) and
-// B = (1/R_r + 1/R_p)/2 (Johnson 1985, Contact Mechanics, Sec. 4.2, Eq. 4.1 ff.; a concave wheel
-// profile has R_p < 0); contact::hertz_from_curvatures gives a, b for the load (Eqs. 4.39-4.41).
+// B = (1/R_r + 1/R_p)/2 (Johnson 1985, Contact Mechanics, Sec. 4.1, the geometry of the gap; a concave wheel
+// profile has R_p < 0); contact::hertz_from_curvatures gives a, b for the load (Sec. 4.2).
 void read_hertz_semi_axes(const CaseReader& r, ContactCase& c) {
   const bool radii = r.has("contact.wheel_radius") || r.has("contact.rail_radius");
   if (!radii) {
@@ -47,6 +45,8 @@ void read_hertz_semi_axes(const CaseReader& r, ContactCase& c) {
   c.a = hz.a, c.b = hz.b;
 }
 
+// The grid of a Hertzian case: given bounds or a scale around the ellipse, and at least 4
+// elements across each axis of the patch.
 void read_hertz_grid(const CaseReader& r, ContactCase& c, long nx, long ny) {
   read_hertz_semi_axes(r, c);
   if (r.has("grid.x_min")) {

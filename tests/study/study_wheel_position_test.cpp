@@ -5,6 +5,7 @@
 // /noise/contact/two_point.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
