@@ -129,7 +129,7 @@ std::string iso8601_utc(std::time_t t) {
 }
 
 Provenance& provenance_store() {
-  static Provenance p{ROLLNOISE_GIT_VERSION, "", iso8601_utc(std::time(nullptr))};
+  static Provenance p{ROLLNOISE_GIT_VERSION, "", iso8601_utc(std::time(nullptr)), ""};
   return p;
 }
 

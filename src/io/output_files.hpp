@@ -109,8 +109,8 @@ void record_invocation(int argc, const char* const* argv);
 struct Provenance {
   std::string program_version;  ///< git describe --always --dirty at build time, or "unknown"
   std::string command_line;     ///< argv, shell-quoted (empty unless record_invocation was called)
-  std::string command;          ///< the subcommand (the first argument not an option), e.g. "noise"
   std::string date;             ///< start of the run, ISO 8601 UTC, e.g. 2025-01-31T12:00:00Z
+  std::string command;          ///< the subcommand (the first argument not an option), e.g. "noise"
 };
 const Provenance& provenance();
 
