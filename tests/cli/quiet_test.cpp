@@ -49,7 +49,7 @@ TEST(QuietOption, NoisePrintsNothingOnSuccess) {
                                   (temp_dir() / "q_noise.h5").string());
 }
 
-TEST(QuietOption, WarningsStillReachStderr) {
+TEST(QuietOption, ErrorsStillReachStderr) {
   // an unknown key is an error: exit 2 and its message, also with -q
   const Invocation r = run("steady " + paper_case() + " -q --set grid.nz=3 -o " +
                            (temp_dir() / "q_bad.h5").string());

@@ -5,8 +5,8 @@
 // 4.39-4.41 with complete elliptic integrals): the semi-ellipsoidal pressure p0 (1 - x^2/a^2 -
 // y^2/b^2)^(1/2) on a, b displaces the surfaces by delta - A x^2 - B y^2 with (Johnson 1985,
 // Contact Mechanics, Sec. 3.6, in integral form)
-//   A = p0 b / (2 E*) Int_0^inf dw / sqrt((a^2 + w)^3 (b^2 + w) w),
-//   B = p0 b / (2 E*) Int_0^inf dw / sqrt((a^2 + w) (b^2 + w)^3 w),   p0 = 3N / (2 pi a b),
+//   A = p0 a b / (2 E*) Int_0^inf dw / sqrt((a^2 + w)^3 (b^2 + w) w),
+//   B = p0 a b / (2 E*) Int_0^inf dw / sqrt((a^2 + w) (b^2 + w)^3 w),   p0 = 3N / (2 pi a b),
 // integrated here by Simpson's rule after w = a^2 tan^2(theta); A and B must be the curvatures of
 // the radii, h = x^2 / (2 R_w) + y^2 (1/R_r + 1/R_p) / 2. Tolerance 1e-8 relative (the inversion
 // converges to 1e-15 in the eccentricity; Simpson on 4000 intervals of a smooth periodic-like
@@ -52,7 +52,7 @@ std::pair<double, double> curvatures_of_patch(double a, double b, double N) {
       [&](double t) { return 2.0 * std::cos(t) * std::cos(t) / (a * a * std::sqrt(q(t))); });
   const double ib =
       simpson([&](double t) { return 2.0 * std::cos(t) * std::cos(t) / std::pow(q(t), 1.5); });
-  return {p0 * b / (2.0 * Es) * ia, p0 * b / (2.0 * Es) * ib};
+  return {p0 * a * b / (2.0 * Es) * ia, p0 * a * b / (2.0 * Es) * ib};
 }
 
 }  // namespace
