@@ -2,7 +2,7 @@
 // The study itself (what is measured on each grid, the errors, the half-step phase lead, the
 // length of the transient runs) is pipeline/grid_study.hpp; the observed orders of convergence are
 // linalg/convergence.hpp. This file reads the options, runs the grids, prints the tables and
-// writes them to HDF5 (/bench/*, default CASENAME.h5) and as CSV (postprocess/plot_bench.py draws it).
+// writes them to HDF5 (/bench/*, default CASENAME.bench.h5) and as CSV (postprocess/plot_bench.py draws it).
 #include <cmath>
 #include <cstdio>
 #include <ostream>

@@ -9,13 +9,15 @@ namespace rollnoise::cli {
 
 struct CommonOptions {
   std::string case_file;
-  std::string output;                  ///< empty: CASENAME.h5 in the current folder
+  std::string command;                 ///< the subcommand, e.g. "noise" (names the default output)
+  std::string output;                  ///< empty: CASENAME.COMMAND.h5 in the current folder
   std::vector<std::string> overrides;  ///< --set key=value
   bool quiet = false;
   std::string contact_reference;       ///< --reference contact DIR (steady, validate)
 };
 
-/// Output path: -o, or CASENAME.h5.
+/// Output path: -o, or CASENAME.COMMAND.h5 (curve_300m.noise.h5), so that the commands of one case
+/// do not replace each other's results.
 std::string output_path(const CommonOptions& o, const std::string& case_name);
 
 /// rollnoise study / collect.

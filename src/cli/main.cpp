@@ -15,7 +15,7 @@
 //   rollnoise contact-input CASE.toml [-o DIR] [--steady]   CONTACT's input for the case
 //   rollnoise keys                      the declared case keys with defaults and help
 //
-// Every command but keys takes -q (no progress output). Commands and options: docs/interface.md.
+// Every command but keys takes -q (only warnings and errors, on stderr). Commands and options: docs/interface.md.
 //
 // Exit status: 0 success, 2 bad input (the message names the file and key), 1 numerical failure.
 #include <CLI/CLI.hpp>
@@ -35,7 +35,8 @@
 namespace rollnoise::cli {
 
 std::string output_path(const CommonOptions& o, const std::string& case_name) {
-  return o.output.empty() ? case_name + ".h5" : o.output;
+  if (!o.output.empty()) return o.output;
+  return case_name + (o.command.empty() ? "" : "." + o.command) + ".h5";
 }
 
 }  // namespace rollnoise::cli
@@ -69,11 +70,13 @@ struct CommandLine {
            *keys = nullptr, *study = nullptr, *collect = nullptr;
 };
 
+const char* const kQuietHelp = "only warnings and errors (stderr): no progress, no summary on stdout";
+
 void add_common(CLI::App* sub, cli::CommonOptions& common) {
   sub->add_option("case", common.case_file, "case file (TOML)")->required();
-  sub->add_option("-o,--output", common.output, "output file (HDF5), default CASENAME.h5");
+  sub->add_option("-o,--output", common.output, "output file (HDF5), default CASENAME.COMMAND.h5");
   sub->add_option("--set", common.overrides, "override a case entry: --set grid.nx=60")->take_all();
-  sub->add_flag("-q,--quiet", common.quiet, "no progress output");
+  sub->add_flag("-q,--quiet", common.quiet, kQuietHelp);
 }
 
 // The contact commands: steady, transient, creep, response, validate.
@@ -135,7 +138,7 @@ void add_tool_commands(CLI::App& app, CommandLine& cl) {
   cl.contact_input->add_option("-o,--output", cl.common.output, "folder of CASENAME.inp (a profile case in a curve: CASENAME_<wheel>.inp per wheel; default: the current folder)");
   cl.contact_input->add_option("--set", cl.common.overrides, "override a case entry: --set grid.nx=60")->take_all();
   cl.contact_input->add_flag("--steady", cl.contact_input_steady, "only the steady case, also when the case has an [excitation]");
-  cl.contact_input->add_flag("-q,--quiet", cl.common.quiet, "no progress output");
+  cl.contact_input->add_flag("-q,--quiet", cl.common.quiet, kQuietHelp);
   cl.keys = app.add_subcommand("keys", "list the case-file keys with defaults and help");
 }
 
@@ -157,10 +160,10 @@ void add_study_commands(CLI::App& app, CommandLine& cl) {
           },
           "K"));
   cl.study->add_flag("--no-reuse", o.no_reuse, "compute every case from scratch (to measure the reuse)");
-  cl.study->add_flag("-q,--quiet", o.quiet, "no progress output");
+  cl.study->add_flag("-q,--quiet", o.quiet, kQuietHelp);
   cl.collect = app.add_subcommand("collect", "merge a study's cases into OUTPUT/study.h5 and study.csv");
   cl.collect->add_option("study", o.study_file, "study file (TOML)")->required();
-  cl.collect->add_flag("-q,--quiet", o.quiet, "no progress output");
+  cl.collect->add_flag("-q,--quiet", o.quiet, kQuietHelp);
 }
 
 // The parsed command, run: its exit status (InputError and NumericalError propagate).
@@ -174,7 +177,13 @@ int dispatch(CommandLine& cl) {
       throw InputError("--reference", "--reference " + cl.reference[0] + ": the known reference is 'contact DIR'");
     cl.common.contact_reference = cl.reference[1];
   }
+  for (const CLI::App* sub : {cl.steady, cl.transient, cl.creep, cl.response, cl.validate, cl.noise,
+                              cl.receptance, cl.modes, cl.squeal, cl.bench, cl.statespace})
+    if (sub->parsed()) cl.common.command = sub->get_name();
   const cli::CommonOptions& common = cl.common;
+  // -q: warnings and errors only (stderr); study --list still prints its commands, which are its result
+  const bool study_like = cl.study->parsed() || cl.collect->parsed();
+  if (study_like ? cl.study_options.quiet && !cl.study_options.list : common.quiet) cli::silence_stdout();
   if (cl.study->parsed()) return cli::run_study(cl.study_options);  // its own output folder (docs/study.md)
   if (cl.collect->parsed()) return cli::run_collect(cl.study_options);
   if (cl.contact_input->parsed()) return cli::run_contact_input(common, cl.contact_input_steady);

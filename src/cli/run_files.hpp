@@ -18,9 +18,16 @@ void start_process(int argc, char** argv);
 /// else `status`.
 int finish_process(int status);
 
+/// -q: from here on nothing reaches standard output (it is sent to /dev/null, also for the worker
+/// processes a study starts), so that every command prints only its warnings and errors (stderr).
+/// One switch for every command, instead of a condition at each print.
+void silence_stdout();
+
 /// InputError (exit 2, naming the option and the path) unless every output of the run can be
-/// written without overwriting an input or another output: -o (or CASENAME.h5) and `csv` (--csv,
-/// if not empty).
+/// written without overwriting an input or another output: -o (or CASENAME.COMMAND.h5) and `csv`
+/// (--csv, if not empty). The default output (no -o) also must not replace an existing file that
+/// another command wrote (or that is no rollnoise result): only -o naming it replaces such a file.
+/// Prints the case's physical-range warnings (io::physical_range_warnings) on stderr, once.
 void check_run_files(const CommonOptions& o, const std::string& csv);
 
 }  // namespace rollnoise::cli

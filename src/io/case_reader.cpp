@@ -309,6 +309,26 @@ std::vector<std::string> split_toml_array(const std::string& text, const std::st
   return out;
 }
 
+std::vector<std::string> physical_range_warnings(const CaseReader& r) {
+  std::vector<std::string> lines;
+  for (const KeySpec& k : case_schema()) {
+    if (k.warn_why.empty() || !r.has(k.key)) continue;
+    double x = 0.0;
+    try {
+      x = r.real(k.key);
+    } catch (const InputError&) {
+      continue;  // an invalid value: its reader reports it
+    }
+    if (x >= k.warn_min && x <= k.warn_max) continue;
+    std::ostringstream os;
+    os << "warning: " << k.key << " = " << x << (k.units == "-" ? "" : " " + k.units)
+       << " is outside the physical range [" << k.warn_min << ", " << k.warn_max << "] (" << k.warn_why
+       << "); the run continues";
+    lines.push_back(os.str());
+  }
+  return lines;
+}
+
 namespace fs = std::filesystem;
 
 std::string find_model_file(const CaseReader& r, const std::string& key) {

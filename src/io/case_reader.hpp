@@ -72,6 +72,11 @@ auto within_case(const CaseReader& r, Stage&& stage) {
   }
 }
 
+/// One line per key of the case (given in the file or by --set) whose value lies outside the key's
+/// physical range (KeySpec::warn_min, warn_max): "warning: friction.mu = 5 is outside the physical
+/// range [0, 1] (why); the run continues". A value that is invalid is left to its reader's error.
+std::vector<std::string> physical_range_warnings(const CaseReader& r);
+
 /// Resolve a model file: as given if absolute, else relative to the case file's folder, its
 /// parent, or the source tree (in that order). InputError naming `key` if none exists.
 std::string resolve_model_file(const CaseReader& r, const std::string& key);

@@ -9,6 +9,36 @@
 
 namespace rollnoise::io {
 
+namespace {
+
+// The physical ranges of the keys whose valid values include obviously unphysical ones: outside
+// them a value is accepted with a warning (KeySpec::warn_min, warn_max, warn_why).
+struct PhysicalRange {
+  const char* key;
+  double lo, hi;
+  const char* why;
+};
+const PhysicalRange kPhysicalRanges[] = {
+    {"friction.mu", 0.0, 1.0, "wheel-rail friction is about 0.1 (wet, contaminated) to 0.6 (dry, sanded)"},
+    {"rolling.speed", 0.0, 150.0, "the model is for railway speeds; 150 m/s is 540 km/h"},
+    {"contact.normal_force", 0.0, 250e3, "a wheel load above 250 kN is a 50 t axle load"},
+    {"wheel.poisson_ratio", 0.0, 0.5, "steel's is about 0.28-0.3; a negative one is an auxetic material"},
+    {"curve.cant_deficiency", -0.3, 0.3,
+     "cant deficiency and excess are limited to about 0.3 m even for tilting trains (EN 13803)"},
+    {"curve.cant", 0.0, 0.2, "track cant is limited to 0.16-0.2 m (EN 13803)"},
+    {"curve.conicity", 0.0, 0.5, "equivalent conicities of worn and new profiles lie below about 0.5"},
+    {"curve.wheel_radius", 0.2, 0.65, "railway wheels have rolling radii of about 0.3-0.6 m"},
+};
+
+std::vector<KeySpec> with_physical_ranges(std::vector<KeySpec> schema) {
+  for (const PhysicalRange& r : kPhysicalRanges)
+    for (KeySpec& k : schema)
+      if (k.key == r.key) k.warn_min = r.lo, k.warn_max = r.hi, k.warn_why = r.why;
+  return schema;
+}
+
+}  // namespace
+
 const std::vector<KeySpec>& case_schema() {
   using T = KeyType;
   static const std::string memory_default = [] {
@@ -16,7 +46,7 @@ const std::vector<KeySpec>& case_schema() {
     std::snprintf(text, sizeof text, "%.6e", pipeline::default_memory_limit());
     return std::string(text);
   }();
-  static const std::vector<KeySpec> schema = {
+  static const std::vector<KeySpec> schema = with_physical_ranges({
       // material, friction, rolling
       {"material.E", T::PositiveReal, "210e9", "Pa", "Young's modulus of wheel and rail"},
       {"material.nu", T::Real, "0.28", "-", "Poisson's ratio of wheel and rail (0 <= nu < 0.5)"},
@@ -46,10 +76,22 @@ const std::vector<KeySpec>& case_schema() {
        {"hertz", "profiles"}},
       {"contact.normal_force", T::PositiveReal, "", "N", "prescribed total normal force N", {}, 0,
        "required"},
-      {"contact.a", T::PositiveReal, "", "m", "hertz: semi-axis in the rolling direction x", {}, 0,
-       "required with contact.geometry = \"hertz\""},
-      {"contact.b", T::PositiveReal, "", "m", "hertz: lateral semi-axis y", {}, 0,
-       "required with contact.geometry = \"hertz\""},
+      {"contact.a", T::PositiveReal, "", "m",
+       "hertz: semi-axis in the rolling direction x, at contact.normal_force (fixed: another load keeps it)", {}, 0,
+       "required with contact.geometry = \"hertz\" unless the radii contact.wheel_radius, contact.rail_radius "
+       "are given"},
+      {"contact.b", T::PositiveReal, "", "m", "hertz: lateral semi-axis y, at contact.normal_force", {}, 0,
+       "required with contact.geometry = \"hertz\" unless the radii are given"},
+      {"contact.wheel_radius", T::PositiveReal, "", "m",
+       "hertz: the wheel's rolling radius; with contact.rail_radius (and contact.wheel_profile_radius) a and b "
+       "follow from the load by Hertz theory (Johnson 1985, Sec. 4.2): h = x^2/(2 R_w) + y^2/2 (1/R_r + 1/R_p)",
+       {}, 0, "optional (hertz): instead of contact.a, contact.b; requires contact.rail_radius"},
+      {"contact.wheel_profile_radius", T::Real, "", "m",
+       "hertz: transverse radius R_p of the wheel's profile at the contact: positive convex, negative concave "
+       "(a worn, hollow tread; |R_p| must exceed contact.rail_radius)",
+       {}, 0, "optional (with contact.wheel_radius): without it the tread is conical, straight across (1/R_p = 0)"},
+      {"contact.rail_radius", T::PositiveReal, "", "m", "hertz: transverse radius R_r of the rail head at the contact",
+       {}, 0, "optional (hertz): required with contact.wheel_radius"},
       {"contact.wheel_profile", T::String, "\"models/profiles/MBench_S1002_v3.prw\"", "-",
        "profiles: wheel profile (SIMPACK .prw or CSV y, z in mm)"},
       {"contact.rail_profile", T::String, "\"models/profiles/MBench_UIC60_v3.prr\"", "-",
@@ -139,7 +181,12 @@ const std::vector<KeySpec>& case_schema() {
        "discrete model: Hankel singular values kept, relative to the largest"},
       // curving (noise)
       {"curve.radius", T::NonNegReal, "0.0", "m", "curve radius; 0 is tangent track"},
-      {"curve.cant_deficiency", T::Real, "0.0", "m", "cant deficiency (positive: unbalanced force outwards)"},
+      {"curve.cant_deficiency", T::Real, "0.0", "m",
+       "cant deficiency (positive: unbalanced force outwards); fixed whatever the speed (see curve.cant)"},
+      {"curve.cant", T::Real, "", "m",
+       "the track's cant D, the height difference of the rail heads; with it the cant deficiency follows from "
+       "the speed: I = s V^2 / (g R) - D, s = 1.5 m (EN 13803), so that another rolling.speed gives another I",
+       {}, 0, "optional (curve.radius > 0): instead of curve.cant_deficiency (both are refused)"},
       {"curve.creepage", T::String, "\"estimate\"", "-",
        "mean creepages and contact position: the rigid bogie's quasi-static estimate (with "
        "contact.geometry = \"profiles\" each wheel's contact state on the profiles), "
@@ -323,7 +370,7 @@ const std::vector<KeySpec>& case_schema() {
       {"limits.steps", T::Integer, "1000000", "-",
        "the most time steps of a run, points of a sweep, or frequencies of an axis, excitation or bands",
        {}, 1, "", LONG_MAX},
-  };
+  });
   return schema;
 }
 
@@ -358,6 +405,8 @@ std::string describe_schema() {
         os << ")";
       }
       if (k.type == KeyType::Integer) os << " (integer >= " << k.minimum << ")";
+      if (!k.warn_why.empty())
+        os << "; physical range [" << k.warn_min << ", " << k.warn_max << "], a warning outside";
       os << "\n";
     }
   }

@@ -31,6 +31,11 @@ struct KeySpec {
   /// Keys without a default: "required" (and where), or "optional: " and what happens without it.
   std::string absent = {};
   long maximum = std::numeric_limits<int>::max();  ///< for Integer: the target's range (int by default)
+  /// The physical range of a real key: a value outside [warn_min, warn_max] is accepted (it is
+  /// valid for the model) with a warning (physical_range_warnings, case_reader.hpp); why: warn_why.
+  double warn_min = -std::numeric_limits<double>::infinity();
+  double warn_max = std::numeric_limits<double>::infinity();
+  std::string warn_why = {};
 };
 
 /// All declared keys, in the order they are documented.

@@ -2,17 +2,53 @@
 
 #include <algorithm>
 
+#include "contact/hertz.hpp"
 #include "geometry/profile.hpp"
 #include "io/profile_file.hpp"
 
 namespace rollnoise::io {
 namespace {
 
+// The semi-axes of a Hertzian case: given (contact.a, contact.b), or from the radii of wheel and
+// rail at the case's load. The undeformed distance of two bodies touching at principal curvatures
+// aligned with x and y is h = A x^2 + B y^2 with A = 1/(2 R_w) (the rail is straight along x) and
+// B = (1/R_r + 1/R_p)/2 (Johnson 1985, Contact Mechanics, Sec. 4.1, the geometry of the gap; a concave wheel
+// profile has R_p < 0); contact::hertz_from_curvatures gives a, b for the load (Sec. 4.2).
+void read_hertz_semi_axes(const CaseReader& r, ContactCase& c) {
+  const bool radii = r.has("contact.wheel_radius") || r.has("contact.rail_radius");
+  if (!radii) {
+    if (r.has("contact.wheel_profile_radius"))
+      r.fail("contact.wheel_profile_radius", "is used with contact.wheel_radius and contact.rail_radius");
+    c.a = r.real("contact.a");
+    c.b = r.real("contact.b");
+    return;
+  }
+  for (const char* key : {"contact.a", "contact.b"})
+    if (r.has(key))
+      r.fail(key, "give either the semi-axes contact.a, contact.b or the radii contact.wheel_radius, "
+                  "contact.rail_radius (from which a and b follow with the load), not both");
+  const double wheel = r.real("contact.wheel_radius"), rail = r.real("contact.rail_radius");
+  double profile_curvature = 0.0;  // a conical tread: straight across
+  if (r.has("contact.wheel_profile_radius")) {
+    const double profile = r.real("contact.wheel_profile_radius");
+    if (profile == 0.0) r.fail("contact.wheel_profile_radius", "must not be 0 (leave it out for a conical tread)");
+    profile_curvature = 1.0 / profile;
+  }
+  const double A = 0.5 / wheel, B = 0.5 * (1.0 / rail + profile_curvature);
+  if (!(B > 0.0))
+    r.fail("contact.wheel_profile_radius",
+           "a concave wheel profile must be wider than the rail head: |R_p| > contact.rail_radius (else the "
+           "contact is conformal, not Hertzian)");
+  if (!(c.normal_force > 0.0) || !(c.material.E > 0.0) || !(c.material.nu >= 0.0 && c.material.nu < 0.5))
+    r.fail("contact.wheel_radius", "a and b from the radii need a valid contact.normal_force, material.E and material.nu");
+  const contact::HertzContact hz = contact::hertz_from_curvatures(A, B, c.normal_force, c.material);
+  c.a = hz.a, c.b = hz.b;
+}
+
 // The grid of a Hertzian case: given bounds or a scale around the ellipse, and at least 4
 // elements across each axis of the patch.
 void read_hertz_grid(const CaseReader& r, ContactCase& c, long nx, long ny) {
-  c.a = r.real("contact.a");
-  c.b = r.real("contact.b");
+  read_hertz_semi_axes(r, c);
   if (r.has("grid.x_min")) {
     c.grid.nx = nx, c.grid.ny = ny;
     const double x0 = r.real("grid.x_min"), x1 = r.real("grid.x_max");
@@ -54,6 +90,12 @@ void read_profiles(const CaseReader& r, ContactCase& c, long nx, InputProblems& 
       if (r.has(key))
         r.fail(key, "is used only with contact.geometry = \"hertz\"; with \"profiles\" the grid is placed around "
                     "the contact the profiles give (set its size with grid.scale, grid.nx)");
+    });
+  for (const char* key : {"contact.wheel_radius", "contact.wheel_profile_radius", "contact.rail_radius"})
+    problems.check([&] {
+      if (r.has(key))
+        r.fail(key, "is used only with contact.geometry = \"hertz\"; with \"profiles\" the profiles give the "
+                    "curvatures at the contact point");
     });
   problems.check([&] { c.grid_options.scale = std::max(1.25, r.real("grid.scale")); });
 }

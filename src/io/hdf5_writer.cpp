@@ -91,6 +91,7 @@ Hdf5Writer::Hdf5Writer(std::string path) : path_(std::move(path)), temp_(path_, 
     const Provenance& p = provenance();
     attribute("/", "program_version", p.program_version);
     attribute("/", "command_line", p.command_line);
+    attribute("/", "command", p.command);
     attribute("/", "date", p.date);
   } catch (...) {
     H5Fclose(file_);  // the destructor does not run for a throwing constructor

@@ -6,7 +6,7 @@
 // close have succeeded: a run that fails (also for a full disk or a file-size limit) or is
 // interrupted leaves neither the temporary nor a file that looks complete. Attributes may exceed
 // 64 kB (the file uses the HDF5 1.8 format, dense attribute storage). The root group holds
-// the provenance attributes program_version, command_line and date (output_files.hpp).
+// the provenance attributes program_version, command_line, command and date (output_files.hpp).
 #pragma once
 
 #include <complex>

@@ -20,6 +20,7 @@
 #include "io/track_file.hpp"
 #include "io/wheel_fe_case.hpp"
 #include "io/wheel_file.hpp"
+#include "vehicle/cant.hpp"
 
 namespace rollnoise::io {
 
@@ -93,6 +94,19 @@ void read_multibody_wheelsets(const CaseReader& r, NoiseCase& c) {
   }
 }
 
+// curve.cant_deficiency, or from curve.cant and the speed (vehicle/cant.hpp, EN 13803), so that a
+// study of the speed on a canted curve varies the deficiency; giving both is refused.
+double read_cant_deficiency(const CaseReader& r) {
+  if (!r.has("curve.cant")) return r.real("curve.cant_deficiency");
+  if (r.has("curve.cant_deficiency"))
+    r.fail("curve.cant_deficiency",
+           "give either curve.cant (the deficiency then follows from rolling.speed and curve.radius) or "
+           "curve.cant_deficiency, not both");
+  const double cant = r.real("curve.cant"), radius = r.real("curve.radius");
+  if (!(radius > 0.0)) r.fail("curve.cant", "applies to a curve (curve.radius > 0), not to tangent track");
+  return noise::cant_deficiency_from_cant(r.real("rolling.speed"), radius, cant);
+}
+
 // [curve]: radius, cant deficiency, the curve creepage state and the bogie's parameters.
 void read_curve(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
   problems.check([&] {
@@ -100,7 +114,7 @@ void read_curve(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
     if (c.curve_radius > 0.0 && c.curve_radius < 50.0)
       r.fail("curve.radius", "below 50 m is outside the curving estimate's range");
   });
-  problems.check([&] { c.cant_deficiency = r.real("curve.cant_deficiency"); });
+  problems.check([&] { c.cant_deficiency = read_cant_deficiency(r); });
   problems.check([&] { c.cg_height = r.real("curve.cg_height"); });
   problems.check([&] {
     read_curve_creepage_mode(r, c);

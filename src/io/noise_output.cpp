@@ -112,6 +112,15 @@ void write_contact_work(Hdf5Writer& w, const std::string& g, const pipeline::Whe
       "model failed its check; 0 on the Hessenberg route)");
 }
 
+// Whether the flange of wheel `id`'s axle touches its rail on this wheel's side in the bogie's
+// curving estimate (K6; the leading outer wheel's is /noise/contact/two_point): the outer wheel for
+// an outer-flange contact, the inner one for an inner-flange contact; 0 without an estimate.
+int wheel_two_point(const pipeline::CurveSetup& curve, noise::WheelId id) {
+  if (!curve.estimated) return 0;
+  const noise::AxleCurving& axle = noise::is_leading(id) ? curve.curving.leading : curve.curving.trailing;
+  return axle.flange == (noise::is_outer(id) ? 1 : -1) && axle.flange_force != 0.0 ? 1 : 0;
+}
+
 void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelNoise& wn) {
   const std::string g = group + "/contact/";
   w.write(g + "normal_stiffness", wn.mean.normal_stiffness(), "N/m");
@@ -198,6 +207,9 @@ void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
   for (const pipeline::WheelNoise& wn : r.wheels) {
     const std::string g = std::string("/noise/wheels/") + noise::wheel_name(wn.wheel);
     write_wheel(w, g, wn);
+    w.write(g + "/contact/two_point", std::vector<int>{wheel_two_point(r.mean.curve(), wn.wheel)}, {},
+            "- (1: the axle's flange touches the rail on this wheel's side, the curving estimate's two-point "
+            "contact; 0 otherwise or without the estimate)");
     write_narrow_band(w, g, r, a++);
     sources.push_back(noise::wheel_name(wn.wheel));
   }

@@ -14,6 +14,7 @@
 
 #include "core/errors.hpp"
 #include "io/excitation.hpp"
+#include "io/hdf5_reader.hpp"
 #include "rollnoise_version.h"  // generated at build time by cmake/version.cmake
 
 namespace rollnoise::io {
@@ -128,7 +129,7 @@ std::string iso8601_utc(std::time_t t) {
 }
 
 Provenance& provenance_store() {
-  static Provenance p{ROLLNOISE_GIT_VERSION, "", iso8601_utc(std::time(nullptr))};
+  static Provenance p{ROLLNOISE_GIT_VERSION, "", iso8601_utc(std::time(nullptr)), ""};
   return p;
 }
 
@@ -278,7 +279,21 @@ std::string shell_quote(const std::vector<std::string>& args) {
 void record_invocation(int argc, const char* const* argv) {
   Provenance& p = provenance_store();
   p.command_line = shell_quote(std::vector<std::string>(argv, argv + argc));
+  for (int i = 1; i < argc && p.command.empty(); ++i)
+    if (argv[i][0] != '-') p.command = argv[i];
   p.date = iso8601_utc(std::time(nullptr));
+}
+
+std::optional<std::string> recorded_command(const std::string& path) {
+  const Hdf5Reader file(path);
+  if (!file.ok()) return std::nullopt;
+  if (auto command = file.attribute("/", "command")) return command;
+  const std::optional<std::string> line = file.attribute("/", "command_line");
+  if (!line) return std::nullopt;
+  std::istringstream words(*line);
+  std::string program, command;
+  if (!(words >> program >> command)) return std::nullopt;
+  return command;
 }
 
 const Provenance& provenance() {

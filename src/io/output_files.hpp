@@ -16,11 +16,12 @@
 //    handler unlink()s (async-signal-safe) before it restores the default action and raises the
 //    signal again, so the exit status still shows the signal. A signal that was ignored when the
 //    first temporary was made (nohup, background jobs) stays ignored.
-//  - Provenance: record_invocation() (called once by main) keeps the command line and the start
-//    time; every HDF5 file gets them as root attributes with the program version
+//  - Provenance: record_invocation() (called once by main) keeps the command line, the command and
+//    the start time; every HDF5 file gets them as root attributes with the program version
 //    (git describe --always --dirty at build time, "unknown" outside git).
 #pragma once
 
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -109,8 +110,14 @@ struct Provenance {
   std::string program_version;  ///< git describe --always --dirty at build time, or "unknown"
   std::string command_line;     ///< argv, shell-quoted (empty unless record_invocation was called)
   std::string date;             ///< start of the run, ISO 8601 UTC, e.g. 2025-01-31T12:00:00Z
+  std::string command;          ///< the subcommand (the first argument not an option), e.g. "noise"
 };
 const Provenance& provenance();
+
+/// The command that wrote the rollnoise result `path` (its root attribute `command`, or for files
+/// written before that attribute the second word of `command_line`); nullopt when `path` is not an
+/// HDF5 file holding either.
+std::optional<std::string> recorded_command(const std::string& path);
 
 /// `args` joined by spaces, each quoted for a POSIX shell where needed ('...' with ' as '\'').
 std::string shell_quote(const std::vector<std::string>& args);

@@ -70,6 +70,9 @@ std::vector<WheelRecord> read_wheel_records(const Hdf5Reader& h, std::size_t nb)
     w.normal_force = normal->front();
     w.force_level = *force;
     w.velocity_level = *velocity;
+    if (const auto v = h.numbers(g + "/contact/wheelset_lateral"); v && v->size() == 1) w.wheelset_lateral = v->front();
+    if (const auto v = h.numbers(g + "/contact/wheelset_yaw"); v && v->size() == 1) w.wheelset_yaw = v->front();
+    if (const auto v = h.numbers(g + "/contact/two_point"); v && v->size() == 1) w.two_point = v->front();
     out.push_back(std::move(w));
   }
   return out;
@@ -134,6 +137,7 @@ void band_cells(std::ostream& csv, const BandTable& t, std::size_t i, std::size_
 struct WheelColumns {
   std::string name;
   std::vector<double> creepage, angle, normal;  // n x 3, n, n
+  std::vector<double> lateral, yaw, two_point;  // n each: the wheel's axle and its flange contact
   BandTable bands;
 };
 
@@ -158,12 +162,18 @@ std::vector<WheelColumns> wheel_columns(const std::vector<StudyRow>& rows,
                    std::vector<double>(3 * n, kNaN),
                    std::vector<double>(n, kNaN),
                    std::vector<double>(n, kNaN),
+                   std::vector<double>(n, kNaN),
+                   std::vector<double>(n, kNaN),
+                   std::vector<double>(n, kNaN),
                    {}};
     for (std::size_t i = 0; i < n; ++i)
       if (const WheelRecord* w = find_wheel(rows[i], name)) {
         for (int k = 0; k < 3; ++k) c.creepage[3 * i + k] = w->creepage[k];
         c.angle[i] = w->contact_angle;
         c.normal[i] = w->normal_force;
+        c.lateral[i] = w->wheelset_lateral;
+        c.yaw[i] = w->wheelset_yaw;
+        c.two_point[i] = w->two_point;
       }
     c.bands = band_table(n, centres, [&](std::size_t i, bool velocity) {
       const WheelRecord* w = find_wheel(rows[i], name);
@@ -341,6 +351,9 @@ void write_study_h5(const std::string& h5_path, const pipeline::StudyPlan& plan,
     w.write(g + "creepage", c.creepage, {n, 3}, "-, -, rad/m (the wheel's own contact frame)");
     w.write(g + "contact_angle", c.angle, {n}, "rad");
     w.write(g + "normal_force", c.normal, {n}, "N");
+    w.write(g + "wheelset_lateral", c.lateral, {n}, "m (the wheel's axle, towards the outer rail)");
+    w.write(g + "wheelset_yaw", c.yaw, {n}, "rad (the wheel's axle)");
+    w.write(g + "two_point", c.two_point, {n}, "- (1: flange contact on this wheel's side, 0: none)");
     w.write(g + "force_level", c.bands.force, {n, nb, 4}, kForceUnits);
     w.write(g + "velocity_level", c.bands.velocity, {n, nb, 2, 4}, kVelocityUnits);
   }
@@ -364,7 +377,8 @@ void write_study_csv(const std::string& csv_path, const pipeline::StudyPlan& pla
     for (const WheelColumns& c : t.wheels) {
       const std::string p = "," + c.name + ".";
       csv << p << "xi_x [-]" << p << "xi_y [-]" << p << "phi [rad/m]" << p << "contact_angle [rad]"
-          << p << "normal_force [N]";
+          << p << "normal_force [N]" << p << "wheelset_lateral [m]" << p << "wheelset_yaw [rad]" << p
+          << "two_point [-]";
       band_header(csv, c.name + ".", t.centres);
     }
     csv << ",message\n";
@@ -380,7 +394,8 @@ void write_study_csv(const std::string& csv_path, const pipeline::StudyPlan& pla
       band_cells(csv, t.bands, i, nb);
       for (const WheelColumns& c : t.wheels) {
         for (int k = 0; k < 3; ++k) csv << "," << number(c.creepage[3 * i + k]);
-        csv << "," << number(c.angle[i]) << "," << number(c.normal[i]);
+        csv << "," << number(c.angle[i]) << "," << number(c.normal[i]) << "," << number(c.lateral[i]) << ","
+            << number(c.yaw[i]) << "," << number(c.two_point[i]);
         band_cells(csv, c.bands, i, nb);
       }
       csv << "," << csv_cell(r.message) << "\n";

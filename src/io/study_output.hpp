@@ -33,6 +33,9 @@ struct WheelRecord {
   std::array<double, 3> creepage{};      ///< xi_x, xi_y (-), phi (rad/m), the wheel's own contact frame
   double contact_angle = 0.0;            ///< rad
   double normal_force = 0.0;             ///< N
+  double wheelset_lateral = kNaN;        ///< m, the wheel's axle towards the outer rail (NaN: not in the file)
+  double wheelset_yaw = kNaN;            ///< rad, the wheel's axle
+  double two_point = kNaN;               ///< 1: flange contact on this wheel's side, 0: none (NaN: not in the file)
   std::vector<double> force_level;       ///< nb x 4, as CaseRecord::force_level (on its band_centre)
   std::vector<double> velocity_level;    ///< nb x 2 x 4, as CaseRecord::velocity_level
 };

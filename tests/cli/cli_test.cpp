@@ -521,7 +521,7 @@ TEST(BenchCommand, RefinementTableShowsTheErrorsFallingTowardsTheFinestGrid) {
   const fs::path csv = temp_dir() / "bench.csv", h5 = temp_dir() / "bench.h5";
   // CONTACT's creepage sampling: its first-order errors fall monotonically from 10x7 on (with midstep the
   // 100 Hz error of these coarse grids is the irregular spatial one, docs/accuracy.md)
-  const Invocation r = run("bench " + paper_case() + " --nx 10,14,20,34 -q --csv " + csv.string() + " -o " +
+  const Invocation r = run("bench " + paper_case() + " --nx 10,14,20,34 --csv " + csv.string() + " -o " +
                            h5.string() + " --set rolling.creepage_sampling='\"contact\"'");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("postprocess/plot_bench.py"), std::string::npos) << r.output;

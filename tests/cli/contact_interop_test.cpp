@@ -166,7 +166,7 @@ TEST(ContactInterop, TransientValidateAgreesToThePrintedDigits) {
   const auto out = (temp_dir() / "u1_reference.h5").string();
   const Invocation r =
       run("validate " + source_file("cases/paper_s31_longitudinal.toml") + " -o " + out +
-          " -q --set transient.duration=0.00137856 --set transient.analysis_start=0.0005"
+          " --set transient.duration=0.00137856 --set transient.analysis_start=0.0005"
           " --reference contact " +
           raw("U1"));
   ASSERT_EQ(r.status, 0) << r.output;

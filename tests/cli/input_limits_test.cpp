@@ -53,10 +53,10 @@ Refusal expect_refusal(const std::string& command, const std::string& case_file,
   return r;
 }
 
-// `rollnoise ARGS -q -o temp/OUT`: exit 0 and OUT written.
+// `rollnoise ARGS -o temp/OUT` (without -q: callers check the summary): exit 0 and OUT written.
 Invocation expect_success(const std::string& args, const std::string& out_name) {
   const fs::path out = temp_dir() / out_name;
-  const Invocation r = run(args + " -q -o " + out.string());
+  const Invocation r = run(args + " -o " + out.string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(out)) << out;
   return r;

@@ -60,7 +60,7 @@ TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreCo
   std::ofstream(d / "s.toml")
       << "base = \"base.toml\"\noutput = \"out\"\n[axes]\n\"curve.radius\" = [300.0, 500.0]\n";
   const std::string study = (d / "s.toml").string();
-  auto r = run("study " + study + " -j 1 -q");
+  auto r = run("study " + study + " -j 1");
   ASSERT_EQ(r.status, 0) << r.output;
   ASSERT_NE(r.output.find("2 complete now"), std::string::npos) << r.output;
 
@@ -71,17 +71,17 @@ TEST(StudyInputs, EditingTheBaseCaseOrAModelFileMakesTheResultsStaleAndTheyAreCo
   EXPECT_NE(r.output.find("0 complete, 0 failed, 0 missing, 2 stale"), std::string::npos)
       << r.output;
   EXPECT_NE(text_of(d / "out/study.csv").find(",stale,"), std::string::npos);
-  r = run("study " + study + " -j 1 -q");
+  r = run("study " + study + " -j 1");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("2 complete now, 0 already complete"), std::string::npos) << r.output;
-  r = run("study " + study + " -j 1 -q");
+  r = run("study " + study + " -j 1");
   EXPECT_NE(r.output.find("0 complete now, 2 already complete"), std::string::npos) << r.output;
 
   // one byte of a model file the cases read (a comment line in the wheel modes): stale again
   std::ofstream(d / "modes.csv", std::ios::app) << "# edited\n";
   r = run("collect " + study);
   EXPECT_NE(r.output.find("2 stale"), std::string::npos) << r.output;
-  r = run("study " + study + " -j 1 -q");
+  r = run("study " + study + " -j 1");
   EXPECT_NE(r.output.find("2 complete now, 0 already complete"), std::string::npos) << r.output;
 }
 
@@ -124,7 +124,7 @@ TEST(StudyRuns, AStudyWhoseCasesAllFailExitsOne) {
   std::ofstream(d / "s.toml") << "base = \"" << ROLLNOISE_SOURCE_DIR
                               << "/tests/data/study/curve_small.toml\"\noutput = \"out\"\n[axes]\n"
                                  "\"friction.mu\" = [-0.2, -0.3]\n";
-  const auto r = run("study " + (d / "s.toml").string() + " -j 2 -q");
+  const auto r = run("study " + (d / "s.toml").string() + " -j 2");
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("2 failed"), std::string::npos) << r.output;
   const auto one = run("study " + (d / "s.toml").string() + " --case 1 -q");

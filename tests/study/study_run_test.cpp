@@ -80,7 +80,7 @@ std::string case_file(const fs::path& out, int k) {
 TEST(Study, TwelveCasesWithTwoWorkersEqualTheSingleRunsBitForBit) {
   const fs::path d = folder("twelve");
   const fs::path study = write(d / "study.toml", twelve_case_study("out"));
-  const auto r = run("study " + study.string() + " -j 2 -q");
+  const auto r = run("study " + study.string() + " -j 2");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("12 complete now"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("loops computed 6, reused 6"), std::string::npos) << r.output;
@@ -158,7 +158,7 @@ TEST(Study, AKilledStudyResumesWithoutRecomputingFinishedCases) {
     if (::stat(case_file(d / "out", k).c_str(), &st) == 0)
       finished[k] = {long(st.st_ino), long(st.st_mtim.tv_sec) * 1000000000L + st.st_mtim.tv_nsec};
   }
-  const auto r = run("study " + study.string() + " -j 2 -q");
+  const auto r = run("study " + study.string() + " -j 2");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find(std::to_string(finished.size()) + " already complete"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find(std::to_string(12 - finished.size()) + " complete now"), std::string::npos) << r.output;
@@ -179,7 +179,7 @@ TEST(Study, AFailingCaseIsRecordedWithItsErrorAndTheOthersComplete) {
   const fs::path d = folder("failing");
   const fs::path study = write(d / "study.toml", "base = \"" + study_base_case() + "\"\noutput = \"out\"\n[axes]\n" +
                                                      "\"friction.mu\" = [0.3, -0.2, 0.4]\n");
-  const auto r = run("study " + study.string() + " -j 2 -q");
+  const auto r = run("study " + study.string() + " -j 2");
   ASSERT_EQ(r.status, 1) << "a study with a failed case is no success (issue 30):\n" << r.output;
   EXPECT_NE(r.output.find("1 failed"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(case_file(d / "out", 0)));
