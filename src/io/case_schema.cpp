@@ -230,7 +230,8 @@ const std::vector<KeySpec>& case_schema() {
        "(mirrored) contact frame", {}, 0, "optional (default: kinematic (K2') from the wheelset's position)"},
       {"curve.wheels", T::StringList, "", "-",
        "profiles with curve.creepage = \"estimate\" or \"multibody\": the wheels whose contact state is "
-       "computed and written (/noise/wheels/<wheel>), each run through the loop alone",
+       "computed and written (/noise/wheels/<wheel>), each a contact of the case's one loop (coupled "
+       "through wheelsets and rails with noise.contact_coupling = \"bogie\", the default)",
        {"leading_outer", "leading_inner", "trailing_outer", "trailing_inner"}, 0,
        "optional (default: all four in a curve, [\"leading_outer\"] on tangent track)"},
       {"curve.wheelbase", T::PositiveReal, "2.5", "m", "bogie wheelbase"},
@@ -314,9 +315,9 @@ const std::vector<KeySpec>& case_schema() {
        "theory has g = 0); \"on\" also solves the loop without it (/noise/uncoupled)",
        {"on", "off"}},
       {"noise.contact_coupling", T::String, "\"bogie\"", "-",
-       "curve.wheels: \"bogie\" couples the wheels' contacts in one loop (rigid wheelset, each rail's "
-       "transfer receptance to the other axle; track.model = \"beam\"), \"none\" runs each wheel's loop "
-       "alone (docs/noise_loop.md Sec. 5.3)",
+       "curve.wheels: \"bogie\" couples the contacts of the case's loop (each wheel, a flange patch) "
+       "through the rigid wheelsets and the rails' transfer receptances between the contact points, "
+       "with any track.model; \"none\" solves each contact alone (docs/noise_loop.md Sec. 5.3)",
        {"bogie", "none"}},
       {"noise.second_patch", T::String, "\"off\"", "-",
        "\"coupled\": the flange patch of a two-point contact (the leading outer wheel at its flange) "
