@@ -103,13 +103,17 @@ def read_run(path, label, wheel):
         # is another loop (the file's `loop` attribute says which): drawn, labelled as such, when it is
         # the same wheel's contact alone, left out for the other wheels.
         main = f"{model}" + (", with g" if coupling == "on" else "")
-        same_loop = group == "/noise" or (not coupled and group == "/noise/wheels/leading_outer")
+        # files that name their reported wheel (/noise attribute `wheel`): /noise is that wheel's answer
+        # in the case's loop, the same numbers as its group
+        reported = rh.attribute(f["/noise"], "wheel", "")
+        same_loop = group == "/noise" or (group == f"/noise/wheels/{reported}" if reported else
+                                          (not coupled and group == "/noise/wheels/leading_outer"))
         r["variants"] = [(main if same_loop else f"{main} [{r['where']}]", r["level"], r["force"], "-", "k")]
         top = rh.top_level_words(f)
         suffix = "" if same_loop else f" [{top}]"
         # the top-level loop of the same wheel (its own contact alone): worth the comparison
         same_wheel = same_loop or (coupled and rh.wheel_words(group.rsplit("/", 1)[-1]) in top)
-        if coupled and same_wheel:
+        if coupled and same_wheel and not same_loop:
             r["variants"].append((f"{main}{suffix}", f["/noise/bands/force_level"][:], f["/noise/force"][:], "-",
                                   "tab:purple"))
         if same_wheel:

@@ -22,15 +22,19 @@ struct Invocation {
   std::string output;  // stdout + stderr
 };
 
-/// `rollnoise ARGS` through the shell (ARGS may hold redirections); exit status and output.
-inline Invocation run(const std::string& args) {
-  const std::string cmd = std::string(ROLLNOISE_BINARY) + " " + args + " 2>&1";
+/// A shell command line; its exit status and output (stdout, and stderr where it redirects it).
+inline Invocation run_shell(const std::string& cmd) {
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
   while (fgets(buf.data(), buf.size(), p)) out += buf.data();
   const int st = pclose(p);
   return {WEXITSTATUS(st), out};
+}
+
+/// `rollnoise ARGS` through the shell (ARGS may hold redirections); exit status and output.
+inline Invocation run(const std::string& args) {
+  return run_shell(std::string(ROLLNOISE_BINARY) + " " + args + " 2>&1");
 }
 
 /// A scratch folder of this test process, removed with everything in it when the process ends

@@ -19,13 +19,7 @@ namespace {
 
 // `rollnoise ARGS` run in folder `dir` (the default output goes there); status and stdout + stderr.
 Invocation run_in_folder(const fs::path& dir, const std::string& args) {
-  const std::string cmd = "cd '" + dir.string() + "' && " + ROLLNOISE_BINARY + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int st = pclose(p);
-  return {WEXITSTATUS(st), out};
+  return run_shell("cd '" + dir.string() + "' && " + ROLLNOISE_BINARY + " " + args + " 2>&1");
 }
 
 const std::string kSmallCreep = " -q --set grid.nx=20 --set grid.ny=15 --set frequency.count=7";

@@ -47,6 +47,14 @@ rn::LoopVariantsInput spring_damper_input(const std::vector<double>& freq) {
   return in;
 }
 
+// The same with a complex g (the normal -> tangential coupling) at every frequency.
+rn::LoopVariantsInput spring_damper_input_with_load(const std::vector<double>& freq) {
+  rn::LoopVariantsInput in = spring_damper_input(freq);
+  in.model.load.assign(freq.size(),
+                       rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
+  return in;
+}
+
 // The variants of one contact (contact_variants) through the single-contact loop (solve_loop).
 struct SingleContactVariants {
   rn::LoopResult main, uncoupled, baseline;
@@ -134,9 +142,7 @@ TEST(NormalCoupling, LoopSatisfiesCreepLawWithNormalLoad) {
   const std::vector<double> freq = log_frequencies(80.0, 4000.0, 13);
   const rn::StructuralReceptances s =
       rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
-  rn::LoopVariantsInput in = spring_damper_input(freq);
-  in.model.load.assign(freq.size(),
-                       rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
+  rn::LoopVariantsInput in = spring_damper_input_with_load(freq);
   rn::LoopOptions options;
   options.roughness = cdouble(0.3e-6, -0.4e-6);
   const SingleContactVariants v = solve_variants(s, in, options);
@@ -261,9 +267,7 @@ TEST(NormalCoupling, ContactSetOfOneGivesTheSingleContactVariants) {
   const std::vector<double> freq = log_frequencies(80.0, 4000.0, 13);
   const rn::StructuralReceptances s =
       rn::structural_receptances(wheel(), rail_midspan(), kCurvePosition, freq);
-  rn::LoopVariantsInput in = spring_damper_input(freq);
-  in.model.load.assign(freq.size(),
-                       rn::LoadCoefficients(cdouble(0.05, 0.01), cdouble(0.25, -0.02), 1e-4));
+  rn::LoopVariantsInput in = spring_damper_input_with_load(freq);
   in.baseline = rn::constant_coefficients(kalker().cast<cdouble>(), rn::LoadCoefficients::Zero(),
                                           freq.size());
   const SingleContactVariants single = solve_variants(s, in);
