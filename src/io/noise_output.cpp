@@ -9,6 +9,12 @@
 namespace rollnoise::io {
 namespace {
 
+// The directions of every velocity output: the structures' own, not the contact frame's.
+constexpr const char* kVelocityDirections =
+    "the structures' directions, in the wheel's side frame: z vertical (the wheel's radial direction at its "
+    "contact, the rail's vertical), x longitudinal, y lateral towards this wheel's field side (the wheel's axial "
+    "direction, the rail's lateral), rot z about the vertical";
+
 std::vector<double> flatten_levels(const noise::BandLevels& b) {
   std::vector<double> fl;
   for (const auto& l : b.force_level) fl.insert(fl.end(), l.begin(), l.end());
@@ -23,7 +29,8 @@ void write_bands(Hdf5Writer& w, const std::string& g, const noise::BandLevels& b
     for (const auto& side : l) vl.insert(vl.end(), side.begin(), side.end());
   w.write(g + "/centre", b.centre, {nb}, "Hz");
   w.write(g + "/force_level", fl, {nb, 4}, "dB re 1 N (Fz, Fx, Fy), re 1 N m (Mz)");
-  w.write(g + "/velocity_level", vl, {nb, 2, 4}, "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
+  w.write(g + "/velocity_level", vl, {nb, 2, 4},
+          std::string("dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]; ") + kVelocityDirections);
   if (roughness) {
     w.write(g + "/roughness_level", b.roughness_level, {nb}, "dB re 1 um (effective, after the contact filter)");
     w.write(g + "/lines", b.samples, {nb},
@@ -164,7 +171,7 @@ void write_wheel(Hdf5Writer& w, const std::string& group, const pipeline::WheelN
   for (const auto& l : wn.bands.velocity_level)
     for (const auto& side : l) vl.insert(vl.end(), side.begin(), side.end());
   w.write(group + "/bands/velocity_level", vl, {wn.bands.centre.size(), 2, 4},
-          "dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]");
+          std::string("dB re 1e-9 m/s (z, x, y), re 1e-9 rad/s (rot z); [wheel, rail]; ") + kVelocityDirections);
 }
 
 // Contact a's response to its own roughness source (the source that drives it directly), as a
@@ -185,8 +192,10 @@ void write_narrow_band(Hdf5Writer& w, const std::string& group, const pipeline::
   if (const noise::LoopResult x = own_response(loop, a); !x.frequency.empty()) {
     w.write(group + "/force", flatten4(x.force), {nf, 4},
             per + "Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
-    w.write(group + "/wheel_velocity", flatten4(x.wheel_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
-    w.write(group + "/rail_velocity", flatten4(x.rail_velocity), {nf, 4}, per + "(m/s)/m, (rad/s)/m");
+    w.write(group + "/wheel_velocity", flatten4(x.wheel_velocity), {nf, 4},
+            per + "(m/s)/m, (rad/s)/m; " + kVelocityDirections);
+    w.write(group + "/rail_velocity", flatten4(x.rail_velocity), {nf, 4},
+            per + "(m/s)/m, (rad/s)/m; " + kVelocityDirections);
   }
   const int sources = loop.sources();
   std::vector<std::complex<double>> f;
@@ -271,8 +280,10 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   w.write("/noise/frequency", freq, {nf}, "Hz");
   w.write("/noise/force", flatten4(main.force), {nf, 4},
           own + "Fz, Fx, Fy (N/m), Mz (N m/m); contact frame, on the wheel");
-  w.write("/noise/wheel_velocity", flatten4(main.wheel_velocity), {nf, 4}, own + "(m/s)/m, (rad/s)/m");
-  w.write("/noise/rail_velocity", flatten4(main.rail_velocity), {nf, 4}, own + "(m/s)/m, (rad/s)/m");
+  w.write("/noise/wheel_velocity", flatten4(main.wheel_velocity), {nf, 4},
+          own + "(m/s)/m, (rad/s)/m; " + kVelocityDirections);
+  w.write("/noise/rail_velocity", flatten4(main.rail_velocity), {nf, 4},
+          own + "(m/s)/m, (rad/s)/m; " + kVelocityDirections);
   write_bands(w, "/noise/bands", wn.bands, true);
   w.attribute("/noise", "wheel", noise::wheel_name(wn.wheel));
   w.attribute("/noise", "loop", loop_description(r));
