@@ -58,7 +58,7 @@ noise::LoopVariants contact_loop(const std::vector<WheelNoise>& wheels, const No
                                  const dynamics::RailModel* rail = nullptr,
                                  const std::optional<noise::CrossCoupling>& cross = std::nullopt);
 
-/// The effective roughness levels in the bands `centres` of each source of bogie_loop (its
+/// The effective roughness levels in the bands `centres` of each source of contact_loop (its
 /// excited contacts, in order): each with its own contact's filter (a, b) on the case's roughness
 /// spectra; the contacts shared out on `threads` threads (the filter's band means are quadratures).
 std::vector<std::vector<double>> bogie_source_levels(const std::vector<WheelNoise>& wheels,
