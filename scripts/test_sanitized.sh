@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (issue 7): a second build in
+# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer: a second build in
 # build-asan/ (-DROLLNOISE_SANITIZE=ON: -fsanitize=address,undefined, -fno-sanitize-recover=all),
 # then ctest there. Needs the packages of scripts/setup.sh (.ci/run runs scripts/test.sh first).
 #

@@ -1,4 +1,4 @@
-// rollnoise bench: run time against error under grid refinement for a Hertzian case (issue 7).
+// rollnoise bench: run time against error under grid refinement for a Hertzian case.
 // The study itself (what is measured on each grid, the errors, the half-step phase lead, the
 // length of the transient runs) is pipeline/grid_study.hpp; the observed orders of convergence are
 // linalg/convergence.hpp. This file reads the options, runs the grids, prints the tables and

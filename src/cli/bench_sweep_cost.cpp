@@ -1,6 +1,6 @@
 // rollnoise bench --sweep-cost NX,...: time and peak memory of the linear model's 1000-frequency
 // sweep (f and g at 10 Hz - 10 kHz, clipped to the grid's Nyquist limit; model set-up included)
-// per grid, on the dense path (Cholesky of K0) and the matrix-free path (PCG), issue 13. Each run
+// per grid, on the dense path (Cholesky of K0) and the matrix-free path (PCG). Each run
 // is a child process (fork), so that its peak resident memory (VmHWM of /proc/self/status) is its
 // own; the dense path is skipped where its factor alone (8 r^2) would exceed 4 GB.
 #include <sys/wait.h>

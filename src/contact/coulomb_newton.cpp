@@ -39,7 +39,7 @@ double relative_residual(const std::vector<ElementTraction>& local, double norm)
 // took 100 s against ~2 ms per GMRES iteration).
 int unpreconditioned_budget(int unknowns) { return unknowns <= 2000 ? 8 : unknowns / 4; }
 
-// Tiny tractions (issue 16, fault 7). The problem is positively homogeneous: if p solves it for the
+// Tiny tractions. The problem is positively homogeneous: if p solves it for the
 // right-hand side w and the bounds g, then sigma p solves it for sigma w and sigma g (sigma > 0; the
 // element law of coulomb.hpp and R are homogeneous of degree 1). The solver, though, is not scale
 // free in floating point: squared norms (|R|_2 in GMRES and the line search) underflow below

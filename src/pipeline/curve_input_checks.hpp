@@ -1,4 +1,4 @@
-// The user-input checks of vehicle curving (issue 26: input validation belongs to io and the
+// The user-input checks of vehicle curving (input validation belongs to io and the
 // pipeline, the numerics assert their contracts): the inputs of the curve contact state and of the
 // bogie estimate on the conical tread, as the pipeline builds them from a case
 // (pipeline/curve_setup.cpp), checked with InputError naming the case key that sets each field.

@@ -1,4 +1,4 @@
-// Grid refinement study of a Hertzian case (`rollnoise bench`, issue 7): for each grid (nx elements
+// Grid refinement study of a Hertzian case (`rollnoise bench`): for each grid (nx elements
 // in x, ny = nx b/a rounded, at least 4, the case's grid.scale widened on coarse grids) it times
 // and measures
 //  - the steady forces at the case's mean creepage (paper Eq. 3);

@@ -274,7 +274,7 @@ RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std:
     if (df > g.frequency) g.frequency = df, g.worst_frequency_mode = k;
     g.damping_relative = std::max(g.damping_relative, rz);
     g.damping_absolute = std::max(g.damping_absolute, dz);
-    const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the acceptance of issue 12: <= 1
+    const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the squeal routes' acceptance: <= 1
     if (beyond > g.damping_beyond) g.damping_beyond = beyond, g.worst_damping_mode = k;
     if (!a[k].converged) g.distinct = false;
   }

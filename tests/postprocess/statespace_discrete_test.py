@@ -20,7 +20,7 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-TOLERANCE = 1e-3  # relative to the largest entry (the acceptance of issue 53)
+TOLERANCE = 1e-3  # relative to the largest entry (the documented transfer function's acceptance)
 
 
 def main():
