@@ -127,9 +127,9 @@ void read_curve(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
   problems.check([&] { c.contact_angle = r.real("contact.angle"); });
 }
 
-// [track]: the rail model (beams or waveguide, continuous or discrete support); its identity for
-// the study's reuse groups.
-std::string read_track(const CaseReader& r, NoiseCase& c) {
+// [track]: the rail model (beams or waveguide, continuous or discrete support); its identity keys
+// the rail's cached tables.
+void read_track(const CaseReader& r, NoiseCase& c) {
   std::string track_section;
   const std::string file = resolve_model_file(r, "track.file");
   const dynamics::TrackParameters track = read_track_parameters(file);
@@ -183,23 +183,20 @@ std::string read_track(const CaseReader& r, NoiseCase& c) {
                                           const acoustics::Fluid& fluid, int threads) {
     return section_grams_cached(rail, identity, points, table, grid, fluid, threads);
   };
-  return id;
 }
 
-// [wheel]: the FE wheel or the wheelset with a mode table; its identity for the reuse groups.
-std::string read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& c,
-                       std::optional<WheelFeCase>& fe) {
-  std::string id;
+// [wheel]: the FE wheel or the wheelset with a mode table.
+void read_wheel(const CaseReader& r, InputProblems& problems, NoiseCase& c,
+                std::optional<WheelFeCase>& fe) {
   const std::string wheelset = resolve_model_file(r, "wheel.wheelset");
   if ((fe = read_wheel_fe_case(r, problems))) {  // [wheel] model = "fe" (io/wheel_fe_case.hpp)
     c.wheel =
-        std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset), &id));
-    return "wheel " + wheelset + ", " + id;
+        std::make_unique<dynamics::WheelModel>(fe_wheel_model(*fe, read_wheelset(wheelset)));
+    return;
   }
   const std::string modes = resolve_model_file(r, "wheel.modes");
   c.wheel =
       std::make_unique<dynamics::WheelModel>(read_wheelset(wheelset), read_wheel_modes(modes));
-  return "wheel " + wheelset + ", " + modes;
 }
 
 // [roughness] and [noise]: the spectra, the contact filter, the loop's options and the bands.

@@ -139,18 +139,10 @@ dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
   return o;
 }
 
-dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
-                                    std::string* id) {
+dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset) {
   // Omega = V / r(0) needs the tread samples only, which do not need the modes
   const dynamics::WheelFeContactOptions o =
       contact_options(c, c.imported ? *c.imported : dynamics::wheel_fe_tread(c.section, c.options));
-  if (id) {
-    const auto& d = o.damping;
-    char text[200];
-    std::snprintf(text, sizeof text, "; zeta %.17g %.17g %.17g %.17g %.17g; Omega %.17g", d.n0,
-                  d.n1, d.axial, d.radial, d.circumferential, o.spin_speed);
-    *id = c.id + text;
-  }
   if (c.imported || resolved_threads(c.options.threads) == 1) {  // the modes now, on this thread
     const std::shared_ptr<const dynamics::WheelFeModes> modes = wheel_tread_modes(c);
     return dynamics::WheelModel(
@@ -161,8 +153,7 @@ dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidW
   // the caller's work runs beside them). The future's last copy joins that thread when the model
   // is destroyed without having used them (an error elsewhere in the case).
   using Later = std::shared_future<std::shared_ptr<const dynamics::WheelFeModes>>;
-  const Later modes =
-      std::async(std::launch::async, [c] { return wheel_tread_modes(c); }).share();
+  const Later modes = std::async(std::launch::async, [c] { return wheel_tread_modes(c); }).share();
   std::shared_future<std::vector<dynamics::WheelMode>> table =
       std::async(std::launch::deferred, [modes, o] {
         return dynamics::contact_mode_table(*modes.get(), 0.0, o);

@@ -56,7 +56,6 @@ dynamics::WheelFeContactOptions contact_options(const WheelFeCase& c,
 /// first use, and an error of their computation is thrown there (WheelModel's `later` table). On
 /// one thread, and for imported shapes, they are computed here, as before. The modes are the same
 /// either way (the same computation, bit for bit).
-dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset,
-                                    std::string* id);
+dynamics::WheelModel fe_wheel_model(const WheelFeCase& c, const dynamics::RigidWheelset& wheelset);
 
 }  // namespace rollnoise::io

@@ -206,7 +206,6 @@ NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on
   r.seconds_curve = seconds_since(t0);
   on_curve(placed.contact, placed.curve, freq);  // the further wheels from here on
   r.mean = solve_mean_contact(std::move(placed.contact), std::move(placed.curve), options);
-  const ContactCase& cc = r.mean.contact();
   const nss::LinearContactModel& model = *r.mean.model();
   r.creep = model.creep_coefficients(freq);
   r.load = model.normal_load_coefficients(freq);  // g, the same sweep
@@ -215,7 +214,6 @@ NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on
   r.coupled = nc.normal_coupling && nc.use_nss && !r.load.empty();
   r.baseline_name = nc.compare == NoiseCase::Baseline::kQuasiSteady ? "quasi_steady" : "kalker";
   r.mean_force = contact::total_forces(r.mean.patch().grid, r.mean.steady().px, r.mean.steady().py);
-  r.lateral_to_normal_db = 20 * std::log10(std::abs(r.mean_force.Fy / cc.normal_force));
   r.seconds_contact = seconds_since(t0);
   return r;
 }

@@ -67,8 +67,6 @@ struct NoiseResult {
   bool coupled = false;                  ///< the main loop ran with g
   std::string baseline_name;             ///< "quasi_steady" or "kalker" (when there is a baseline)
   contact::TangentialForces mean_force;  ///< of the steady state of `mean`
-  /// 20 log10 |F_y / N| (dB): the level of mu F_z relative to F_z (NaN without a lateral force)
-  double lateral_to_normal_db = 0.0;
   /// The contacts of the loop, at least one: each wheel of curve.wheels with its contact state,
   /// or the case's one contact (`mean`, as the leading outer wheel, no state) without a curve
   /// contact state. Contact a of `loops` is wheels[a].

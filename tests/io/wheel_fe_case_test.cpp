@@ -126,9 +126,8 @@ void expect_same_table(const std::vector<dynamics::WheelMode>& a,
 // receptance at 1 kHz.
 TEST(WheelFeCase, ModesOnTheirOwnThreadEqualThoseOfTheCallersThread) {
   const io::WheelFeCase c = coarse_fe_case(2, 20.0);
-  std::string id;
-  const dynamics::WheelModel later = io::fe_wheel_model(c, test_wheelset(), &id);
-  EXPECT_NE(id.find("f_max 2999"), std::string::npos);
+  const dynamics::WheelModel later = io::fe_wheel_model(c, test_wheelset());
+  EXPECT_NE(c.id.find("f_max 2999"), std::string::npos);
 
   dynamics::WheelFeOptions serial = c.options;
   serial.threads = 1;
@@ -148,7 +147,7 @@ TEST(WheelFeCase, ModesOnTheirOwnThreadEqualThoseOfTheCallersThread) {
 // thread it is thrown where the model is made (both: n Omega above a natural frequency at 5 km/s).
 TEST(WheelFeCase, ErrorOfTheModesThreadIsThrownAtTheirFirstUse) {
   const io::WheelFeCase c2 = coarse_fe_case(2, 5000.0);
-  const dynamics::WheelModel later = io::fe_wheel_model(c2, test_wheelset(), nullptr);
+  const dynamics::WheelModel later = io::fe_wheel_model(c2, test_wheelset());
   try {
     later.modes();
     ADD_FAILURE() << "no error";
@@ -156,5 +155,5 @@ TEST(WheelFeCase, ErrorOfTheModesThreadIsThrownAtTheirFirstUse) {
     EXPECT_EQ(e.key(), "wheel.rotation");
   }
   EXPECT_THROW(later.receptance(1000.0), InputError);  // again at every use
-  EXPECT_THROW(io::fe_wheel_model(coarse_fe_case(1, 5000.0), test_wheelset(), nullptr), InputError);
+  EXPECT_THROW(io::fe_wheel_model(coarse_fe_case(1, 5000.0), test_wheelset()), InputError);
 }
