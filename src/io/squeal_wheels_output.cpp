@@ -12,12 +12,12 @@ void write_roots(Hdf5Writer& w, const std::string& g, const std::vector<pipeline
   std::vector<int> unstable, converged;
   std::vector<std::string> label, wheel;
   for (const pipeline::WheelRoot& r : roots) {
-    freq.push_back(r.root.root.frequency);
-    zeta.push_back(r.root.root.damping_ratio);
+    freq.push_back(r.root.frequency);
+    zeta.push_back(r.root.damping_ratio);
     share.push_back(r.share);
-    unstable.push_back(r.root.root.unstable ? 1 : 0);
-    converged.push_back(r.root.root.converged ? 1 : 0);
-    label.push_back(r.root.root.label);
+    unstable.push_back(r.root.unstable ? 1 : 0);
+    converged.push_back(r.root.converged ? 1 : 0);
+    label.push_back(r.root.label);
     wheel.push_back(noise::wheel_name(r.wheel));
   }
   w.write(g + "frequency", freq, {n}, "Hz (Im s / 2 pi)");

@@ -49,16 +49,15 @@ TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
 
   // The loop: rigid rail (zero receptance), no rigid wheelset, the contact (Hertz spring, (V/s)
   // f^-1).
-  noise::LaplaceLoop loop;
-  loop.modes.resize(1);
-  loop.modes[0].frequency = fn;
-  loop.modes[0].modal_mass = m;
-  loop.modes[0].shape = Eigen::Vector4d(0.0, 0.0, psi, 0.0);
+  noise::LoopMode mode;
+  mode.frequency = fn;
+  mode.modal_mass = m;
+  mode.shape = Eigen::Vector4d(0.0, 0.0, psi, 0.0);
   const double kH = 1e9;  // the normal direction does not couple (g = 0, shape along y)
-  loop.rest = [&](cdouble s) {
-    return noise::contact_receptance_laplace(s, kH, kSpeed, model.creep_coefficients_laplace(s),
-                                             noise::LoadCoefficients::Zero());
-  };
+  noise::LaplaceLoop loop = noise::LaplaceLoop::one_contact({mode}, [&](cdouble s) {
+    return Eigen::MatrixXcd(noise::contact_receptance_laplace(
+        s, kH, kSpeed, model.creep_coefficients_laplace(s), noise::LoadCoefficients::Zero()));
+  });
   auto root = [&](double zeta) {
     loop.modes[0].damping_ratio = zeta;
     const noise::ModeRoot r = noise::mode_root(loop, 0);

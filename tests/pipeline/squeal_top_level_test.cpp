@@ -51,7 +51,7 @@ TEST(SquealTopLevel, HertzianTopLevelRootsAreTheLeadingOuterWheelsOfThePerWheelR
   EXPECT_NEAR(r.top.mean.contact().normal_force, Q + dQ, 1e-12 * Q);
   double worst = 0.0;
   for (const pipeline::WheelRoot& w : ws.roots) {
-    const noise::ModeRoot& x = w.root.root;
+    const noise::ModeRoot& x = w.root;
     EXPECT_EQ(w.wheel, noise::WheelId::leading_outer);
     const noise::ModeRoot* top = nullptr;
     for (const noise::ModeRoot& t : r.top.roots)

@@ -93,7 +93,7 @@ TEST(WheelsetPassivity,
       int unstable = 0, converged = 0;
       double largest = -1e300;
       for (const pipeline::WheelRoot& w : ws.roots) {
-        const noise::ModeRoot& x = w.root.root;
+        const noise::ModeRoot& x = w.root;
         ++roots;
         stopped += !x.converged;
         converged += x.converged;
