@@ -1,4 +1,4 @@
-// Squeal of a wheelset (or bogie) with all its contacts (docs/squeal.md Sec. 9): the
+// Squeal of a wheelset (or bogie) with all its contacts (docs/squeal.md Sec. 8): the
 // characteristic equation of the loop with several contacts (contact_set_loop.hpp, M3) without
 // excitation,
 //
