@@ -122,7 +122,7 @@ struct RailReduction {
   std::vector<double> static_wavenumbers;
 };
 
-/// The contact points' basis of the continuous waveguide in the loop (docs/models.md Sec. 2.5b):
+/// The contact points' basis of the continuous waveguide in the loop (docs/models.md Sec. 2.6):
 /// the modes below 12 kHz at RailReduction's seven wavenumbers and the static responses to the
 /// loads at 0, 100, 400 and 1200 rad/m (the last for the near field of a 10 mm patch).
 RailReduction near_field_reduction();
@@ -174,7 +174,7 @@ class RailWaveguide {
   /// Re omega (continued_branch below), where a wave may have crossed the real k axis.
   RailWaves waves(cdouble omega) const;
 
-  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.5a, receptance_laplace):
+  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.6, receptance_laplace):
   /// of each root pair +-k_j of Eq. (W5) at omega (k_j = sqrt(-mu_j) given with Im k_j <= 0), the
   /// member nearer to the waves with Im k < 0 at the real frequency Re omega (their wavenumbers,
   /// eigenvalues only) is the continued one, as the beams' RailModel::receptance_laplace takes

@@ -49,11 +49,11 @@ void write_squeal_wheels(Hdf5Writer& w, const std::vector<pipeline::WheelsetSque
   if (patches > 0)
     w.attribute("/squeal/wheels", "second_patch",
                 "the leading outer wheel's flange patch is a third contact of the leading "
-                "wheelset (noise.second_patch = \"coupled\"; docs/squeal.md Sec. 9.3)");
+                "wheelset (noise.second_patch = \"coupled\"; docs/squeal.md Sec. 8.2)");
   w.attribute("/squeal/wheels", "loop",
               "per wheelset, both wheels' contacts in one characteristic equation (rigid wheelset, "
               "the rails; "
-              "docs/squeal.md Sec. 9); each root listed under the wheel with the largest modal "
+              "docs/squeal.md Sec. 8); each root listed under the wheel with the largest modal "
               "share; the top-level "
               "/squeal is the leading outer wheel's single contact");
 }

@@ -70,7 +70,7 @@ class ModalForm {
   // of two wheels that hardly touch the contacts, branches ~1e-4 1/s apart) H_s = (s_1 - s_2) P(s)
   // is small and the central difference of H with h = 1e-6 |s| (~2e-3 1/s at 300 Hz) errs by
   // h^2 H_sss / 6 ~ h^2 P / d (d the distance to the next branch), of its own size; the deflated
-  // G_s = P(s) is not small (docs/squeal.md Sec. 9.1).
+  // G_s = P(s) is not small (docs/squeal.md Sec. 8.1).
   cdouble tangent(cdouble s, double lambda, const std::vector<cdouble>& others = {}) const {
     const double h = 1e-6 * std::abs(s), dl = 1e-5;
     auto deflation = [&](cdouble z) {

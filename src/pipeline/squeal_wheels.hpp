@@ -1,4 +1,4 @@
-// Squeal per wheelset with all its contacts (docs/squeal.md Sec. 9.3): every wheel of curve.wheels
+// Squeal per wheelset with all its contacts (docs/squeal.md Sec. 8.2): every wheel of curve.wheels
 // with its own contact state (patch, steady rolling, linear model as a ContactTransfer, k_N), the
 // two wheels of each wheelset in one characteristic equation (S1) through the rigid wheelset and
 // the rails (noise::laplace_loop with the case's rail model, any of them), the roots by

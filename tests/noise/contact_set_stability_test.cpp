@@ -1,4 +1,4 @@
-// Squeal with several contacts (noise/stability.hpp, docs/squeal.md Sec. 9).
+// Squeal with several contacts (noise/stability.hpp, docs/squeal.md Sec. 8).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -122,7 +122,7 @@ TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive)
 // The clusters of the n = 1 modes (the same mode of both wheels with its sin partner, four
 // branches from one uncoupled root, two of them a near-double root ~1e-4 1/s apart) converge: they
 // stopped at the first continuation step while the homotopy's tangent took H_s of the undeflated
-// H by a central difference wider than the two roots' distance (docs/squeal.md Sec. 9.1); every
+// H by a central difference wider than the two roots' distance (docs/squeal.md Sec. 8.1); every
 // one of the 32 roots converges now.
 TEST(ContactSetSqueal, NegativeCreepDampingAtTheInnerWheelDestabilisesTheInnerWheelsModes) {
   Wheelset w;

@@ -1,6 +1,6 @@
 // The top-level /squeal/* of a Hertzian curve case with per-wheel states (noise.squeal_wheelsets =
 // "on") describes the leading outer wheel with the same contact as /squeal/wheels/leading_outer
-// (docs/squeal.md Sec. 9.3): its Hertz state with the load transfer, solved once and shared. On
+// (docs/squeal.md Sec. 8.2): its Hertz state with the load transfer, solved once and shared. On
 // squeal_150m coarsened (16 x 12 elements, the axial n = 0 ... 2 modes at 300-700 Hz) with only the
 // leading outer wheel listed, its wheelset is that one contact, so the per-wheel run's roots are
 // the top level's single-contact roots: equal to the roots' own accuracy (|ds| <= 1e-11 |s|).

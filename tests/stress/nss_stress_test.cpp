@@ -62,8 +62,9 @@ struct SweepResult {
 };
 
 /// Tolerances (relative to the Frobenius norm of f in the scaled units of passivity_margin):
-///  - the fast sweep is checked a posteriori to 1e-10 (markov_sweep.cpp; docs/accuracy.md, measured 1e-15..6e-13
-///    against the exact recursion): fast vs direct within 1e-9;
+///  - the fast sweep is checked a posteriori to 1e-10 (markov_sweep.cpp;
+///    docs/record/linear_model_sweep.md, measured 1e-15..6e-13 against the exact recursion):
+///    fast vs direct within 1e-9;
 ///  - passivity: the smallest eigenvalue of the Hermitian part >= -1e-9 |f| (an exact theorem for
 ///    the discrete model; f is accurate to 1e-10, the 3 x 3 eigenvalues to |f| eps);
 ///  - entries that vanish by symmetry: <= 1e-9 |f| (pn and the mean state are symmetric to the
