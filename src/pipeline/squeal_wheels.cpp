@@ -29,7 +29,7 @@ std::vector<SquealWheelContact> squeal_wheel_contacts(const SquealResult& r, con
       leading_outer = leading_outer || w.wheel == noise::WheelId::leading_outer;
     }
     // noise.second_patch = "coupled": the flange patch of a two-point contact is one more contact
-    // of the leading outer wheel in (S6), as in the loop (bogie_noise.hpp, second_patches)
+    // of the leading outer wheel in (S1), as in the loop (bogie_noise.hpp, second_patches)
     if (nc.second_patch && leading_outer && curve.state_input)
       if (const auto flange = noise::flange_patch_contact(*curve.state_input, *curve.state))
         out.push_back({flange->wheel, flange->position(),

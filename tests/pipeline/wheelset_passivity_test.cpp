@@ -1,7 +1,7 @@
 // Passivity per wheelset on every shipped curve (docs/squeal.md Sec. 8.2): with constant
 // friction and the normal -> tangential coupling off each wheel's linearised contact is passive
 // (docs/stability.md Sec. 2), and so are the wheels and the rails, so the loop of a wheelset with
-// both its contacts (S6) has no root with Re s > 0. Every case of cases/ with a curve and per-wheel
+// both its contacts (S1) has no root with Re s > 0. Every case of cases/ with a curve and per-wheel
 // contact states (profiles) is run through the pipeline's squeal per wheelset with its own curve
 // state, on a coarse grid (grid.nx = 16), the continuous track and the band 300-1200 Hz (the n = 0
 // ... 3 axial modes of both wheels) so that it runs in seconds; the FE-wheel cases (the shipped curve_300m, curve_500m, curve_1000m,
