@@ -1,7 +1,7 @@
-// Acceptance (issue 12): one wheel mode on a rigid rail, the NSS contact in full slip with falling
-// friction. The instability threshold found by the squeal numerics (route 2 of noise/stability.hpp,
-// bisection on the modal damping ratio until Re s crosses 0) equals the classical single-mode
-// criterion (nss/falling_friction.hpp, S2)
+// The single-mode criterion: one wheel mode on a rigid rail, the NSS contact in full slip with
+// falling friction. The instability threshold found by the squeal numerics (route 2 of
+// noise/stability.hpp, bisection on the modal damping ratio until Re s crosses 0) equals the
+// classical single-mode criterion (nss/falling_friction.hpp, S2)
 //   2 zeta w_n m + N mu'(v) psi^2 = 0   (rigid full-slip contact, f_par = N V mu'(v))
 // within 1 %. The contact is the full linear NSS model (its elastic correction included, not
 // removed): at w -> 0 in full slip it tends to the rigid limit to second order in the scatter of

@@ -1,4 +1,4 @@
-// Stress tests of the linear NSS model (paper Eqs. 6-30, issue 7): creep coefficients over
+// Stress tests of the linear NSS model (paper Eqs. 6-30): creep coefficients over
 // [0, Nyquist] for mean states from full adhesion to full sliding, spin up to +-2 rad/m, ellipses
 // a/b = 0.1 to 10 and grids from 4 x 4 to 68 x 50. Checked: finite everywhere, passive (the
 // contact absorbs the power of the creepage variation, docs/stability.md), the entries that vanish
