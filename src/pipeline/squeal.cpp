@@ -47,8 +47,8 @@ int SquealResult::unstable_count() const {
 }
 
 noise::ContactPoint squeal_point(const NoiseCase& nc, const MeanContact& mean) {
-  noise::ContactPoint
-      p;  // the leading wheelset's outer wheel: side +1, the frame of the single loop
+  // the leading wheelset's outer wheel: side +1, the frame of the single loop
+  noise::ContactPoint p;
   p.wheelset = 0;
   p.side = 1;
   p.position = mean.curve().position;
