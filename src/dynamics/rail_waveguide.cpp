@@ -585,6 +585,53 @@ Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
   return L;
 }
 
+Eigen::MatrixXd RailWaveguide::head_loads(const Eigen::Vector2d& point,
+                                          const Eigen::Vector2d& normal, double head_bottom) const {
+  // The head's rigid motion by least squares over its area A (centroid r_h, s = r - r_h): the
+  // mean u; the roll theta = Int (s_y u_z - s_z u_y) dA / J, J = Int |s|^2 dA; u_x's plane
+  // a + b . s, b = I_h^{-1} Int s u_x dA. At the point (d = point - r_h) the in-plane motion is
+  // mean + theta (-d_z, d_y) and u_x = a + b . d; the spin psi_n = -t . b (contact_loads).
+  const Eigen::Vector2d n = normal.normalized(), t(n.y(), -n.x());
+  std::vector<int> head;
+  double area = 0.0;
+  Eigen::Vector2d first(0.0, 0.0);
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
+  for (int tri = 0; tri < static_cast<int>(mesh_.triangles.size()); ++tri) {
+    Eigen::Vector2d c(0.0, 0.0);
+    for (int a = 0; a < 3; ++a) c += mesh_.nodes[mesh_.triangles[tri][a]] / 3.0;
+    if (c.y() < head_bottom) continue;
+    head.push_back(tri);
+    for (const SectionPoint& p : section_points(mesh_, tri)) {
+      area += p.weight;
+      first += p.weight * p.position;
+      second += p.weight * p.position * p.position.transpose();
+    }
+  }
+  if (head.empty()) throw InputError("rail_section", "no triangle of the rail head above it");
+  const Eigen::Vector2d rh = first / area, d = point - rh;
+  const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
+  const double J = Ih.trace();
+  const Eigen::Matrix2d Ihi = Ih.inverse();
+  const double roll_n = -d.y() * n.x() + d.x() * n.y(), roll_t = -d.y() * t.x() + d.x() * t.y();
+  const Eigen::Vector2d bx = Ihi * d, bs = -Ihi * t;  // u_x(point) - a = bx . Int s u_x, psi_n
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(dofs(), 4);
+  for (int tri : head)
+    for (const SectionPoint& p : section_points(mesh_, tri)) {
+      const Eigen::Vector2d s = p.position - rh;
+      for (int b = 0; b < 6; ++b) {
+        const int node = mesh_.triangles[tri][b];
+        const double w = p.weight * p.shape(b);
+        L(dof(node, 1), kZ) += w * (n.x() / area - roll_n * s.y() / J);
+        L(dof(node, 2), kZ) += w * (n.y() / area + roll_n * s.x() / J);
+        L(dof(node, 0), kX) += w * (1.0 / area + bx.dot(s));
+        L(dof(node, 1), kY) += w * (t.x() / area - roll_t * s.y() / J);
+        L(dof(node, 2), kY) += w * (t.y() / area + roll_t * s.x() / J);
+        L(dof(node, 0), kRotZ) += w * bs.dot(s);
+      }
+    }
+  return L;
+}
+
 Eigen::VectorXd RailWaveguide::edge_traction(const std::vector<int>& edges, int direction) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs());
   double length = 0.0;

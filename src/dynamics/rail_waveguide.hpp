@@ -100,6 +100,9 @@ struct RailMaterial {
 struct FootSupport {
   Support vertical, lateral, longitudinal;
   double sleeper_spacing = 0.6;  ///< L (m)
+  /// Discrete supports only (waveguide_discrete_support.hpp): the length along the rail over which
+  /// a seat's force is spread evenly (m, 0 <= seat_length < L; 0: at one x, the former model).
+  double seat_length = 0.0;
 };
 
 /// The waves of one frequency that travel or decay towards +x (Eq. W3), one per generalised
@@ -209,6 +212,18 @@ class RailWaveguide {
   /// grows without bound as the mesh is refined: the point load on a solid).
   Eigen::MatrixXd patch_loads(const Eigen::Vector2d& point, double half_width,
                               const Eigen::Vector2d& normal, double head_bottom) const;
+
+  /// The contact's loads through the head as a body: the forces along n, x and t at `point`
+  /// (y, z) applied as the body-force distributions over the head (the triangles with centroid
+  /// z >= `head_bottom`) whose work is done on the head's least-squares rigid motion evaluated at
+  /// the point (the mean u, the roll about x fitted to u_y, u_z, the plane fitted to u_x), and the
+  /// spin moment as in contact_loads. Same columns and frame as contact_loads; the response is the
+  /// same projection (reciprocal). It leaves out the local deformation of the head under the
+  /// patch (the contact model's elastic half-space holds it), which a patch load carries as a
+  /// real compliance that grows with the mesh's and the basis's highest wavenumber along x (the
+  /// line load along y is a point along x); docs/models.md Sec. 2.8.
+  Eigen::MatrixXd head_loads(const Eigen::Vector2d& point, const Eigen::Vector2d& normal,
+                             double head_bottom) const;
 
   /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
   /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads

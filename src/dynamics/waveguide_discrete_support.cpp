@@ -76,6 +76,8 @@ DiscretelySupportedWaveguide::DiscretelySupportedWaveguide(RailWaveguide free_ra
   support_.longitudinal.validate("track.support.longitudinal");
   if (!(support_.sleeper_spacing > 0.0))
     throw InputError("rail_support", "sleeper spacing must be > 0");
+  if (!(support_.seat_length >= 0.0) || !(support_.seat_length < support_.sleeper_spacing))
+    throw InputError("rail_support", "the seat length must lie in [0, L)");
   if (n_ < 1) throw InputError("rail_support", "at least one support each side");
   if (foot_.loads.rows() != rail_.dofs() || foot_.loads.cols() != 4)
     throw InputError("rail_section", "foot attachment does not match the rail's mesh");
@@ -127,6 +129,76 @@ Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, in
   return out;
 }
 
+// A seat's force spread evenly over [x_n - l/2, x_n + l/2] (l = FootSupport::seat_length): Eq.
+// (W4)'s weights averaged over it. With E(k, a) = Int_0^a e^{-iku} du = (1 - e^{-ika}) / (ik):
+//  - between a seat and a point, x = x_response - x_load between the point and the seat's centre:
+//    the part of the seat where x_response - x_load >= 0 (Eq. W4 ahead) weighs E(k, x + l/2) / l
+//    for |x| < l/2, e^{-ik(x - l/2)} E(k, l) / l for x >= l/2 (none for x <= -l/2), the other
+//    part the same mirrored;
+//  - two seats d L apart (d != 0, l < L): e^{-ik(|d| L - l)} E(k, l)^2 / l^2;
+//  - a seat on itself: 2 (l - E(k, l)) / (ik l^2), half of it each way.
+// Each times -i / d_j; as l -> 0 they tend to Eq. (W4)'s point weights, which l = 0 takes (the
+// former model, its code unchanged).
+cdouble integral_of_wave(cdouble k, double a) {  // E(k, a), by its series where ka is small
+  const cdouble z = cdouble(0.0, -1.0) * k * a;  // -ika
+  if (std::abs(z) < 1e-3) return a * (1.0 + z / 2.0 + z * z / 6.0 + z * z * z / 24.0);
+  return (1.0 - std::exp(z)) / (cdouble(0.0, 1.0) * k);
+}
+
+// Columns i of `behind` and `ahead`: the seat's parts where x_response - x_load >= 0 and < 0, for
+// x_i = x0 + i h (|h| = L > l > 0), as above. The seats wholly on one side of the point are an
+// arithmetic run in |x| each, walked from its seat nearest the point outward by z_j = e^{-ik_j|h|}
+// (as green_weights_along); a seat that overlaps the point is computed directly.
+struct SeatWeights {
+  Eigen::MatrixXcd behind, ahead;
+};
+
+SeatWeights seat_weights_along(const RailWaves& w, double x0, double h, int count, double l) {
+  const cdouble I(0.0, 1.0);
+  const Eigen::Index m = w.wavenumbers.size();
+  SeatWeights out{Eigen::MatrixXcd::Zero(m, count), Eigen::MatrixXcd::Zero(m, count)};
+  const auto x = [&](int i) { return x0 + i * h; };
+  const Eigen::ArrayXcd z = (-I * w.wavenumbers.array() * std::abs(h)).exp();
+  // e^{-ik(|x| - l/2)} E(k, l) / l times -i / d_j: a seat wholly on one side at distance |x|
+  const auto whole = [&](double ax) {
+    Eigen::ArrayXcd v(m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const cdouble k = w.wavenumbers(j);
+      v(j) = -I / (w.norms(j) * l) * std::exp(-I * k * (ax - 0.5 * l)) * integral_of_wave(k, l);
+    }
+    return v;
+  };
+  // the indices [a, b) on one side (behind: x >= l/2, into `target`), walked from the one nearest 0
+  const auto walk_run = [&](int a, int b, Eigen::MatrixXcd& target) {
+    if (a >= b) return;
+    const bool up = std::abs(x(a)) <= std::abs(x(b - 1));
+    int i = up ? a : b - 1;
+    Eigen::ArrayXcd weight = whole(std::abs(x(i)));
+    for (int k = a; k < b; ++k, i += up ? 1 : -1) {
+      target.col(i) = weight.matrix();
+      weight *= z;
+    }
+  };
+  std::vector<int> behind, ahead;
+  for (int i = 0; i < count; ++i) {
+    if (x(i) >= 0.5 * l) {
+      behind.push_back(i);
+    } else if (x(i) <= -0.5 * l) {
+      ahead.push_back(i);
+    } else {  // the seat overlaps the point
+      for (Eigen::Index j = 0; j < m; ++j) {
+        const cdouble k = w.wavenumbers(j), scale = -I / (w.norms(j) * l);
+        out.behind(j, i) = scale * integral_of_wave(k, x(i) + 0.5 * l);
+        out.ahead(j, i) = scale * integral_of_wave(k, 0.5 * l - x(i));
+      }
+    }
+  }
+  // x is monotone in i, so each side's indices are consecutive
+  if (!behind.empty()) walk_run(behind.front(), behind.back() + 1, out.behind);
+  if (!ahead.empty()) walk_run(ahead.front(), ahead.back() + 1, out.ahead);
+  return out;
+}
+
 // One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and I + A K of Eq.
 // (D2), block Toeplitz (its block (i, j) is delta_ij I + a(i - j) K with a(d) = g(d L) and a(-d) =
 // g(d L)^T, d = 0..2N: the seats' spacing alone sets it), solved by the block Levinson recursion
@@ -138,6 +210,7 @@ struct Seats {
   Eigen::Vector4cd stiffness;
   int n;
   double spacing;
+  double seat_length = 0.0;                                         // FootSupport::seat_length
   std::optional<linalg::BlockToeplitzSolver> levinson;              // I + A K
   mutable std::optional<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu;  // only where Levinson fails
 
@@ -161,9 +234,36 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   s.stiffness << support.longitudinal.dynamic_stiffness(omega),
       support.lateral.dynamic_stiffness(omega), kz, kz * attachment.roll_arm_squared;
   std::vector<Eigen::Matrix4cd> g(m);  // g(-x) = g(x)^T, reciprocity of Eq. W4
-  const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
-  for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
-    g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
+  const double l = support.seat_length;
+  s.seat_length = l;
+  if (l == 0.0) {
+    const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
+    for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
+      g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
+  } else {  // the seats spread over l (seat_weights_along's comment)
+    const cdouble I(0.0, 1.0);
+    const Eigen::Index nw = s.waves.wavenumbers.size();
+    Eigen::VectorXcd self(nw), spread(nw);
+    for (Eigen::Index j = 0; j < nw; ++j) {
+      const cdouble k = s.waves.wavenumbers(j), e = integral_of_wave(k, l);
+      const cdouble kl = k * l;
+      // 2 (l - E) / (ik l^2), by its series 1 - ikl/3 + (ikl)^2/12 where kl is small
+      self(j) = std::abs(kl) < 1e-3 ? 1.0 - I * kl / 3.0 + (I * kl) * (I * kl) / 12.0
+                                    : 2.0 * (l - e) / (I * k * l * l);
+      self(j) *= -I / s.waves.norms(j);
+      spread(j) = -I / s.waves.norms(j) * e * e / (l * l);
+    }
+    const Eigen::Matrix4cd half = 0.5 * s.foot.plus.transpose() * self.asDiagonal() * s.foot.minus;
+    g[0] = half + half.transpose();  // the two halves x > x', x < x' (g(-x) = g(x)^T)
+    Eigen::ArrayXcd wd(nw), z(nw);   // e^{-ik(d L - l)} walked by z = e^{-ikL}
+    for (Eigen::Index j = 0; j < nw; ++j) {
+      const cdouble k = s.waves.wavenumbers(j);
+      wd(j) = spread(j) * std::exp(-I * k * (s.spacing - l));
+      z(j) = std::exp(-I * k * s.spacing);
+    }
+    for (int d = 1; d < m; ++d, wd *= z)
+      g[d] = s.foot.plus.transpose() * wd.matrix().asDiagonal() * s.foot.minus;
+  }
   std::vector<Eigen::Matrix4cd> lower(m), upper(m);  // the blocks t(d), t(-d) of I + A K
   for (int d = 0; d < m; ++d) {
     lower[d] = g[d] * s.stiffness.asDiagonal();
@@ -181,11 +281,19 @@ Eigen::MatrixXcd seat_resultants(const Seats& s, const Amplitudes& f, double x_l
   const int m = 2 * s.n + 1;
   Eigen::MatrixXcd B(4 * m, f.plus.cols());
   const double from_load = first * s.spacing - x_l;  // x_i - x_l = x_first - x_l + i L
-  const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
-  for (int i = 0; i < m; ++i) {
-    const bool ahead = from_load + i * s.spacing >= 0.0;
-    B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
-                             to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
+  if (s.seat_length == 0.0) {
+    const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
+    for (int i = 0; i < m; ++i) {
+      const bool ahead = from_load + i * s.spacing >= 0.0;
+      B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
+                               to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
+    }
+  } else {
+    // the seat (spread) as the response, the load at x_l
+    const SeatWeights w = seat_weights_along(s.waves, from_load, s.spacing, m, s.seat_length);
+    for (int i = 0; i < m; ++i)
+      B.middleRows(4 * i, 4) = s.foot.plus.transpose() * w.behind.col(i).asDiagonal() * f.minus +
+                               s.foot.minus.transpose() * w.ahead.col(i).asDiagonal() * f.plus;
   }
   return s.solve(B);
 }
@@ -202,14 +310,24 @@ Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double 
   // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
   Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), v.cols());
   Eigen::MatrixXcd ahead = behind;
-  const Eigen::MatrixXcd from_seats = green_weights_along(s.waves, from_response, -s.spacing, m);
-  for (int i = 0; i < m; ++i) {
-    const double x = from_response - i * s.spacing;
-    const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
-    if (x >= 0.0)
-      behind += from_seats.col(i).asDiagonal() * (s.foot.minus * Kv);
-    else
-      ahead += from_seats.col(i).asDiagonal() * (s.foot.plus * Kv);
+  if (s.seat_length == 0.0) {
+    const Eigen::MatrixXcd from_seats = green_weights_along(s.waves, from_response, -s.spacing, m);
+    for (int i = 0; i < m; ++i) {
+      const double x = from_response - i * s.spacing;
+      const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
+      if (x >= 0.0)
+        behind += from_seats.col(i).asDiagonal() * (s.foot.minus * Kv);
+      else
+        ahead += from_seats.col(i).asDiagonal() * (s.foot.plus * Kv);
+    }
+  } else {
+    // the seats spread: the parts behind and ahead of x_r
+    const SeatWeights w = seat_weights_along(s.waves, from_response, -s.spacing, m, s.seat_length);
+    for (int i = 0; i < m; ++i) {
+      const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
+      behind += w.behind.col(i).asDiagonal() * (s.foot.minus * Kv);
+      ahead += w.ahead.col(i).asDiagonal() * (s.foot.plus * Kv);
+    }
   }
   return green(s.waves, r, f, x_r - x_l) - r.plus.transpose() * behind -
          r.minus.transpose() * ahead;
@@ -248,6 +366,7 @@ SurfaceSpectrum DiscretelySupportedWaveguide::surface_spectrum(
   t.response = wave_amplitudes(rail_, s.waves, response);
   t.load_x = load_x;
   t.spacing = s.spacing;
+  t.seat_length = s.seat_length;
   t.seat_forces.resize(4 * (2 * n_ + 1), load.cols());
   // Eq. (D2) per load column, the 2N + 1 seats nearest the load (the columns at one x together)
   for (Eigen::Index b = 0; b < load.cols(); ++b) {
@@ -276,13 +395,13 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackP
   RailReductionModes modes = full.reduction_modes(o.contact_reduction);
   double top = full.mesh().nodes.at(0).y();
   for (const auto& p : full.mesh().nodes) top = std::max(top, p.y());
-  Eigen::MatrixXd crown = full.patch_loads(Eigen::Vector2d(0.0, top), o.patch_half_width,
-                                           Eigen::Vector2d(0.0, 1.0), o.head_bottom);
+  Eigen::MatrixXd crown =
+      contact_loads_at(full, o, Eigen::Vector2d(0.0, top), Eigen::Vector2d(0.0, 1.0));
   FootAttachment foot = foot_attachment(full);
   Eigen::MatrixXd loads(full.dofs(), 8);
   loads << crown, foot.loads;
   const FootSupport support{track.vertical_support, track.lateral_support,
-                            track.longitudinal_support, track.sleeper_spacing};
+                            track.longitudinal_support, track.sleeper_spacing, o.seat_length};
   DiscretelySupportedWaveguide rail(full.reduced(o.contact_reduction, loads, modes),
                                     std::move(foot), support, track.supports_each_side);
   return Parts{
