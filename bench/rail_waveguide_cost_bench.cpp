@@ -1,6 +1,7 @@
-// What the continuous waveguide rail costs in the 300 m curve case (docs/models.md Sec. 2.5b,
-// docs/performance.md Sec. 9): the UIC60 section on the continuous support of uic60_ballasted,
-// 30 mm mesh (the loop's), the 10 mm patch at the four wheels' contact points of curve_300m.
+// What the continuous waveguide rail costs in the 300 m curve case (docs/record/waveguide_rail.md
+// Sec. 11, docs/record/performance_waveguide.md Sec. 1): the UIC60 section on the continuous
+// support of uic60_ballasted, 30 mm mesh (the loop's), the 10 mm patch at the four wheels' contact
+// points of curve_300m.
 //
 // RailWaveguideCurveCost/b: b = 0 the former basis (RailReduction{}: modes below 20 kHz and the
 // static responses at the same seven wavenumbers), b = 1 the loop's (near_field_reduction()).

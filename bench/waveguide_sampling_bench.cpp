@@ -1,7 +1,7 @@
 // The continuous waveguide rail's frequency sampling (waveguide_frequency_sampling.hpp,
-// docs/models.md Sec. 2.5b, docs/performance.md Sec. 9) on the noise case's grid: how many
-// frequencies are computed directly and how far the interpolated receptance is from the direct
-// one, at curve_300m's four contact points.
+// docs/record/waveguide_rail.md Sec. 8.1, docs/record/performance_waveguide.md Sec. 2) on the
+// noise case's grid: how many frequencies are computed directly and how far the interpolated
+// receptance is from the direct one, at curve_300m's four contact points.
 //
 // WaveguideSampling/p/t: starting grid p points per octave, Eq. (F1) tolerance t x 1e-4 (t = 0:
 // the fixed grid of p per octave, no refinement; the loop's: 4/300); the default waveguide (UIC60,

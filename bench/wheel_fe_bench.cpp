@@ -1,6 +1,6 @@
 // The default 920 mm wheel's FE modes (dynamics/wheel_fe.hpp): meshing, 11 orders n = 0..10, all
 // modes up to 6 kHz, tread shapes; and the stages of it, to see where the time goes. Element and
-// DOF counts reported with the timing (docs/models.md Sec. 3.4 "Cost"):
+// DOF counts reported with the timing (docs/record/fe_wheel.md Sec. 3, "Speed"):
 //   build/rollnoise_bench --benchmark_filter=WheelFe
 // The noise case it is compared with: NoiseCaseCurve300m* (bench/noise_case_bench.cpp).
 #include <benchmark/benchmark.h>

@@ -5,7 +5,7 @@
 
 /receptance/rail_waves/frequency [nk][branches] (Hz) against /receptance/rail_waves/wavenumber
 [nk] (rad/m): the lowest natural frequencies of the supported, undamped rail section at each real
-wavenumber (docs/models.md Sec. 2.5a, Eq. W2; the support at its static stiffness). A branch's
+wavenumber (docs/models.md Sec. 2.6, Eq. W2; the support at its static stiffness). A branch's
 frequency at k = 0 is its cut-on frequency (marked). Each line joins the j-th lowest frequency
 at every k, so where two waves cross the lines veer instead (sorted, not tracked by wave type).
 """

@@ -11,7 +11,7 @@ leading outer wheel's single contact, as the files' `loop` attribute says) and t
       [--wheelsets]
 
 --wheelsets: also the squeal of each wheelset with both its contacts (noise.squeal_wheelsets = "on",
-profiles only, docs/squeal.md Sec. 9.3): a third panel shows which wheels squeal (the unstable roots
+profiles only, docs/squeal.md Sec. 8.2): a third panel shows which wheels squeal (the unstable roots
 of /squeal/wheels/unstable by wheel, or that a wheelset was left out because a wheel's contact
 alone is unstable), and summary.csv gets the unstable roots per wheel.
 

@@ -10,7 +10,7 @@ Exit 1 on any difference (docs/architecture.md, the refactoring checks).
 --relative: for every numeric dataset in both files the max relative difference
 max |a - b| / max |a| (relative to the dataset's largest magnitude) and, for band levels (names
 ending in "_level"), the max absolute difference in dB; prints the datasets that differ (all with
---all) and the largest of each kind (docs/performance.md Sec. 7). Exit 0.
+--all) and the largest of each kind (docs/record/performance.md Sec. 7). Exit 0.
 """
 import os
 import sys

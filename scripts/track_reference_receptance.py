@@ -19,7 +19,7 @@ receptance of a St-Venant-Vlasov torsion beam, GJ k^2 + E I_w k^4 + k_theta - rh
 (Timoshenko & Goodier 1970; Vlasov), on the rotational stiffness of the seats, k_theta = (K_z b^2/12
 + K_y d^2) / L (the vertical pad across the foot's width b, the lateral pad at the foot's bottom d
 below the shear centre); e the height of the running surface above the shear centre. The section
-constants are those of the waveguide's UIC60 mesh (docs/models.md Sec. 2.5a: J = 2.03e-6 m^4,
+constants are those of the waveguide's UIC60 mesh (docs/models.md Sec. 2.6: J = 2.03e-6 m^4,
 I_w = 1.61e-8 m^6, shear centre 36.3 mm below the centroid, 81.2 mm above the foot). Lateral and
 torsional motions are taken uncoupled (the coupling through the lateral pad's offset is left out).
 

@@ -72,7 +72,7 @@ void print_wheels(const pipeline::NoiseResult& r) {
               r.seconds_wheels);
   for (const pipeline::WheelNoise& wn : r.wheels) print_wheel_line(wn, noise::wheel_name(wn.wheel));
   for (const pipeline::WheelNoise& p : r.patches) {
-    std::printf("  second patch of %s (the flange patch, coupled; docs/noise_loop.md Sec. 7.4):\n",
+    std::printf("  second patch of %s (the flange patch, coupled; docs/noise_loop.md Sec. 7.3):\n",
                 noise::wheel_name(p.wheel));
     print_wheel_line(p, "  flange");
   }

@@ -21,18 +21,19 @@ void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
   for (const pipeline::WheelsetSqueal& ws : s) {
     int unstable = 0, unconverged = 0;
     for (const auto& x : ws.roots) {
-      unstable += x.root.root.unstable ? 1 : 0;
-      unconverged += x.root.root.converged ? 0 : 1;
+      unstable += x.root.unstable ? 1 : 0;
+      unconverged += x.root.converged ? 0 : 1;
     }
     std::printf("  wheelset %s (%zu contacts, %zu roots, %d unstable, %d not converged, %.1f s, %ld evaluations)\n",
                 noise::is_leading(ws.wheels.front()) ? "leading" : "trailing", ws.wheels.size() + ws.second_patches, ws.roots.size(),
                 unstable, unconverged, ws.seconds, ws.evaluations);
     if (!ws.skipped.empty()) std::printf("    left out: %s\n", ws.skipped.c_str());
     for (const auto& x : ws.roots)
-      if (x.root.root.unstable || !x.root.root.converged)
-        std::printf("    %-14s %-24s %10.3f Hz zeta %12.4e share %.2f%s%s\n", noise::wheel_name(x.wheel),
-                    x.root.root.label.c_str(), x.root.root.frequency, x.root.root.damping_ratio, x.share,
-                    x.root.root.unstable ? " UNSTABLE" : "", x.root.root.converged ? "" : " (continuation failed)");
+      if (x.root.unstable || !x.root.converged)
+        std::printf("    %-14s %-24s %10.3f Hz zeta %12.4e share %.2f%s%s\n",
+                    noise::wheel_name(x.wheel), x.root.label.c_str(), x.root.frequency,
+                    x.root.damping_ratio, x.share, x.root.unstable ? " UNSTABLE" : "",
+                    x.root.converged ? "" : " (continuation failed)");
   }
 }
 
@@ -49,7 +50,7 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
   pipeline::RouteAgreement agreement;
   if (route1) {
     r1 = io::within_case(reader, [&] { return pipeline::squeal_route1(r, nc); });
-    roots1 = pipeline::match_route1(r1, route2 ? r.roots : pipeline::uncoupled_roots(nc, r.mean.curve()));
+    roots1 = pipeline::match_route1(r1, route2 ? r.roots : pipeline::uncoupled_roots(nc));
     if (route2) agreement = pipeline::route_agreement(roots1, r.roots);
   }
   pipeline::Route1Deviation dev;

@@ -1,5 +1,5 @@
 // A contact point on a structure and the geometry of its receptance there (docs/noise_loop.md
-// Sec. 4; docs/models.md Sec. 2.5c): the 6-dof receptance at a point, the lever arm of a rigid
+// Sec. 4; docs/models.md Sec. 2.8): the 6-dof receptance at a point, the lever arm of a rigid
 // offset and the contact frame. The loop (noise/loop.hpp) and every rail model
 // (RailModel::contact_transfers, track.hpp) use them.
 //

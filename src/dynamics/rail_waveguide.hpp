@@ -125,7 +125,7 @@ struct RailReduction {
   std::vector<double> static_wavenumbers;
 };
 
-/// The contact points' basis of the continuous waveguide in the loop (docs/models.md Sec. 2.5b):
+/// The contact points' basis of the continuous waveguide in the loop (docs/models.md Sec. 2.6):
 /// the modes below 12 kHz at RailReduction's seven wavenumbers and the static responses to the
 /// loads at 0, 100, 400 and 1200 rad/m (the last for the near field of a 10 mm patch).
 RailReduction near_field_reduction();
@@ -177,7 +177,7 @@ class RailWaveguide {
   /// Re omega (continued_branch below), where a wave may have crossed the real k axis.
   RailWaves waves(cdouble omega) const;
 
-  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.5a, receptance_laplace):
+  /// The continuation to Im omega > 0 (Re s < 0; docs/models.md Sec. 2.6, receptance_laplace):
   /// of each root pair +-k_j of Eq. (W5) at omega (k_j = sqrt(-mu_j) given with Im k_j <= 0), the
   /// member nearer to the waves with Im k < 0 at the real frequency Re omega (their wavenumbers,
   /// eigenvalues only) is the continued one, as the beams' RailModel::receptance_laplace takes
@@ -221,7 +221,7 @@ class RailWaveguide {
   /// same projection (reciprocal). It leaves out the local deformation of the head under the
   /// patch (the contact model's elastic half-space holds it), which a patch load carries as a
   /// real compliance that grows with the mesh's and the basis's highest wavenumber along x (the
-  /// line load along y is a point along x); docs/models.md Sec. 2.8.
+  /// line load along y is a point along x); docs/models.md Sec. 2.11.
   Eigen::MatrixXd head_loads(const Eigen::Vector2d& point, const Eigen::Vector2d& normal,
                              double head_bottom) const;
 

@@ -261,7 +261,7 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r,
   // For a decaying s (Im omega > 0) the continued roots have Im k > 0: the free rail's waves grow
   // along the supported stretch and S is singular to round-off (condition 1e24-1e30 at 8 kHz and
   // 5 % damping with N = 60). There the dense LU with pivoting is kept as it was (its result is
-  // not reliable either: docs/performance.md); elsewhere Levinson's O(m^2) solve.
+  // not reliable either: docs/record/performance.md Sec. 3); elsewhere Levinson's O(m^2) solve.
   if (solution_ == DiscreteSupportSolution::kPeriodic && omega.imag() > 0.0) {
     // The periodic solution has no ends to reflect from: its closed forms are continued, the
     // decaying multipliers followed from Re omega up to omega in steps of 0.5 % of Re omega in

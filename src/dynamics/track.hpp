@@ -175,7 +175,7 @@ Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd&
 /// Torsion of the rail and cross-section deformation are not modelled (docs/models.md).
 ///
 /// At contact points (contact_transfers, laplace_transfers): the one interface of every rail
-/// model (docs/models.md Sec. 2.5c). A contact is a RailContact (x along the rail, offset on the
+/// model (docs/models.md Sec. 2.8). A contact is a RailContact (x along the rail, offset on the
 /// head, contact angle); the result, per pair (a, b), is the 6x6 (x, y, z, rot x, rot y, rot z;
 /// the rail's frame, rail_contact.hpp) displacement at a's point per load at b's point, whose
 /// contact-frame 4x4 is T_a^T alpha T_b (G2). The beams (this class) and the discretely supported
@@ -211,7 +211,7 @@ class RailModel {
 
   /// The 6x6 between contact points (see above) for every pair at every frequency of a grid:
   /// out[k][p] is pair p at frequencies[k]. `interpolate`: a model may compute them on a coarser
-  /// grid and interpolate (the waveguide; docs/models.md Sec. 2.5b); false: each frequency
+  /// grid and interpolate (the waveguide; docs/models.md Sec. 2.7); false: each frequency
   /// directly.
   virtual std::vector<std::vector<Receptance6>> contact_transfers(
       const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,

@@ -41,7 +41,8 @@ void BeamSection::validate(const std::string& prefix) const {
 // One path for real and complex frequency: a real omega is the complex omega + 0i, on the sheet
 // Im k < 0 (no reference needed). The complex arithmetic of the zero imaginary parts adds exact
 // zeros only; the products may be contracted to fused multiply-adds differently from the former
-// real-valued code, so results can differ from it in the last bits (docs/performance.md).
+// real-valued code, so results can differ from it in the last bits (docs/record/performance.md
+// Sec. 5).
 InfiniteBeam::InfiniteBeam(const BeamSection& b, double omega, cdouble s) {
   init_complex(b, cdouble(omega, 0.0), s, nullptr);
 }

@@ -4,7 +4,7 @@
 // (interpolate_receptances, waveguide_rail_model.hpp) or, where that fails its check, by a local
 // rational (Eq. F2 below) at the others.
 //
-// The subset is chosen adaptively (docs/models.md Sec. 2.5b, "The frequency grid"): a starting
+// The subset is chosen adaptively (docs/models.md Sec. 2.7, "The frequency grid"): a starting
 // grid of `per_octave` points per octave (grid frequencies nearest to it, both ends included),
 // then, pass by pass, every open interval between two neighbouring samples gets its point a third
 // of the way in ln f (the nearest grid frequency strictly inside; not the midpoint, where the
@@ -34,7 +34,8 @@
 // otherwise the line is computed directly.                                               (F2)
 // A resonance or a cut-on smoothed by the loss is a low-order rational locally, which the Hermite
 // cubic is not; measured on the leading outer wheel's contact of curve_300m (discrete support,
-// docs/performance.md Sec. 20) the check held for 92 % of such lines, their largest error 0.003.
+// docs/record/performance_waveguide.md Sec. 7) the check held for 92 % of such lines, their
+// largest error 0.003.
 //
 // The bisection uses Eq. (F2) too: a half of an interval whose cubic check failed closes if (F2)
 // holds for it on the samples of that pass (the new third point among them) with the closer

@@ -9,7 +9,7 @@
 //    any distance along the rail (Eq. W4 with all the points' loads in one Ritz basis), given to
 //    the loop as the 6x6 T_a A_ab T_b^T (G2 of rail_contact.hpp): the head's roll under an
 //    eccentric, inclined force and the local deformation of the gauge corner are in the loop, not
-//    the crown's receptance moved rigidly (docs/models.md Sec. 2.5b, 2.5c);
+//    the crown's receptance moved rigidly (docs/models.md Sec. 2.7, 2.8);
 //  * contact_receptance*, contact_transfer*: the same 4x4 at one frequency, for checks.
 //
 // The contact point on the outline: where the outline's outward normal equals the contact's,
@@ -30,7 +30,7 @@
 // uniform traction over the boundary within `patch_half_width` of the point. contact_transfers() on
 // a grid of many frequencies computes them directly on an adaptively chosen part of it and
 // interpolates the rest (cubic Hermite in ln f, each entry; waveguide_frequency_sampling.hpp;
-// docs/models.md Sec. 2.5b gives the error).
+// docs/record/waveguide_rail.md Sec. 8 gives the error).
 #pragma once
 
 #include <Eigen/Core>
@@ -60,12 +60,13 @@ struct WaveguideRailOptions {
   /// false: the patch of patch_half_width (RailWaveguide::patch_loads), the former load.
   bool head_load = true;
   /// Discrete supports: each seat's force spread evenly over this length along the rail (m; a
-  /// rail pad's length, assumed; 0: at one x, the former model). docs/models.md Sec. 2.8.
+  /// rail pad's length, assumed; 0: at one x, the former model). docs/models.md Sec. 2.11.
   double seat_length = 0.15;
   double head_bottom = kUic60HeadBottom;  ///< z of the head's underside (m), for the spin
   double poisson_ratio = 0.3;             ///< nu (-); E, rho, eta from the track's rail
   /// The basis at the crown and the contacts, on either support (WaveguideRailModel,
-  /// DiscreteWaveguideRailModel; docs/models.md Sec. 2.5b, "The contact points' basis").
+  /// DiscreteWaveguideRailModel; docs/record/waveguide_rail.md Sec. 11, "The contact points'
+  /// basis").
   RailReduction contact_reduction = near_field_reduction();
   /// contact_transfers() on a grid: the frequencies computed directly, the others interpolated
   /// (waveguide_frequency_sampling.hpp; per_octave = 0: every frequency directly).

@@ -10,7 +10,7 @@
 // them either. (RTLD_DEEPBIND would force the first point but AddressSanitizer refuses it.)
 // RTLD_NOW: every relocation at load time, so a broken installation fails here with dlerror's
 // message rather than later inside a meshing call; measured no slower than RTLD_LAZY for the
-// noise case (docs/performance.md Sec. 11).
+// noise case (docs/record/performance.md Sec. 12).
 #include "fem/gmsh_library.hpp"
 
 #include <dlfcn.h>

@@ -3,7 +3,8 @@
 // cut by a straight line, the in-plane flexural frequencies of a free ring (thin: Hoppe; thick:
 // Timoshenko's curved beam with shear and rotary inertia), and the first frequency of a
 // clamped-free plate strip of varying thickness in cylindrical bending. Used by tests/fem and
-// tests/dynamics and docs/models.md Sec. 3.4 and 2.5a; no FE mesh is involved.
+// tests/dynamics and docs/record/fe_wheel.md Sec. 1 and docs/record/waveguide_rail.md Sec. 2; no
+// FE mesh is involved.
 #pragma once
 
 #include <Eigen/Dense>

@@ -322,7 +322,7 @@ const std::vector<KeySpec>& case_schema() {
       {"noise.second_patch", T::String, "\"off\"", "-",
        "\"coupled\": the flange patch of a two-point contact (the leading outer wheel at its flange) "
        "enters the bogie loop as a second contact of that wheel (noise.contact_coupling = \"bogie\"; "
-       "/noise/wheels/leading_outer/patches/1, docs/noise_loop.md Sec. 7.4); \"off\": one patch per wheel",
+       "/noise/wheels/leading_outer/patches/1, docs/noise_loop.md Sec. 7.3); \"off\": one patch per wheel",
        {"off", "coupled"}},
       {"noise.second_patch_roughness", T::String, "\"none\"", "-",
        "roughness of the second patch: \"none\" (excited only through the coupling to the tread "
@@ -333,7 +333,7 @@ const std::vector<KeySpec>& case_schema() {
        "squeal: \"on\" also finds the roots of each wheelset of curve.wheels with both its contacts "
        "(/squeal/wheels; profiles: each wheel's curve state; Hertzian curve cases: each wheel's "
        "Hertz state from the bogie estimate; with noise.second_patch = \"coupled\" the flange "
-       "patch too; slow: minutes, docs/squeal.md Sec. 9.3)",
+       "patch too; slow: minutes, docs/squeal.md Sec. 8.2)",
        {"off", "on"}},
       {"noise.compare", T::String, "\"quasi-steady\"", "-",
        "comparison baseline: the quasi-steady contact of the same state (NSS f(0), g(0); "

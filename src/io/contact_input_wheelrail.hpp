@@ -1,5 +1,5 @@
 // CONTACT module-1 input (wheel-rail contact) for a profile case (`rollnoise contact-input`,
-// docs/contact_interop.md Sec. 2.2): the right wheel of the wheelset on its rail, the case's
+// docs/contact_interop.md Sec. 1): the right wheel of the wheelset on its rail, the case's
 // profiles (named by bare file name: CONTACT reads them next to the .inp, where the command copies
 // them), the wheelset position (lateral u, yaw psi; roll from rollnoise's equilibrium), the
 // vertical load prescribed (N = 1, FZ = contact.normal_force) and the wheelset speeds that give the

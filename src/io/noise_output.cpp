@@ -229,7 +229,7 @@ void write_wheels(Hdf5Writer& w, const pipeline::NoiseResult& r) {
     if (r.loops.main.rho.row(a).cwiseAbs().maxCoeff() > 0.0) sources.push_back(name);
     w.attribute("/noise/wheels/" + name, "patch",
                 "the flange patch of the two-point contact (noise.second_patch = \"coupled\", "
-                "docs/noise_loop.md Sec. 7.4): its own contact frame, position on the flank, contact "
+                "docs/noise_loop.md Sec. 7.3): its own contact frame, position on the flank, contact "
                 "model at its own mean state; bands and force_by_source from the coupled loop");
     ++a;
   }

@@ -1,5 +1,5 @@
-// The radiation tables kept between runs (docs/sound.md Sec. 5, docs/interface.md "The caches"):
-// the wheel's modal radiation (pipeline::WheelRadiation) and the rail section's
+// The radiation tables kept between runs (docs/sound.md Sec. 5, docs/interface.md "The wheel's
+// mode cache"): the wheel's modal radiation (pipeline::WheelRadiation) and the rail section's
 // (pipeline::RailRadiation) depend only on the geometry, the modes, the air and the frequency grid,
 // not on the case's contact. They go into the same cache directory as the wheel's modes, under the
 // same rules (io/cache_files.hpp: keyed by this build, compared in full, best effort, written

@@ -1,5 +1,5 @@
 // Reading a rail cross-section outline (CSV, e.g. models/rail/uic60_outline.csv) for the waveguide
-// rail (track.rail_section; docs/models.md Sec. 2.5a).
+// rail (track.rail_section; docs/models.md Sec. 2.6).
 #pragma once
 
 #include <Eigen/Core>

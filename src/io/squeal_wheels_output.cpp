@@ -12,12 +12,12 @@ void write_roots(Hdf5Writer& w, const std::string& g, const std::vector<pipeline
   std::vector<int> unstable, converged;
   std::vector<std::string> label, wheel;
   for (const pipeline::WheelRoot& r : roots) {
-    freq.push_back(r.root.root.frequency);
-    zeta.push_back(r.root.root.damping_ratio);
+    freq.push_back(r.root.frequency);
+    zeta.push_back(r.root.damping_ratio);
     share.push_back(r.share);
-    unstable.push_back(r.root.root.unstable ? 1 : 0);
-    converged.push_back(r.root.root.converged ? 1 : 0);
-    label.push_back(r.root.root.label);
+    unstable.push_back(r.root.unstable ? 1 : 0);
+    converged.push_back(r.root.converged ? 1 : 0);
+    label.push_back(r.root.label);
     wheel.push_back(noise::wheel_name(r.wheel));
   }
   w.write(g + "frequency", freq, {n}, "Hz (Im s / 2 pi)");
@@ -49,11 +49,11 @@ void write_squeal_wheels(Hdf5Writer& w, const std::vector<pipeline::WheelsetSque
   if (patches > 0)
     w.attribute("/squeal/wheels", "second_patch",
                 "the leading outer wheel's flange patch is a third contact of the leading "
-                "wheelset (noise.second_patch = \"coupled\"; docs/squeal.md Sec. 9.3)");
+                "wheelset (noise.second_patch = \"coupled\"; docs/squeal.md Sec. 8.2)");
   w.attribute("/squeal/wheels", "loop",
               "per wheelset, both wheels' contacts in one characteristic equation (rigid wheelset, "
               "the rails; "
-              "docs/squeal.md Sec. 9); each root listed under the wheel with the largest modal "
+              "docs/squeal.md Sec. 8); each root listed under the wheel with the largest modal "
               "share; the top-level "
               "/squeal is the leading outer wheel's single contact");
 }

@@ -1,4 +1,4 @@
-// Writing squeal per wheelset (pipeline/squeal_wheels.hpp, docs/squeal.md Sec. 9.3):
+// Writing squeal per wheelset (pipeline/squeal_wheels.hpp, docs/squeal.md Sec. 8.2):
 // /squeal/wheels/<wheel>/{frequency, damping_ratio, unstable, mode, share, converged} (the roots
 // whose dominant wheel it is) and /squeal/wheels/unstable/{wheel, frequency, damping_ratio, mode,
 // share} (every unstable root of the bogie).

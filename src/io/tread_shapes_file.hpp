@@ -1,6 +1,6 @@
 // Mode shapes along the tread as a CSV table: the import of a user's FE modes (ANSYS, Abaqus,
 // Code_Aster, CalculiX, ...) and the export of ours (`rollnoise modes --csv`), docs/interface.md
-// "Tread shapes file" and docs/models.md Sec. 3.4.
+// "A user's FE modes" and docs/models.md Sec. 3.4.
 //
 // Format: '#' comment lines, the header
 // `mode,n,frequency_Hz,damping_ratio,s_mm,r_mm,u_r,u_theta,u_z`, then one line per mode and tread

@@ -6,7 +6,7 @@
 // Used for the spectral radius of the linear contact model's Hessenberg form (nss/paper_form.cpp),
 // where Eigen's EigenSolver first reduces the matrix to Hessenberg form again and then runs the
 // plain Francis double-shift QR: measured 2.5 s against 0.35 s for n = 1284 (a random Hessenberg
-// matrix; docs/performance.md Sec. 21).
+// matrix; docs/record/performance.md Sec. 20).
 #pragma once
 
 #include <Eigen/Core>

@@ -9,7 +9,7 @@
 // Debian 12's libopenblas0-serial is: once that package is installed it becomes the system's LAPACK
 // (update-alternatives), and concurrent calls then share its memory buffers and return wrong
 // values. Measured on this project's waveguide: one frequency in a hundred off by O(1) on two
-// threads, none on one (docs/performance.md Sec. 20).
+// threads, none on one (docs/record/performance_waveguide.md Sec. 7).
 //
 // So every LAPACK call holds a LapackSection: a process-wide lock where the loaded library is
 // OpenBLAS built single-threaded (openblas_get_parallel() == 0, found by the dynamic linker),

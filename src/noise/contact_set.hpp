@@ -44,7 +44,7 @@
 //    the two contact points (RailModel::contact_transfers, dynamics/track.hpp): the beams'
 //    transfer between x_a and x_b (Eq. 2 of track.hpp for discrete support, the infinite beam at
 //    x_a - x_b for continuous support, the rod in x) moved by (M2) to each contact's lateral
-//    offset on the head; the waveguide loaded at both contact points (docs/models.md Sec. 2.5c).
+//    offset on the head; the waveguide loaded at both contact points (docs/models.md Sec. 2.8).
 //    Both contacts of one rail share its local frame, so the block is the rail model's 6x6.
 #pragma once
 

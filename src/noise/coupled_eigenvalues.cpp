@@ -29,7 +29,7 @@ struct Pencil {
 };
 
 // The wheel's rows (rigid wheelset and modes; exact) and U: its displacement u_w = U X (4 x n).
-Eigen::MatrixXd wheel_rows(Pencil& p, const Eigen::Matrix4d& C_rig,
+Eigen::MatrixXd wheel_rows(Pencil& p, const Eigen::MatrixXd& C_rig,
                            const std::vector<LoopMode>& modes, double kH) {
   Eigen::MatrixXd& E = p.E;
   Eigen::MatrixXd& M = p.M;
@@ -125,7 +125,7 @@ std::vector<cdouble> finite_eigenvalues(const Eigen::MatrixXd& M, const Eigen::M
 
 }  // namespace
 
-std::vector<cdouble> coupled_eigenvalues(const Eigen::Matrix4d& C_rig,
+std::vector<cdouble> coupled_eigenvalues(const Eigen::MatrixXd& C_rig,
                                          const std::vector<LoopMode>& modes, const StateSpace& rail,
                                          const StateSpace& contact, double kH, double speed) {
   // The models come from the pipeline's fits (pipeline/squeal.cpp), k_H from Hertz and the speed
@@ -135,6 +135,10 @@ std::vector<cdouble> coupled_eigenvalues(const Eigen::Matrix4d& C_rig,
   ROLLNOISE_ASSERT(has_dimensions(contact, 4, 3),
                    "route 1: the contact model needs 4 inputs and 3 outputs");
   ROLLNOISE_ASSERT(kH > 0.0 && speed > 0.0, "route 1 needs a positive normal stiffness and speed");
+  ROLLNOISE_ASSERT(C_rig.rows() == 4 && C_rig.cols() == 4,
+                   "route 1: one contact (a 4 x 4 rigid flexibility)");
+  for (const LoopMode& m : modes)
+    ROLLNOISE_ASSERT(m.shape.size() == 4, "route 1: one contact (4-vector mode shapes)");
   Pencil p;
   p.o_m = C_rig.cwiseAbs().maxCoeff() > 0.0 ? 8 : 0;
   p.o_r = p.o_m + 2 * static_cast<int>(modes.size());

@@ -1,5 +1,5 @@
 // The flange patch of a two-point contact as a second contact of the flanging wheel
-// (docs/noise_loop.md Sec. 7.4). Where the bogie estimate puts the leading axle against its outer
+// (docs/noise_loop.md Sec. 7.3). Where the bogie estimate puts the leading axle against its outer
 // flange (CurveContactState::two_point: flange force Y != 0, vertical share Q_f of (K6) at the
 // flange angle delta_f), the leading outer wheel has, besides its tread patch (the wheel lowered
 // under its load, wheel_contact.hpp), a patch on the flange flank. It is returned as a second
@@ -12,7 +12,7 @@
 //  * load: the planar patch at that point lowered under the vertical load Q_f (loaded_contact.hpp,
 //    (V1): Q_f = N_f cos delta + F_y sin delta), so N_f follows from the creep forces of the
 //    flank's own steady state; the tread patch keeps its own lowering (the estimate's flange share
-//    is not taken off it: Sec. 7.2 step 5).
+//    is not taken off it: Sec. 7.1 step 5).
 //  * creepages: (K2') at the flank point (its rolling radius r_f, lateral position y_f, angle):
 //    xi_x = y_f/R - (r_f - r_i)/(2 r0), xi_y = -psi/cos(delta), phi = -sin(delta)/r_f -
 //    cos(delta)/R. The flank's larger radius makes xi_x large: the flange patch is in full slip.

@@ -1,62 +1,138 @@
-// The loop at complex s (stability.hpp, (S1)): the wheel's modes and the rigid wheelset in the
-// contact frame, the rail at complex s, and A(s) = R(s) + sum_k psi_k psi_k^T / (m_k D_k(s)).
-// The contact at complex s is contact_receptance_laplace (contact_receptance.hpp) with f(s), g(s)
-// of a ContactTransfer (contact_transfer.hpp).
+// The loop at complex s (stability.hpp, (S1)): the wheels' modes and the rigid wheelsets in the
+// contact frames, the rails at complex s, the contacts' f(s), g(s), and
+// A(s) = R(s) + sum_k Psi_k Psi_k^T / (m_k D_k(s)).
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
+#include "core/assert.hpp"
+#include "core/errors.hpp"
 #include "noise/stability.hpp"
 
 namespace rollnoise::noise {
-
 namespace {
 
-Receptance4 modal_term(const LoopMode& m, cdouble s) {
-  return (m.shape * m.shape.transpose()).cast<cdouble>() / modal_denominator(m, s);
+// The wheel's mode k at contact c in its frame: T^T L(0, shift, 0) (phi_x, phi_y, phi_z, 0, 0,
+// phi_rz) (the vector form of the rank-one modal term of loop.hpp's wheel_receptance6).
+Eigen::Vector4d contact_shape(const dynamics::WheelMode& mode, const ContactPoint& c) {
+  Eigen::Matrix<double, 6, 1> phi = Eigen::Matrix<double, 6, 1>::Zero();
+  for (int i = 0; i < 4; ++i) phi(kSixOfFour[i]) = mode.shape(i);
+  // the lever arm (L2) on the shape: u' = u + th x d, d = (0, shift, 0)
+  const Eigen::Vector3d th = phi.tail<3>(), d(0.0, c.position.wheel_shift_y, 0.0);
+  phi.head<3>() += th.cross(d);
+  return contact_frame(c.position.contact_angle).transpose() * phi;
 }
 
 }  // namespace
 
-Receptance4 LaplaceLoop::matrix(cdouble s) const {
-  Receptance4 a = rest(s);
-  for (const LoopMode& m : modes) a += modal_term(m, s);
+Eigen::MatrixXcd LaplaceLoop::matrix(cdouble s) const {
+  Eigen::MatrixXcd a = rest(s);
+  for (const LoopMode& m : modes)
+    a += (m.shape * m.shape.transpose()).cast<cdouble>() / modal_denominator(m, s);
   return a;
 }
 
-std::vector<LoopMode> contact_frame_modes(const dynamics::WheelModel& wheel,
-                                          const ContactPosition& p) {
-  std::vector<LoopMode> out;
-  const std::vector<dynamics::WheelMode> table = wheel.modes_at(p.wheel_shift_y);  // the FE wheel follows the contact
-  for (std::size_t n = 0; n < table.size(); ++n) {
-    const dynamics::WheelMode& w = table[n];
-    // psi psi^T = T^T L embed(phi phi^T) L^T T (the wheel's modal part in wheel_receptance6 and
-    // to_contact_frame, for one mode); psi from the rank-one matrix.
-    Receptance6 r = embed((w.shape * w.shape.transpose()).cast<cdouble>());
-    if (p.wheel_shift_y != 0.0) r = move_point(r, Eigen::Vector3d(0.0, p.wheel_shift_y, 0.0));
-    const Eigen::Matrix4d M = to_contact_frame(r, p.contact_angle).real();
-    Eigen::Index i = 0;
-    M.diagonal().maxCoeff(&i);
-    LoopMode m;
-    m.frequency = w.frequency;
-    m.damping_ratio = w.damping_ratio;
-    m.modal_mass = w.modal_mass;
-    m.shape =
-        M(i, i) > 0.0 ? Eigen::Vector4d(M.col(i) / std::sqrt(M(i, i))) : Eigen::Vector4d::Zero();
-    m.label = w.label;
-    m.index = n;
-    out.push_back(m);
+LaplaceLoop LaplaceLoop::one_contact(std::vector<LoopMode> modes,
+                                     std::function<Eigen::MatrixXcd(cdouble s)> rest) {
+  LaplaceLoop loop;
+  for (LoopMode& m : modes) {
+    ROLLNOISE_ASSERT(m.shape.size() == 4, "a loop of one contact needs 4-vector mode shapes");
+    m.wheel = 0;
   }
+  loop.modes = std::move(modes);
+  loop.wheels = {{0, 1}};
+  loop.contact_wheel = {0};
+  loop.rest = std::move(rest);
+  return loop;
+}
+
+LoopModes loop_modes(const dynamics::WheelModel& wheel, const std::vector<ContactPoint>& points) {
+  const Eigen::Index n = static_cast<Eigen::Index>(points.size());
+  LoopModes out;
+  for (const ContactPoint& p : points) {
+    const std::pair<int, int> w{p.wheelset, p.side};
+    auto it = std::find(out.wheels.begin(), out.wheels.end(), w);
+    out.contact_wheel.push_back(static_cast<int>(it - out.wheels.begin()));
+    if (it == out.wheels.end()) out.wheels.push_back(w);
+  }
+  // each contact's mode shapes at its own position on the tread (the FE wheel follows the contact;
+  // the table wheel has one table): the same frequencies and damping at every position
+  std::vector<std::vector<dynamics::WheelMode>> at_contact;
+  for (const ContactPoint& p : points)
+    at_contact.push_back(wheel.modes_at(p.position.wheel_shift_y));
+  for (std::size_t w = 0; w < out.wheels.size(); ++w)
+    for (std::size_t k = 0; k < wheel.modes().size(); ++k) {
+      const dynamics::WheelMode& wm = wheel.modes()[k];
+      LoopMode m{wm.frequency,       wm.damping_ratio,
+                 wm.modal_mass,      Eigen::VectorXd::Zero(4 * n),
+                 wm.label,           k,
+                 static_cast<int>(w)};
+      for (Eigen::Index a = 0; a < n; ++a)
+        if (out.contact_wheel[a] == static_cast<int>(w))
+          m.shape.segment<4>(4 * a) = contact_shape(at_contact[a][k], points[a]);
+      out.modes.push_back(m);
+    }
   return out;
 }
 
-Eigen::Matrix4d rigid_flexibility(const dynamics::RigidWheelset& w, const ContactPosition& p) {
-  // wheelset_centre_receptance at omega = 1 is -C; alpha(s) = -C/omega^2 = C/s^2.
-  Receptance6 centre = Receptance6::Zero();
-  const double inv[6] = {1.0 / w.mass,         1.0 / w.mass,         1.0 / w.mass,
-                         1.0 / w.roll_inertia, 1.0 / w.spin_inertia, 1.0 / w.yaw_inertia};
-  for (int i = 0; i < 6; ++i) centre(i, i) = inv[i];
-  const Receptance6 moved = move_point(
-      centre, Eigen::Vector3d(0.0, w.contact_offset_y + p.wheel_shift_y, -w.wheel_radius));
-  return to_contact_frame(moved, p.contact_angle).real();
+Eigen::MatrixXd rigid_flexibility(const dynamics::RigidWheelset& ws,
+                                  const std::vector<ContactPoint>& points,
+                                  const CrossCoupling& cross) {
+  return contact_frame_blocks(points,
+                              [&](Eigen::Index a, Eigen::Index b) -> Receptance6 {
+                                if (a != b && !cross.wheelset) return Receptance6::Zero();
+                                return rigid_flexibility6(ws, points[a], points[b]).cast<cdouble>();
+                              })
+      .real();
+}
+
+LaplaceLoop laplace_loop(const dynamics::WheelModel& wheel, const dynamics::RailModel& rail,
+                         const std::vector<SquealContact>& contacts, double speed,
+                         bool normal_coupling, const CrossCoupling& cross) {
+  const Eigen::Index n = static_cast<Eigen::Index>(contacts.size());
+  if (n == 0) throw InputError("contacts", "squeal needs at least one contact");
+  std::vector<ContactPoint> points;
+  for (const SquealContact& c : contacts) {
+    if (!c.transfer)
+      throw InputError("contacts", "squeal: every contact needs its contact transfer");
+    points.push_back(c.point);
+  }
+  validate_contacts(points);
+  LoopModes m = loop_modes(wheel, points);
+  LaplaceLoop loop;
+  loop.modes = std::move(m.modes);
+  loop.wheels = std::move(m.wheels);
+  loop.contact_wheel = std::move(m.contact_wheel);
+  // The rigid wheelsets' flexibility in the contact frames (constant: alpha = C / s^2).
+  const Eigen::MatrixXcd C = rigid_flexibility(wheel.wheelset(), points, cross).cast<cdouble>();
+  // the rails between the contact points as a function of s, set up once
+  // (RailModel::laplace_transfers; alpha_ba = alpha_ab^T)
+  const ContactSetRailPairs pairs = contact_set_rail_pairs(points, cross);
+  const dynamics::RailModel::LaplaceTransfers rail_at = rail.laplace_transfers(pairs.points);
+  loop.rest = [=](cdouble s) -> Eigen::MatrixXcd {
+    Eigen::MatrixXcd A = C / (s * s);
+    const std::vector<Receptance6> r = rail_at(s);
+    std::vector<Receptance6> block(static_cast<std::size_t>(n * n), Receptance6::Zero());
+    for (std::size_t p = 0; p < pairs.index.size(); ++p) {
+      const auto [a, b] = pairs.index[p];
+      block[a * n + b] = r[p];
+      if (b != a) block[b * n + a] = r[p].transpose();
+    }
+    A += contact_frame_blocks(points,
+                              [&](Eigen::Index a, Eigen::Index b) { return block[a * n + b]; });
+    for (Eigen::Index a = 0; a < n; ++a) {
+      const ContactTransfer& t = *contacts[a].transfer;
+      const auto [f, g] = normal_coupling
+                              ? t.creep_and_load(s)
+                              : std::make_pair(t.creep(s), Eigen::Vector3cd::Zero().eval());
+      A.block<4, 4>(4 * a, 4 * a) +=
+          contact_receptance_laplace(s, contacts[a].normal_stiffness, speed, f, g);
+    }
+    return A;
+  };
+  return loop;
 }
 
 std::function<Receptance4(cdouble s)> rail_laplace_at_contact(const dynamics::RailModel& rail,

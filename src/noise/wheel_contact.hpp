@@ -1,7 +1,7 @@
 // One wheel's contact state in a curve, as CONTACT module 1 finds it: the wheel on its own rail at
 // its axle's lateral displacement u and yaw psi, lowered VERTICALLY under its vertical load on the
 // curved reference surface of the rail profile (geometry/loaded_contact.hpp, curved_contact.hpp),
-// with the creepages of its own contact (docs/noise_loop.md Sec. 7.3). Returned as one immutable
+// with the creepages of its own contact (docs/noise_loop.md Sec. 7.2). Returned as one immutable
 // value; a bogie is a list of them (bogie_wheel_contacts in curve_state.hpp).
 //
 // Wheels: leading/trailing axle x outer/inner rail. The outer wheel is the geometry layer's right

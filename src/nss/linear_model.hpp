@@ -366,7 +366,7 @@ class LinearContactModel {
   OperatorFactory operator_factory(bool matrix_free, double cbar) const;
   /// The FFT operators of the reduced form on the contact elements: the rolling step
   /// K1 = Pi' A0 Pi/dt, the compliance part of K0, Pi' A Pi/dt, and the matrix-free
-  /// preconditioner Pi' (C/dt + cbar I)^{-1} Pi (docs/contact_model.md, "Matrix-free path").
+  /// preconditioner Pi' (C/dt + cbar I)^{-1} Pi (docs/contact_model.md Sec. 5).
   enum class ReducedOperator { rolling_step, compliance, preconditioner };
   std::unique_ptr<contact::ElementOperator> reduced_operator(ReducedOperator which, double cbar = 0.0) const;
   /// The diagonal shift cbar of the matrix-free preconditioner's symbol.

@@ -25,12 +25,12 @@
 //    k_n block steps is accepted when it agrees with the model of the check before:
 //    e_n = max_w |f_{k_n} - f_{k_{n-1}}| / |f_{k_n}| <= 1e-10 (Frobenius norms); e_n estimates the
 //    error of the older model, which the newer one improves on (the errors decay geometrically in
-//    k, docs/accuracy.md). Check schedule (check_schedule below): the first check after half a
-//    contact length, then every 4 block steps, or, where two estimates give the decay rate rho per
-//    step (e_n / e_{n-1} = rho^{k_{n-1} - k_{n-2}}), at the step where the error is predicted to
-//    reach the tolerance, at most Lc/3 steps on (until 2026-11 every Lc/3 steps from Lc on: the
-//    same accepted accuracy, 20-45 % more block steps). If no model passes (within 10 contact
-//    lengths of block steps), the block breaks down, or the h_j do not decay within
+//    k, docs/record/linear_model_sweep.md). Check schedule (check_schedule below): the first
+//    check after half a contact length, then every 4 block steps, or, where two estimates give the
+//    decay rate rho per step (e_n / e_{n-1} = rho^{k_{n-1} - k_{n-2}}), at the step where the error
+//    is predicted to reach the tolerance, at most Lc/3 steps on (until 2026-11 every Lc/3 steps
+//    from Lc on: the same accepted accuracy, 20-45 % more block steps). If no model passes (within
+//    10 contact lengths of block steps), the block breaks down, or the h_j do not decay within
 //    `max_contact_lengths`, the sweep falls back to the exact recursion (exact_markov), and from
 //    there to the Hessenberg form (transfer.cpp).
 //
@@ -40,8 +40,7 @@
 // uses K0 X = apply_K0(X) of the computed X; Y = K0 V is kept while it takes < 256 MB
 // (lean_krylov_basis), otherwise recomputed. Every PCG solve starts from the previous block (or
 // traction) rolled on by one element (solve_step).
-// Measured convergence, costs and the alternatives tried: docs/accuracy.md, "The linear model's
-// sweep: measurements".
+// Measured convergence, costs and the alternatives tried: docs/record/linear_model_sweep.md.
 
 #include <algorithm>
 #include <chrono>

@@ -17,8 +17,7 @@
 // (R C R')^{-1} (Schur complement) is the restricted hypersingular-like inverse with log-type growth
 // only; the median in full sliding, where K0 has c_e ~30 kappa_e and C^{-1} alone (which grows like
 // |k| in the Fourier bins) spreads a nearly diagonal spectrum instead of compressing it. The PCG
-// iterations this gives, and the variants measured against it: docs/accuracy.md, "The linear
-// model's sweep: measurements".
+// iterations this gives, and the variants measured against it: docs/record/linear_model_sweep.md.
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 //   PcgStep            K0 applied by FFT (D + Pi' A Pi/dt) and solved by preconditioned CG
 //                      (Saad, Iterative Methods for Sparse Linear Systems, 2nd ed., Alg. 9.1) with
 //                      the preconditioner M^{-1} = W Pi' (C/dt + cbar I)^{-1} Pi W (linear_model.hpp,
-//                      docs/contact_model.md "Matrix-free path").
+//                      docs/contact_model.md Sec. 5).
 // K1 = Pi' A0 Pi/dt is an FFT convolution on both.
 //
 // Threads. The columns of a block are independent in K1 X, K0 X and the solves, so for_columns

@@ -8,7 +8,7 @@
 // source per wheel (Sec. 5.2, M3-M4).
 //
 // A second patch of a wheel (noise.second_patch = "coupled": the flange patch of a two-point
-// contact, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.4) is one more ContactPoint of its
+// contact, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.3) is one more ContactPoint of its
 // wheel (same wheelset, side and rail_x, its own position on the flank), with its own alpha_c (its
 // loop's k_N, f, g at its own mean state); it has a roughness source of its own only with
 // noise.second_patch_roughness = "own". Contacts: the wheels in their order, then the patches.

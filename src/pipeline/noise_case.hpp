@@ -50,7 +50,7 @@ struct NoiseCase {
   enum class ContactCoupling { kBogie, kNone };
   ContactCoupling contact_coupling = ContactCoupling::kBogie;
   /// noise.second_patch = "coupled": the flange patch of a two-point contact enters the bogie loop
-  /// as a second contact of its wheel (docs/noise_loop.md Sec. 7.4); "off" (false): left out.
+  /// as a second contact of its wheel (docs/noise_loop.md Sec. 7.3); "off" (false): left out.
   bool second_patch = false;
   /// noise.second_patch_roughness = "own": the second patch has its own roughness source; "none"
   /// (false): it is excited through the coupling only.

@@ -46,25 +46,22 @@ int SquealResult::unstable_count() const {
   return n;
 }
 
+noise::ContactPoint squeal_point(const NoiseCase& nc, const MeanContact& mean) {
+  noise::ContactPoint
+      p;  // the leading wheelset's outer wheel: side +1, the frame of the single loop
+  p.wheelset = 0;
+  p.side = 1;
+  p.position = mean.curve().position;
+  p.rail_x = nc.rail->position();
+  return p;
+}
+
 noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean) {
-  noise::LaplaceLoop loop;
-  const noise::ContactPosition position = mean.curve().position;
-  loop.modes = noise::contact_frame_modes(*nc.wheel, position);
-  const Eigen::Matrix4d rigid = noise::rigid_flexibility(nc.wheel->wheelset(), position);
-  const double kN = mean.normal_stiffness(), V = mean.contact().speed;
-  const bool coupled = mean.coupled();
-  const std::function<noise::Receptance4(dynamics::cdouble)> rail =
-      noise::rail_laplace_at_contact(*nc.rail, position);  // set up once
   // contact.creep(s) carries the case's creepage sampling (LinearContactModel::creep_coefficients_laplace).
-  const std::shared_ptr<const noise::ContactTransfer> contact = mean.transfer();
-  loop.rest = [=](dynamics::cdouble s) {
-    const auto [f, g] = coupled ? contact->creep_and_load(s)
-                                : std::make_pair(contact->creep(s), Eigen::Vector3cd::Zero().eval());
-    return noise::Receptance4(rigid.cast<dynamics::cdouble>() / (s * s) +
-                              rail(s) +
-                              noise::contact_receptance_laplace(s, kN, V, f, g));
-  };
-  return loop;
+  const noise::SquealContact contact{squeal_point(nc, mean), mean.transfer().get(),
+                                     mean.normal_stiffness()};
+  return noise::laplace_loop(*nc.wheel, *nc.rail, {contact}, mean.contact().speed, mean.coupled(),
+                             noise::CrossCoupling::none());
 }
 
 SquealResult run_squeal(ContactCase c, const NoiseCase& nc, const noise::StabilityOptions& options, bool route2) {
@@ -185,9 +182,12 @@ Route1Result squeal_route1(const SquealResult& r, const NoiseCase& nc, const Rou
   out.seconds_fit = seconds_since(t0);
 
   const auto t1 = Clock::now();
-  out.eigenvalues = noise::coupled_eigenvalues(noise::rigid_flexibility(nc.wheel->wheelset(), p),
-                                               noise::contact_frame_modes(*nc.wheel, p), to_noise(out.rail.model),
-                                               to_noise(out.contact.model), r.mean.normal_stiffness(), r.mean.contact().speed);
+  // the wheel as route 2's loop of one contact has it (squeal_loop)
+  const std::vector<noise::ContactPoint> point{squeal_point(nc, r.mean)};
+  out.eigenvalues = noise::coupled_eigenvalues(
+      noise::rigid_flexibility(nc.wheel->wheelset(), point),
+      noise::loop_modes(*nc.wheel, point).modes, to_noise(out.rail.model),
+      to_noise(out.contact.model), r.mean.normal_stiffness(), r.mean.contact().speed);
   out.seconds_eigen = seconds_since(t1);
   return out;
 }
@@ -214,11 +214,11 @@ Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, 
   return d;
 }
 
-std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc, const CurveSetup& curve) {
+std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc) {
   std::vector<noise::ModeRoot> u;
-  const std::vector<noise::LoopMode> modes = noise::contact_frame_modes(*nc.wheel, curve.position);
+  const std::vector<dynamics::WheelMode>& modes = nc.wheel->modes();
   for (std::size_t k = 0; k < modes.size(); ++k) {
-    const noise::LoopMode& m = modes[k];
+    const dynamics::WheelMode& m = modes[k];
     if (m.frequency < nc.band_min || m.frequency > nc.band_max) continue;
     noise::ModeRoot x;
     x.mode = k;

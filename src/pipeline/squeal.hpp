@@ -62,7 +62,12 @@ void check_contact_stability(double radius, double dt);
 /// the band's wheel modes checked against the Nyquist limit naming noise.band_max.
 MeanContactOptions squeal_contact_options(const NoiseCase& nc, const std::vector<double>& in_band);
 
-/// The loop at complex s of a mean contact with its transfer (for tests and other drivers).
+/// The leading outer wheel's contact point of a mean contact (wheelset 0, side +1, at the rail's
+/// position).
+noise::ContactPoint squeal_point(const NoiseCase& nc, const MeanContact& mean);
+
+/// The loop at complex s of a mean contact with its transfer: the loop of one contact
+/// (noise::laplace_loop), as the wheelsets' loops of squeal_wheels.hpp with one contact.
 noise::LaplaceLoop squeal_loop(const NoiseCase& nc, const MeanContact& mean);
 
 /// Route 1 on a case (docs/squeal.md Sec. 4): the rail's receptance alpha_r (4 x 4, contact frame)
@@ -116,7 +121,7 @@ Route1Deviation route1_deviation(const Route1Result& r1, const SquealResult& r, 
 
 /// The band's wheel modes as ModeRoots with s = s0 (their uncoupled roots): the reference of
 /// match_route1 without route 2.
-std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc, const CurveSetup& curve);
+std::vector<noise::ModeRoot> uncoupled_roots(const NoiseCase& nc);
 
 /// Route 1's eigenvalues (upper half-plane), one per reference root (route 2's roots, or
 /// uncoupled_roots), assigned greedily, closest pairs first, so that no eigenvalue is taken twice;

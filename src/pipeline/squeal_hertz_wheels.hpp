@@ -1,5 +1,5 @@
 // Every wheel's contact for squeal per wheelset in a Hertzian curve case (contact.geometry =
-// "hertz", curve.creepage = "estimate"; docs/squeal.md Sec. 9.3): the bogie curving estimate on the
+// "hertz", curve.creepage = "estimate"; docs/squeal.md Sec. 8.2): the bogie curving estimate on the
 // conical tread WITH the load transfer of the cant deficiency (K4), each wheel's Hertz state from
 // it (vehicle/hertz_wheels.hpp: load Q_w, N_w = N_case Q_w/Q, a and b scaled by (Q_w/Q)^(1/3) at
 // the case's curvatures, the grid with them, creepages (K2') in the wheel's own frame) and the

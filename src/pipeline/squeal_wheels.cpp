@@ -29,7 +29,7 @@ std::vector<SquealWheelContact> squeal_wheel_contacts(const SquealResult& r, con
       leading_outer = leading_outer || w.wheel == noise::WheelId::leading_outer;
     }
     // noise.second_patch = "coupled": the flange patch of a two-point contact is one more contact
-    // of the leading outer wheel in (S6), as in the loop (bogie_noise.hpp, second_patches)
+    // of the leading outer wheel in (S1), as in the loop (bogie_noise.hpp, second_patches)
     if (nc.second_patch && leading_outer && curve.state_input)
       if (const auto flange = noise::flange_patch_contact(*curve.state_input, *curve.state))
         out.push_back({flange->wheel, flange->position(),
@@ -95,15 +95,15 @@ std::vector<WheelsetSqueal> squeal_wheelsets(const SquealResult& r, const NoiseC
       contacts.push_back({p, w->mean.transfer().get(), w->mean.normal_stiffness()});
       coupled = coupled || w->mean.coupled();
     }
-    noise::ContactSetLaplaceLoop loop =
-        noise::contact_set_laplace_loop(*nc.wheel, rail, contacts, r.mean.contact().speed, coupled);
+    noise::LaplaceLoop loop =
+        noise::laplace_loop(*nc.wheel, rail, contacts, r.mean.contact().speed, coupled);
     auto inner = loop.rest;
     long* count = &ws.evaluations;
     loop.rest = [inner, count](noise::cdouble s) {
       ++*count;
       return inner(s);
     };
-    for (const noise::ContactSetRoot& root : noise::contact_set_mode_roots(loop, o)) {
+    for (const noise::ModeRoot& root : noise::mode_roots(loop, o)) {
       // loop.wheels[i] = (wheelset, side): the wheel of this wheelset on that side
       const int side = loop.wheels[root.dominant_wheel].second;
       WheelRoot wr;
@@ -126,7 +126,7 @@ std::vector<WheelRoot> wheel_roots(const std::vector<WheelsetSqueal>& s, noise::
     for (const WheelRoot& r : ws.roots)
       if (r.wheel == w) out.push_back(r);
   std::sort(out.begin(), out.end(), [](const WheelRoot& a, const WheelRoot& b) {
-    return a.root.root.frequency < b.root.root.frequency;
+    return a.root.frequency < b.root.frequency;
   });
   return out;
 }
@@ -135,7 +135,7 @@ std::vector<WheelRoot> unstable_roots(const std::vector<WheelsetSqueal>& s) {
   std::vector<WheelRoot> out;
   for (const WheelsetSqueal& ws : s)
     for (const WheelRoot& r : ws.roots)
-      if (r.root.root.unstable) out.push_back(r);
+      if (r.root.unstable) out.push_back(r);
   return out;
 }
 

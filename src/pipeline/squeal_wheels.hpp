@@ -1,8 +1,8 @@
-// Squeal per wheelset with all its contacts (docs/squeal.md Sec. 9.3): every wheel of curve.wheels
+// Squeal per wheelset with all its contacts (docs/squeal.md Sec. 8.2): every wheel of curve.wheels
 // with its own contact state (patch, steady rolling, linear model as a ContactTransfer, k_N), the
-// two wheels of each wheelset in one characteristic equation (S6) through the rigid wheelset and
-// the rails (noise::contact_set_laplace_loop with the case's rail model, any of them), the roots by continuation
-// from every wheel's modes (noise::contact_set_mode_roots); each root belongs to the wheel with
+// two wheels of each wheelset in one characteristic equation (S1) through the rigid wheelset and
+// the rails (noise::laplace_loop with the case's rail model, any of them), the roots by
+// continuation from every wheel's modes (noise::mode_roots); each root belongs to the wheel with
 // the largest modal share (dominant_wheel).
 #pragma once
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "noise/contact_set_stability.hpp"
 #include "noise/contact_transfer.hpp"
+#include "noise/stability.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/squeal.hpp"
 
@@ -20,7 +20,7 @@ namespace rollnoise::pipeline {
 /// One root of a wheelset's loop, with the wheel it belongs to.
 struct WheelRoot {
   noise::WheelId wheel = noise::WheelId::leading_outer;  ///< dominant wheel (largest share)
-  noise::ContactSetRoot root;
+  noise::ModeRoot root;
   double share = 0.0;  ///< that wheel's modal share of the root (0..1)
 };
 

@@ -1,4 +1,4 @@
-// One contact of the noise loop (docs/noise_loop.md Sec. 5.3, 7.3): a wheel of curve.wheels on its
+// One contact of the noise loop (docs/noise_loop.md Sec. 5.3, 7.2): a wheel of curve.wheels on its
 // own contact state (noise/wheel_contact.hpp), or the case's one contact when there is no curve
 // contact state (a Hertzian case). Each contact's own work: its patch, normal stiffness, steady
 // rolling, linear model, f(w) and g(w), and its contact receptance alpha_c of every loop variant

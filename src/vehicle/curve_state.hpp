@@ -1,6 +1,6 @@
 // The contact state of the leading outer wheel in a curve, from the wheel and rail profiles: ONE
 // state (contact point, normal load, creepages, flange contact) that the noise loop runs on
-// (docs/noise_loop.md Sec. 7.2).
+// (docs/noise_loop.md Sec. 7.1).
 //
 //  1. Wheelset position. Either the quasi-static bogie estimate (curving.hpp) on the profile
 //     table, with Kalker's f11, f22 from the Hertz estimate at the leading outer wheel's contact
@@ -136,7 +136,7 @@ WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, d
 /// Steps 1-4 above. `in` valid() (a contract); NumericalError from the estimate.
 CurveContactState curve_contact_state(const CurveStateInput& in);
 
-/// Every wheel's contact state, in the order of `wheels` (docs/noise_loop.md Sec. 7.3): each wheel
+/// Every wheel's contact state, in the order of `wheels` (docs/noise_loop.md Sec. 7.2): each wheel
 /// on its own rail at its axle's (u, psi) (leading: the state's; trailing: the estimate's trailing
 /// axle, or the multibody input), lowered under its vertical load (estimate: Q +- dQ on the
 /// outer/inner wheels (K4); multibody: the given loads), creepages (K2') or given. The leading

@@ -1,5 +1,5 @@
 // Every wheel's Hertzian tread contact of a two-axle bogie from the quasi-static curving estimate
-// (curving.hpp), for the Hertzian curve cases, which have no profiles (docs/squeal.md Sec. 9.3):
+// (curving.hpp), for the Hertzian curve cases, which have no profiles (docs/squeal.md Sec. 8.2):
 // what squeal per wheelset needs of each wheel, its load, creepages and contact position.
 //
 // Assumptions (the conical tread of the estimate, the same wheel and rail radii for every wheel):

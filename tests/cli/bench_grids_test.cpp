@@ -1,4 +1,4 @@
-// Issue 16, fault 13: `bench --nx` is checked before anything runs: at least two grids, coarse to
+// `bench --nx` is checked before anything runs: at least two grids, coarse to
 // fine, each fine enough for the patch; otherwise exit 2 naming --nx and no file.
 #include <gtest/gtest.h>
 

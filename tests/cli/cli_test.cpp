@@ -564,7 +564,7 @@ TEST(BenchCommand, RefinementTableShowsTheErrorsFallingTowardsTheFinestGrid) {
     for (double v : col(name)) EXPECT_TRUE(std::isfinite(v) && v >= 0) << name;
   // the unsteady solver agrees with the linear model on every grid (docs/conventions.md Sec. 3: 0.1 %)
   for (double v : col("err_transient_vs_linear_rel")) EXPECT_LT(v, 1e-3);
-  // the same table in HDF5 (/bench/*, issue 16 fault 13), with units
+  // the same table in HDF5 (/bench/*), with units
   const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0) << "bench -o wrote no HDF5 file";
   for (const char* name : {"err_force_rel", "err_f_1kHz_rel", "err_transient_vs_linear_rel"}) {

@@ -1,4 +1,4 @@
-// Issue 30: nothing lost, nothing stale. A full disk (a file-size limit, a full tmpfs, /dev/full as
+// Nothing lost, nothing stale. A full disk (a file-size limit, a full tmpfs, /dev/full as
 // stdout) gives exit 1 naming the file and the reason, no output and no temporary; a case file is
 // read once (process substitution, a FIFO); output names near NAME_MAX; the case text and the
 // command line above HDF5's 64 kB attribute limit; model files bounded before they are read; -q

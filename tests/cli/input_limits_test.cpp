@@ -1,4 +1,4 @@
-// Issue 16, input faults 4, 5, 6, 10, 11, 12 and 15, end to end: every one a refusal with exit
+// Input faults, end to end: every one a refusal with exit
 // status 2 whose message names the key, the --sweep argument or the path; no output file left
 // behind; the case file unchanged. The size limits are refused from their estimates, before any
 // allocation: each such run ends well within a second.

@@ -1,4 +1,4 @@
-// Output files (issue 16, faults 1-3 and 14, provenance): an output that is an input or another
+// Output files (faults around the input, provenance): an output that is an input or another
 // output, a folder, or in a folder that does not exist or takes no file is refused before any
 // computation (exit 2, the option and the path named, nothing left, the input unchanged); outputs
 // are written to unique temporaries renamed atomically (two concurrent runs to one file each leave

@@ -1,4 +1,4 @@
-// Issue 16, progress: commands that can run long end with a one-line summary on stderr (which a
+// Progress: commands that can run long end with a one-line summary on stderr (which a
 // log keeps), and -q silences it; stdout (results) is the same either way.
 #include <gtest/gtest.h>
 

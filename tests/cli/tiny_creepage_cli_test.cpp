@@ -1,4 +1,4 @@
-// Issue 16, fault 7: tiny non-zero creepages are valid input; steady and creep solve them (exit 0)
+// Tiny non-zero creepages are valid input; steady and creep solve them (exit 0)
 // and the tractions are finite (the library test tests/contact/tiny_creepage_test.cpp checks that
 // they scale linearly with the creepage).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 16, fault 9: `transient` refuses an excitation its grid cannot resolve (above the Nyquist
+// `transient` refuses an excitation its grid cannot resolve (above the Nyquist
 // limit V/(2 dx) it would alias onto a lower frequency), as `validate` and `response` do.
 #include <gtest/gtest.h>
 

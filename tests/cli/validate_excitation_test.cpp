@@ -1,4 +1,4 @@
-// Issue 16, fault 8: `validate` reports components that do not vary as "not excited" (their
+// `validate` reports components that do not vary as "not excited" (their
 // variation is solver round-off) instead of meaningless relative errors, in the printout and in
 // /validate/errors (excited = 0, errors NaN).
 #include <gtest/gtest.h>

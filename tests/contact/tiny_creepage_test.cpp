@@ -1,7 +1,8 @@
-// Tiny creepages (issue 16, fault 7): in full adhesion the steady problem is linear in the creepage
-// (s = w + S p = 0 with |p| far below mu pn), so the forces at creepage 1e-50 (or 1e-200, where squared
-// norms underflow) are exactly 1e-50/1e-9 times those at 1e-9, up to the solver's tolerance. Before,
-// the Newton solver stalled below ~1e-46 (float LU factors saw the residual as zero).
+// Tiny creepages: in full adhesion the steady problem is linear in the creepage
+// (s = w + S p = 0 with |p| far below mu pn), so the forces at creepage 1e-50 (or 1e-200, where
+// squared norms underflow) are exactly 1e-50/1e-9 times those at 1e-9, up to the solver's
+// tolerance. Before, the Newton solver stalled below ~1e-46 (float LU factors saw the residual as
+// zero).
 #include <gtest/gtest.h>
 
 #include <cmath>

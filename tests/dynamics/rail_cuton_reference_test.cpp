@@ -1,8 +1,8 @@
 // The free UIC60 rail's cut-on frequencies (the section's in-plane modes at k = 0, RailWaveguide
-// Eq. W2) against independent references (docs/models.md Sec. 2.5a). No published table of UIC60
-// cut-ons was found (searched: Gry 1996 JSV 195, Thompson 1997 JSV 203, Ryue et al. 2008/2009,
-// Nilsson et al. 2009, Bartoli et al. 2006, Pfaffinger's ETH thesis 2000 and its JSV 253 (2002)
-// paper, the J. Adv. Transp. 2021 periodic-rail paper), so:
+// Eq. W2) against independent references (docs/record/waveguide_rail.md Sec. 2.1). No published
+// table of UIC60 cut-ons was found (searched: Gry 1996 JSV 195, Thompson 1997 JSV 203, Ryue et al.
+// 2008/2009, Nilsson et al. 2009, Bartoli et al. 2006, Pfaffinger's ETH thesis 2000 and its JSV 253
+// (2002) paper, the J. Adv. Transp. 2021 periodic-rail paper), so:
 //  1. the same k = 0 problem by another assembly: the section as a ring of radius 1000 m in the
 //     axisymmetric FE (fem/axisymmetric.hpp), order n = 0, which is plane strain in the limit
 //     (hoop strain U_r/r ~ 1e-4 of the in-plane strains) and carries the mode shapes, so the waves
@@ -170,7 +170,7 @@ TEST(FreeRailCutOnReference, RingAssemblyEqualsWaveguideAndNamesTheWaves) {
 
 // Against the simple models, each of them stiffer than the section (rigid parts, clamped roots:
 // Rayleigh-Ritz-type estimates), so above the FE cut-ons; measured against the 20 mm mesh here
-// (and the 10 mm one of docs/models.md Sec. 2.5a: 1194.8, 4786.3, 4912.5 Hz):
+// (and the 10 mm one of docs/record/waveguide_rail.md Sec. 2.1: 1194.8, 4786.3, 4912.5 Hz):
 //  - web bending, rigid head and foot on the web strip: 1306 Hz, +8.7 % (+9.3 %), within 15 %;
 //  - foot flapping, the foot's half clamped at the web face: 5559 Hz, +15.6 % (+16.1 %), within
 //    25 % (in the section the root turns and sinks with the web);

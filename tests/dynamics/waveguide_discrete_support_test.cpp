@@ -121,13 +121,13 @@ TEST(DiscreteWaveguide, ConvergesInTheNumberOfSleepers) {
 // 0.35 dB; 0.21 and 0.69 dB at 2 and 3 kHz). The lateral tangent is not asserted: for lateral
 // bending the spacing does matter (the static decay length (4 EI_z / k_y)^(1/4) ~ 0.5 m is below
 // L = 0.6 m), and the crown's lateral receptance differs from the continuous model's by as much
-// (0.51 dB at 50 Hz against 0.52 dB at the contact; docs/models.md Sec. 2.5b).
+// (0.51 dB at 50 Hz against 0.52 dB at the contact; docs/models.md Sec. 2.7).
 //
 // These numbers are those of the former loads (the 10 mm patch, the seats at one x), which this
 // test keeps: their local compliance, a real spring of ~0.6e-9 m/N at the crown that does not
 // depend on the support, dominates the receptance at 2-3 kHz (-185 dB) and so hides the supports'
 // difference there. With the loads of the loop (the head as a body, the seats spread over
-// 0.15 m; docs/models.md Sec. 2.8) the 3 kHz point lies in the discrete track's second
+// 0.15 m; docs/models.md Sec. 2.11) the 3 kHz point lies in the discrete track's second
 // pinned-pinned region, where the beam's own mean of over-sleeper and mid-span is 2.4 dB above its
 // continuous support; the waveguide's is 1.9 dB. So the new loads are checked against the beam
 // (WaveguideAndBeamAgreeForACentredVerticalLoadBelowCutOn in waveguide_rail_model_test.cpp and
@@ -217,12 +217,12 @@ TEST(DiscreteWaveguide, ReciprocalAndPassive) {
 }
 
 // The free UIC60 rail's higher waves cut on at the section's in-plane modes at k = 0 (Eq. W2; the
-// four rigid-body modes at 0 Hz first). Mesh convergence (docs/models.md Sec. 2.5a, table): the
-// conforming 6-node elements give upper bounds, decreasing as the mesh is refined (40, 30, 15 mm:
-// 1206.4, 1205.6, 1197.4 Hz; 3404.7, 3398.4, 3343.7; 4844.0, 4818.1, 4798.3; 4917.2, 4916.7,
-// 4914.4), and the loop's 30 mm mesh is within 2 % of the 15 mm one (measured 1.6 % at most, the
-// 3.4 kHz wave, the slowest to converge). No published table of UIC60 cut-ons was
-// at hand to compare with (docs/models.md Sec. 2.5a says what was searched).
+// four rigid-body modes at 0 Hz first). Mesh convergence (docs/record/waveguide_rail.md Sec. 2.2,
+// table): the conforming 6-node elements give upper bounds, decreasing as the mesh is refined (40,
+// 30, 15 mm: 1206.4, 1205.6, 1197.4 Hz; 3404.7, 3398.4, 3343.7; 4844.0, 4818.1, 4798.3; 4917.2,
+// 4916.7, 4914.4), and the loop's 30 mm mesh is within 2 % of the 15 mm one (measured 1.6 % at
+// most, the 3.4 kHz wave, the slowest to converge). No published table of UIC60 cut-ons was at hand
+// to compare with (docs/record/waveguide_rail.md Sec. 2.1 says what was searched).
 TEST(FreeRailCutOn, HigherWavesConvergeToTwoPercentAtTheLoopsMesh) {
   auto cut_ons = [](double h) {
     const rd::RailWaveguide rail(rollnoise::fem::mesh_polygon(rd::uic60_outline(), h),
@@ -240,7 +240,7 @@ TEST(FreeRailCutOn, HigherWavesConvergeToTwoPercentAtTheLoopsMesh) {
 }
 
 // ---- At the contact point (DiscreteWaveguideRailModel::contact_transfers; docs/models.md
-// Sec. 2.5b): the section loaded at the contact's own point of the head, in its frame.
+// Sec. 2.7): the section loaded at the contact's own point of the head, in its frame.
 
 // With the seats softened (every stiffness and mass of the seat times eps) the discrete support
 // and the continuous one with the same seats smeared both tend to the free rail, so the discrete

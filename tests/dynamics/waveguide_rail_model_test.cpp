@@ -38,7 +38,7 @@ rd::RailWaveguide supported_uic60(double h) {
                                            t.longitudinal_support, t.sleeper_spacing});
 }
 
-// The 300 m curve's gauge-corner contact (docs/models.md Sec. 2.5a): 10 mm patch, 0.52 rad.
+// The 300 m curve's gauge-corner contact (docs/models.md Sec. 2.7): 10 mm patch, 0.52 rad.
 Eigen::MatrixXd gauge_patch(const rd::RailWaveguide& rail) {
   const double gamma = 0.52;
   return rail.patch_loads(Eigen::Vector2d(-0.0335, 0.1665), 0.01,

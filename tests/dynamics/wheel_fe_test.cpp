@@ -52,12 +52,12 @@ TEST(WheelFe, MassEqualsDensityTimesVolumeOfRevolution) {
 }
 
 // The axial 0-nodal-circle family n = 2..6 against the values taken as typically reported for 920 mm
-// wheels (NOT re-read in a source: docs/models.md Sec. 3.4 says what was searched),
+// wheels (NOT re-read in a source: docs/record/fe_wheel.md Sec. 1 says what was searched),
 // 360, 1000, 1760, 2600, 3430 Hz (Thompson, Railway Noise and Vibration (2009) Ch. 5; Thompson,
 // J. Sound Vib. 161 (1993) 401-419): within 7 % (the section's rim, web and hub are approximate,
 // models/wheel/wheel_920mm_section.csv; measured -5.6 % at n = 3 to +2.6 % at n = 6). Mesh
 // convergence: every mode with n >= 2 up to 4 kHz at 12 mm moves by less than 0.5 % at 8 mm
-// (docs/models.md Sec. 3.4 for 5 mm).
+// (docs/record/fe_wheel.md Sec. 2 for 5 mm).
 TEST(WheelFe, AxialFamilyNearTheUnverifiedTypical920mmValuesAndConvergesInMesh) {
   const auto section = default_section();
   WheelFeOptions o;

@@ -1,4 +1,4 @@
-// The wheel's radial family against an independent reference (docs/models.md Sec. 3.4): no
+// The wheel's radial family against an independent reference (docs/record/fe_wheel.md Sec. 1): no
 // published table of a 920 mm wheel's radial frequencies was found (searched: Thompson 1993 JSV
 // 161 Part II, Thompson & Jones 2000 JSV 231, Thompson 2009 Ch. 5 as far as public text shows;
 // theses and open codes), so the rim is checked as a ring. The reference formulas

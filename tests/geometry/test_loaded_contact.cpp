@@ -182,7 +182,7 @@ TEST(LoadedContact, CurvedSurfaceReducesToThePlaneForAFlatPatch) {
 }
 
 // The 300 m case's leading outer wheel (u = 6.20 mm, psi = 7.786 mrad): the patch wraps from the
-// flange root onto the flank. CONTACT module 1 with its curved-surface option (issue 24; the run's
+// flange root onto the flank. CONTACT module 1 with its curved-surface option (the run's
 // input is not in the repository) gives on the wheel lateral -28.5 kN, longitudinal 9.9 kN, at
 // the vertical force of rollnoise's tread load Q_t = 98.9 kN (the same convention as its u3 runs,
 // tests/data/contact/C1_u3; our planar patch at 98.9 kN reproduces the issue's rollnoise numbers

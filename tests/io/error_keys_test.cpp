@@ -145,7 +145,7 @@ TEST(ErrorKeys, EveryListedPseudoKeyIsStillUsed) {
   }
 }
 
-// Issue 30, item 5: keys in messages built at run time. Each invocation fails with exit 2 and the
+// Keys in messages built at run time. Each invocation fails with exit 2 and the
 // message "rollnoise: error: CASE: KEY: ..." names a declared case key (or an option), never a
 // field of the numerics (curving.flange_angle) nor a bare "filesystem error"; --case names the
 // option without printing the largest double as its range.

@@ -1,6 +1,4 @@
-// Squeal with several contacts (noise/contact_set_stability.hpp, docs/squeal.md Sec. 9).
-#include "noise/contact_set_stability.hpp"
-
+// Squeal with several contacts (noise/stability.hpp, docs/squeal.md Sec. 8).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,18 +24,21 @@ rn::ContactPoint wheelset_point(int side, double shift, double offset, double an
   return c;
 }
 
-// stability.hpp's single-contact loop (S1) for one contact, as pipeline/squeal assembles it.
-rn::LaplaceLoop single_loop(const rn::ContactPoint& c, const rd::RailModel& rail,
+// The loop of one contact assembled by hand from its parts (rigid wheelset, the rail at the one
+// point, the contact), independently of laplace_loop's assembly of rail pairs and blocks; in the
+// frame of side +1 (a wheel alone: the mirror image of side -1).
+rn::LaplaceLoop single_loop(rn::ContactPoint c, const rd::RailModel& rail,
                             const rn::ContactTransfer& t) {
-  rn::LaplaceLoop loop;
-  loop.modes = rn::contact_frame_modes(wheel(), c.position);
-  const Eigen::Matrix4d C = rn::rigid_flexibility(wheel().wheelset(), c.position);
+  c.side = 1;
+  const std::vector<rn::ContactPoint> point{c};
+  const Eigen::MatrixXd C = rn::rigid_flexibility(wheel().wheelset(), point);
   const double k = hertz().normal_stiffness();
-  loop.rest = [C, c, &rail, &t, k](cd s) -> rn::Receptance4 {
-    return C.cast<cd>() / (s * s) + rn::rail_receptance_laplace(rail, s, c.position) +
-           rn::contact_receptance_laplace(s, k, kSpeed, t.creep(s), Eigen::Vector3cd::Zero());
-  };
-  return loop;
+  return rn::LaplaceLoop::one_contact(
+      rn::loop_modes(wheel(), point).modes, [C, c, &rail, &t, k](cd s) {
+        return Eigen::MatrixXcd(
+            C.cast<cd>() / (s * s) + rn::rail_receptance_laplace(rail, s, c.position) +
+            rn::contact_receptance_laplace(s, k, kSpeed, t.creep(s), Eigen::Vector3cd::Zero()));
+      });
 }
 
 // A wheelset in a curve: the outer wheel (side +1) near the flange root, the inner (side -1) on its
@@ -64,14 +65,14 @@ struct Wheelset {
 }  // namespace
 
 // Without any cross term the wheelset's characteristic equation is the product of the two wheels'
-// single-contact equations: every root of (S7) equals stability.hpp's mode_roots for the contact of
-// its own wheel (1e-8 relative in s) and lies entirely on that wheel (share 1 to 1e-8).
+// single-contact equations: every root of (S1) equals the roots of the loop of its own wheel's
+// contact alone (1e-8 relative in s) and lies entirely on that wheel (share 1 to 1e-8).
 TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
   const Wheelset w;
-  const rn::ContactSetLaplaceLoop loop = rn::contact_set_laplace_loop(
-      wheel(), w.rail, w.contacts(), kSpeed, false, rn::CrossCoupling::none());
+  const rn::LaplaceLoop loop =
+      rn::laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false, rn::CrossCoupling::none());
   ASSERT_EQ(loop.wheels.size(), 2u);
-  const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
+  const std::vector<rn::ModeRoot> roots = rn::mode_roots(loop, w.options());
   const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   int compared = 0;
   for (int side = 0; side < 2; ++side) {
@@ -79,12 +80,12 @@ TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
         rn::mode_roots(single_loop(w.points[side], rail, w.kalker), w.options());
     for (const rn::ModeRoot& r : ref) {
       ASSERT_TRUE(r.converged) << r.label;
-      const rn::ContactSetRoot* match = nullptr;
-      for (const rn::ContactSetRoot& c : roots)
-        if (c.wheel == side && loop.modes[c.root.mode].index == r.mode) match = &c;
+      const rn::ModeRoot* match = nullptr;
+      for (const rn::ModeRoot& c : roots)
+        if (c.wheel == side && loop.modes[c.mode].index == r.mode) match = &c;
       ASSERT_NE(match, nullptr) << r.label;
-      EXPECT_TRUE(match->root.converged) << r.label;
-      EXPECT_LE(std::abs(match->root.s - r.s), 1e-8 * std::abs(r.s)) << r.label << " side " << side;
+      EXPECT_TRUE(match->converged) << r.label;
+      EXPECT_LE(std::abs(match->s - r.s), 1e-8 * std::abs(r.s)) << r.label << " side " << side;
       EXPECT_NEAR(match->wheel_share[side], 1.0, 1e-8) << r.label;
       EXPECT_EQ(match->dominant_wheel, side);
       ++compared;
@@ -100,17 +101,16 @@ TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
 TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive) {
   Wheelset w;
   w.points.push_back(wheelset_point(1, -30e-3, -25e-3, 1.2));  // the flange patch of the outer wheel
-  const rn::ContactSetLaplaceLoop loop =
-      rn::contact_set_laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false);
-  const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
+  const rn::LaplaceLoop loop = rn::laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false);
+  const std::vector<rn::ModeRoot> roots = rn::mode_roots(loop, w.options());
   ASSERT_GT(roots.size(), 10u);
-  for (const rn::ContactSetRoot& r : roots) {
-    EXPECT_TRUE(r.root.converged) << r.root.label;
-    EXPECT_LT(r.root.s.real(), 0.0) << r.root.label << " wheel " << r.wheel;
-    EXPECT_LT(r.root.singular_ratio, 1e-8) << r.root.label;
+  for (const rn::ModeRoot& r : roots) {
+    EXPECT_TRUE(r.converged) << r.label;
+    EXPECT_LT(r.s.real(), 0.0) << r.label << " wheel " << r.wheel;
+    EXPECT_LT(r.singular_ratio, 1e-8) << r.label;
     EXPECT_NEAR(r.wheel_share[0] + r.wheel_share[1], 1.0, 1e-12);
-    std::printf("wheel %d %-14s %8.2f Hz  zeta %.3e  share outer %.3f\n", r.wheel,
-                r.root.label.c_str(), r.root.frequency, r.root.damping_ratio, r.wheel_share[0]);
+    std::printf("wheel %d %-14s %8.2f Hz  zeta %.3e  share outer %.3f\n", r.wheel, r.label.c_str(),
+                r.frequency, r.damping_ratio, r.wheel_share[0]);
   }
 }
 
@@ -122,7 +122,7 @@ TEST(ContactSetSqueal, WheelsetWithConstantFrictionAndNoNormalCouplingIsPassive)
 // The clusters of the n = 1 modes (the same mode of both wheels with its sin partner, four
 // branches from one uncoupled root, two of them a near-double root ~1e-4 1/s apart) converge: they
 // stopped at the first continuation step while the homotopy's tangent took H_s of the undeflated
-// H by a central difference wider than the two roots' distance (docs/squeal.md Sec. 9.1); every
+// H by a central difference wider than the two roots' distance (docs/squeal.md Sec. 8.1); every
 // one of the 32 roots converges now.
 TEST(ContactSetSqueal, NegativeCreepDampingAtTheInnerWheelDestabilisesTheInnerWheelsModes) {
   Wheelset w;
@@ -133,23 +133,22 @@ TEST(ContactSetSqueal, NegativeCreepDampingAtTheInnerWheelDestabilisesTheInnerWh
   const rn::ConstantTransfer inner(falling);
   std::vector<rn::SquealContact> contacts = w.contacts();
   contacts[1].transfer = &inner;
-  const rn::ContactSetLaplaceLoop loop =
-      rn::contact_set_laplace_loop(wheel(), w.rail, contacts, kSpeed, false);
-  const std::vector<rn::ContactSetRoot> roots = rn::contact_set_mode_roots(loop, w.options());
+  const rn::LaplaceLoop loop = rn::laplace_loop(wheel(), w.rail, contacts, kSpeed, false);
+  const std::vector<rn::ModeRoot> roots = rn::mode_roots(loop, w.options());
   int unstable = 0, unconverged = 0;
-  for (const rn::ContactSetRoot& r : roots) {
-    if (!r.root.converged) ++unconverged;
-    if (!r.root.converged)
+  for (const rn::ModeRoot& r : roots) {
+    if (!r.converged) ++unconverged;
+    if (!r.converged)
       std::printf("unconverged: wheel %d %-14s s0 %g%+gi  s %g%+gi steps %d it %d\n", r.wheel,
-                  r.root.label.c_str(), r.root.s0.real(), r.root.s0.imag(), r.root.s.real(),
-                  r.root.s.imag(), r.root.steps, r.root.iterations);
-    if (!r.root.unstable || !r.root.converged) continue;
+                  r.label.c_str(), r.s0.real(), r.s0.imag(), r.s.real(), r.s.imag(), r.steps,
+                  r.iterations);
+    if (!r.unstable || !r.converged) continue;
     ++unstable;
     std::printf("unstable: wheel %d %-14s %8.2f Hz  zeta %.3e  share inner %.3f\n", r.wheel,
-                r.root.label.c_str(), r.root.frequency, r.root.damping_ratio, r.wheel_share[1]);
-    EXPECT_EQ(r.dominant_wheel, 1) << r.root.label;
-    EXPECT_GT(r.wheel_share[1], 0.9) << r.root.label;
-    EXPECT_LT(r.root.singular_ratio, 1e-8) << r.root.label;
+                r.label.c_str(), r.frequency, r.damping_ratio, r.wheel_share[1]);
+    EXPECT_EQ(r.dominant_wheel, 1) << r.label;
+    EXPECT_GT(r.wheel_share[1], 0.9) << r.label;
+    EXPECT_LT(r.singular_ratio, 1e-8) << r.label;
   }
   EXPECT_GT(unstable, 0);
   EXPECT_EQ(unconverged, 0);

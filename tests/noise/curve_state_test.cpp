@@ -217,7 +217,7 @@ TEST(CurveState, BadInputNamesTheKey) {
   expect_input_error([&] { rollnoise::pipeline::check_curve_state_input(in); }, "contact.geometry");
 }
 
-// Friction and cant deficiency move the state where physics says (docs/noise_loop.md Sec. 7.2
+// Friction and cant deficiency move the state where physics says (docs/noise_loop.md Sec. 7.1
 // prints this table): more friction gives larger creep forces against the same gravitational
 // stiffness (K7), so the leading axle is pushed further out with a larger attack angle and a
 // larger flange force; more cant deficiency moves the trailing axle outwards (smaller attack
@@ -236,7 +236,7 @@ TEST(CurveState, FrictionAndCantDeficiencyMoveTheState) {
       "| R (m) | mu | h_d (m) | u1 (mm) | u2 (mm) | psi1 (mrad) | xi_x | xi_y | phi (1/m) | gamma "
       "(rad) | Q_t (kN) | Q_f (kN) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  if (std::getenv("ROLLNOISE_CURVE_TABLE"))  // the whole table of docs/noise_loop.md Sec. 7.2
+  if (std::getenv("ROLLNOISE_CURVE_TABLE"))  // the whole table of docs/noise_loop.md Sec. 7.1
     for (double R : {300.0, 500.0, 1000.0})
       for (double mu : {0.2, 0.3, 0.4})
         for (double hd : {0.0, 0.08, 0.15})

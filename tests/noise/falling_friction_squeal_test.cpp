@@ -1,7 +1,7 @@
-// Acceptance (issue 12): one wheel mode on a rigid rail, the NSS contact in full slip with falling
-// friction. The instability threshold found by the squeal numerics (route 2 of noise/stability.hpp,
-// bisection on the modal damping ratio until Re s crosses 0) equals the classical single-mode
-// criterion (nss/falling_friction.hpp, S2)
+// The single-mode criterion: one wheel mode on a rigid rail, the NSS contact in full slip with
+// falling friction. The instability threshold found by the squeal numerics (route 2 of
+// noise/stability.hpp, bisection on the modal damping ratio until Re s crosses 0) equals the
+// classical single-mode criterion (nss/falling_friction.hpp, S2)
 //   2 zeta w_n m + N mu'(v) psi^2 = 0   (rigid full-slip contact, f_par = N V mu'(v))
 // within 1 %. The contact is the full linear NSS model (its elastic correction included, not
 // removed): at w -> 0 in full slip it tends to the rigid limit to second order in the scatter of
@@ -49,16 +49,15 @@ TEST(FallingFrictionSqueal, SingleModeThresholdEqualsTheClassicalCriterion) {
 
   // The loop: rigid rail (zero receptance), no rigid wheelset, the contact (Hertz spring, (V/s)
   // f^-1).
-  noise::LaplaceLoop loop;
-  loop.modes.resize(1);
-  loop.modes[0].frequency = fn;
-  loop.modes[0].modal_mass = m;
-  loop.modes[0].shape = Eigen::Vector4d(0.0, 0.0, psi, 0.0);
+  noise::LoopMode mode;
+  mode.frequency = fn;
+  mode.modal_mass = m;
+  mode.shape = Eigen::Vector4d(0.0, 0.0, psi, 0.0);
   const double kH = 1e9;  // the normal direction does not couple (g = 0, shape along y)
-  loop.rest = [&](cdouble s) {
-    return noise::contact_receptance_laplace(s, kH, kSpeed, model.creep_coefficients_laplace(s),
-                                             noise::LoadCoefficients::Zero());
-  };
+  noise::LaplaceLoop loop = noise::LaplaceLoop::one_contact({mode}, [&](cdouble s) {
+    return Eigen::MatrixXcd(noise::contact_receptance_laplace(
+        s, kH, kSpeed, model.creep_coefficients_laplace(s), noise::LoadCoefficients::Zero()));
+  });
   auto root = [&](double zeta) {
     loop.modes[0].damping_ratio = zeta;
     const noise::ModeRoot r = noise::mode_root(loop, 0);

@@ -1,7 +1,8 @@
 // The FE wheel in the loop (dynamics::WheelModel with ModesAlongTread): at a contact shifted across
 // the tread the loop's wheel receptance (noise::wheel_receptance6, moved by the lever arm, then
-// rotated into the contact frame) and its modes in the contact frame (contact_frame_modes) carry
-// the FE shapes at the contact itself, i.e. equal dynamics::fe_cross_receptance there.
+// rotated into the contact frame) and its modes in the contact frame (loop_modes, the squeal
+// loop's) carry the FE shapes at the contact itself, i.e. equal dynamics::fe_cross_receptance
+// there.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -39,7 +40,9 @@ TEST(FeWheelLoop, LoopWheelAtShiftedContactIsTheFeReceptanceThere) {
   const dynamics::WheelModel rigid(ws, {});
   noise::ContactPosition p;
   p.wheel_shift_y = -0.0326, p.contact_angle = 0.524;
-  const auto modes = noise::contact_frame_modes(fe, p);
+  noise::ContactPoint point;
+  point.position = p;
+  const auto modes = noise::loop_modes(fe, {point}).modes;
   for (double f : {300.0, 950.0, 3000.0}) {
     const Receptance4 loop =
         noise::to_contact_frame(noise::wheel_receptance6(fe, f, p.wheel_shift_y), p.contact_angle) -

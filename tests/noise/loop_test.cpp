@@ -246,9 +246,10 @@ TEST(Loop, FrequencyDependentCreepChangesTangentialForcesAboveAFewHundredHz) {
   EXPECT_GT(tangential_high, 3.0);
 }
 
-// Measured numbers for docs/noise_loop.md: the UIC60 track (continuous support and discrete,
-// mid-span), the 920 mm wheel, the paper's contact, 100 km/h, Kalker's creep, no contact angle;
-// band levels from 48 samples per band (within 0.3 dB of 384 samples for the forces).
+// Measured numbers for docs/record/noise_loop_results.md Sec. 1: the UIC60 track (continuous
+// support and discrete, mid-span), the 920 mm wheel, the paper's contact, 100 km/h, Kalker's creep,
+// no contact angle; band levels from 48 samples per band (within 0.3 dB of 384 samples for the
+// forces).
 TEST(NoiseLoopNumbers, Uic60Track920mmWheelAt100kmh) {
   const std::vector<double> centres = rn::third_octave_centres(100.0, 5000.0);
   const std::vector<double> f = rn::band_frequencies(centres, 48);

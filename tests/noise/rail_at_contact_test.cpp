@@ -28,7 +28,7 @@ double db(cd z) {
   return 20.0 * std::log10(std::abs(z));
 }
 
-// The leading outer wheel's contact of cases/curve_300m.toml (docs/noise_loop.md Sec. 7.3):
+// The leading outer wheel's contact of cases/curve_300m.toml (docs/noise_loop.md Sec. 7.2):
 // 36.6 mm to the gauge side, contact angle 0.524 rad.
 rn::ContactPosition curve_contact() {
   rn::ContactPosition p;
@@ -80,7 +80,7 @@ TEST(RailContactPoint, OutlineNormalEqualsTheContactNormal) {
 // step at the scheme's order (>= 2.5 between 24 and 48 points per octave; measured 3.6), and is
 // below 0.05 dB at 24 points per octave (measured 0.013 dB); the samples are returned exactly.
 // (A steel resonance, eta = 0.02, is not resolved by 24 points per octave: 1.4 dB; the rail's
-// own error is measured by bench/rail_contact_bench.cpp, docs/models.md Sec. 2.5b.)
+// own error is measured by bench/rail_contact_bench.cpp, docs/record/waveguide_rail.md Sec. 8.)
 TEST(ReceptanceInterpolation, ConvergesAtThirdOrderOnAResonance) {
   const double f0 = 1000.0, eta = 0.25, lo = 89.1, hi = 5623.4;
   auto sdof = [&](double f) {
@@ -131,7 +131,7 @@ TEST(WaveguideRailAtContact, CentredContactEqualsTheCrownReceptance) {
 // 2 kHz; at s = i omega the continuation equals it (1e-9); it is not the crown's receptance moved
 // rigidly (what the loop used before): a diagonal term differs by more than 1 dB at each
 // frequency (measured on this 40 mm mesh: up to 2.6 dB at 500 Hz and 3.0 dB at 2 kHz,
-// docs/models.md Sec. 2.5b).
+// docs/models.md Sec. 2.7).
 TEST(WaveguideRailAtContact, CurveContactReciprocalPassiveAndNotTheRigidMove) {
   const rd::WaveguideRailModel& rail = rail_40mm();
   const rn::ContactPosition p = curve_contact();

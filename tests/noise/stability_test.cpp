@@ -31,6 +31,7 @@ std::vector<noise::LoopMode> random_modes() {
     m[k].frequency = f[k];
     m[k].damping_ratio = z[k];
     m[k].modal_mass = mass[k];
+    m[k].shape = Eigen::VectorXd(4);
     for (int i = 0; i < 4; ++i) m[k].shape(i) = uniform(-1.0, 1.0) * (i == 3 ? 5.0 : 1.0);
     m[k].label = "mode " + std::to_string(k);
     m[k].index = k;
@@ -59,6 +60,13 @@ Eigen::VectorXcd quadratic_eigenvalues(const std::vector<noise::LoopMode>& modes
   return Eigen::EigenSolver<Eigen::MatrixXd>(Acomp).eigenvalues();
 }
 
+// The loop's contact point at a position: the leading wheelset's outer wheel (side +1).
+noise::ContactPoint contact_point(const noise::ContactPosition& p) {
+  noise::ContactPoint c;
+  c.position = p;
+  return c;
+}
+
 double nearest(const Eigen::VectorXcd& list, cdouble s) {
   double d = 1e300;
   for (int i = 0; i < list.size(); ++i) d = std::min(d, std::abs(list(i) - s));
@@ -73,10 +81,9 @@ TEST(Stability, ModesOnContactSpringsEqualTheDirectQuadraticEigenproblem) {
   Eigen::Matrix4d R = Eigen::Matrix4d::Random();
   Eigen::Matrix4d Kc = 1e8 * (R * R.transpose() + 0.5 * Eigen::Matrix4d::Identity());  // N/m, SPD
   Kc.row(3) *= 1e-4, Kc.col(3) *= 1e-4;                                                // rotation
-  noise::LaplaceLoop loop;
-  loop.modes = modes;
-  const noise::Receptance4 compliance = Kc.inverse().cast<cdouble>();
-  loop.rest = [compliance](cdouble) { return compliance; };
+  const Eigen::MatrixXcd compliance = Kc.inverse().cast<cdouble>();
+  noise::LaplaceLoop loop =
+      noise::LaplaceLoop::one_contact(modes, [compliance](cdouble) { return compliance; });
   const std::vector<noise::ModeRoot> roots = noise::mode_roots(loop);
   const Eigen::VectorXcd exact = quadratic_eigenvalues(modes, Kc);
   ASSERT_EQ(roots.size(), 4u);
@@ -88,7 +95,7 @@ TEST(Stability, ModesOnContactSpringsEqualTheDirectQuadraticEigenproblem) {
   // the sin/cos pair ends on two different roots
   EXPECT_GT(std::abs(roots[1].s - roots[2].s), 1e-6 * std::abs(roots[1].s));
   // contact removed (a free contact: compliance x 1e9): the uncoupled modes
-  const noise::Receptance4 free = 1e9 * compliance;
+  const Eigen::MatrixXcd free = 1e9 * compliance;
   loop.rest = [free](cdouble) { return free; };
   for (const auto& r : noise::mode_roots(loop)) {
     EXPECT_LT(std::abs(r.s - r.s0) / std::abs(r.s0), 1e-8) << r.label;
@@ -104,15 +111,15 @@ noise::LaplaceLoop fixture_loop(const noise::ContactPosition& p, const Eigen::Ve
   const Eigen::Matrix3d fs = noise_test::kalker();
   const Eigen::Matrix3d K = noise::tangential_contact_stiffness(noise_test::kA, noise_test::kB, noise_test::material().shear_modulus(), noise_test::material().nu);
   const double kH = noise_test::hertz().normal_stiffness(), V = noise_test::kSpeed;
-  noise::LaplaceLoop loop;
-  loop.modes = noise::contact_frame_modes(wheel, p);
-  const Eigen::Matrix4d rigid = noise::rigid_flexibility(wheel.wheelset(), p);
-  loop.rest = [=, &rail](cdouble s) {
+  const std::vector<noise::ContactPoint> point{contact_point(p)};
+  const Eigen::MatrixXd rigid = noise::rigid_flexibility(wheel.wheelset(), point);
+  return noise::LaplaceLoop::one_contact(noise::loop_modes(wheel, point).modes, [=,
+                                                                                 &rail](cdouble s) {
     const Eigen::Matrix3cd f = (fs.inverse().cast<cdouble>() + (s / V) * K.inverse().cast<cdouble>()).inverse();
-    return noise::Receptance4(rigid.cast<cdouble>() / (s * s) + noise::rail_receptance_laplace(rail, s, p) +
-                              noise::contact_receptance_laplace(s, kH, V, f, g.cast<cdouble>()));
-  };
-  return loop;
+    return Eigen::MatrixXcd(rigid.cast<cdouble>() / (s * s) +
+                            noise::rail_receptance_laplace(rail, s, p) +
+                            noise::contact_receptance_laplace(s, kH, V, f, g.cast<cdouble>()));
+  });
 }
 
 // (c) Every root is a zero of det A (the equilibrated loop matrix is singular there) and the
@@ -143,7 +150,7 @@ TEST(Stability, Route2RootsAreTrueZerosAndContinueTheirOwnMode) {
     for (std::size_t j = 0; j < i; ++j)
       EXPECT_GT(std::abs(roots[i].s - roots[j].s), 1e-7 * std::abs(roots[i].s)) << roots[i].label << " / " << roots[j].label;
   noise::LaplaceLoop weak = loop;
-  weak.rest = [&loop](cdouble s) { return noise::Receptance4(1e3 * loop.rest(s)); };
+  weak.rest = [&loop](cdouble s) { return Eigen::MatrixXcd(1e3 * loop.rest(s)); };
   for (const auto& r : noise::mode_roots(weak, o)) {
     double other = 1e300;
     for (const auto& m : weak.modes)
@@ -178,7 +185,8 @@ TEST(Stability, Route1OnARationalSystemEqualsItsExactEigenvalues) {
   for (int i = 0; i < 3; ++i) contact.D(i, 3) = g(i);  // (elementwise: GCC 12 -Warray-bounds on a 3-vector packet)
 
   noise::LoopMode m;
-  m.frequency = 900, m.damping_ratio = 2e-3, m.modal_mass = 100, m.shape << 1, 0, 0, 0;
+  m.frequency = 900, m.damping_ratio = 2e-3, m.modal_mass = 100,
+  m.shape = Eigen::Vector4d(1, 0, 0, 0);
   const double w = 2 * M_PI * m.frequency;
   const std::vector<cdouble> ev1 = noise::coupled_eigenvalues(Eigen::Matrix4d::Zero(), {m}, rail, contact, kH, V);
   Eigen::Matrix2d M2, C2, K2;
@@ -207,16 +215,17 @@ TEST(Stability, Route1OnARationalSystemEqualsItsExactEigenvalues) {
   noise::ContactPosition p;
   p.contact_angle = 0.2;
   const dynamics::WheelModel& wheel = noise_test::wheel();
-  const Eigen::Matrix4d rigid = noise::rigid_flexibility(wheel.wheelset(), p);
-  noise::LaplaceLoop loop;
-  loop.modes = noise::contact_frame_modes(wheel, p);
-  loop.rest = [&](cdouble s) {
-    noise::Receptance4 ar = noise::Receptance4::Zero();
-    ar(0, 0) = 1.0 / (mr * s * s + cr * s + kr);
-    const Eigen::Matrix3cd f = (fs.inverse().cast<cdouble>() + (s / V) * K.inverse().cast<cdouble>()).inverse();
-    return noise::Receptance4(rigid.cast<cdouble>() / (s * s) + ar +
-                              noise::contact_receptance_laplace(s, kH, V, f, g.cast<cdouble>()));
-  };
+  const std::vector<noise::ContactPoint> point{contact_point(p)};
+  const Eigen::MatrixXd rigid = noise::rigid_flexibility(wheel.wheelset(), point);
+  const noise::LaplaceLoop loop =
+      noise::LaplaceLoop::one_contact(noise::loop_modes(wheel, point).modes, [&](cdouble s) {
+        noise::Receptance4 ar = noise::Receptance4::Zero();
+        ar(0, 0) = 1.0 / (mr * s * s + cr * s + kr);
+        const Eigen::Matrix3cd f =
+            (fs.inverse().cast<cdouble>() + (s / V) * K.inverse().cast<cdouble>()).inverse();
+        return Eigen::MatrixXcd(rigid.cast<cdouble>() / (s * s) + ar +
+                                noise::contact_receptance_laplace(s, kH, V, f, g.cast<cdouble>()));
+      });
   noise::StabilityOptions o;
   o.band_max = 3000;
   const std::vector<noise::ModeRoot> roots = noise::mode_roots(loop, o);

@@ -1,5 +1,5 @@
 // The flange patch of a two-point contact as a second contact of the flanging wheel
-// (pipeline/bogie_noise.hpp, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.4), on the 300 m
+// (pipeline/bogie_noise.hpp, noise/flange_patch.hpp, docs/noise_loop.md Sec. 7.3), on the 300 m
 // curve's leading wheelset (the leading outer wheel at its flange, a two-point state).
 #include <gtest/gtest.h>
 

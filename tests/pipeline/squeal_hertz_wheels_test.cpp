@@ -1,5 +1,5 @@
 // Each wheel's Hertz state in a Hertzian curve case (vehicle/hertz_wheels.hpp,
-// pipeline/squeal_hertz_wheels.hpp; docs/squeal.md Sec. 9.3), on cases/squeal_150m.toml: the
+// pipeline/squeal_hertz_wheels.hpp; docs/squeal.md Sec. 8.2), on cases/squeal_150m.toml: the
 // leading outer wheel without load transfer is the case's own contact; the loads are Q +- dQ of
 // (K4); the inner wheel's creepages (K2') mirror the outer's; the semi-axes follow Hertz at the
 // case's curvatures. Geometry only (nothing solved): milliseconds.

@@ -1,8 +1,9 @@
 // Squeal with Kalker's constant creep coefficients (noise.contact_model = "kalker"). The contact is
 // quasi-steady, f(s) = f_Kalker at every s (noise::ConstantTransfer): route 2's continuation must
 // reach every root (before, the contact was a one-term Markov series whose convergence guard
-// refused every s, and all roots came back not converged). Checked on curve_300m_table (the table wheel; coarse grid, 16
-// elements in x; band to 3 kHz, 22 modes; continuous track, as squeal_routes_test.cpp):
+// refused every s, and all roots came back not converged). Checked on curve_300m_table (the table
+// wheel; coarse grid, 16 elements in x; band to 3 kHz, 22 modes; continuous track, as
+// squeal_routes_test.cpp):
 //  - every root converged and is a zero of (S1): sigma_min/sigma_max of the equilibrated A(s) at
 //    most 1e-10 (measured <= 3e-12);
 //  - no root unstable: without normal coupling (g = 0) Kalker's contact is a damper, F = -f e_t'/V
@@ -10,7 +11,7 @@
 //  - route 1 (the same contact exactly: no states, D = [-f | 0]; the rail as a rational fit) gives
 //    the same roots to within its rail fit's error at each root (route1_deviation): Kalker's
 //    damping moves some roots far from the axis (axial n = 1: zeta = 0.10), where the fit, made on
-//    the real axis, is off by 1.2e-2 and the frequencies differ by 1.1e-3; issue 12's 0.1 % holds
+//    the real axis, is off by 1.2e-2 and the frequencies differ by 1.1e-3; the routes' 0.1 % holds
 //    for the roots the fit represents well, so route 1 is no tighter reference here.
 #include <gtest/gtest.h>
 

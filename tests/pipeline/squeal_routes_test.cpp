@@ -1,5 +1,5 @@
 // Route 1 (rational fits of the rail and the contact, coupled eigenvalues) against route 2 (the
-// exact loop at complex s) on curve cases: issue 12's acceptance, frequency within 0.1 %, damping
+// exact loop at complex s) on curve cases: the routes' acceptance, frequency within 0.1 %, damping
 // ratio within 5 % or 1e-5 absolute, for every wheel mode in the band (docs/squeal.md Sec. 4).
 // Coarse grid (16 elements in x), band to 3 kHz (22 modes), continuous track: on the discrete
 // track the exact continuation of the 2N + 1-support rail is not converged in N for roots with

@@ -1,6 +1,6 @@
 // The top-level /squeal/* of a Hertzian curve case with per-wheel states (noise.squeal_wheelsets =
 // "on") describes the leading outer wheel with the same contact as /squeal/wheels/leading_outer
-// (docs/squeal.md Sec. 9.3): its Hertz state with the load transfer, solved once and shared. On
+// (docs/squeal.md Sec. 8.2): its Hertz state with the load transfer, solved once and shared. On
 // squeal_150m coarsened (16 x 12 elements, the axial n = 0 ... 2 modes at 300-700 Hz) with only the
 // leading outer wheel listed, its wheelset is that one contact, so the per-wheel run's roots are
 // the top level's single-contact roots: equal to the roots' own accuracy (|ds| <= 1e-11 |s|).
@@ -51,7 +51,7 @@ TEST(SquealTopLevel, HertzianTopLevelRootsAreTheLeadingOuterWheelsOfThePerWheelR
   EXPECT_NEAR(r.top.mean.contact().normal_force, Q + dQ, 1e-12 * Q);
   double worst = 0.0;
   for (const pipeline::WheelRoot& w : ws.roots) {
-    const noise::ModeRoot& x = w.root.root;
+    const noise::ModeRoot& x = w.root;
     EXPECT_EQ(w.wheel, noise::WheelId::leading_outer);
     const noise::ModeRoot* top = nullptr;
     for (const noise::ModeRoot& t : r.top.roots)

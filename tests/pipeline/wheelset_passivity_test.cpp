@@ -1,12 +1,12 @@
-// Passivity per wheelset on every shipped curve (issue 25; docs/squeal.md Sec. 9.3): with constant
+// Passivity per wheelset on every shipped curve (docs/squeal.md Sec. 8.2): with constant
 // friction and the normal -> tangential coupling off each wheel's linearised contact is passive
 // (docs/stability.md Sec. 2), and so are the wheels and the rails, so the loop of a wheelset with
-// both its contacts (S6) has no root with Re s > 0. Every case of cases/ with a curve and per-wheel
+// both its contacts (S1) has no root with Re s > 0. Every case of cases/ with a curve and per-wheel
 // contact states (profiles) is run through the pipeline's squeal per wheelset with its own curve
 // state, on a coarse grid (grid.nx = 16), the continuous track and the band 300-1200 Hz (the n = 0
 // ... 3 axial modes of both wheels) so that it runs in seconds; the FE-wheel cases (the shipped curve_300m, curve_500m, curve_1000m,
 // squeal_300m; 300-700 Hz) take ~7 s each. The waveguide-rail cases are left out for their cost
-// (~19 s each with the same keys; checked by hand, docs/squeal.md Sec. 9.3).
+// (~19 s each with the same keys; checked by hand, docs/squeal.md Sec. 8.2).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,7 +55,7 @@ TEST(WheelsetPassivity,
     // the shipped curve cases) costs ~10x the mode table per evaluation at complex s (~7 s per case
     // with the band ending at 700 Hz, n = 0, 1, 2)
     const io::CaseReader plain = io::CaseReader::from_file(file);
-    // The waveguide rail's cases: left out for their cost (docs/squeal.md Sec. 9.3); their beam
+    // The waveguide rail's cases: left out for their cost (docs/squeal.md Sec. 8.2); their beam
     // twins are checked here.
     if (plain.has("track.model") && plain.string("track.model") == "waveguide") {
       std::printf("%-22s the waveguide rail: left out (cost; checked by hand)\n",
@@ -93,7 +93,7 @@ TEST(WheelsetPassivity,
       int unstable = 0, converged = 0;
       double largest = -1e300;
       for (const pipeline::WheelRoot& w : ws.roots) {
-        const noise::ModeRoot& x = w.root.root;
+        const noise::ModeRoot& x = w.root;
         ++roots;
         stopped += !x.converged;
         converged += x.converged;
@@ -117,7 +117,7 @@ TEST(WheelsetPassivity,
       "stopped\n",
       with_wheels, roots, stopped);
   // every continuation reaches lambda = 1, the n = 1 clusters too (the tangent on the deflated H,
-  // docs/squeal.md Sec. 9.1; 12 of 148 stopped before)
+  // docs/squeal.md Sec. 8.1; 12 of 148 stopped before)
   EXPECT_EQ(stopped, 0);
 }
 

@@ -1,5 +1,5 @@
-// Bad inputs at library level give a clear error (issue 7): rollnoise::InputError naming the key,
-// NumericalError naming the solver, or (issue 26) the violated contract of a numerics function as
+// Bad inputs at library level give a clear error: rollnoise::InputError naming the key,
+// NumericalError naming the solver, or the violated contract of a numerics function as
 // std::invalid_argument / std::domain_error with a physical message (its case key is checked where
 // it is read); never a silently non-finite result.
 #include <gtest/gtest.h>

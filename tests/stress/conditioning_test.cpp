@@ -1,4 +1,4 @@
-// Condition numbers of the linear systems behind the stress cases (issue 7; docs/stability.md):
+// Condition numbers of the linear systems behind the stress cases (docs/stability.md):
 //
 //  (a) the Jacobian of the semismooth Newton method of the tangential problem at the converged
 //      steady solution, J = I - dPi/db (S - D) (coulomb_newton.hpp), assembled here from the public

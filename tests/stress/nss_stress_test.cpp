@@ -1,4 +1,4 @@
-// Stress tests of the linear NSS model (paper Eqs. 6-30, issue 7): creep coefficients over
+// Stress tests of the linear NSS model (paper Eqs. 6-30): creep coefficients over
 // [0, Nyquist] for mean states from full adhesion to full sliding, spin up to +-2 rad/m, ellipses
 // a/b = 0.1 to 10 and grids from 4 x 4 to 68 x 50. Checked: finite everywhere, passive (the
 // contact absorbs the power of the creepage variation, docs/stability.md), the entries that vanish
@@ -62,8 +62,9 @@ struct SweepResult {
 };
 
 /// Tolerances (relative to the Frobenius norm of f in the scaled units of passivity_margin):
-///  - the fast sweep is checked a posteriori to 1e-10 (markov_sweep.cpp; docs/accuracy.md, measured 1e-15..6e-13
-///    against the exact recursion): fast vs direct within 1e-9;
+///  - the fast sweep is checked a posteriori to 1e-10 (markov_sweep.cpp;
+///    docs/record/linear_model_sweep.md, measured 1e-15..6e-13 against the exact recursion):
+///    fast vs direct within 1e-9;
 ///  - passivity: the smallest eigenvalue of the Hermitian part >= -1e-9 |f| (an exact theorem for
 ///    the discrete model; f is accurate to 1e-10, the 3 x 3 eigenvalues to |f| eps);
 ///  - entries that vanish by symmetry: <= 1e-9 |f| (pn and the mean state are symmetric to the

@@ -1,4 +1,4 @@
-// Seeded random combinations of the stress ranges (issue 7): aspect ratio a/b in [0.1, 10]
+// Seeded random combinations of the stress ranges: aspect ratio a/b in [0.1, 10]
 // (log-uniform), grids of 4..26 elements per axis (element aspect ratio dx/dy within [0.2, 5]),
 // mu in [0.05, 0.6], creepage 0 or of magnitude 1e-9..0.1 (log-uniform) in any direction, spin 0 or
 // in [-2, 2] rad/m, spin offset 0 or 1/6, frequencies 0, Nyquist and random ones in between.

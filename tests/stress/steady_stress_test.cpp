@@ -1,4 +1,4 @@
-// Stress tests of the steady tangential problem (paper Eq. 3, issue 7): creepage from 0 and 1e-9 to
+// Stress tests of the steady tangential problem (paper Eq. 3): creepage from 0 and 1e-9 to
 // full sliding, spin up to +-2 rad/m, friction 0.05 to 0.6, ellipses a/b = 0.1 to 10 and grids from
 // 4 x 4 to 100 x 100. Every solution is checked against Coulomb's law element by element with the
 // slip recomputed independently (stress_support.hpp), and against exact properties of the discrete

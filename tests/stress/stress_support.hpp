@@ -1,4 +1,4 @@
-// Shared helpers of the stress tests (issue 7): Hertzian patches of any aspect ratio and grid, the
+// Shared helpers of the stress tests: Hertzian patches of any aspect ratio and grid, the
 // independent check of a steady tangential solution against Coulomb's law, the Newton Jacobian of
 // the tangential problem, passivity of creep coefficients, seeds and timing.
 //

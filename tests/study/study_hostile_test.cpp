@@ -1,4 +1,4 @@
-// Issue 30, items 4 and 7: a study case is complete only if computed from the same inputs (the
+// A study case is complete only if computed from the same inputs (the
 // case as run and the bytes of every model file it reads), `collect` reports the others as stale;
 // a second run on the same cases is refused naming the first; a study with a failed case exits 1;
 // `collect` refuses a folder as OUTPUT/study.h5 before reading any case.

@@ -127,7 +127,7 @@ TEST(StudyPlan, SlurmArrayVariablesGiveTheShardWhateverTheArraysFirstIndex) {
   EXPECT_EQ(pipeline::shard_from_environment().count, 1);
 }
 
-// Issue 30, item 7: --array=1-5:2 runs tasks 1, 3, 5 (COUNT 3, MIN 1, STEP 2): shards 1/3, 2/3, 3/3.
+// --array=1-5:2 runs tasks 1, 3, 5 (COUNT 3, MIN 1, STEP 2): shards 1/3, 2/3, 3/3.
 TEST(StudyPlan, SlurmArrayWithAStepGivesEveryTaskItsOwnShard) {
   ::setenv("SLURM_ARRAY_TASK_COUNT", "3", 1);
   ::setenv("SLURM_ARRAY_TASK_MIN", "1", 1);

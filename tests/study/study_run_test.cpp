@@ -1,4 +1,4 @@
-// `rollnoise study` and `rollnoise collect` end to end (issue 15's acceptance): a study's cases
+// `rollnoise study` and `rollnoise collect` end to end: a study's cases
 // equal the single runs bit for bit, shards under GNU parallel equal the local run, a killed study
 // resumes without recomputing, and a failing case is recorded while the others complete.
 #include <gtest/gtest.h>
@@ -180,7 +180,7 @@ TEST(Study, AFailingCaseIsRecordedWithItsErrorAndTheOthersComplete) {
   const fs::path study = write(d / "study.toml", "base = \"" + study_base_case() + "\"\noutput = \"out\"\n[axes]\n" +
                                                      "\"friction.mu\" = [0.3, -0.2, 0.4]\n");
   const auto r = run("study " + study.string() + " -j 2");
-  ASSERT_EQ(r.status, 1) << "a study with a failed case is no success (issue 30):\n" << r.output;
+  ASSERT_EQ(r.status, 1) << "a study with a failed case is no success:\n" << r.output;
   EXPECT_NE(r.output.find("1 failed"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(case_file(d / "out", 0)));
   EXPECT_FALSE(fs::exists(case_file(d / "out", 1)));

@@ -80,8 +80,9 @@ TEST(StudyWheelPosition, CsvAndH5HoldEachWheelsAxlePositionAndTwoPointFlagOfTheC
             << wheel << "." << title << ", case " << k;
         if (dataset == "two_point") {
           EXPECT_TRUE(value == 0.0 || value == 1.0) << value;
-          if (wheel == "leading_outer")
+          if (wheel == "leading_outer") {
             EXPECT_EQ(value, scalar(file, "/noise/contact/two_point")) << "case " << k;
+          }
         }
       }
     }
