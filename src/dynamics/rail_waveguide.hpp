@@ -140,6 +140,20 @@ struct RailReductionModes {
   std::vector<Eigen::LLT<Eigen::MatrixXd>> static_factors;
 };
 
+/// The head as a body (RailWaveguide::head_body): its six load distributions, the work-conjugates
+/// of its least-squares rigid motion (mean u_y, mean u_z, roll theta J, mean u_x, and u_x's plane
+/// Int s_y u_x dA, Int s_z u_x dA; s = r - r_h), and its area, centroid r_h and second moments
+/// I_h about r_h. Every contact's head_loads is loads * at(point, normal): the contacts of one
+/// section share one Ritz basis and one 6 x 6 transfer between these distributions.
+struct HeadBody {
+  Eigen::MatrixXd loads;  ///< dofs() x 6
+  double area = 0.0;
+  Eigen::Vector2d centroid{0.0, 0.0};
+  Eigen::Matrix2d inertia = Eigen::Matrix2d::Zero();
+  /// The coefficients of a contact's four columns (Receptance4 order, its frame) on `loads`.
+  Eigen::Matrix<double, 6, 4> at(const Eigen::Vector2d& point, const Eigen::Vector2d& normal) const;
+};
+
 /// The checks RailWaveguide's constructor makes of its material and support (InputError naming
 /// the key), for models that build it on first use and check up front.
 void check_rail_inputs(const RailMaterial& material, const std::optional<FootSupport>& support);
@@ -224,6 +238,9 @@ class RailWaveguide {
   /// line load along y is a point along x); docs/models.md Sec. 2.11.
   Eigen::MatrixXd head_loads(const Eigen::Vector2d& point, const Eigen::Vector2d& normal,
                              double head_bottom) const;
+  /// The head as a body (HeadBody): head_loads(point, normal, b) = head_body(b).loads *
+  /// head_body(b).at(point, normal).
+  HeadBody head_body(double head_bottom) const;
 
   /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
   /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads

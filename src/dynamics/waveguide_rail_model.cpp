@@ -328,12 +328,23 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
                           invariant ? 0.0 : pairs[p].second.x);
       which.push_back(p);
     }
-    // Eq. (F1)'s scales: each point's receptance at its own position, appended where not asked for
+    // Eq. (F1)'s scales: each point's receptance at its own position where asked for, else at the
+    // same place in the first span, x mod L (a scale: the point receptance of the periodic track
+    // there; the response along the rail for the sound asks for hundreds of positions, which
+    // then share a few scales), appended
     const std::size_t asked = within.size();
+    const double L = track().sleeper_spacing;
     auto point_value = [&](int a, double x) {
-      const SetPairs::value_type key(a, a, invariant ? 0.0 : x, invariant ? 0.0 : x);
-      const auto it = std::find(within.begin(), within.end(), key);
+      SetPairs::value_type key(a, a, invariant ? 0.0 : x, invariant ? 0.0 : x);
+      auto it = std::find(within.begin(), within.end(), key);
       if (it != within.end()) return static_cast<int>(it - within.begin());
+      if (!invariant) {
+        double in_span = std::round((x - std::floor(x / L) * L) * 1e9) / 1e9;  // to 1 nm
+        if (in_span >= L) in_span = 0.0;
+        key = SetPairs::value_type(a, a, in_span, in_span);
+        it = std::find(within.begin(), within.end(), key);
+        if (it != within.end()) return static_cast<int>(it - within.begin());
+      }
       within.push_back(key);
       return static_cast<int>(within.size()) - 1;
     };
