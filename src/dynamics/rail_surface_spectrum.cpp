@@ -104,6 +104,8 @@ SurfaceSpectrum spectrum_of(SpectrumTerms terms) {
           for (Eigen::Index n = 0; n < seats; ++n, z *= step)
             S.col(b) += z * t->seat_forces.block(4 * n, b, 4, 1);
         }
+        if (t->seat_length > 0.0 && kappa != 0.0)  // spread over l: times sin(kl/2) / (kl/2)
+          S *= std::sin(0.5 * kappa * t->seat_length) / (0.5 * kappa * t->seat_length);
         lp -= t->foot.minus * S;
         lm -= t->foot.plus * S;
       }

@@ -92,6 +92,7 @@ struct SpectrumTerms {
   Eigen::MatrixXcd seat_forces;
   std::vector<double> first_seat_x;
   double spacing = 0.0;
+  double seat_length = 0.0;  ///< each seat's force spread evenly over it (m): S times sinc
 };
 SurfaceSpectrum spectrum_of(SpectrumTerms terms);
 

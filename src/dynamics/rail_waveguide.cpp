@@ -585,6 +585,72 @@ Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
   return L;
 }
 
+HeadBody RailWaveguide::head_body(double head_bottom) const {
+  // The head's rigid motion by least squares over its area A (centroid r_h, s = r - r_h): the
+  // mean u; the roll theta = Int (s_y u_z - s_z u_y) dA / J, J = Int |s|^2 dA; u_x's plane
+  // a + b . s, b = I_h^{-1} Int s u_x dA. The six distributions are the work-conjugates of
+  // (mean u_y, mean u_z, theta J, mean u_x, Int s_y u_x dA, Int s_z u_x dA).
+  std::vector<int> head;
+  double area = 0.0;
+  Eigen::Vector2d first(0.0, 0.0);
+  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
+  for (int tri = 0; tri < static_cast<int>(mesh_.triangles.size()); ++tri) {
+    Eigen::Vector2d c(0.0, 0.0);
+    for (int a = 0; a < 3; ++a) c += mesh_.nodes[mesh_.triangles[tri][a]] / 3.0;
+    if (c.y() < head_bottom) continue;
+    head.push_back(tri);
+    for (const SectionPoint& p : section_points(mesh_, tri)) {
+      area += p.weight;
+      first += p.weight * p.position;
+      second += p.weight * p.position * p.position.transpose();
+    }
+  }
+  if (head.empty()) throw InputError("rail_section", "no triangle of the rail head above it");
+  HeadBody h;
+  h.area = area;
+  h.centroid = first / area;
+  h.inertia = second - area * h.centroid * h.centroid.transpose();
+  const double J = h.inertia.trace();
+  h.loads = Eigen::MatrixXd::Zero(dofs(), 6);
+  for (int tri : head)
+    for (const SectionPoint& p : section_points(mesh_, tri)) {
+      const Eigen::Vector2d s = p.position - h.centroid;
+      for (int b = 0; b < 6; ++b) {
+        const int node = mesh_.triangles[tri][b];
+        const double w = p.weight * p.shape(b);
+        h.loads(dof(node, 1), 0) += w / area;
+        h.loads(dof(node, 2), 1) += w / area;
+        h.loads(dof(node, 1), 2) -= w * s.y() / J;
+        h.loads(dof(node, 2), 2) += w * s.x() / J;
+        h.loads(dof(node, 0), 3) += w / area;
+        h.loads(dof(node, 0), 4) += w * s.x();
+        h.loads(dof(node, 0), 5) += w * s.y();
+      }
+    }
+  return h;
+}
+
+Eigen::Matrix<double, 6, 4> HeadBody::at(const Eigen::Vector2d& point,
+                                         const Eigen::Vector2d& normal) const {
+  // At the point (d = point - r_h) the in-plane motion is mean + theta (-d_z, d_y) and u_x = a +
+  // b . d; the spin psi_n = -t . b (contact_loads).
+  const Eigen::Vector2d n = normal.normalized(), t(n.y(), -n.x()), d = point - centroid;
+  const Eigen::Matrix2d Ihi = inertia.inverse();
+  const Eigen::Vector2d bx = Ihi * d, bs = -Ihi * t;
+  Eigen::Matrix<double, 6, 4> C = Eigen::Matrix<double, 6, 4>::Zero();
+  C.col(kZ) << n.x(), n.y(), -d.y() * n.x() + d.x() * n.y(), 0.0, 0.0, 0.0;
+  C.col(kX) << 0.0, 0.0, 0.0, 1.0, bx.x(), bx.y();
+  C.col(kY) << t.x(), t.y(), -d.y() * t.x() + d.x() * t.y(), 0.0, 0.0, 0.0;
+  C.col(kRotZ) << 0.0, 0.0, 0.0, 0.0, bs.x(), bs.y();
+  return C;
+}
+
+Eigen::MatrixXd RailWaveguide::head_loads(const Eigen::Vector2d& point,
+                                          const Eigen::Vector2d& normal, double head_bottom) const {
+  const HeadBody h = head_body(head_bottom);
+  return h.loads * h.at(point, normal);
+}
+
 Eigen::VectorXd RailWaveguide::edge_traction(const std::vector<int>& edges, int direction) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs());
   double length = 0.0;

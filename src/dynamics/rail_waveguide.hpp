@@ -100,6 +100,9 @@ struct RailMaterial {
 struct FootSupport {
   Support vertical, lateral, longitudinal;
   double sleeper_spacing = 0.6;  ///< L (m)
+  /// Discrete supports only (waveguide_discrete_support.hpp): the length along the rail over which
+  /// a seat's force is spread evenly (m, 0 <= seat_length < L; 0: at one x, the former model).
+  double seat_length = 0.0;
 };
 
 /// The waves of one frequency that travel or decay towards +x (Eq. W3), one per generalised
@@ -135,6 +138,20 @@ struct RailReductionModes {
   /// Cholesky factors of K(k) + shift M at each wavenumber of the static responses (the
   /// static_wavenumbers, or the wavenumbers if those are empty), for reduced()'s static solves.
   std::vector<Eigen::LLT<Eigen::MatrixXd>> static_factors;
+};
+
+/// The head as a body (RailWaveguide::head_body): its six load distributions, the work-conjugates
+/// of its least-squares rigid motion (mean u_y, mean u_z, roll theta J, mean u_x, and u_x's plane
+/// Int s_y u_x dA, Int s_z u_x dA; s = r - r_h), and its area, centroid r_h and second moments
+/// I_h about r_h. Every contact's head_loads is loads * at(point, normal): the contacts of one
+/// section share one Ritz basis and one 6 x 6 transfer between these distributions.
+struct HeadBody {
+  Eigen::MatrixXd loads;  ///< dofs() x 6
+  double area = 0.0;
+  Eigen::Vector2d centroid{0.0, 0.0};
+  Eigen::Matrix2d inertia = Eigen::Matrix2d::Zero();
+  /// The coefficients of a contact's four columns (Receptance4 order, its frame) on `loads`.
+  Eigen::Matrix<double, 6, 4> at(const Eigen::Vector2d& point, const Eigen::Vector2d& normal) const;
 };
 
 /// The checks RailWaveguide's constructor makes of its material and support (InputError naming
@@ -209,6 +226,21 @@ class RailWaveguide {
   /// grows without bound as the mesh is refined: the point load on a solid).
   Eigen::MatrixXd patch_loads(const Eigen::Vector2d& point, double half_width,
                               const Eigen::Vector2d& normal, double head_bottom) const;
+
+  /// The contact's loads through the head as a body: the forces along n, x and t at `point`
+  /// (y, z) applied as the body-force distributions over the head (the triangles with centroid
+  /// z >= `head_bottom`) whose work is done on the head's least-squares rigid motion evaluated at
+  /// the point (the mean u, the roll about x fitted to u_y, u_z, the plane fitted to u_x), and the
+  /// spin moment as in contact_loads. Same columns and frame as contact_loads; the response is the
+  /// same projection (reciprocal). It leaves out the local deformation of the head under the
+  /// patch (the contact model's elastic half-space holds it), which a patch load carries as a
+  /// real compliance that grows with the mesh's and the basis's highest wavenumber along x (the
+  /// line load along y is a point along x); docs/models.md Sec. 2.11.
+  Eigen::MatrixXd head_loads(const Eigen::Vector2d& point, const Eigen::Vector2d& normal,
+                             double head_bottom) const;
+  /// The head as a body (HeadBody): head_loads(point, normal, b) = head_body(b).loads *
+  /// head_body(b).at(point, normal).
+  HeadBody head_body(double head_bottom) const;
 
   /// A uniform traction of unit resultant (N per N) in direction `direction` (0 x, 1 y, 2 z) over
   /// the boundary edges `edges` (indices into mesh().boundary_edges), as consistent nodal loads

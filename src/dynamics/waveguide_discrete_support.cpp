@@ -76,6 +76,8 @@ DiscretelySupportedWaveguide::DiscretelySupportedWaveguide(RailWaveguide free_ra
   support_.longitudinal.validate("track.support.longitudinal");
   if (!(support_.sleeper_spacing > 0.0))
     throw InputError("rail_support", "sleeper spacing must be > 0");
+  if (!(support_.seat_length >= 0.0) || !(support_.seat_length < support_.sleeper_spacing))
+    throw InputError("rail_support", "the seat length must lie in [0, L)");
   if (n_ < 1) throw InputError("rail_support", "at least one support each side");
   if (foot_.loads.rows() != rail_.dofs() || foot_.loads.cols() != 4)
     throw InputError("rail_section", "foot attachment does not match the rail's mesh");
@@ -127,6 +129,76 @@ Eigen::MatrixXcd green_weights_along(const RailWaves& w, double x0, double h, in
   return out;
 }
 
+// A seat's force spread evenly over [x_n - l/2, x_n + l/2] (l = FootSupport::seat_length): Eq.
+// (W4)'s weights averaged over it. With E(k, a) = Int_0^a e^{-iku} du = (1 - e^{-ika}) / (ik):
+//  - between a seat and a point, x = x_response - x_load between the point and the seat's centre:
+//    the part of the seat where x_response - x_load >= 0 (Eq. W4 ahead) weighs E(k, x + l/2) / l
+//    for |x| < l/2, e^{-ik(x - l/2)} E(k, l) / l for x >= l/2 (none for x <= -l/2), the other
+//    part the same mirrored;
+//  - two seats d L apart (d != 0, l < L): e^{-ik(|d| L - l)} E(k, l)^2 / l^2;
+//  - a seat on itself: 2 (l - E(k, l)) / (ik l^2), half of it each way.
+// Each times -i / d_j; as l -> 0 they tend to Eq. (W4)'s point weights, which l = 0 takes (the
+// former model, its code unchanged).
+cdouble integral_of_wave(cdouble k, double a) {  // E(k, a), by its series where ka is small
+  const cdouble z = cdouble(0.0, -1.0) * k * a;  // -ika
+  if (std::abs(z) < 1e-3) return a * (1.0 + z / 2.0 + z * z / 6.0 + z * z * z / 24.0);
+  return (1.0 - std::exp(z)) / (cdouble(0.0, 1.0) * k);
+}
+
+// Columns i of `behind` and `ahead`: the seat's parts where x_response - x_load >= 0 and < 0, for
+// x_i = x0 + i h (|h| = L > l > 0), as above. The seats wholly on one side of the point are an
+// arithmetic run in |x| each, walked from its seat nearest the point outward by z_j = e^{-ik_j|h|}
+// (as green_weights_along); a seat that overlaps the point is computed directly.
+struct SeatWeights {
+  Eigen::MatrixXcd behind, ahead;
+};
+
+SeatWeights seat_weights_along(const RailWaves& w, double x0, double h, int count, double l) {
+  const cdouble I(0.0, 1.0);
+  const Eigen::Index m = w.wavenumbers.size();
+  SeatWeights out{Eigen::MatrixXcd::Zero(m, count), Eigen::MatrixXcd::Zero(m, count)};
+  const auto x = [&](int i) { return x0 + i * h; };
+  const Eigen::ArrayXcd z = (-I * w.wavenumbers.array() * std::abs(h)).exp();
+  // e^{-ik(|x| - l/2)} E(k, l) / l times -i / d_j: a seat wholly on one side at distance |x|
+  const auto whole = [&](double ax) {
+    Eigen::ArrayXcd v(m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const cdouble k = w.wavenumbers(j);
+      v(j) = -I / (w.norms(j) * l) * std::exp(-I * k * (ax - 0.5 * l)) * integral_of_wave(k, l);
+    }
+    return v;
+  };
+  // the indices [a, b) on one side (behind: x >= l/2, into `target`), walked from the one nearest 0
+  const auto walk_run = [&](int a, int b, Eigen::MatrixXcd& target) {
+    if (a >= b) return;
+    const bool up = std::abs(x(a)) <= std::abs(x(b - 1));
+    int i = up ? a : b - 1;
+    Eigen::ArrayXcd weight = whole(std::abs(x(i)));
+    for (int k = a; k < b; ++k, i += up ? 1 : -1) {
+      target.col(i) = weight.matrix();
+      weight *= z;
+    }
+  };
+  std::vector<int> behind, ahead;
+  for (int i = 0; i < count; ++i) {
+    if (x(i) >= 0.5 * l) {
+      behind.push_back(i);
+    } else if (x(i) <= -0.5 * l) {
+      ahead.push_back(i);
+    } else {  // the seat overlaps the point
+      for (Eigen::Index j = 0; j < m; ++j) {
+        const cdouble k = w.wavenumbers(j), scale = -I / (w.norms(j) * l);
+        out.behind(j, i) = scale * integral_of_wave(k, x(i) + 0.5 * l);
+        out.ahead(j, i) = scale * integral_of_wave(k, 0.5 * l - x(i));
+      }
+    }
+  }
+  // x is monotone in i, so each side's indices are consecutive
+  if (!behind.empty()) walk_run(behind.front(), behind.back() + 1, out.behind);
+  if (!ahead.empty()) walk_run(ahead.front(), ahead.back() + 1, out.ahead);
+  return out;
+}
+
 // One frequency's waves, the foot's amplitudes, the seats' stiffness (Eq. D1) and I + A K of Eq.
 // (D2), block Toeplitz (its block (i, j) is delta_ij I + a(i - j) K with a(d) = g(d L) and a(-d) =
 // g(d L)^T, d = 0..2N: the seats' spacing alone sets it), solved by the block Levinson recursion
@@ -138,6 +210,7 @@ struct Seats {
   Eigen::Vector4cd stiffness;
   int n;
   double spacing;
+  double seat_length = 0.0;                                         // FootSupport::seat_length
   std::optional<linalg::BlockToeplitzSolver> levinson;              // I + A K
   mutable std::optional<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu;  // only where Levinson fails
 
@@ -161,9 +234,36 @@ Seats seats(const RailWaveguide& rail, const FootAttachment& attachment, const F
   s.stiffness << support.longitudinal.dynamic_stiffness(omega),
       support.lateral.dynamic_stiffness(omega), kz, kz * attachment.roll_arm_squared;
   std::vector<Eigen::Matrix4cd> g(m);  // g(-x) = g(x)^T, reciprocity of Eq. W4
-  const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
-  for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
-    g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
+  const double l = support.seat_length;
+  s.seat_length = l;
+  if (l == 0.0) {
+    const Eigen::MatrixXcd weights = green_weights_along(s.waves, 0.0, s.spacing, m);
+    for (int d = 0; d < m; ++d)  // x = d L >= 0: Eq. (W4) ahead
+      g[d] = s.foot.plus.transpose() * weights.col(d).asDiagonal() * s.foot.minus;
+  } else {  // the seats spread over l (seat_weights_along's comment)
+    const cdouble I(0.0, 1.0);
+    const Eigen::Index nw = s.waves.wavenumbers.size();
+    Eigen::VectorXcd self(nw), spread(nw);
+    for (Eigen::Index j = 0; j < nw; ++j) {
+      const cdouble k = s.waves.wavenumbers(j), e = integral_of_wave(k, l);
+      const cdouble kl = k * l;
+      // 2 (l - E) / (ik l^2), by its series 1 - ikl/3 + (ikl)^2/12 where kl is small
+      self(j) = std::abs(kl) < 1e-3 ? 1.0 - I * kl / 3.0 + (I * kl) * (I * kl) / 12.0
+                                    : 2.0 * (l - e) / (I * k * l * l);
+      self(j) *= -I / s.waves.norms(j);
+      spread(j) = -I / s.waves.norms(j) * e * e / (l * l);
+    }
+    const Eigen::Matrix4cd half = 0.5 * s.foot.plus.transpose() * self.asDiagonal() * s.foot.minus;
+    g[0] = half + half.transpose();  // the two halves x > x', x < x' (g(-x) = g(x)^T)
+    Eigen::ArrayXcd wd(nw), z(nw);   // e^{-ik(d L - l)} walked by z = e^{-ikL}
+    for (Eigen::Index j = 0; j < nw; ++j) {
+      const cdouble k = s.waves.wavenumbers(j);
+      wd(j) = spread(j) * std::exp(-I * k * (s.spacing - l));
+      z(j) = std::exp(-I * k * s.spacing);
+    }
+    for (int d = 1; d < m; ++d, wd *= z)
+      g[d] = s.foot.plus.transpose() * wd.matrix().asDiagonal() * s.foot.minus;
+  }
   std::vector<Eigen::Matrix4cd> lower(m), upper(m);  // the blocks t(d), t(-d) of I + A K
   for (int d = 0; d < m; ++d) {
     lower[d] = g[d] * s.stiffness.asDiagonal();
@@ -181,38 +281,130 @@ Eigen::MatrixXcd seat_resultants(const Seats& s, const Amplitudes& f, double x_l
   const int m = 2 * s.n + 1;
   Eigen::MatrixXcd B(4 * m, f.plus.cols());
   const double from_load = first * s.spacing - x_l;  // x_i - x_l = x_first - x_l + i L
-  const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
-  for (int i = 0; i < m; ++i) {
-    const bool ahead = from_load + i * s.spacing >= 0.0;
-    B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
-                             to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
+  if (s.seat_length == 0.0) {
+    const Eigen::MatrixXcd to_seats = green_weights_along(s.waves, from_load, s.spacing, m);
+    for (int i = 0; i < m; ++i) {
+      const bool ahead = from_load + i * s.spacing >= 0.0;
+      B.middleRows(4 * i, 4) = (ahead ? s.foot.plus : s.foot.minus).transpose() *
+                               to_seats.col(i).asDiagonal() * (ahead ? f.minus : f.plus);
+    }
+  } else {
+    // the seat (spread) as the response, the load at x_l
+    const SeatWeights w = seat_weights_along(s.waves, from_load, s.spacing, m, s.seat_length);
+    for (int i = 0; i < m; ++i)
+      B.middleRows(4 * i, 4) = s.foot.plus.transpose() * w.behind.col(i).asDiagonal() * f.minus +
+                               s.foot.minus.transpose() * w.ahead.col(i).asDiagonal() * f.plus;
   }
   return s.solve(B);
 }
 
-// Eqs. (D2)-(D3) with the seats of one frequency: the response r at x_r per load f at x_l, the
-// 2N + 1 seats nearest the midpoint.
-Eigen::MatrixXcd supported_transfer(const Seats& s, const Amplitudes& r, double x_r,
-                                    const Amplitudes& f, double x_l) {
+// Eqs. (D2)-(D3) with the seats of one frequency: the response r at x_r per load f at x_l for
+// every (x_r, x_l) of `positions`, with one window of 2N + 1 seats for all of them (centred on the
+// midpoint of the positions' extent: for one pair its midpoint, so H(x_l, x_r) = H(x_r, x_l)^T)
+// and one solve of Eq. (D2) per distinct load position.
+//
+// The seats' part of Eq. (D3) at x_r, Sum_n G_rf(x_r - x_n) K v_n, is A_+(r)^T b(x_r) + A_-(r)^T
+// a(x_r) with the wave sums over the seats behind (x_n <= x_r) and ahead of x_r,
+//
+//   b(x_r) = Sum_{n behind} w(x_r - x_n) P-_n,   a(x_r) = Sum_{n ahead} w(x_n - x_r) P+_n,
+//
+// P-+_n = A_-+(foot) K v_n, w(x) = -i e^{-i k_j x} / d_j (a point seat; a spread seat wholly on one
+// side: seat_weights_along's). As w(x + L) = z w(x), z_j = e^{-i k_j L}, the sums are running ones,
+// C_n = z C_{n-1} + P-_n from the first seat and D_n = z D_{n+1} + P+_n from the last, and
+// b(x_r) = w(x_r - x_n*) C_n* with n* the last seat behind x_r (a(x_r) likewise): O(waves) per
+// response point instead of O(waves x seats). A spread seat that overlaps x_r adds its two parts.
+std::vector<Eigen::MatrixXcd> supported_transfers(
+    const Seats& s, const Amplitudes& r, const Amplitudes& f,
+    const std::vector<std::pair<double, double>>& positions, std::optional<double> centre = {}) {
+  if (positions.empty()) return {};
   const int m = 2 * s.n + 1;
-  const long first = std::lround(0.5 * (x_r + x_l) / s.spacing) - s.n;
-  const double from_response = x_r - first * s.spacing;
-  const Eigen::MatrixXcd v = seat_resultants(s, f, x_l, first);
-  // Eq. (D3): sum_n G_rf(x_r - x_n) K v_n = A_s(r)^T sum_n diag(weights) A_-s(foot) K v_n, the
-  // seats behind x_r (s = +1) and ahead of it (s = -1) summed apart.
-  Eigen::MatrixXcd behind = Eigen::MatrixXcd::Zero(s.waves.wavenumbers.size(), v.cols());
-  Eigen::MatrixXcd ahead = behind;
-  const Eigen::MatrixXcd from_seats = green_weights_along(s.waves, from_response, -s.spacing, m);
-  for (int i = 0; i < m; ++i) {
-    const double x = from_response - i * s.spacing;
-    const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
-    if (x >= 0.0)
-      behind += from_seats.col(i).asDiagonal() * (s.foot.minus * Kv);
-    else
-      ahead += from_seats.col(i).asDiagonal() * (s.foot.plus * Kv);
+  const double L = s.spacing, l = s.seat_length;
+  const cdouble I(0.0, 1.0);
+  double lo = positions.front().first, hi = lo;
+  for (const auto& [x_r, x_l] : positions)
+    lo = std::min({lo, x_r, x_l}), hi = std::max({hi, x_r, x_l});
+  const long first = std::lround(centre.value_or(0.5 * (lo + hi)) / L) - s.n;
+  const auto seat_x = [&](int i) { return (first + i) * L; };
+  const Eigen::Index nw = s.waves.wavenumbers.size();
+  const Eigen::ArrayXcd z = (-I * s.waves.wavenumbers.array() * L).exp();
+  // w(x) for a seat wholly on one side at distance x >= 0 (l > 0: e^{-ik(x - l/2)} E(k, l) / l)
+  const auto whole = [&](double x) -> Eigen::ArrayXcd {
+    if (l == 0.0) return green_weights(s.waves, x).array();
+    Eigen::ArrayXcd v(nw);
+    for (Eigen::Index j = 0; j < nw; ++j) {
+      const cdouble k = s.waves.wavenumbers(j);
+      v(j) =
+          -I / (s.waves.norms(j) * l) * std::exp(-I * k * (x - 0.5 * l)) * integral_of_wave(k, l);
+    }
+    return v;
+  };
+  std::vector<Eigen::MatrixXcd> out(positions.size());
+  std::vector<bool> done(positions.size(), false);
+  for (std::size_t p0 = 0; p0 < positions.size(); ++p0) {
+    if (done[p0]) continue;
+    const double x_l = positions[p0].second;
+    const Eigen::MatrixXcd v = seat_resultants(s, f, x_l, first);
+    const Eigen::Index nc = v.cols();
+    std::vector<Eigen::ArrayXXcd> Pm(m), Pp(m), C(m), D(m);
+    for (int i = 0; i < m; ++i) {
+      const Eigen::MatrixXcd Kv = s.stiffness.asDiagonal() * v.middleRows(4 * i, 4);
+      Pm[i] = (s.foot.minus * Kv).array();
+      Pp[i] = (s.foot.plus * Kv).array();
+    }
+    C[0] = Pm[0];
+    for (int i = 1; i < m; ++i) C[i] = C[i - 1].colwise() * z + Pm[i];
+    D[m - 1] = Pp[m - 1];
+    for (int i = m - 2; i >= 0; --i) D[i] = D[i + 1].colwise() * z + Pp[i];
+    for (std::size_t p = p0; p < positions.size(); ++p) {
+      if (done[p] || positions[p].second != x_l) continue;
+      done[p] = true;
+      const double x_r = positions[p].first;
+      // behind: x_r - x_n >= l/2; ahead: x_r - x_n <= -l/2; between them (l > 0) one overlapping
+      int last_behind = static_cast<int>(std::floor((x_r - 0.5 * l) / L)) - static_cast<int>(first);
+      last_behind = std::clamp(last_behind, -1, m - 1);
+      while (last_behind + 1 < m && x_r - seat_x(last_behind + 1) >= 0.5 * l) ++last_behind;
+      while (last_behind >= 0 && !(x_r - seat_x(last_behind) >= 0.5 * l)) --last_behind;
+      int first_ahead = last_behind + 1;
+      while (first_ahead < m && !(x_r - seat_x(first_ahead) <= -0.5 * l)) ++first_ahead;
+      Eigen::ArrayXXcd behind = Eigen::ArrayXXcd::Zero(nw, nc), ahead = behind;
+      if (last_behind >= 0) behind = C[last_behind].colwise() * whole(x_r - seat_x(last_behind));
+      if (first_ahead < m) ahead = D[first_ahead].colwise() * whole(seat_x(first_ahead) - x_r);
+      for (int i = last_behind + 1; i < first_ahead; ++i) {  // a spread seat over x_r
+        const double x = x_r - seat_x(i);
+        Eigen::ArrayXcd wb(nw), wa(nw);
+        for (Eigen::Index j = 0; j < nw; ++j) {
+          const cdouble k = s.waves.wavenumbers(j), scale = -I / (s.waves.norms(j) * l);
+          wb(j) = scale * integral_of_wave(k, x + 0.5 * l);
+          wa(j) = scale * integral_of_wave(k, 0.5 * l - x);
+        }
+        behind += Pm[i].colwise() * wb;
+        ahead += Pp[i].colwise() * wa;
+      }
+      out[p] = green(s.waves, r, f, x_r - x_l) - r.plus.transpose() * behind.matrix() -
+               r.minus.transpose() * ahead.matrix();
+    }
   }
-  return green(s.waves, r, f, x_r - x_l) - r.plus.transpose() * behind -
-         r.minus.transpose() * ahead;
+  return out;
+}
+
+// supported_transfers between one set of distributions (responses and loads alike), each pair
+// from the side with fewer distinct positions: Eq. (D2) is solved once per distinct load position,
+// and H(x_r, x_l) = H(x_l, x_r)^T for one window of seats (the response along the rail under a few
+// loads: the rail's sound asks for many x_r per load).
+std::vector<Eigen::MatrixXcd> reciprocal_transfers(
+    const Seats& s, const Amplitudes& p, const std::vector<std::pair<double, double>>& positions) {
+  std::vector<double> responses, loads;
+  for (const auto& [x_r, x_l] : positions) {
+    if (std::find(responses.begin(), responses.end(), x_r) == responses.end())
+      responses.push_back(x_r);
+    if (std::find(loads.begin(), loads.end(), x_l) == loads.end()) loads.push_back(x_l);
+  }
+  if (responses.size() >= loads.size()) return supported_transfers(s, p, p, positions);
+  std::vector<std::pair<double, double>> swapped;  // the same extent: the same window
+  for (const auto& [x_r, x_l] : positions) swapped.emplace_back(x_l, x_r);
+  std::vector<Eigen::MatrixXcd> out = supported_transfers(s, p, p, swapped);
+  for (Eigen::MatrixXcd& h : out) h.transposeInPlace();
+  return out;
 }
 
 }  // namespace
@@ -223,8 +415,9 @@ Eigen::MatrixXcd DiscretelySupportedWaveguide::transfer(cdouble omega,
                                                         const Eigen::MatrixXd& load,
                                                         double x_load) const {
   const Seats s = seats(rail_, foot_, support_, n_, omega);
-  return supported_transfer(s, wave_amplitudes(rail_, s.waves, response), x_response,
-                            wave_amplitudes(rail_, s.waves, load), x_load);
+  return supported_transfers(s, wave_amplitudes(rail_, s.waves, response),
+                             wave_amplitudes(rail_, s.waves, load), {{x_response, x_load}})
+      .front();
 }
 
 std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
@@ -232,8 +425,43 @@ std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
     const std::vector<std::pair<double, double>>& positions) const {
   const Seats s = seats(rail_, foot_, support_, n_, omega);
   const Amplitudes p = wave_amplitudes(rail_, s.waves, points);
-  std::vector<Eigen::MatrixXcd> out;
-  for (const auto& [x_r, x_l] : positions) out.push_back(supported_transfer(s, p, x_r, p, x_l));
+  return reciprocal_transfers(s, p, positions);
+}
+
+std::vector<Eigen::MatrixXcd> DiscretelySupportedWaveguide::transfers(
+    cdouble omega, const Eigen::MatrixXd& points,
+    const std::vector<std::pair<double, double>>& positions, double centre) const {
+  const Seats s = seats(rail_, foot_, support_, n_, omega);
+  const Amplitudes p = wave_amplitudes(rail_, s.waves, points);
+  return supported_transfers(s, p, p, positions, centre);
+}
+
+std::vector<Eigen::MatrixXcd> DiscreteWaveguideRailModel::HeadStation::transfers(
+    cdouble omega, const std::vector<std::pair<double, double>>& positions,
+    std::size_t keep_up_to) const {
+  if (positions.size() > keep_up_to) return rail.transfers(omega, loads, positions);
+  using Key = std::tuple<double, double, double, double>;
+  const auto key = [&](const std::pair<double, double>& x) {
+    return Key(omega.real(), omega.imag(), x.first, x.second);
+  };
+  std::vector<Eigen::MatrixXcd> out(positions.size());
+  std::vector<std::pair<double, double>> missing;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (std::size_t p = 0; p < positions.size(); ++p) {
+      const auto it = kept.find(key(positions[p]));
+      if (it != kept.end())
+        out[p] = it->second;
+      else
+        missing.push_back(positions[p]);
+    }
+  }
+  if (missing.empty()) return out;
+  const std::vector<Eigen::MatrixXcd> computed = rail.transfers(omega, loads, missing, centre);
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (std::size_t q = 0; q < missing.size(); ++q) kept.emplace(key(missing[q]), computed[q]);
+  for (std::size_t p = 0; p < positions.size(); ++p)
+    if (out[p].size() == 0) out[p] = kept.at(key(positions[p]));
   return out;
 }
 
@@ -248,6 +476,7 @@ SurfaceSpectrum DiscretelySupportedWaveguide::surface_spectrum(
   t.response = wave_amplitudes(rail_, s.waves, response);
   t.load_x = load_x;
   t.spacing = s.spacing;
+  t.seat_length = s.seat_length;
   t.seat_forces.resize(4 * (2 * n_ + 1), load.cols());
   // Eq. (D2) per load column, the 2N + 1 seats nearest the load (the columns at one x together)
   for (Eigen::Index b = 0; b < load.cols(); ++b) {
@@ -269,24 +498,35 @@ SurfaceSpectrum DiscretelySupportedWaveguide::surface_spectrum(
 }
 
 DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackParameters& track,
-                                                                    const WaveguideRailOptions& o) {
+                                                                    const WaveguideRailOptions& o,
+                                                                    double contact_position) {
   std::vector<Eigen::Vector2d> outline = o.outline.empty() ? uic60_outline() : o.outline;
   RailWaveguide full(fem::mesh_polygon(outline, o.mesh_size), rail_material(track, o.poisson_ratio),
                      std::nullopt);
   RailReductionModes modes = full.reduction_modes(o.contact_reduction);
   double top = full.mesh().nodes.at(0).y();
   for (const auto& p : full.mesh().nodes) top = std::max(top, p.y());
-  Eigen::MatrixXd crown = full.patch_loads(Eigen::Vector2d(0.0, top), o.patch_half_width,
-                                           Eigen::Vector2d(0.0, 1.0), o.head_bottom);
+  Eigen::MatrixXd crown =
+      contact_loads_at(full, o, Eigen::Vector2d(0.0, top), Eigen::Vector2d(0.0, 1.0));
   FootAttachment foot = foot_attachment(full);
-  Eigen::MatrixXd loads(full.dofs(), 8);
-  loads << crown, foot.loads;
   const FootSupport support{track.vertical_support, track.lateral_support,
-                            track.longitudinal_support, track.sleeper_spacing};
-  DiscretelySupportedWaveguide rail(full.reduced(o.contact_reduction, loads, modes),
-                                    std::move(foot), support, track.supports_each_side);
-  return Parts{
-      o, std::move(outline), std::move(full), std::move(modes), std::move(crown), std::move(rail)};
+                            track.longitudinal_support, track.sleeper_spacing, o.seat_length};
+  // the crown's basis: the head's six distributions (head loads), else the crown's patch
+  const Eigen::MatrixXd ends = o.head_load ? full.head_body(o.head_bottom).loads : crown;
+  Eigen::MatrixXd loads(full.dofs(), ends.cols() + 4);
+  loads << ends, foot.loads;
+  auto rail = std::make_shared<const DiscretelySupportedWaveguide>(
+      full.reduced(o.contact_reduction, loads, modes), std::move(foot), support,
+      track.supports_each_side);
+  std::shared_ptr<const HeadStation> head;
+  if (o.head_load) head = std::make_shared<const HeadStation>(*rail, ends, contact_position);
+  return Parts{o,
+               std::move(outline),
+               std::move(full),
+               std::move(modes),
+               std::move(crown),
+               std::move(head),
+               std::move(rail)};
 }
 
 DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& track,
@@ -295,7 +535,8 @@ DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& tr
     : GridSamplingRail(track, TrackSupport::kContinuous, contact_position, options.archive,
                        "waveguide, discrete support\n" + options.archive_identity),
       options_(options),
-      parts_([track, options] { return build(track, options); }),
+      parts_(
+          [track, options, contact_position] { return build(track, options, contact_position); }),
       x_(contact_position) {
   if (!std::isfinite(x_) || x_ < 0.0)
     throw InputError("track.position", "contact position along the rail must be >= 0");
@@ -306,18 +547,25 @@ DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& tr
 
 std::shared_ptr<const DiscreteWaveguideRailModel::Station> DiscreteWaveguideRailModel::station(
     const std::vector<std::pair<double, double>>& points) const {
-  // the points' loads and the foot's in one Ritz basis of the free rail (as build()'s crown)
   const Parts& parts = parts_.get();
   const Eigen::MatrixXd contacts =
       contact_point_loads(parts.section, parts.outline, parts.options, points);
-  const DiscretelySupportedWaveguide& crown = parts.rail;
+  if (parts.head) {  // the points' loads on the head's distributions (exactly in their span)
+    Eigen::MatrixXd coefficients = parts.head->loads.colPivHouseholderQr().solve(contacts);
+    return std::make_shared<const Station>(
+        Station{parts.rail, contacts, parts.head, std::move(coefficients)});
+  }
+  // the points' loads and the foot's in one Ritz basis of the free rail (as build()'s crown)
+  const DiscretelySupportedWaveguide& crown = *parts.rail;
   Eigen::MatrixXd loads(parts.section.dofs(), contacts.cols() + 4);
   loads << contacts, crown.foot().loads;
   return std::make_shared<const Station>(
-      Station{DiscretelySupportedWaveguide(
+      Station{std::make_shared<const DiscretelySupportedWaveguide>(
                   parts.section.reduced(parts.options.contact_reduction, loads, parts.modes),
                   crown.foot(), crown.support(), crown.supports_each_side()),
-              contacts});
+              contacts,
+              nullptr,
+              {}});
 }
 
 std::vector<Receptance4> DiscreteWaveguideRailModel::between(
@@ -331,8 +579,18 @@ std::vector<Receptance4> DiscreteWaveguideRailModel::between(
     which.push_back(static_cast<std::size_t>(it - positions.begin()));
     if (it == positions.end()) positions.push_back(x);
   }
-  const std::vector<Eigen::MatrixXcd> H = s.rail.transfers(omega, s.loads, positions);
   std::vector<Receptance4> out;
+  if (s.head) {  // the head's 6 x 6 (kept for the few positions of the loop's queries), projected
+    constexpr std::size_t kKeepUpTo = 8;
+    const std::vector<Eigen::MatrixXcd> H = s.head->transfers(omega, positions, kKeepUpTo);
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      const auto Ca = s.coefficients.middleCols(4 * std::get<0>(pairs[p]), 4).cast<cdouble>();
+      const auto Cb = s.coefficients.middleCols(4 * std::get<1>(pairs[p]), 4).cast<cdouble>();
+      out.push_back(Ca.transpose() * H[which[p]] * Cb);
+    }
+    return out;
+  }
+  const std::vector<Eigen::MatrixXcd> H = s.rail->transfers(omega, s.loads, positions);
   for (std::size_t p = 0; p < pairs.size(); ++p)
     out.push_back(H[which[p]].block<4, 4>(4 * std::get<0>(pairs[p]), 4 * std::get<1>(pairs[p])));
   return out;
@@ -411,16 +669,16 @@ SurfaceSpectra DiscreteWaveguideRailModel::surface_spectra(const std::vector<Rai
   const LoadPointColumns at = load_point_columns(points);
   const std::shared_ptr<const Station> st = station(at.distinct);
   auto response = std::make_shared<const Eigen::MatrixXd>(
-      outline_normal_distributions(st->rail.free_rail().mesh(), pieces) * patterns);
+      outline_normal_distributions(st->rail->free_rail().mesh(), pieces) * patterns);
   auto load = std::make_shared<const Eigen::MatrixXd>(at.columns(st->loads));
   return [st, response, load, x = at.x](double frequency) {
-    return st->rail.surface_spectrum(angular(frequency), *response, *load, x);
+    return st->rail->surface_spectrum(angular(frequency), *response, *load, x);
   };
 }
 
 Receptance4 DiscreteWaveguideRailModel::at(cdouble omega) const {
   const Parts& parts = parts_.get();
-  return parts.rail.transfer(omega, parts.crown, x_, parts.crown, x_);
+  return parts.rail->transfer(omega, parts.crown, x_, parts.crown, x_);
 }
 
 Receptance4 DiscreteWaveguideRailModel::receptance(double frequency) const {

@@ -29,22 +29,31 @@
 // (n, m) = delta_nm I + a(n - m) K, a(d) = g(d L), a(-d) = g(d L)^T): solved by the block Levinson
 // recursion (linalg/block_toeplitz_solve.hpp, O(N^2) 4 x 4 block products, residual-checked), a
 // dense LU of its 4(2N + 1) unknowns (N = 60: 484) where the check fails. Truncation as in the
-// beam model: the 2N + 1 seats nearest the midpoint of
-// the two positions, the rail free beyond them. I + A K depends on the seats' spacing only, not on
-// where they are centred, so one LU per frequency serves every pair of positions.
+// beam model: one window of 2N + 1 seats for all pairs of a query (nearest the midpoint of the
+// positions' extent, or a given centre), the rail free beyond them. I + A K depends on the seats'
+// spacing only, not on where they are centred, so one factorisation per frequency serves every
+// pair, and Eq. (D2) is solved once per distinct load position (by reciprocity, H(x_r, x_l) =
+// H(x_l, x_r)^T in one window, from whichever side has fewer distinct positions); Eq. (D3)'s sums
+// over the seats are running sums (supported_transfers in the .cpp).
 //
 // At the contacts (DiscreteWaveguideRailModel::contact_transfers): the distributions of Eq. (D3)
-// are the contact patches' loads at the contacts' own points of the head, in their frames (as the
-// continuous waveguide, waveguide_rail_model.hpp), G, G_fe, G_rf the free rail's Green's function
-// between them and the foot (Eq. W4 with the points' and the foot's loads in one Ritz basis); the
-// 6 x 6 is T_a H_ab T_b^T (G2 of rail_contact.hpp). No rigid move. On a frequency grid they are
+// are the contacts' loads at their own points of the head, in their frames (as the continuous
+// waveguide, waveguide_rail_model.hpp), G, G_fe, G_rf the free rail's Green's function between
+// them and the foot (Eq. W4 with the points' and the foot's loads in one Ritz basis); the 6 x 6 is
+// T_a H_ab T_b^T (G2 of rail_contact.hpp). No rigid move. With the head loaded as a body (the
+// default) every contact's loads are D C_a, D the head's six distributions
+// (RailWaveguide::head_body): one basis (the static responses to D and the foot's loads) for every
+// contact, the seats nearest the case's contact position for every pair, and the head's 6 x 6 at
+// (omega, x_a, x_b) kept across queries (HeadStation). On a frequency grid they are
 // computed directly on an adaptively chosen part of it and interpolated at the rest, the samplings
 // kept for the refinement's lines, as on the continuous support (waveguide_frequency_sampling.hpp;
 // GridSamplingRail).
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -82,6 +91,12 @@ class DiscretelySupportedWaveguide {
   std::vector<Eigen::MatrixXcd> transfers(
       cdouble omega, const Eigen::MatrixXd& points,
       const std::vector<std::pair<double, double>>& positions) const;
+  /// The same with the 2N + 1 seats nearest `centre` (m from a sleeper) for every pair, each pair
+  /// as asked (not from its reciprocal): a pair's value does not depend on the others asked with
+  /// it.
+  std::vector<Eigen::MatrixXcd> transfers(cdouble omega, const Eigen::MatrixXd& points,
+                                          const std::vector<std::pair<double, double>>& positions,
+                                          double centre) const;
 
   /// Eq. (D4) of rail_surface_spectrum.hpp at angular frequency omega: the spectrum of `response`
   /// (dofs() x pieces) per loads `load` (dofs() x c) at `load_x` (m from a sleeper, per column).
@@ -106,6 +121,25 @@ class DiscretelySupportedWaveguide {
 /// contact_transfers() and laplace_transfers() load the section at the contacts themselves.
 class DiscreteWaveguideRailModel : public GridSamplingRail {
  public:
+  /// The head's six distributions (RailWaveguide::head_body) on the rail reduced on them and the
+  /// foot: every contact's loads are a combination of them, so the contacts of every query share
+  /// this one model, and its 6 x 6 transfers, computed once per (omega, x_response, x_load) with
+  /// the seats nearest the case's contact position, are kept for all of them (queries of up to
+  /// `keep_up_to` positions, the loop's; a larger one, the response along the rail for the sound,
+  /// is computed as asked, the seats nearest the midpoint of its extent).
+  struct HeadStation {
+    HeadStation(DiscretelySupportedWaveguide r, Eigen::MatrixXd l, double c)
+        : rail(std::move(r)), loads(std::move(l)), centre(c) {}
+    DiscretelySupportedWaveguide rail;
+    Eigen::MatrixXd loads;  ///< dofs() x 6
+    double centre = 0.0;    ///< the seats' window (m from a sleeper)
+    std::vector<Eigen::MatrixXcd> transfers(cdouble omega,
+                                            const std::vector<std::pair<double, double>>& positions,
+                                            std::size_t keep_up_to) const;
+    mutable std::mutex mutex;
+    mutable std::map<std::tuple<double, double, double, double>, Eigen::MatrixXcd> kept;
+  };
+
   /// `contact_position`: from a sleeper (m; 0 over a sleeper, L/2 mid-span).
   DiscreteWaveguideRailModel(const TrackParameters& track, const WaveguideRailOptions& options,
                              double contact_position);
@@ -131,7 +165,7 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
                                  const std::vector<OutlinePiece>& pieces,
                                  const Eigen::MatrixXd& patterns) const override;
 
-  const DiscretelySupportedWaveguide& rail() const { return parts_.get().rail; }
+  const DiscretelySupportedWaveguide& rail() const { return *parts_.get().rail; }
   const Eigen::MatrixXd& crown_loads() const { return parts_.get().crown; }
 
  private:
@@ -141,14 +175,20 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
     RailWaveguide section;     // the free rail, unreduced: the contact points' bases
     RailReductionModes modes;  // its section modes, the load-independent part of every basis
     Eigen::MatrixXd crown;     // the crown's load patch (dofs() x 4)
-    DiscretelySupportedWaveguide rail;  // reduced on the crown and the foot
+    std::shared_ptr<const HeadStation> head;  // head_load: the head's basis, shared
+    std::shared_ptr<const DiscretelySupportedWaveguide> rail;  // the crown's: the head's, or
+                                                               // reduced on the crown and foot
   };
-  /// Contact points on the rail with their own reduced model and loads (dofs() x 4 per point).
+  /// Contact points on the rail with their reduced model and loads (dofs() x 4 per point); with
+  /// head loads the head's model, and the points' coefficients on its six distributions.
   struct Station {
-    DiscretelySupportedWaveguide rail;
+    std::shared_ptr<const DiscretelySupportedWaveguide> rail;
     Eigen::MatrixXd loads;
+    std::shared_ptr<const HeadStation> head;
+    Eigen::MatrixXd coefficients;  ///< 6 x 4 per point (head only)
   };
-  static Parts build(const TrackParameters& track, const WaveguideRailOptions& options);
+  static Parts build(const TrackParameters& track, const WaveguideRailOptions& options,
+                     double contact_position);
   std::shared_ptr<const Station> station(
       const std::vector<std::pair<double, double>>& points) const;
   /// The contact-frame 4x4 of each pair (point a, point b, x_a, x_b) of one station at omega.

@@ -16,6 +16,13 @@
 
 namespace rollnoise::dynamics {
 
+Eigen::MatrixXd contact_loads_at(const RailWaveguide& section, const WaveguideRailOptions& options,
+                                 const Eigen::Vector2d& point, const Eigen::Vector2d& normal) {
+  return options.head_load
+             ? section.head_loads(point, normal, options.head_bottom)
+             : section.patch_loads(point, options.patch_half_width, normal, options.head_bottom);
+}
+
 RailMaterial rail_material(const TrackParameters& track, double poisson_ratio) {
   RailMaterial m;
   m.youngs_modulus = track.vertical.youngs_modulus;
@@ -50,6 +57,8 @@ Eigen::Vector2d crown_of(const fem::QuadraticTriangleMesh& mesh) {
 void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOptions& options) {
   if (!(options.mesh_size > 0.0) || !(options.patch_half_width > 0.0))
     throw InputError("track.model", "waveguide rail: mesh size and load patch must be > 0");
+  if (!(options.seat_length >= 0.0) || !(options.seat_length < track.sleeper_spacing))
+    throw InputError("track.model", "waveguide rail: the seat length must lie in [0, L)");
   if (options.sampling.per_octave < 0)
     throw InputError("track.model", "waveguide rail: grid points per octave must be >= 0");
   fem::check_outline(options.outline.empty() ? uic60_outline() : options.outline,
@@ -71,8 +80,7 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
       crown_([section = section_, options] {
         const Section& s = section.get();
         Eigen::MatrixXd loads =
-            s.full.patch_loads(crown_of(s.full.mesh()), options.patch_half_width,
-                               Eigen::Vector2d(0.0, 1.0), options.head_bottom);
+            contact_loads_at(s.full, options, crown_of(s.full.mesh()), Eigen::Vector2d(0.0, 1.0));
         return Station{s.full.reduced(options.contact_reduction, loads, s.modes), std::move(loads)};
       }) {
   check_waveguide_inputs(track, options);
@@ -320,12 +328,23 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
                           invariant ? 0.0 : pairs[p].second.x);
       which.push_back(p);
     }
-    // Eq. (F1)'s scales: each point's receptance at its own position, appended where not asked for
+    // Eq. (F1)'s scales: each point's receptance at its own position where asked for, else at the
+    // same place in the first span, x mod L (a scale: the point receptance of the periodic track
+    // there; the response along the rail for the sound asks for hundreds of positions, which
+    // then share a few scales), appended
     const std::size_t asked = within.size();
+    const double L = track().sleeper_spacing;
     auto point_value = [&](int a, double x) {
-      const SetPairs::value_type key(a, a, invariant ? 0.0 : x, invariant ? 0.0 : x);
-      const auto it = std::find(within.begin(), within.end(), key);
+      SetPairs::value_type key(a, a, invariant ? 0.0 : x, invariant ? 0.0 : x);
+      auto it = std::find(within.begin(), within.end(), key);
       if (it != within.end()) return static_cast<int>(it - within.begin());
+      if (!invariant) {
+        double in_span = std::round((x - std::floor(x / L) * L) * 1e9) / 1e9;  // to 1 nm
+        if (in_span >= L) in_span = 0.0;
+        key = SetPairs::value_type(a, a, in_span, in_span);
+        it = std::find(within.begin(), within.end(), key);
+        if (it != within.end()) return static_cast<int>(it - within.begin());
+      }
       within.push_back(key);
       return static_cast<int>(within.size()) - 1;
     };
@@ -513,9 +532,9 @@ Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
           "waveguide rail: a contact needs a finite offset and |angle| < pi/2, got " +
           std::to_string(offset_y) + " m, " + std::to_string(angle) + " rad");
     const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));  // noise::contact_frame
-    loads.middleCols(4 * i, 4) =
-        section.patch_loads(outline_contact_point(outline, options.head_bottom, offset_y, angle),
-                            options.patch_half_width, normal, options.head_bottom);
+    loads.middleCols(4 * i, 4) = contact_loads_at(
+        section, options, outline_contact_point(outline, options.head_bottom, offset_y, angle),
+        normal);
   }
   return loads;
 }

@@ -23,11 +23,14 @@
 // (laplace_transfers returns a function of s holding it). Between queries only the samplings of
 // the grids are kept (SamplingMemo: a second query on the same grid evaluates nothing).
 //
-// The load is a uniform traction over the boundary within `patch_half_width` of the point (not a
-// nodal point force, whose receptance grows as the mesh is refined), and the response is the same
-// average (reciprocal). contact_transfers() on a grid of many frequencies computes them directly
-// on an adaptively chosen part of it and interpolates the rest (cubic Hermite in ln f, each entry;
-// waveguide_frequency_sampling.hpp; docs/record/waveguide_rail.md Sec. 8 gives the error).
+// The load acts through the head as a body (RailWaveguide::head_loads: the forces on the head's
+// least-squares rigid motion at the point, so the head's roll under an eccentric force is in it,
+// the local deformation under the patch, which the contact model's half-space holds, is not),
+// and the response is the same projection (reciprocal); `head_load = false` takes the former
+// uniform traction over the boundary within `patch_half_width` of the point. contact_transfers() on
+// a grid of many frequencies computes them directly on an adaptively chosen part of it and
+// interpolates the rest (cubic Hermite in ln f, each entry; waveguide_frequency_sampling.hpp;
+// docs/record/waveguide_rail.md Sec. 8 gives the error).
 #pragma once
 
 #include <Eigen/Core>
@@ -52,6 +55,13 @@ struct WaveguideRailOptions {
   std::vector<Eigen::Vector2d> outline;
   double mesh_size = 0.03;                ///< target element size h (m)
   double patch_half_width = 0.01;         ///< load patch radius around the crown (m)
+  /// true: the contacts (and the crown) load the section through the head as a body
+  /// (RailWaveguide::head_loads; the local deformation under the patch is the contact model's);
+  /// false: the patch of patch_half_width (RailWaveguide::patch_loads), the former load.
+  bool head_load = true;
+  /// Discrete supports: each seat's force spread evenly over this length along the rail (m; a
+  /// rail pad's length, assumed; 0: at one x, the former model). docs/models.md Sec. 2.11.
+  double seat_length = 0.15;
   double head_bottom = kUic60HeadBottom;  ///< z of the head's underside (m), for the spin
   double poisson_ratio = 0.3;             ///< nu (-); E, rho, eta from the track's rail
   /// The basis at the crown and the contacts, on either support (WaveguideRailModel,
@@ -270,10 +280,16 @@ std::vector<Receptance4> interpolate_receptances(const std::vector<double>& grid
 /// The rail's material from a track's vertical beam section: E, eta, rho = m' / A; nu given.
 RailMaterial rail_material(const TrackParameters& track, double poisson_ratio);
 
+/// The four load (and response) distributions of a contact at `point` (y, z) with the rail's
+/// outward normal `normal`: RailWaveguide::head_loads, or patch_loads (options.head_load false).
+Eigen::MatrixXd contact_loads_at(const RailWaveguide& section, const WaveguideRailOptions& options,
+                                 const Eigen::Vector2d& point, const Eigen::Vector2d& normal);
+
 /// The load (and response) distributions of contacts at `points` ((offset_y, contact_angle) each)
 /// on `section`'s outline (outline_contact_point), dofs() x 4 per point in the contact frame
-/// (RailWaveguide::patch_loads): what WaveguideRailModel loads at a contact, for other models of
-/// the same section (the discrete supports, waveguide_discrete_support.hpp).
+/// (RailWaveguide::head_loads, or patch_loads with options.head_load false): what
+/// WaveguideRailModel loads at a contact, for other models of the same section (the discrete
+/// supports, waveguide_discrete_support.hpp).
 Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
                                     const std::vector<Eigen::Vector2d>& outline,
                                     const WaveguideRailOptions& options,

@@ -122,9 +122,22 @@ TEST(DiscreteWaveguide, ConvergesInTheNumberOfSleepers) {
 // bending the spacing does matter (the static decay length (4 EI_z / k_y)^(1/4) ~ 0.5 m is below
 // L = 0.6 m), and the crown's lateral receptance differs from the continuous model's by as much
 // (0.51 dB at 50 Hz against 0.52 dB at the contact; docs/models.md Sec. 2.7).
+//
+// These numbers are those of the former loads (the 10 mm patch, the seats at one x), which this
+// test keeps: their local compliance, a real spring of ~0.6e-9 m/N at the crown that does not
+// depend on the support, dominates the receptance at 2-3 kHz (-185 dB) and so hides the supports'
+// difference there. With the loads of the loop (the head as a body, the seats spread over
+// 0.15 m; docs/models.md Sec. 2.11) the 3 kHz point lies in the discrete track's second
+// pinned-pinned region, where the beam's own mean of over-sleeper and mid-span is 2.4 dB above its
+// continuous support; the waveguide's is 1.9 dB. So the new loads are checked against the beam
+// (WaveguideAndBeamAgreeForACentredVerticalLoadBelowCutOn in waveguide_rail_model_test.cpp and
+// the next test).
 TEST(DiscreteWaveguide, EqualsContinuousWaveguideAtLowFrequencyAndFarFromPinnedPinned) {
-  const rd::DiscreteWaveguideRailModel discrete(track_with(20), coarse(), 0.0);
-  const rd::WaveguideRailModel continuous(rd::uic60_ballasted(), coarse());
+  rd::WaveguideRailOptions former = coarse();
+  former.head_load = false;
+  former.seat_length = 0.0;
+  const rd::DiscreteWaveguideRailModel discrete(track_with(20), former, 0.0);
+  const rd::WaveguideRailModel continuous(rd::uic60_ballasted(), former);
   for (double f : {50.0, 100.0, 200.0, 2000.0, 3000.0}) {
     const double mean = 0.5 * (db(vertical(discrete, f, 0.0)) + db(vertical(discrete, f, 0.3)));
     const double cont = db(continuous.receptance(f)(rd::kZ, rd::kZ));
@@ -136,6 +149,30 @@ TEST(DiscreteWaveguide, EqualsContinuousWaveguideAtLowFrequencyAndFarFromPinnedP
         << f << " Hz, gauge corner";
     std::printf("  %5.0f Hz: crown %.2f dB, gauge corner %.2f dB\n", f, std::abs(mean - cont),
                 std::abs(corner_mean - db(at(rd::kZ, rd::kZ))));
+  }
+}
+
+// With the loop's loads (the head as a body, the seats spread over 0.15 m) the discrete support
+// acts on the waveguide as on the beam: the mean of over-sleeper and mid-span dB minus the
+// continuous support's, at the crown, is the beam's (DiscretelySupportedRail against
+// continuous_transfer, the same track) within 0.75 dB at 50 and 200 Hz and at 2, 2.5 and 3 kHz,
+// across the second pinned-pinned region (measured 0.47 dB at most, at 3 kHz: waveguide +1.94,
+// beam +2.41 dB).
+TEST(DiscreteWaveguide, SupportsDifferenceEqualsTheBeamsWithTheHeadLoads) {
+  const rd::TrackParameters t = track_with(20);
+  const rd::DiscreteWaveguideRailModel discrete(t, coarse(), 0.0);
+  const rd::WaveguideRailModel continuous(rd::uic60_ballasted(), coarse());
+  const rd::RailModel over(t, rd::TrackSupport::kDiscrete, 0.0),
+      mid(t, rd::TrackSupport::kDiscrete, 0.3), smeared(t, rd::TrackSupport::kContinuous, 0.0);
+  for (double f : {50.0, 200.0, 2000.0, 2500.0, 3000.0}) {
+    const double wg = 0.5 * (db(vertical(discrete, f, 0.0)) + db(vertical(discrete, f, 0.3))) -
+                      db(continuous.receptance(f)(rd::kZ, rd::kZ));
+    const double beam =
+        0.5 * (db(over.receptance(f)(rd::kZ, rd::kZ)) + db(mid.receptance(f)(rd::kZ, rd::kZ))) -
+        db(smeared.receptance(f)(rd::kZ, rd::kZ));
+    EXPECT_LT(std::abs(wg - beam), 0.75) << f << " Hz";
+    std::printf("  %5.0f Hz: discrete - continuous: waveguide %+.2f dB, beam %+.2f dB\n", f, wg,
+                beam);
   }
 }
 

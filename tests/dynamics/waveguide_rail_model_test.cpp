@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
+#include "dynamics/waveguide_discrete_support.hpp"
 #include "fem/mesh.hpp"
 #include "support/test_helpers.hpp"
 
@@ -249,4 +251,58 @@ TEST(WaveguideRailModel, ValuesAtComplexFrequencyKeptForALaterRun) {
   const auto again = third.contact_transfers(f, pairs, false);
   for (std::size_t k = 0; k < f.size(); ++k)
     EXPECT_TRUE(again[k].front() == 2.0 * direct[k].front());  // (scaling by 2 is exact)
+}
+
+// Below the section's first cut-on (1.2 kHz) a vertical load at the crown sees the rail the beam
+// sees: the waveguide's vertical point receptance at the crown (the loop's model: 30 mm mesh, the
+// head loaded as a body, the seats spread over 0.15 m) equals the Timoshenko beam's (RailModel,
+// the track file's A, I, kappa = 0.4) within 1.5 dB at 100-500 Hz (1/6 octave) on the continuous
+// support and at mid-span on the sleepers (measured 0.86 and 1.05 dB). The 1.5 dB leave room for
+// what the beam has not: the section squashed between the head and the pads (the head's mean
+// moves ~2e-10 m/N more than the foot's, ~0.8 dB at the 300 Hz trough), the mesh's A and I
+// (-2.7 %, -1.2 %) and a seat of finite length against the beam's point seats. Over a sleeper
+// the seat below the load squashes the section more (head minus foot 4-5e-10 m/N, real), and
+// there the bound is 2.5 dB (measured 2.33 dB at 356 Hz). The former loads (the 10 mm patch, the
+// seats at one x) fail it by their local compliance: > 2 dB at 315 Hz on both supports.
+TEST(WaveguideAndBeam, WaveguideAndBeamAgreeForACentredVerticalLoadBelowCutOn) {
+  const rd::TrackParameters t = rd::uic60_ballasted();
+  const rd::WaveguideRailOptions o;  // head_load, seat_length = 0.15 m
+  rd::WaveguideRailOptions former = o;
+  former.head_load = false;
+  former.seat_length = 0.0;
+  const rd::WaveguideRailModel continuous(t, o);
+  const rd::RailModel beam_continuous(t, rd::TrackSupport::kContinuous, 0.0);
+  double worst[3] = {0.0, 0.0, 0.0};  // continuous, mid-span, over a sleeper
+  for (double x : {0.3, 0.0}) {
+    const rd::DiscreteWaveguideRailModel discrete(t, o, x);
+    const rd::RailModel beam(t, rd::TrackSupport::kDiscrete, x);
+    for (int i = 0; i <= 14; ++i) {
+      const double f = 100.0 * std::pow(2.0, i / 6.0);
+      const double d =
+          db(discrete.receptance(f)(rd::kZ, rd::kZ)) - db(beam.receptance(f)(rd::kZ, rd::kZ));
+      EXPECT_LT(std::abs(d), x == 0.0 ? 2.5 : 1.5) << "discrete, x = " << x << " m, f = " << f;
+      double& w = worst[x == 0.0 ? 2 : 1];
+      w = std::max(w, std::abs(d));
+      if (x == 0.0) continue;
+      const double c = db(continuous.receptance(f)(rd::kZ, rd::kZ)) -
+                       db(beam_continuous.receptance(f)(rd::kZ, rd::kZ));
+      EXPECT_LT(std::abs(c), 1.5) << "continuous, f = " << f << " Hz";
+      worst[0] = std::max(worst[0], std::abs(c));
+    }
+  }
+  std::printf(
+      "  largest |waveguide - beam| at 100-500 Hz: continuous %.2f dB, mid-span %.2f dB, "
+      "over a sleeper %.2f dB\n",
+      worst[0], worst[1], worst[2]);
+  // the former loads at 315 Hz (the trough of the rail-pad-sleeper-ballast system)
+  const double f = 315.0;
+  const double c_former = db(rd::WaveguideRailModel(t, former).receptance(f)(rd::kZ, rd::kZ)) -
+                          db(beam_continuous.receptance(f)(rd::kZ, rd::kZ));
+  const double d_former =
+      db(rd::DiscreteWaveguideRailModel(t, former, 0.3).receptance(f)(rd::kZ, rd::kZ)) -
+      db(rd::RailModel(t, rd::TrackSupport::kDiscrete, 0.3).receptance(f)(rd::kZ, rd::kZ));
+  std::printf("  former loads at 315 Hz: continuous %+.2f dB, discrete (mid-span) %+.2f dB\n",
+              c_former, d_former);
+  EXPECT_GT(c_former, 2.0);
+  EXPECT_GT(d_former, 2.0);
 }
