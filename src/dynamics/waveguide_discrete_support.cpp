@@ -145,6 +145,33 @@ cdouble integral_of_wave(cdouble k, double a) {  // E(k, a), by its series where
   return (1.0 - std::exp(z)) / (cdouble(0.0, 1.0) * k);
 }
 
+// A seat wholly on one side of the point at distance ax >= l/2 from its centre: e^{-ik(ax - l/2)}
+// E(k, l) / l times -i / d_j per wave (l = 0: Eq. W4's point weights, green_weights).
+Eigen::ArrayXcd whole_seat_weights(const RailWaves& w, double ax, double l) {
+  if (l == 0.0) return green_weights(w, ax).array();
+  const cdouble I(0.0, 1.0);
+  Eigen::ArrayXcd v(w.wavenumbers.size());
+  for (Eigen::Index j = 0; j < v.size(); ++j) {
+    const cdouble k = w.wavenumbers(j);
+    v(j) = -I / (w.norms(j) * l) * std::exp(-I * k * (ax - 0.5 * l)) * integral_of_wave(k, l);
+  }
+  return v;
+}
+
+// A seat over the point (|x| < l/2, x = x_point - x_seat): its parts behind (E(k, x + l/2) / l) and
+// ahead of the point (E(k, l/2 - x) / l), times -i / d_j per wave.
+void overlapping_seat_weights(const RailWaves& w, double x, double l, Eigen::ArrayXcd& behind,
+                              Eigen::ArrayXcd& ahead) {
+  const cdouble I(0.0, 1.0);
+  behind.resize(w.wavenumbers.size());
+  ahead.resize(w.wavenumbers.size());
+  for (Eigen::Index j = 0; j < behind.size(); ++j) {
+    const cdouble k = w.wavenumbers(j), scale = -I / (w.norms(j) * l);
+    behind(j) = scale * integral_of_wave(k, x + 0.5 * l);
+    ahead(j) = scale * integral_of_wave(k, 0.5 * l - x);
+  }
+}
+
 // Columns i of `behind` and `ahead`: the seat's parts where x_response - x_load >= 0 and < 0, for
 // x_i = x0 + i h (|h| = L > l > 0), as above. The seats wholly on one side of the point are an
 // arithmetic run in |x| each, walked from its seat nearest the point outward by z_j = e^{-ik_j|h|}
@@ -159,21 +186,12 @@ SeatWeights seat_weights_along(const RailWaves& w, double x0, double h, int coun
   SeatWeights out{Eigen::MatrixXcd::Zero(m, count), Eigen::MatrixXcd::Zero(m, count)};
   const auto x = [&](int i) { return x0 + i * h; };
   const Eigen::ArrayXcd z = (-I * w.wavenumbers.array() * std::abs(h)).exp();
-  // e^{-ik(|x| - l/2)} E(k, l) / l times -i / d_j: a seat wholly on one side at distance |x|
-  const auto whole = [&](double ax) {
-    Eigen::ArrayXcd v(m);
-    for (Eigen::Index j = 0; j < m; ++j) {
-      const cdouble k = w.wavenumbers(j);
-      v(j) = -I / (w.norms(j) * l) * std::exp(-I * k * (ax - 0.5 * l)) * integral_of_wave(k, l);
-    }
-    return v;
-  };
   // the indices [a, b) on one side (behind: x >= l/2, into `target`), walked from the one nearest 0
   const auto walk_run = [&](int a, int b, Eigen::MatrixXcd& target) {
     if (a >= b) return;
     const bool up = std::abs(x(a)) <= std::abs(x(b - 1));
     int i = up ? a : b - 1;
-    Eigen::ArrayXcd weight = whole(std::abs(x(i)));
+    Eigen::ArrayXcd weight = whole_seat_weights(w, std::abs(x(i)), l);
     for (int k = a; k < b; ++k, i += up ? 1 : -1) {
       target.col(i) = weight.matrix();
       weight *= z;
@@ -186,11 +204,10 @@ SeatWeights seat_weights_along(const RailWaves& w, double x0, double h, int coun
     } else if (x(i) <= -0.5 * l) {
       ahead.push_back(i);
     } else {  // the seat overlaps the point
-      for (Eigen::Index j = 0; j < m; ++j) {
-        const cdouble k = w.wavenumbers(j), scale = -I / (w.norms(j) * l);
-        out.behind(j, i) = scale * integral_of_wave(k, x(i) + 0.5 * l);
-        out.ahead(j, i) = scale * integral_of_wave(k, 0.5 * l - x(i));
-      }
+      Eigen::ArrayXcd b, a;
+      overlapping_seat_weights(w, x(i), l, b, a);
+      out.behind.col(i) = b.matrix();
+      out.ahead.col(i) = a.matrix();
     }
   }
   // x is monotone in i, so each side's indices are consecutive
@@ -327,22 +344,21 @@ std::vector<Eigen::MatrixXcd> supported_transfers(
   const auto seat_x = [&](int i) { return (first + i) * L; };
   const Eigen::Index nw = s.waves.wavenumbers.size();
   const Eigen::ArrayXcd z = (-I * s.waves.wavenumbers.array() * L).exp();
-  // w(x) for a seat wholly on one side at distance x >= 0 (l > 0: e^{-ik(x - l/2)} E(k, l) / l)
-  const auto whole = [&](double x) -> Eigen::ArrayXcd {
-    if (l == 0.0) return green_weights(s.waves, x).array();
-    Eigen::ArrayXcd v(nw);
-    for (Eigen::Index j = 0; j < nw; ++j) {
-      const cdouble k = s.waves.wavenumbers(j);
-      v(j) =
-          -I / (s.waves.norms(j) * l) * std::exp(-I * k * (x - 0.5 * l)) * integral_of_wave(k, l);
+  // the pairs by load position, in order of first appearance
+  std::vector<double> loads;
+  std::vector<std::vector<std::size_t>> by_load;
+  for (std::size_t p = 0; p < positions.size(); ++p) {
+    const auto it = std::find(loads.begin(), loads.end(), positions[p].second);
+    if (it == loads.end()) {
+      loads.push_back(positions[p].second);
+      by_load.push_back({p});
+    } else {
+      by_load[static_cast<std::size_t>(it - loads.begin())].push_back(p);
     }
-    return v;
-  };
+  }
   std::vector<Eigen::MatrixXcd> out(positions.size());
-  std::vector<bool> done(positions.size(), false);
-  for (std::size_t p0 = 0; p0 < positions.size(); ++p0) {
-    if (done[p0]) continue;
-    const double x_l = positions[p0].second;
+  for (std::size_t g = 0; g < loads.size(); ++g) {
+    const double x_l = loads[g];
     const Eigen::MatrixXcd v = seat_resultants(s, f, x_l, first);
     const Eigen::Index nc = v.cols();
     std::vector<Eigen::ArrayXXcd> Pm(m), Pp(m), C(m), D(m);
@@ -355,9 +371,7 @@ std::vector<Eigen::MatrixXcd> supported_transfers(
     for (int i = 1; i < m; ++i) C[i] = C[i - 1].colwise() * z + Pm[i];
     D[m - 1] = Pp[m - 1];
     for (int i = m - 2; i >= 0; --i) D[i] = D[i + 1].colwise() * z + Pp[i];
-    for (std::size_t p = p0; p < positions.size(); ++p) {
-      if (done[p] || positions[p].second != x_l) continue;
-      done[p] = true;
+    for (std::size_t p : by_load[g]) {
       const double x_r = positions[p].first;
       // behind: x_r - x_n >= l/2; ahead: x_r - x_n <= -l/2; between them (l > 0) one overlapping
       int last_behind = static_cast<int>(std::floor((x_r - 0.5 * l) / L)) - static_cast<int>(first);
@@ -367,16 +381,14 @@ std::vector<Eigen::MatrixXcd> supported_transfers(
       int first_ahead = last_behind + 1;
       while (first_ahead < m && !(x_r - seat_x(first_ahead) <= -0.5 * l)) ++first_ahead;
       Eigen::ArrayXXcd behind = Eigen::ArrayXXcd::Zero(nw, nc), ahead = behind;
-      if (last_behind >= 0) behind = C[last_behind].colwise() * whole(x_r - seat_x(last_behind));
-      if (first_ahead < m) ahead = D[first_ahead].colwise() * whole(seat_x(first_ahead) - x_r);
+      if (last_behind >= 0)
+        behind =
+            C[last_behind].colwise() * whole_seat_weights(s.waves, x_r - seat_x(last_behind), l);
+      if (first_ahead < m)
+        ahead = D[first_ahead].colwise() * whole_seat_weights(s.waves, seat_x(first_ahead) - x_r, l);
       for (int i = last_behind + 1; i < first_ahead; ++i) {  // a spread seat over x_r
-        const double x = x_r - seat_x(i);
-        Eigen::ArrayXcd wb(nw), wa(nw);
-        for (Eigen::Index j = 0; j < nw; ++j) {
-          const cdouble k = s.waves.wavenumbers(j), scale = -I / (s.waves.norms(j) * l);
-          wb(j) = scale * integral_of_wave(k, x + 0.5 * l);
-          wa(j) = scale * integral_of_wave(k, 0.5 * l - x);
-        }
+        Eigen::ArrayXcd wb, wa;
+        overlapping_seat_weights(s.waves, x_r - seat_x(i), l, wb, wa);
         behind += Pm[i].colwise() * wb;
         ahead += Pp[i].colwise() * wa;
       }
