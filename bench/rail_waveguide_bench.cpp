@@ -16,6 +16,7 @@
 #include <cmath>
 #include <string>
 
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "fem/mesh.hpp"
@@ -122,8 +123,8 @@ void RailWaveguideEccentricContact(benchmark::State& state) {
   Eigen::MatrixXd both(L.rows(), 8);
   both << L, G;
   const dynamics::RailWaveguide rail = full.reduced(dynamics::RailReduction{}, both);
-  const dynamics::RailModel beam(dynamics::uic60_ballasted(), dynamics::TrackSupport::kContinuous,
-                                 0.0);
+  const dynamics::BeamRailModel beam(dynamics::uic60_ballasted(),
+                                     dynamics::TrackSupport::kContinuous, 0.0);
   dynamics::Receptance4 ecc, moved, moved_beam;
   auto to_contact = [&](const dynamics::Receptance4& r) {
     return noise::to_contact_frame(

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
@@ -66,8 +67,8 @@ void SoundRailBem(benchmark::State& state) {
 BENCHMARK(SoundRailBem)->Arg(500)->Arg(2000)->Arg(5000)->Unit(benchmark::kMillisecond);
 
 void SoundRailLineGram(benchmark::State& state) {
-  const dynamics::RailModel rail(dynamics::uic60_ballasted(), dynamics::TrackSupport::kDiscrete,
-                                 0.3);
+  const dynamics::BeamRailModel rail(dynamics::uic60_ballasted(), dynamics::TrackSupport::kDiscrete,
+                                     0.3);
   std::vector<double> grid;
   const int nf = static_cast<int>(state.range(0));
   for (int i = 0; i < nf; ++i) grid.push_back(100.0 * std::pow(50.0, i / std::max(nf - 1.0, 1.0)));

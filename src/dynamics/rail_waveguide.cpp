@@ -558,30 +558,11 @@ Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
   }
   // psi_n = -t . b, b the gradient of the plane u_x = a + b . (r - r_h) fitted over the head
   // (least squares over the triangles whose centroid lies at z >= head_bottom):
-  // b = I_h^{-1} Int_head (r - r_h) u_x dA, I_h = Int_head (r - r_h)(r - r_h)^T dA.
-  double area = 0.0;
-  Eigen::Vector2d first(0.0, 0.0);
-  Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
-  std::vector<int> head;
-  for (int t = 0; t < static_cast<int>(mesh_.triangles.size()); ++t) {
-    Eigen::Vector2d c(0.0, 0.0);
-    for (int a = 0; a < 3; ++a) c += mesh_.nodes[mesh_.triangles[t][a]] / 3.0;
-    if (c.y() < head_bottom) continue;
-    head.push_back(t);
-    for (const SectionPoint& p : section_points(mesh_, t)) {
-      area += p.weight;
-      first += p.weight * p.position;
-      second += p.weight * p.position * p.position.transpose();
-    }
-  }
-  if (head.empty()) throw InputError("rail_section", "no triangle of the rail head above it");
-  const Eigen::Vector2d rh = first / area;
-  const Eigen::Matrix2d Ih = second - area * rh * rh.transpose();
-  const Eigen::Vector2d c = -Ih.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA
-  for (int tri : head)
-    for (const SectionPoint& p : section_points(mesh_, tri))
-      for (int b = 0; b < 6; ++b)
-        L(dof(mesh_.triangles[tri][b], 0), kRotZ) += p.weight * c.dot(p.position - rh) * p.shape(b);
+  // b = I_h^{-1} Int_head (r - r_h) u_x dA, I_h = Int_head (r - r_h)(r - r_h)^T dA; its work
+  // conjugates are the head body's distributions 4 and 5 (head_body).
+  const HeadBody h = head_body(head_bottom);
+  const Eigen::Vector2d c = -h.inertia.inverse() * t;  // psi_n = c . Int (r - r_h) u_x dA
+  L.col(kRotZ) = c.x() * h.loads.col(4) + c.y() * h.loads.col(5);
   return L;
 }
 

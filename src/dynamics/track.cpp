@@ -193,41 +193,6 @@ std::vector<Eigen::Matrix2cd> DiscretelySupportedRail::solve_pairs(
 // The rail's 4x4 contact-point receptance
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-const TrackParameters& validated(const TrackParameters& t) {
-  t.validate();
-  return t;
-}
-}  // namespace
-
-RailModel::RailModel(const TrackParameters& track, TrackSupport support, double contact_position)
-    : track_(validated(track)),
-      support_(support),
-      x_(contact_position),
-      vertical_(track.vertical, track.vertical_support, track.sleeper_spacing,
-                track.supports_each_side, track.discrete_solution),
-      lateral_(track.lateral, track.lateral_support, track.sleeper_spacing,
-               track.supports_each_side, track.discrete_solution) {
-  if (!std::isfinite(x_)) throw InputError("track.position", "contact position must be finite");
-}
-
-Receptance4 RailModel::receptance(double frequency) const {
-  const double omega = checked_omega(frequency);
-  Eigen::Matrix2cd Hv, Hl;
-  if (support_ == TrackSupport::kDiscrete) {
-    Hv = vertical_.point(frequency, x_);
-    Hl = lateral_.point(frequency, x_);
-  } else {
-    Hv = continuous_transfer(track_.vertical, track_.vertical_support, track_.sleeper_spacing,
-                             frequency, 0.0);
-    Hl = continuous_transfer(track_.lateral, track_.lateral_support, track_.sleeper_spacing,
-                             frequency, 0.0);
-  }
-  const cdouble s_x = track_.longitudinal_support.dynamic_stiffness(omega) / track_.sleeper_spacing;
-  const cdouble rod = rod_receptance(track_.vertical, omega, s_x, 0.0);
-  return rail_receptance4(Hv, Hl, rod, track_.head_height);
-}
-
 Receptance4 rail_receptance4(const Eigen::Matrix2cd& Hv, const Eigen::Matrix2cd& Hl, cdouble rod,
                              double h) {
   Receptance4 R = Receptance4::Zero();
@@ -286,11 +251,6 @@ Eigen::Matrix2cd DiscretelySupportedRail::transfer_at(cdouble omega, double x_r,
   if (!H.allFinite())
     throw NumericalError("DiscretelySupportedRail: non-finite receptance at complex frequency");
   return H;
-}
-
-
-Receptance4 RailModel::receptance_laplace(cdouble s) const {
-  return line_transfer_laplace(s, x_, x_);
 }
 
 }  // namespace rollnoise::dynamics

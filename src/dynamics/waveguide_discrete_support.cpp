@@ -13,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "dynamics/frequency_argument.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/mesh.hpp"
 #include "linalg/block_toeplitz_solve.hpp"
@@ -544,7 +545,7 @@ DiscreteWaveguideRailModel::Parts DiscreteWaveguideRailModel::build(const TrackP
 DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& track,
                                                        const WaveguideRailOptions& options,
                                                        double contact_position)
-    : GridSamplingRail(track, TrackSupport::kContinuous, contact_position, options.archive,
+    : GridSamplingRail(track, contact_position, options.archive,
                        "waveguide, discrete support\n" + options.archive_identity),
       options_(options),
       parts_(

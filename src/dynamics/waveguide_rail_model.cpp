@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "dynamics/frequency_argument.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "fem/mesh.hpp"
 
@@ -68,7 +69,7 @@ void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOpt
 
 WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
                                        const WaveguideRailOptions& options)
-    : GridSamplingRail(track, TrackSupport::kContinuous, 0.0, options.archive,
+    : GridSamplingRail(track, 0.0, options.archive,
                        "waveguide, continuous support\n" + options.archive_identity),
       options_(options),
       outline_(options.outline.empty() ? uic60_outline() : options.outline),
@@ -240,11 +241,10 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::contact_transfers_from(
   return transfers(frequencies, pairs, true, &grid);
 }
 
-GridSamplingRail::GridSamplingRail(const TrackParameters& track, TrackSupport support,
-                                   double contact_position,
+GridSamplingRail::GridSamplingRail(const TrackParameters& track, double contact_position,
                                    std::shared_ptr<const SamplingArchive> archive,
                                    std::string identity)
-    : RailModel(track, support, contact_position),
+    : RailModel(track, contact_position),
       memo_(std::make_shared<const SamplingMemo>(std::move(archive), std::move(identity))) {}
 
 namespace {
@@ -389,9 +389,7 @@ std::unique_ptr<RailModel> GridSamplingRail::on_grid(std::vector<double> grid) c
 }
 
 WaveguideOnGrid::WaveguideOnGrid(const GridSamplingRail& rail, std::vector<double> grid)
-    : RailModel(rail.track(), TrackSupport::kContinuous, rail.position()),
-      rail_(rail),
-      grid_(std::move(grid)) {}
+    : RailModel(rail.track(), rail.position()), rail_(rail), grid_(std::move(grid)) {}
 
 std::vector<std::vector<Receptance6>> WaveguideOnGrid::contact_transfers(
     const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,

@@ -1,5 +1,5 @@
-// The waveguide rail (rail_waveguide.hpp) as the loop's RailModel (track.hpp), from the reduced
-// waveguide model on the continuous support of the track file's pads, sleepers and ballast:
+// The waveguide rail (rail_waveguide.hpp) as the loop's RailModel (rail_model.hpp), from the
+// reduced waveguide model on the continuous support of the track file's pads, sleepers and ballast:
 //
 //  * receptance(f): the 4x4 at the running surface's centre (the crown of the section), in the
 //    loop's order (z, x, y, rotation about z), as `rollnoise receptance` writes it;
@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "core/lazy.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_frequency_sampling.hpp"
@@ -93,7 +94,7 @@ void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOpt
 class GridSamplingRail : public RailModel {
  public:
   /// RailModel's, the samplings kept in `archive` (may be null) under `identity` as well.
-  GridSamplingRail(const TrackParameters& track, TrackSupport support, double contact_position,
+  GridSamplingRail(const TrackParameters& track, double contact_position,
                    std::shared_ptr<const SamplingArchive> archive, std::string identity);
   /// Sampled as sampling() says (the rest interpolated) when `interpolate`, else every frequency
   /// directly.

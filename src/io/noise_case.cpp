@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "io/cache_files.hpp"
@@ -158,11 +159,11 @@ void read_track(const CaseReader& r, NoiseCase& c) {
     else
       c.rail = std::make_unique<dynamics::WaveguideRailModel>(track, o);
   } else {
-    c.rail = std::make_unique<dynamics::RailModel>(track,
-                                                   support == "discrete"
-                                                       ? dynamics::TrackSupport::kDiscrete
-                                                       : dynamics::TrackSupport::kContinuous,
-                                                   position);
+    c.rail = std::make_unique<dynamics::BeamRailModel>(track,
+                                                       support == "discrete"
+                                                           ? dynamics::TrackSupport::kDiscrete
+                                                           : dynamics::TrackSupport::kContinuous,
+                                                       position);
   }
   char pos[32];
   std::snprintf(pos, sizeof pos, "%.17g", position);

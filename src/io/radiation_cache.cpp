@@ -4,6 +4,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "dynamics/rail_model.hpp"
 #include "io/cache_files.hpp"
 #include "io/wheel_modes_cache.hpp"
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "io/wheel_fe_case.hpp"
 #include "pipeline/sound_power.hpp"
 #include "pipeline/sound_radiation.hpp"

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 
 namespace rollnoise::io {

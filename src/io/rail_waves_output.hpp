@@ -5,6 +5,7 @@
 // support at its static stiffness). Written only for track.model = "waveguide".
 #pragma once
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "io/hdf5_writer.hpp"
 

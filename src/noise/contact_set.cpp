@@ -7,6 +7,7 @@
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
+#include "dynamics/rail_model.hpp"
 
 namespace rollnoise::noise {
 namespace {

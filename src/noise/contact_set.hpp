@@ -53,6 +53,7 @@
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "noise/loop.hpp"

@@ -9,6 +9,7 @@
 #include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/rail_model.hpp"
 
 namespace rollnoise::noise {
 

@@ -36,6 +36,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "noise/bands.hpp"
 #include "noise/contact_set.hpp"
 #include "noise/loop.hpp"

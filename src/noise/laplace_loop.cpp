@@ -9,6 +9,7 @@
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise/stability.hpp"
 
 namespace rollnoise::noise {

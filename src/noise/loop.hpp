@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "dynamics/rail_contact.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/receptance.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"

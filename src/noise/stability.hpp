@@ -73,6 +73,7 @@
 #include <utility>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "noise/contact_receptance.hpp"

@@ -6,6 +6,7 @@
 
 #include "core/assert.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise/band_refinement.hpp"
 #include "noise/wheel_contact.hpp"
 #include "pipeline/limits.hpp"

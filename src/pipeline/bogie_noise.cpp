@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise/flange_patch.hpp"
 
 namespace rollnoise::pipeline {

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "noise/bands.hpp"
 #include "noise/contact_set_loop.hpp"
 #include "noise/loop_variants.hpp"

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "noise/roughness.hpp"

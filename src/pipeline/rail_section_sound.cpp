@@ -11,6 +11,7 @@
 #include "acoustics/bem2d.hpp"
 #include "core/constants.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/rail_model.hpp"
 #include "linalg/gauss_legendre.hpp"
 #include "pipeline/sound_radiation.hpp"
 

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "acoustics/fluid.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_surface_spectrum.hpp"
 #include "dynamics/track.hpp"
 

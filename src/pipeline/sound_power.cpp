@@ -11,6 +11,7 @@
 #include "acoustics/piston.hpp"
 #include "core/constants.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "linalg/gauss_legendre.hpp"
 #include "noise/bands.hpp"

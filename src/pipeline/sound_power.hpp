@@ -52,6 +52,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/wheel_fe_contact.hpp"
 #include "noise/contact_set_loop.hpp"
 #include "pipeline/rail_section_sound.hpp"

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise/flange_patch.hpp"
 #include "pipeline/bogie_noise.hpp"
 #include "pipeline/squeal_hertz_wheels.hpp"

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "linalg/toeplitz_solve.hpp"
 #include "support/test_helpers.hpp"
 
@@ -375,7 +376,8 @@ TEST(DiscreteTrack, ToeplitzSolveRefusesWhatLevinsonCannotSolve) {
 TEST(RailModel, ReceptanceIsSymmetricAndPassive) {
   const rd::TrackParameters t = rd::uic60_ballasted();
   for (auto support : {rd::TrackSupport::kDiscrete, rd::TrackSupport::kContinuous}) {
-    const rd::RailModel rail(t, support, 0.17);  // an unsymmetric position: cross terms non-zero
+    const rd::BeamRailModel rail(t, support,
+                                 0.17);  // an unsymmetric position: cross terms non-zero
     for (double f : {50.0, 400.0, 1070.0, 4000.0}) {
       const rd::Receptance4 R = rail.receptance(f);
       EXPECT_LT((R - R.transpose()).norm(), 1e-12 * R.norm());
@@ -389,14 +391,14 @@ TEST(RailModel, ReceptanceIsSymmetricAndPassive) {
     }
   }
   // The vertical entry is the discrete model's point receptance.
-  const rd::RailModel over(t, rd::TrackSupport::kDiscrete, 0.0);
+  const rd::BeamRailModel over(t, rd::TrackSupport::kDiscrete, 0.0);
   const rd::DiscretelySupportedRail v(t.vertical, t.vertical_support, t.sleeper_spacing,
                                       t.supports_each_side);
   EXPECT_LT(std::abs(over.receptance(700.0)(rd::kZ, rd::kZ) - v.point(700.0, 0.0)(0, 0)), 1e-14);
 }
 
 TEST(RailModel, NonPositiveFrequencyIsInputError) {
-  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
   for (double f : {0.0, -10.0, std::nan("")}) {
     try {
       rail.receptance(f);

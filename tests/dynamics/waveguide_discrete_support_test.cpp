@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
@@ -162,7 +163,7 @@ TEST(DiscreteWaveguide, SupportsDifferenceEqualsTheBeamsWithTheHeadLoads) {
   const rd::TrackParameters t = track_with(20);
   const rd::DiscreteWaveguideRailModel discrete(t, coarse(), 0.0);
   const rd::WaveguideRailModel continuous(rd::uic60_ballasted(), coarse());
-  const rd::RailModel over(t, rd::TrackSupport::kDiscrete, 0.0),
+  const rd::BeamRailModel over(t, rd::TrackSupport::kDiscrete, 0.0),
       mid(t, rd::TrackSupport::kDiscrete, 0.3), smeared(t, rd::TrackSupport::kContinuous, 0.0);
   for (double f : {50.0, 200.0, 2000.0, 2500.0, 3000.0}) {
     const double wg = 0.5 * (db(vertical(discrete, f, 0.0)) + db(vertical(discrete, f, 0.3))) -

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/rail_waveguide.hpp"
 #include "dynamics/track.hpp"
@@ -132,7 +133,7 @@ TEST(WaveguideRailModel, ReciprocalPassiveAndContinuedToComplexFrequency) {
   rd::WaveguideRailOptions o;
   o.mesh_size = 0.04;
   const rd::WaveguideRailModel rail(t, o);
-  const rd::RailModel beam(t, rd::TrackSupport::kContinuous, 0.0);
+  const rd::BeamRailModel beam(t, rd::TrackSupport::kContinuous, 0.0);
   for (double f : {200.0, 2000.0}) {
     const rd::Receptance4 R = rail.receptance(f);
     EXPECT_LT((R - R.transpose()).norm(), 1e-8 * R.norm()) << "f = " << f;
@@ -271,11 +272,11 @@ TEST(WaveguideAndBeam, WaveguideAndBeamAgreeForACentredVerticalLoadBelowCutOn) {
   former.head_load = false;
   former.seat_length = 0.0;
   const rd::WaveguideRailModel continuous(t, o);
-  const rd::RailModel beam_continuous(t, rd::TrackSupport::kContinuous, 0.0);
+  const rd::BeamRailModel beam_continuous(t, rd::TrackSupport::kContinuous, 0.0);
   double worst[3] = {0.0, 0.0, 0.0};  // continuous, mid-span, over a sleeper
   for (double x : {0.3, 0.0}) {
     const rd::DiscreteWaveguideRailModel discrete(t, o, x);
-    const rd::RailModel beam(t, rd::TrackSupport::kDiscrete, x);
+    const rd::BeamRailModel beam(t, rd::TrackSupport::kDiscrete, x);
     for (int i = 0; i <= 14; ++i) {
       const double f = 100.0 * std::pow(2.0, i / 6.0);
       const double d =
@@ -300,7 +301,7 @@ TEST(WaveguideAndBeam, WaveguideAndBeamAgreeForACentredVerticalLoadBelowCutOn) {
                           db(beam_continuous.receptance(f)(rd::kZ, rd::kZ));
   const double d_former =
       db(rd::DiscreteWaveguideRailModel(t, former, 0.3).receptance(f)(rd::kZ, rd::kZ)) -
-      db(rd::RailModel(t, rd::TrackSupport::kDiscrete, 0.3).receptance(f)(rd::kZ, rd::kZ));
+      db(rd::BeamRailModel(t, rd::TrackSupport::kDiscrete, 0.3).receptance(f)(rd::kZ, rd::kZ));
   std::printf("  former loads at 315 Hz: continuous %+.2f dB, discrete (mid-span) %+.2f dB\n",
               c_former, d_former);
   EXPECT_GT(c_former, 2.0);

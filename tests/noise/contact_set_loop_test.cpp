@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "noise/contact_set.hpp"
 #include "noise_fixture.hpp"
 
@@ -66,7 +67,7 @@ rd::TrackParameters short_track() {
 TEST(ContactSetLoop, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
   const std::vector<double> f = log_frequencies(60.0, 4500.0, 14);
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   const rn::ContactSetStructures s =
       rn::contact_set_structures(wheel(), rail, cs, f, rn::CrossCoupling::none());
   const auto alpha = contacts_alpha(f, cs.size());
@@ -75,7 +76,7 @@ TEST(ContactSetLoop, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
   ASSERT_EQ(r.sources(), 5);
   double worst = 0.0, worst_cross = 0.0;
   for (std::size_t a = 0; a < cs.size(); ++a) {
-    const rd::RailModel single_rail(short_track(), rd::TrackSupport::kDiscrete, cs[a].rail_x);
+    const rd::BeamRailModel single_rail(short_track(), rd::TrackSupport::kDiscrete, cs[a].rail_x);
     const rn::StructuralReceptances one =
         rn::structural_receptances(wheel(), single_rail, cs[a].position, f);
     const rn::LoopResult ref = rn::solve_loop(one, alpha[a]);
@@ -107,7 +108,7 @@ TEST(ContactSetLoop, WithoutCrossTermsEachContactIsTheSingleContactLoop) {
 TEST(ContactSetLoop, VelocitiesInTheStructuresDirectionsCloseTheContactLaw) {
   const std::vector<double> f = log_frequencies(80.0, 4000.0, 9);
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   const rn::ContactSetStructures s = rn::contact_set_structures(wheel(), rail, cs, f);
   const auto alpha = contacts_alpha(f, cs.size());
   const rn::ContactSetLoopResult r =
@@ -142,9 +143,10 @@ TEST(ContactSetLoop, VelocitiesInTheStructuresDirectionsCloseTheContactLaw) {
 // and the transfer is reciprocal, H(a, b) = H(b, a)^T (1e-12), for both supports.
 TEST(ContactSetReceptance, RailCentreLineTransferIsReciprocalAndContainsThePointReceptance) {
   for (const rd::TrackSupport sup : {rd::TrackSupport::kDiscrete, rd::TrackSupport::kContinuous}) {
-    const rd::RailModel rail(rd::uic60_ballasted(), sup, 0.3);
+    const rd::BeamRailModel rail(rd::uic60_ballasted(), sup, 0.3);
     for (double f : {150.0, 1100.0, 3700.0}) {
-      const rd::Receptance4 point = rd::RailModel(rd::uic60_ballasted(), sup, 0.3).receptance(f);
+      const rd::Receptance4 point =
+          rd::BeamRailModel(rd::uic60_ballasted(), sup, 0.3).receptance(f);
       EXPECT_LE((rail.line_transfer(f, 0.3, 0.3) - point).norm(), 1e-14 * point.norm()) << f;
       const rd::Receptance4 ab = rail.line_transfer(f, 0.3, 2.8), ba = rail.line_transfer(f, 2.8, 0.3);
       EXPECT_LE((ab - ba.transpose()).norm(), 1e-12 * ab.norm()) << f;
@@ -162,7 +164,7 @@ TEST(ContactSetReceptance, RailCentreLineTransferIsReciprocalAndContainsThePoint
 // eigenvalue); the total with Kalker's contacts (g = 0) passive as well.
 TEST(ContactSetReceptance, AssembledBogieReceptanceIsReciprocalAndPassive) {
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   for (double f : {80.0, 340.0, 1010.0, 2460.0, 4200.0}) {
     const rn::ContactSetReceptance r = rn::contact_set_receptance(wheel(), rail, cs, f);
     EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-12 * r.wheel.norm()) << f;
@@ -191,7 +193,7 @@ TEST(ContactSetLoop, SymmetricWheelsetGivesEqualLevelsOnBothSides) {
   const std::vector<double> f = rn::band_frequencies(centres, 6);
   const std::vector<rn::ContactPoint> cs{point(0, 1, 0.0, 3.25e-3, 0.02428, 0.3),
                                          point(0, -1, 0.0, 3.25e-3, 0.02428, 0.3)};
-  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
+  const rd::BeamRailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   const rn::ContactSetStructures s = rn::contact_set_structures(wheel(), rail, cs, f);
   std::vector<std::vector<rn::Receptance4>> alpha(2);
   for (double fk : f)
@@ -226,7 +228,7 @@ TEST(ContactSetLoop, SymmetricWheelsetGivesEqualLevelsOnBothSides) {
 }
 
 TEST(ContactSetLoop, BadInputNamesTheKey) {
-  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
+  const rd::BeamRailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   auto key = [](auto fn) {
     try {
       fn();
@@ -331,7 +333,7 @@ TEST(ContactSetLoop, RailTransferToTheOtherAxleAndRigidWheelsetChangeBandLevels)
   const std::vector<rn::ContactPoint> cs{
       point(0, 1, 0.0, 3.25e-3, 0.02428, 0.3), point(0, -1, 0.0, 3.25e-3, 0.02428, 0.3),
       point(1, 1, 0.0, 3.25e-3, 0.02428, 2.8), point(1, -1, 0.0, 3.25e-3, 0.02428, 2.8)};
-  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
   const rn::ContactSetStructures all = rn::contact_set_structures(wheel(), rail, cs, f);
   std::vector<std::vector<rn::Receptance4>> alpha(cs.size());
   const rn::CreepFunction creep = spring_creep();
@@ -381,7 +383,7 @@ TEST(ContactSetLoop, ThreadsGiveTheSerialResultToTheBit) {
   std::vector<double> f;
   for (int k = 0; k < 300; ++k) f.push_back(80.0 * std::pow(1.012, k));
   const std::vector<rn::ContactPoint> cs = bogie_contacts();
-  const rd::RailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
+  const rd::BeamRailModel rail(short_track(), rd::TrackSupport::kDiscrete, 0.3);
   const auto alpha = contacts_alpha(f, cs.size());
   const Eigen::MatrixXd rho = rn::independent_sources({true, true, true, true, false});
   const rn::ContactSetStructures s1 = rn::contact_set_structures(wheel(), rail, cs, f, {}, 1);

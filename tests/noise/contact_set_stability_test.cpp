@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "dynamics/beam_rail_model.hpp"
 #include "noise/contact_transfer.hpp"
 #include "noise/stability.hpp"
 #include "noise_fixture.hpp"
@@ -48,7 +49,7 @@ struct Wheelset {
       rn::ConstantTransfer::kalker(kA, kB, material().shear_modulus(), material().nu);
   std::vector<rn::ContactPoint> points{wheelset_point(1, -8e-3, -6e-3, 0.35),
                                        wheelset_point(-1, 2e-3, 3e-3, 0.03)};
-  rd::RailModel rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3};
+  rd::BeamRailModel rail{rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3};
   std::vector<rn::SquealContact> contacts() const {
     std::vector<rn::SquealContact> c;
     for (const rn::ContactPoint& p : points) c.push_back({p, &kalker, hertz().normal_stiffness()});
@@ -73,7 +74,7 @@ TEST(ContactSetSqueal, UncoupledWheelsHaveTheSingleContactRoots) {
       rn::laplace_loop(wheel(), w.rail, w.contacts(), kSpeed, false, rn::CrossCoupling::none());
   ASSERT_EQ(loop.wheels.size(), 2u);
   const std::vector<rn::ModeRoot> roots = rn::mode_roots(loop, w.options());
-  const rd::RailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
+  const rd::BeamRailModel rail(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.3);
   int compared = 0;
   for (int side = 0; side < 2; ++side) {
     const std::vector<rn::ModeRoot> ref =

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise/bands.hpp"
 #include "noise/roughness.hpp"
 #include "noise_fixture.hpp"

@@ -10,6 +10,7 @@
 
 #include "contact/hertz.hpp"
 #include "contact/material.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/wheel.hpp"
 #include "io/wheel_file.hpp"
@@ -38,12 +39,12 @@ inline const rd::WheelModel& wheel() {
 }
 
 inline const rd::RailModel& rail_continuous() {
-  static const rd::RailModel r(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.0);
+  static const rd::BeamRailModel r(rd::uic60_ballasted(), rd::TrackSupport::kContinuous, 0.0);
   return r;
 }
 
 inline const rd::RailModel& rail_midspan() {
-  static const rd::RailModel r(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
+  static const rd::BeamRailModel r(rd::uic60_ballasted(), rd::TrackSupport::kDiscrete, 0.3);
   return r;
 }
 

@@ -1,15 +1,16 @@
 // Stability of the closed loop (noise/stability.hpp, docs/squeal.md): route 2 against direct
 // eigenproblems of small systems whose eigenvalues are known independently, route 1 on an exactly
 // rational system, the contact's Markov series at complex s, and the continuation's choice of root.
+#include "noise/stability.hpp"
+
 #include <gtest/gtest.h>
 
-#include <limits>
-
 #include <Eigen/Eigenvalues>
+#include <limits>
 #include <random>
 
 #include "core/errors.hpp"
-#include "noise/stability.hpp"
+#include "dynamics/rail_model.hpp"
 #include "noise_fixture.hpp"
 
 namespace {

@@ -10,6 +10,7 @@
 #include <complex>
 #include <vector>
 
+#include "dynamics/rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"

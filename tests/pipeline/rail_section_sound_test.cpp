@@ -11,6 +11,7 @@
 
 #include "acoustics/bem2d.hpp"
 #include "core/constants.hpp"
+#include "dynamics/rail_model.hpp"
 #include "dynamics/rail_section.hpp"
 #include "dynamics/waveguide_discrete_support.hpp"
 #include "dynamics/waveguide_rail_model.hpp"

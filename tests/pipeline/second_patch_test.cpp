@@ -10,6 +10,7 @@
 
 #include "../noise/noise_fixture.hpp"
 #include "core/errors.hpp"
+#include "dynamics/rail_model.hpp"
 #include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
 #include "pipeline/bogie_noise.hpp"

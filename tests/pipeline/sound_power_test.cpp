@@ -10,6 +10,7 @@
 
 #include "acoustics/a_weighting.hpp"
 #include "core/constants.hpp"
+#include "dynamics/beam_rail_model.hpp"
 #include "dynamics/track.hpp"
 #include "io/case_reader.hpp"
 #include "io/noise_case.hpp"
@@ -53,7 +54,7 @@ double closed_form_square_integral(const dynamics::BeamSection& beam, const dyna
 // with contact angle 0, so that G_z(0, 0) is Int |w/F|^2 dx.
 TEST(SoundPower, RailIntegralAlongXMatchesTheContinuousBeamsClosedForm) {
   const dynamics::TrackParameters track = dynamics::uic60_ballasted();
-  const dynamics::RailModel rail(track, dynamics::TrackSupport::kContinuous, 0.3);
+  const dynamics::BeamRailModel rail(track, dynamics::TrackSupport::kContinuous, 0.3);
   noise::ContactPoint c;
   c.rail_x = 0.3;
   const std::vector<double> grid = {100, 250, 500, 1000, 2000, 3500, 5000};
