@@ -127,8 +127,21 @@ Eigen::Vector2d outline_contact_point(const std::vector<Eigen::Vector2d>& outlin
     top.push_back({a, b, std::atan2(-normal.x(), normal.y())});
   }
   if (top.empty()) throw InputError("rail_section", "the rail outline has no head above it");
-  // Candidates: a point of an edge (the one nearest y = offset_y), cost |gamma - gamma_e|; a
-  // vertex shared by two consecutive edges whose normals bracket gamma, cost 0.
+  // 1. The contact's own lateral offset, where the head's top spans it: the point of the top at
+  //    y = offset_y (the highest, should two edges span it). The profiles placed the contact
+  //    there; the outline is a coarser polyline of the same section, whose normals jump from edge
+  //    to edge, so its normal would move the point to a vertex up to half an edge away.
+  double best_z = -INFINITY;
+  for (const Edge& e : top) {
+    const double dy = e.b.x() - e.a.x();
+    if (dy == 0.0 || (e.a.x() - offset_y) * (e.b.x() - offset_y) > 0.0) continue;
+    best_z = std::max(best_z, e.a.y() + (offset_y - e.a.x()) / dy * (e.b.y() - e.a.y()));
+  }
+  if (std::isfinite(best_z)) return {offset_y, best_z};
+  // 2. Off the top (a gauge-face or flange-root offset beyond the outline's head): where the
+  //    outline's outward normal is the contact normal (the contact condition). Candidates: a
+  //    point of an edge (the one nearest y = offset_y), cost |gamma - gamma_e|; a vertex shared by
+  //    two consecutive edges whose normals bracket gamma, cost 0.
   double best_cost = INFINITY, best_distance = INFINITY;
   Eigen::Vector2d best(0.0, 0.0);
   auto consider = [&](const Eigen::Vector2d& p, double cost) {

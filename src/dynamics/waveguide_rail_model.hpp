@@ -266,8 +266,10 @@ class WaveguideOnGrid final : public RailModel {
   std::vector<double> grid_;
 };
 
-/// The point of a counter-clockwise outline (y, z) (m) whose outward normal is
-/// (-sin contact_angle, cos contact_angle), on the head's top (z >= head_bottom); see above.
+/// Where a contact at lateral offset `offset_y` (m, the rail profile's coordinate) with the
+/// contact angle `contact_angle` (rad) loads a counter-clockwise outline (y, z) (m): the head's
+/// top (z >= head_bottom) at y = offset_y where the top spans it; beyond it (a gauge-face
+/// offset), the point whose outward normal is (-sin contact_angle, cos contact_angle).
 Eigen::Vector2d outline_contact_point(const std::vector<Eigen::Vector2d>& outline,
                                       double head_bottom, double offset_y, double contact_angle);
 

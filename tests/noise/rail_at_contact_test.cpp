@@ -56,22 +56,28 @@ void expect_reciprocal_and_passive(const rd::Receptance4& R, const char* what) {
 
 }  // namespace
 
-// The contact lands where the outline's outward normal is the contact normal: at 0.524 rad on the
-// UIC60 polyline the vertex (-33, 166.5) mm between the edges of normal angle 0.49 and 1.23 rad
-// (the gauge corner), at 0.3 rad the vertex (-25, 170.8) mm, mirrored for -0.3 rad, and a centred
-// contact on the crown (0, 172) mm; exact to round-off (the vertices are the outline's).
-TEST(RailContactPoint, OutlineNormalEqualsTheContactNormal) {
+// The contact lands at its own lateral offset on the head's top, where the top spans it: the
+// crown contact (0, 0) on the crown (0, 172) mm, `tangent.toml`'s (-7.3 mm, 0.024 rad) at
+// z = 172 - 7.3/12 x 0.2 mm on the crown's edge (not the -12 mm vertex its normal would pick), a
+// 0.3 rad contact at -20 mm on the edge from (-12, 171.8) to (-25, 170.8) mm, mirrored at +20 mm.
+// Beyond the top (the 300 m curve's flange-root contact at -36.6 mm, 0.524 rad; the outline's
+// head is 72 mm wide) where the outline's normal is the contact normal: the gauge-corner vertex
+// (-33, 166.5) mm between the edges of normal angle 0.49 and 1.23 rad. Exact to round-off.
+TEST(RailContactPoint, AtTheContactsOffsetOnTheHeadElseWhereTheNormalsCoincide) {
   const std::vector<Eigen::Vector2d> outline = rd::uic60_outline();
   auto at = [&](double offset, double angle) {
     return rd::outline_contact_point(outline, rd::kUic60HeadBottom, offset, angle);
   };
-  EXPECT_LT((at(-0.0366, 0.524) - Eigen::Vector2d(-0.033, 0.1665)).norm(), 1e-12);
-  EXPECT_LT((at(-0.02, 0.3) - Eigen::Vector2d(-0.025, 0.1708)).norm(), 1e-12);
-  EXPECT_LT((at(0.02, -0.3) - Eigen::Vector2d(0.025, 0.1708)).norm(), 1e-12);
   EXPECT_LT((at(0.0, 0.0) - Eigen::Vector2d(0.0, 0.172)).norm(), 1e-12);
-  // on an edge (normal angle 0.49 rad on the gauge side), the point nearest the offset
-  const double edge_angle = std::atan2(4.3, 8.0);
-  EXPECT_LT((at(-0.029, edge_angle) - Eigen::Vector2d(-0.029, 0.16865)).norm(), 1e-9);
+  EXPECT_LT((at(-0.0073, 0.024) - Eigen::Vector2d(-0.0073, 0.172 - 0.0073 / 0.012 * 0.0002)).norm(),
+            1e-12);
+  EXPECT_LT((at(-0.02, 0.3) - Eigen::Vector2d(-0.02, 0.1718 - 8.0 / 13.0 * 0.001)).norm(), 1e-12);
+  EXPECT_LT((at(0.02, -0.3) - Eigen::Vector2d(0.02, 0.1718 - 8.0 / 13.0 * 0.001)).norm(), 1e-12);
+  EXPECT_LT((at(-0.0366, 0.524) - Eigen::Vector2d(-0.033, 0.1665)).norm(), 1e-12);
+  // the normal no longer moves a point the top spans: -29 mm on the 0.49 rad edge whatever the
+  // angle
+  for (double angle : {std::atan2(4.3, 8.0), 0.0, 1.0})
+    EXPECT_LT((at(-0.029, angle) - Eigen::Vector2d(-0.029, 0.16865)).norm(), 1e-9);
 }
 
 // The cubic Hermite interpolation in ln f of single-degree-of-freedom receptances
