@@ -131,6 +131,10 @@ void print_sound(const pipeline::NoiseResult& r) {
   std::printf("  sound power, dB(A) re 1 pW (%.0f Hz - %.0f Hz; sound stage %.2f s)%s:\n",
               noise::nominal_centre(s.centre.front()), noise::nominal_centre(s.centre.back()), s.seconds,
               s.wheel_note.empty() ? "" : "; the wheel's column empty (see below)");
+  const pipeline::SoundResult::Parts& t = s.parts;
+  std::printf("    (stage: radiation tables %.2f s, rails along the line %.2f s, rails' sections %.2f s, "
+              "lines %.2f s, decay rates %.2f s)\n",
+              t.tables, t.rail_line, t.rail_section, t.lines, t.decay);
   line(r.wheels.size() > 1 ? "all wheels" : "the wheel", s.power_a);
   for (std::size_t i = 0; r.wheels.size() > 1 && i < s.contact_power_a.size(); ++i)
     line(noise::wheel_name(r.wheels[i].wheel), s.contact_power_a[i]);

@@ -77,16 +77,35 @@ SurfaceSpectrum spectrum_of(SpectrumTerms terms) {
   SurfaceSpectrum out;
   out.columns = static_cast<int>(terms.load.plus.cols());
   out.wavenumbers = terms.wavenumbers;
+  // the seats' forces as seats x (4 c): row n holds K v_n of every column (r + 4 b), so that
+  // Eq. (D4)'s sums over the seats at all wavenumbers of a call are one matrix product
+  const Eigen::Index c = terms.load.plus.cols();
+  const Eigen::Index seats = terms.seat_forces.rows() / 4;
+  auto by_seat = std::make_shared<Eigen::MatrixXcd>(seats, 4 * c);
+  for (Eigen::Index n = 0; n < seats; ++n)
+    for (Eigen::Index b = 0; b < c; ++b)
+      by_seat->block(n, 4 * b, 1, 4) = terms.seat_forces.block(4 * n, b, 4, 1).transpose();
   auto t = std::make_shared<const SpectrumTerms>(std::move(terms));
   // the response side transposed once: pieces x waves
   auto rp = std::make_shared<const Eigen::MatrixXcd>(t->response.plus.transpose());
   auto rm = std::make_shared<const Eigen::MatrixXcd>(t->response.minus.transpose());
-  out.at = [t, rp, rm](const std::vector<double>& kappas) {
+  out.at = [t, rp, rm, by_seat, c, seats](const std::vector<double>& kappas) {
     const cdouble I(0.0, 1.0);
-    const Eigen::Index m = t->wavenumbers.size(), c = t->load.plus.cols();
+    const Eigen::Index m = t->wavenumbers.size();
     const Eigen::Index nq = static_cast<Eigen::Index>(kappas.size());
-    const bool discrete = t->seat_forces.size() > 0;
-    const Eigen::Index seats = discrete ? t->seat_forces.rows() / 4 : 0;
+    const bool discrete = seats > 0;
+    // Eq. (D4): S(kappa) = Sum_n K v_n e^{i kappa x_n}, x_n = first + n L per column:
+    // e^{i kappa first} (E W)(kappa), E_qn = e^{i kappa_q n L}
+    Eigen::MatrixXcd sums;
+    if (discrete) {
+      Eigen::MatrixXcd E(nq, seats);
+      for (Eigen::Index q = 0; q < nq; ++q) {
+        const cdouble step = std::exp(I * kappas[static_cast<std::size_t>(q)] * t->spacing);
+        cdouble z = 1.0;
+        for (Eigen::Index n = 0; n < seats; ++n, z *= step) E(q, n) = z;
+      }
+      sums = E * (*by_seat);
+    }
     Eigen::MatrixXcd xp(m, c * nq), xm(m, c * nq);
     for (Eigen::Index q = 0; q < nq; ++q) {
       const double kappa = kappas[static_cast<std::size_t>(q)];
@@ -96,14 +115,10 @@ SurfaceSpectrum spectrum_of(SpectrumTerms terms) {
       Eigen::MatrixXcd lp = t->load.minus * phase.asDiagonal();
       Eigen::MatrixXcd lm = t->load.plus * phase.asDiagonal();
       if (discrete) {
-        // Eq. (D4): S(kappa) = Sum_n K v_n e^{i kappa x_n}, x_n = first + n L per column
-        Eigen::MatrixXcd S = Eigen::MatrixXcd::Zero(4, c);
-        const cdouble step = std::exp(I * kappa * t->spacing);
-        for (Eigen::Index b = 0; b < c; ++b) {
-          cdouble z = std::exp(I * kappa * t->first_seat_x[static_cast<std::size_t>(b)]);
-          for (Eigen::Index n = 0; n < seats; ++n, z *= step)
-            S.col(b) += z * t->seat_forces.block(4 * n, b, 4, 1);
-        }
+        Eigen::MatrixXcd S(4, c);
+        for (Eigen::Index b = 0; b < c; ++b)
+          S.col(b) = std::exp(I * kappa * t->first_seat_x[static_cast<std::size_t>(b)]) *
+                     sums.block(q, 4 * b, 1, 4).transpose();
         if (t->seat_length > 0.0 && kappa != 0.0)  // spread over l: times sin(kl/2) / (kl/2)
           S *= std::sin(0.5 * kappa * t->seat_length) / (0.5 * kappa * t->seat_length);
         lp -= t->foot.minus * S;

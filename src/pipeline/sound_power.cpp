@@ -618,6 +618,11 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
                         const std::vector<double>& centres, const dynamics::RailModel& rail,
                         const SoundCase& sound, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
+  auto lap = [t = t0](double& part) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    part = std::chrono::duration<double>(now - t).count();
+    t = now;
+  };
   SoundResult r;
   r.centre = centres;
   SoundSetup s;
@@ -632,15 +637,20 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
                ? sound.rail_table(s.grid)
                : std::make_shared<const RailRadiation>(rail_radiation(
                      rail_outline(sound), sound.rail_ground, s.grid, sound.fluid, threads));
+  lap(r.parts.tables);
   s.rails = rail_grams(rail, contacts, s.grid, sound, threads);
+  lap(r.parts.rail_line);
   add_rail_radiation(s.rails, rail, contacts, *r.rail, s.grid, sound, threads);
+  lap(r.parts.rail_section);
   if (r.wheel) add_modal_setup(s, *tread, *r.wheel, contacts, wheels, sound);
   for (double fg : s.grid)  // the sleepers' piston efficiency, smooth in f
     s.piston.push_back(acoustics::rectangular_piston_efficiency(
         2 * kPi * fg / sound.fluid.sound_speed, sound.sleeper_length, sound.sleeper_width));
   const LinePowers lp = line_powers(loop, contacts, wheels, s, r, rail, sound, threads);
   add_band_levels(r, lp, loop.frequency, !loop.wheel_velocity.empty(), source_levels);
+  lap(r.parts.lines);
   add_decay_rates(r, rail, s.grid);
+  lap(r.parts.decay);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

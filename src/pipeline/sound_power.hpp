@@ -135,6 +135,12 @@ struct SoundResult {
   /// band (the bound of the radiated power; NaN without the loop's velocities)
   std::vector<double> input_power;
   double seconds = 0.0;  ///< wall time of the stage (s)
+  /// where it went (s): the radiation tables (wheel, rail: cached), the rails' response along the
+  /// line (S2, S3), the rails' section grams (R2; the waveguides), the lines' powers, the decay
+  /// rates
+  struct Parts {
+    double tables = 0.0, rail_line = 0.0, rail_section = 0.0, lines = 0.0, decay = 0.0;
+  } parts;
 };
 
 /// The Gram matrices of one rail's contacts (those of `contacts` on `side`) in their frames
