@@ -118,6 +118,10 @@ def main():
                            j("noise_cmp")], ["noise_cmp_bands.png", "noise_cmp_transfer.png", "noise_cmp_velocity.png",
                                              "noise_cmp_wheels.png", "noise_cmp_sound.png"]),
         ("plot_bench.py", [j("bench.csv"), "-o", j("bench.png")], ["bench.png"]),
+        # roughness files against the EN ISO 3095 limit (no program output needed)
+        ("plot_roughness.py", [os.path.join(ROOT, "models", "roughness", "wheel_cast_iron_block.csv"),
+                               os.path.join(ROOT, "models", "roughness", "wheel_disc_braked.csv"), "--label", "cast iron",
+                               "--label", "disc", "-o", j("roughness.png")], ["roughness.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
         ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
@@ -157,7 +161,7 @@ def main():
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
                                 "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_receptance.py", "plot_bench.py", "plot_study.py",
-                                "plot_modes.py"]
+                                "plot_modes.py", "plot_roughness.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
         status, err = plot(script, bad, *EXTRA_ARGS.get(script, []))
