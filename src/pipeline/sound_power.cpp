@@ -1,7 +1,6 @@
 #include "pipeline/sound_power.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 #include "acoustics/decay_rate.hpp"
 #include "acoustics/piston.hpp"
 #include "core/constants.hpp"
+#include "core/stopwatch.hpp"
 #include "core/task_pool.hpp"
 #include "dynamics/rail_model.hpp"
 #include "dynamics/rail_section.hpp"
@@ -617,11 +617,10 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
                         const std::vector<std::vector<double>>& source_levels,
                         const std::vector<double>& centres, const dynamics::RailModel& rail,
                         const SoundCase& sound, int threads) {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto lap = [t = t0](double& part) mutable {
-    const auto now = std::chrono::steady_clock::now();
-    part = std::chrono::duration<double>(now - t).count();
-    t = now;
+  const Clock::time_point t0 = Clock::now();
+  auto lap = [t = t0](double& part) mutable {  // the part's seconds since the last lap
+    part = seconds_since(t);
+    t = Clock::now();
   };
   SoundResult r;
   r.centre = centres;
@@ -651,7 +650,7 @@ SoundResult sound_power(const noise::ContactSetLoopResult& loop,
   lap(r.parts.lines);
   add_decay_rates(r, rail, s.grid);
   lap(r.parts.decay);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.seconds = seconds_since(t0);
   return r;
 }
 
