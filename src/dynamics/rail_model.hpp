@@ -18,6 +18,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -93,6 +94,26 @@ class RailModel {
                                          const std::vector<OutlinePiece>& pieces,
                                          const Eigen::MatrixXd& patterns) const {
     (void)points, (void)pieces, (void)patterns;
+    return nullptr;
+  }
+
+  /// Loads on the head as combinations of a few load distributions per position along the rail
+  /// (the waveguides: the head as a body, RailWaveguide::head_body, six distributions whatever
+  /// the contact's offset and angle): the section's sound of any contacts at those positions then
+  /// follows from that of the distributions, G = C^T G_D C (pipeline/rail_section_sound.hpp),
+  /// and the distributions' G_D is shared by every contact state on the track. Empty where the
+  /// loads are not such combinations (the beams; the waveguide's patch loads).
+  virtual std::optional<RailLoadBasis> load_basis(const std::vector<RailLoadPoint>& points) const {
+    (void)points;
+    return std::nullopt;
+  }
+  /// The surface spectra (as surface_spectra) of load_basis's distributions at each of `x` (m
+  /// along the rail; RailLoadBasis::per_position columns a position, the positions in order).
+  /// Null where load_basis is empty.
+  virtual SurfaceSpectra basis_surface_spectra(const std::vector<double>& x,
+                                               const std::vector<OutlinePiece>& pieces,
+                                               const Eigen::MatrixXd& patterns) const {
+    (void)x, (void)pieces, (void)patterns;
     return nullptr;
   }
 

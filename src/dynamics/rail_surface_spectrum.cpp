@@ -136,6 +136,23 @@ SurfaceSpectrum spectrum_of(SpectrumTerms terms) {
   return out;
 }
 
+SurfaceSpectrum combined(SurfaceSpectrum basis, Eigen::MatrixXd combination) {
+  if (combination.rows() != basis.columns)
+    throw std::invalid_argument("combined: one row of the combination per column of the basis");
+  SurfaceSpectrum out;
+  out.columns = static_cast<int>(combination.cols());
+  out.wavenumbers = basis.wavenumbers;
+  out.at = [at = std::move(basis.at), C = combination.cast<cdouble>().eval(),
+            b = basis.columns](const std::vector<double>& kappas) {
+    const Eigen::MatrixXcd U = at(kappas);
+    Eigen::MatrixXcd out(U.rows(), C.cols() * static_cast<Eigen::Index>(kappas.size()));
+    for (Eigen::Index q = 0; q < static_cast<Eigen::Index>(kappas.size()); ++q)
+      out.middleCols(q * C.cols(), C.cols()).noalias() = U.middleCols(q * b, b) * C;
+    return out;
+  };
+  return out;
+}
+
 SurfaceSpectrum surface_spectrum(const RailWaveguide& rail, double omega,
                                  const Eigen::MatrixXd& response, const Eigen::MatrixXd& load,
                                  const std::vector<double>& load_x) {

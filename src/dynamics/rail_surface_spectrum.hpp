@@ -53,6 +53,15 @@ struct RailLoadPoint {
   double x = 0.0;
 };
 
+/// Loads at RailLoadPoints as combinations of a model's load distributions (RailModel::load_basis):
+/// the points' columns (4 a point, its frame) = the distributions at the distinct positions `x`
+/// (per_position columns each, side by side) times `combination`.
+struct RailLoadBasis {
+  std::vector<double> x;        ///< the points' distinct positions, ascending (m along the rail)
+  int per_position = 0;         ///< distributions a position
+  Eigen::MatrixXd combination;  ///< (per_position x.size()) x (4 points)
+};
+
 /// The rail's surface spectrum at one frequency: U at the pieces per unit force of each load
 /// column (m^2/N: m of displacement times m of rail, per N).
 struct SurfaceSpectrum {
@@ -95,6 +104,10 @@ struct SpectrumTerms {
   double seat_length = 0.0;  ///< each seat's force spread evenly over it (m): S times sinc
 };
 SurfaceSpectrum spectrum_of(SpectrumTerms terms);
+
+/// The spectrum of loads made of `basis`'s columns: U_points(kappa) = U_basis(kappa) C at every
+/// kappa (U linear in the loads), C = `combination` (basis.columns rows).
+SurfaceSpectrum combined(SurfaceSpectrum basis, Eigen::MatrixXd combination);
 
 /// Eq. (W7) on the free or continuously supported `rail` at angular frequency omega: the
 /// spectrum of `response` (dofs() x pieces) per loads `load` (dofs() x c) at `load_x` (per column).

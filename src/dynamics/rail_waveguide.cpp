@@ -567,6 +567,10 @@ Eigen::MatrixXd RailWaveguide::nodal_loads(const Eigen::VectorXd& weights,
 }
 
 HeadBody RailWaveguide::head_body(double head_bottom) const {
+  return dynamics::head_body(mesh_, head_bottom);
+}
+
+HeadBody head_body(const fem::QuadraticTriangleMesh& mesh, double head_bottom) {
   // The head's rigid motion by least squares over its area A (centroid r_h, s = r - r_h): the
   // mean u; the roll theta = Int (s_y u_z - s_z u_y) dA / J, J = Int |s|^2 dA; u_x's plane
   // a + b . s, b = I_h^{-1} Int s u_x dA. The six distributions are the work-conjugates of
@@ -575,12 +579,12 @@ HeadBody RailWaveguide::head_body(double head_bottom) const {
   double area = 0.0;
   Eigen::Vector2d first(0.0, 0.0);
   Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
-  for (int tri = 0; tri < static_cast<int>(mesh_.triangles.size()); ++tri) {
+  for (int tri = 0; tri < static_cast<int>(mesh.triangles.size()); ++tri) {
     Eigen::Vector2d c(0.0, 0.0);
-    for (int a = 0; a < 3; ++a) c += mesh_.nodes[mesh_.triangles[tri][a]] / 3.0;
+    for (int a = 0; a < 3; ++a) c += mesh.nodes[mesh.triangles[tri][a]] / 3.0;
     if (c.y() < head_bottom) continue;
     head.push_back(tri);
-    for (const SectionPoint& p : section_points(mesh_, tri)) {
+    for (const SectionPoint& p : section_points(mesh, tri)) {
       area += p.weight;
       first += p.weight * p.position;
       second += p.weight * p.position * p.position.transpose();
@@ -592,20 +596,20 @@ HeadBody RailWaveguide::head_body(double head_bottom) const {
   h.centroid = first / area;
   h.inertia = second - area * h.centroid * h.centroid.transpose();
   const double J = h.inertia.trace();
-  h.loads = Eigen::MatrixXd::Zero(dofs(), 6);
+  h.loads = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(mesh.nodes.size()), 6);
   for (int tri : head)
-    for (const SectionPoint& p : section_points(mesh_, tri)) {
+    for (const SectionPoint& p : section_points(mesh, tri)) {
       const Eigen::Vector2d s = p.position - h.centroid;
       for (int b = 0; b < 6; ++b) {
-        const int node = mesh_.triangles[tri][b];
+        const int node = mesh.triangles[tri][b];
         const double w = p.weight * p.shape(b);
-        h.loads(dof(node, 1), 0) += w / area;
-        h.loads(dof(node, 2), 1) += w / area;
-        h.loads(dof(node, 1), 2) -= w * s.y() / J;
-        h.loads(dof(node, 2), 2) += w * s.x() / J;
-        h.loads(dof(node, 0), 3) += w / area;
-        h.loads(dof(node, 0), 4) += w * s.x();
-        h.loads(dof(node, 0), 5) += w * s.y();
+        h.loads(RailWaveguide::dof(node, 1), 0) += w / area;
+        h.loads(RailWaveguide::dof(node, 2), 1) += w / area;
+        h.loads(RailWaveguide::dof(node, 1), 2) -= w * s.y() / J;
+        h.loads(RailWaveguide::dof(node, 2), 2) += w * s.x() / J;
+        h.loads(RailWaveguide::dof(node, 0), 3) += w / area;
+        h.loads(RailWaveguide::dof(node, 0), 4) += w * s.x();
+        h.loads(RailWaveguide::dof(node, 0), 5) += w * s.y();
       }
     }
   return h;

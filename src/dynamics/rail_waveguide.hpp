@@ -154,6 +154,10 @@ struct HeadBody {
   Eigen::Matrix<double, 6, 4> at(const Eigen::Vector2d& point, const Eigen::Vector2d& normal) const;
 };
 
+/// The head body of a section's mesh (RailWaveguide::head_body, which is this on its mesh): the
+/// head the triangles with centroid at z >= head_bottom (m); loads in RailWaveguide's dofs.
+HeadBody head_body(const fem::QuadraticTriangleMesh& mesh, double head_bottom);
+
 /// The checks RailWaveguide's constructor makes of its material and support (InputError naming
 /// the key), for models that build it on first use and check up front.
 void check_rail_inputs(const RailMaterial& material, const std::optional<FootSupport>& support);

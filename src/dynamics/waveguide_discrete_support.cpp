@@ -550,6 +550,7 @@ DiscreteWaveguideRailModel::DiscreteWaveguideRailModel(const TrackParameters& tr
       options_(options),
       parts_(
           [track, options, contact_position] { return build(track, options, contact_position); }),
+      head_([options] { return section_head_body(options); }),
       x_(contact_position) {
   if (!std::isfinite(x_) || x_ < 0.0)
     throw InputError("track.position", "contact position along the rail must be >= 0");
@@ -676,9 +677,42 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
       .front();
 }
 
+std::optional<RailLoadBasis> DiscreteWaveguideRailModel::load_basis(
+    const std::vector<RailLoadPoint>& points) const {
+  const std::vector<Eigen::Vector2d> outline =
+      options_.outline.empty() ? uic60_outline() : options_.outline;
+  return head_load_basis(head_.get(), outline, options_, points);
+}
+
+SurfaceSpectra DiscreteWaveguideRailModel::basis_surface_spectra(
+    const std::vector<double>& x, const std::vector<OutlinePiece>& pieces,
+    const Eigen::MatrixXd& patterns) const {
+  if (!options_.head_load) return nullptr;
+  const Parts& parts = parts_.get();
+  const std::shared_ptr<const HeadStation> head = parts.head;
+  const Eigen::Index c = head->loads.cols();
+  auto response = std::make_shared<const Eigen::MatrixXd>(
+      outline_normal_distributions(parts.section.mesh(), pieces) * patterns);
+  auto load = std::make_shared<Eigen::MatrixXd>(head->loads.rows(), c * Eigen::Index(x.size()));
+  std::vector<double> load_x;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    load->middleCols(c * Eigen::Index(i), c) = head->loads;
+    load_x.insert(load_x.end(), static_cast<std::size_t>(c), x[i]);
+  }
+  return [head, response, load, load_x](double frequency) {
+    return head->rail.surface_spectrum(angular(frequency), *response, *load, load_x);
+  };
+}
+
 SurfaceSpectra DiscreteWaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
                                                            const std::vector<OutlinePiece>& pieces,
                                                            const Eigen::MatrixXd& patterns) const {
+  if (std::optional<RailLoadBasis> basis = load_basis(points)) {
+    SurfaceSpectra spectra = basis_surface_spectra(basis->x, pieces, patterns);
+    return [spectra, C = std::move(basis->combination)](double frequency) {
+      return combined(spectra(frequency), C);
+    };
+  }
   const LoadPointColumns at = load_point_columns(points);
   const std::shared_ptr<const Station> st = station(at.distinct);
   auto response = std::make_shared<const Eigen::MatrixXd>(

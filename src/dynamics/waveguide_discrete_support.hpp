@@ -164,6 +164,11 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
                                  const std::vector<OutlinePiece>& pieces,
                                  const Eigen::MatrixXd& patterns) const override;
+  /// With head loads: the head's six distributions on the head's model (HeadStation).
+  std::optional<RailLoadBasis> load_basis(const std::vector<RailLoadPoint>& points) const override;
+  SurfaceSpectra basis_surface_spectra(const std::vector<double>& x,
+                                       const std::vector<OutlinePiece>& pieces,
+                                       const Eigen::MatrixXd& patterns) const override;
 
   const DiscretelySupportedWaveguide& rail() const { return *parts_.get().rail; }
   const Eigen::MatrixXd& crown_loads() const { return parts_.get().crown; }
@@ -200,6 +205,7 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   // Built on first use (shared by copies): a run whose samplings all come from the archive
   // meshes and solves nothing.
   Lazy<Parts> parts_;
+  Lazy<HeadBody> head_;  // section_head_body
   double x_;
   // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set of
   // coupled points (rail_point_sets), each pair at its own positions between the sleepers.

@@ -35,6 +35,19 @@ RailMaterial rail_material(const TrackParameters& track, double poisson_ratio) {
 
 namespace {
 
+// Where a contact at (offset_y, contact_angle) loads the outline (outline_contact_point) and the
+// rail's outward normal there, (-sin gamma, cos gamma) (noise::contact_frame).
+std::pair<Eigen::Vector2d, Eigen::Vector2d> contact_point_and_normal(
+    const std::vector<Eigen::Vector2d>& outline, const WaveguideRailOptions& options,
+    double offset_y, double angle) {
+  if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
+    throw NumericalError(
+        "waveguide rail: a contact needs a finite offset and |angle| < pi/2, got " +
+        std::to_string(offset_y) + " m, " + std::to_string(angle) + " rad");
+  return {outline_contact_point(outline, options.head_bottom, offset_y, angle),
+          Eigen::Vector2d(-std::sin(angle), std::cos(angle))};
+}
+
 FootSupport foot_support(const TrackParameters& track) {
   return FootSupport{track.vertical_support, track.lateral_support, track.longitudinal_support,
                      track.sleeper_spacing};
@@ -83,7 +96,8 @@ WaveguideRailModel::WaveguideRailModel(const TrackParameters& track,
         Eigen::MatrixXd loads =
             contact_loads_at(s.full, options, crown_of(s.full.mesh()), Eigen::Vector2d(0.0, 1.0));
         return Station{s.full.reduced(options.contact_reduction, loads, s.modes), std::move(loads)};
-      }) {
+      }),
+      head_([options] { return section_head_body(options); }) {
   check_waveguide_inputs(track, options);
 }
 
@@ -537,15 +551,9 @@ Eigen::MatrixXd contact_point_loads(const RailWaveguide& section,
                                     const std::vector<std::pair<double, double>>& points) {
   Eigen::MatrixXd loads(section.dofs(), 4 * static_cast<int>(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto [offset_y, angle] = points[i];
-    if (!std::isfinite(offset_y) || !std::isfinite(angle) || !(std::abs(angle) < 0.5 * M_PI))
-      throw NumericalError(
-          "waveguide rail: a contact needs a finite offset and |angle| < pi/2, got " +
-          std::to_string(offset_y) + " m, " + std::to_string(angle) + " rad");
-    const Eigen::Vector2d normal(-std::sin(angle), std::cos(angle));  // noise::contact_frame
-    loads.middleCols(4 * i, 4) = contact_loads_at(
-        section, options, outline_contact_point(outline, options.head_bottom, offset_y, angle),
-        normal);
+    const auto [point, normal] =
+        contact_point_and_normal(outline, options, points[i].first, points[i].second);
+    loads.middleCols(4 * i, 4) = contact_loads_at(section, options, point, normal);
   }
   return loads;
 }
@@ -570,9 +578,70 @@ Eigen::MatrixXd LoadPointColumns::columns(const Eigen::MatrixXd& distinct_loads)
   return out;
 }
 
+HeadBody section_head_body(const WaveguideRailOptions& options) {
+  const std::vector<Eigen::Vector2d> outline =
+      options.outline.empty() ? uic60_outline() : options.outline;
+  return head_body(fem::mesh_polygon(outline, options.mesh_size), options.head_bottom);
+}
+
+std::optional<RailLoadBasis> head_load_basis(const HeadBody& head,
+                                             const std::vector<Eigen::Vector2d>& outline,
+                                             const WaveguideRailOptions& options,
+                                             const std::vector<RailLoadPoint>& points) {
+  if (!options.head_load) return std::nullopt;
+  RailLoadBasis out;
+  out.per_position = static_cast<int>(head.loads.cols());
+  for (const RailLoadPoint& p : points) out.x.push_back(p.x);
+  std::sort(out.x.begin(), out.x.end());  // the same basis for the same positions, in any order
+  out.x.erase(std::unique(out.x.begin(), out.x.end()), out.x.end());
+  out.combination = Eigen::MatrixXd::Zero(out.per_position * Eigen::Index(out.x.size()),
+                                          4 * Eigen::Index(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const RailLoadPoint& p = points[i];
+    const auto [point, normal] =
+        contact_point_and_normal(outline, options, p.offset_y, p.contact_angle);
+    const Eigen::Index at = std::find(out.x.begin(), out.x.end(), p.x) - out.x.begin();
+    out.combination.block(out.per_position * at, 4 * Eigen::Index(i), out.per_position, 4) =
+        head.at(point, normal);
+  }
+  return out;
+}
+
+std::optional<RailLoadBasis> WaveguideRailModel::load_basis(
+    const std::vector<RailLoadPoint>& points) const {
+  return head_load_basis(head_.get(), outline_, options_, points);
+}
+
+SurfaceSpectra WaveguideRailModel::basis_surface_spectra(const std::vector<double>& x,
+                                                         const std::vector<OutlinePiece>& pieces,
+                                                         const Eigen::MatrixXd& patterns) const {
+  if (!options_.head_load) return nullptr;
+  const Section& s = section_.get();
+  const Eigen::MatrixXd head = s.full.head_body(options_.head_bottom).loads;
+  auto model = std::make_shared<const RailWaveguide>(
+      s.full.reduced(options_.contact_reduction, head, s.modes));
+  auto response = std::make_shared<const Eigen::MatrixXd>(
+      outline_normal_distributions(model->mesh(), pieces) * patterns);
+  auto load = std::make_shared<Eigen::MatrixXd>(head.rows(), head.cols() * Eigen::Index(x.size()));
+  std::vector<double> load_x;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    load->middleCols(head.cols() * Eigen::Index(i), head.cols()) = head;
+    load_x.insert(load_x.end(), static_cast<std::size_t>(head.cols()), x[i]);
+  }
+  return [model, response, load, load_x](double frequency) {
+    return surface_spectrum(*model, angular(frequency), *response, *load, load_x);
+  };
+}
+
 SurfaceSpectra WaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
                                                    const std::vector<OutlinePiece>& pieces,
                                                    const Eigen::MatrixXd& patterns) const {
+  if (std::optional<RailLoadBasis> basis = load_basis(points)) {
+    SurfaceSpectra spectra = basis_surface_spectra(basis->x, pieces, patterns);
+    return [spectra, C = std::move(basis->combination)](double frequency) {
+      return combined(spectra(frequency), C);
+    };
+  }
   const LoadPointColumns at = load_point_columns(points);
   const std::shared_ptr<const Station> st = station(at.distinct);
   auto response = std::make_shared<const Eigen::MatrixXd>(

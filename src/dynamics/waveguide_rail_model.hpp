@@ -181,11 +181,17 @@ class WaveguideRailModel : public GridSamplingRail {
   /// The point (y, z) (m) of the outline where a contact at (offset_y, contact_angle) is loaded.
   Eigen::Vector2d contact_point(double offset_y, double contact_angle) const;
 
-  /// Eq. (W7) of rail_surface_spectrum.hpp: the section loaded at the points (one Ritz basis).
+  /// Eq. (W7) of rail_surface_spectrum.hpp: the section loaded at the points (one Ritz basis;
+  /// with head loads, the head's six distributions' basis and spectra, combined).
   bool section_deforms() const override { return true; }
   SurfaceSpectra surface_spectra(const std::vector<RailLoadPoint>& points,
                                  const std::vector<OutlinePiece>& pieces,
                                  const Eigen::MatrixXd& patterns) const override;
+  /// With head loads: the head's six distributions (RailWaveguide::head_body), reduced on them.
+  std::optional<RailLoadBasis> load_basis(const std::vector<RailLoadPoint>& points) const override;
+  SurfaceSpectra basis_surface_spectra(const std::vector<double>& x,
+                                       const std::vector<OutlinePiece>& pieces,
+                                       const Eigen::MatrixXd& patterns) const override;
 
   /// The crown's reduced model (built on first use: the loop at the contacts does not need it).
   const RailWaveguide& waveguide() const { return crown().model; }
@@ -213,6 +219,7 @@ class WaveguideRailModel : public GridSamplingRail {
   // meshes and solves nothing.
   Lazy<Section> section_;
   Lazy<Station> crown_;
+  Lazy<HeadBody> head_;  // section_head_body
 
   // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set.
   const FrequencySampling& sampling() const override { return options_.sampling; }
@@ -287,6 +294,20 @@ RailMaterial rail_material(const TrackParameters& track, double poisson_ratio);
 /// outward normal `normal`: RailWaveguide::head_loads, or patch_loads (options.head_load false).
 Eigen::MatrixXd contact_loads_at(const RailWaveguide& section, const WaveguideRailOptions& options,
                                  const Eigen::Vector2d& point, const Eigen::Vector2d& normal);
+
+/// The points' loads on the head's six distributions `head` (RailWaveguide::head_body) at their
+/// distinct positions (RailModel::load_basis): each point's 6 x 4 is head.at(its point on
+/// `outline`, its normal), exactly as contact_loads_at loads it. Empty without head loads
+/// (options.head_load false: the patch is no combination of the six).
+/// The head body (RailWaveguide::head_body at options.head_bottom) of the options' section, from
+/// its mesh alone (no model assembled, no mode solved): what head_load_basis needs, cheap for a
+/// run whose rail values all come from the caches.
+HeadBody section_head_body(const WaveguideRailOptions& options);
+
+std::optional<RailLoadBasis> head_load_basis(const HeadBody& head,
+                                             const std::vector<Eigen::Vector2d>& outline,
+                                             const WaveguideRailOptions& options,
+                                             const std::vector<RailLoadPoint>& points);
 
 /// The load (and response) distributions of contacts at `points` ((offset_y, contact_angle) each)
 /// on `section`'s outline (outline_contact_point), dofs() x 4 per point in the contact frame

@@ -1,5 +1,6 @@
 #include "io/radiation_cache.hpp"
 
+#include <functional>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -15,7 +16,7 @@ constexpr const char* kWheelMagic = "rollnoise wheel radiation 2\n";
 constexpr const char* kRailMagic = "rollnoise rail radiation 1\n";
 constexpr const char* kLineMagic = "rollnoise rail line gram 1\n";
 constexpr const char* kSectionMagic = "rollnoise rail section table 1\n";
-constexpr const char* kSectionGramMagic = "rollnoise rail section gram 1\n";
+constexpr const char* kSectionGramMagic = "rollnoise rail section gram 2\n";
 
 void put_matrices(std::string& out, const std::vector<Eigen::MatrixXcd>& v) {
   put(out, static_cast<std::uint64_t>(v.size()));
@@ -302,15 +303,16 @@ std::shared_ptr<const pipeline::SectionRadiationTable> section_radiation_table_c
       [&] { return pipeline::section_radiation_table(outline, ground, max_k, fluid, threads); });
 }
 
-std::vector<Eigen::MatrixXcd> section_grams_cached(
-    const dynamics::RailModel& rail, const std::string& identity,
-    const std::vector<dynamics::RailLoadPoint>& points,
+namespace {
+
+// Gram matrices on `grid` under `what` (the loads) beside the rail's identity and the table: from
+// the cache, else made and stored.
+std::vector<Eigen::MatrixXcd> grams_cached(
+    const std::string& identity, const std::string& what, const char* file_prefix,
     const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
-    const acoustics::Fluid& fluid, int threads) {
+    const acoustics::Fluid& fluid, const std::function<std::vector<Eigen::MatrixXcd>()>& make) {
   std::ostringstream k;
-  k << identity << "loads";
-  for (const dynamics::RailLoadPoint& p : points)
-    k << " " << real_text(p.offset_y) << " " << real_text(p.contact_angle) << " " << real_text(p.x);
+  k << identity << what;
   // the table: its air and ground, elements and reach (its values follow from them and the build)
   k << "\ntable " << table.ground << " " << table.pieces.size() << " " << table.patterns.cols()
     << " " << real_text(table.max_wavenumber()) << "\n"
@@ -328,10 +330,40 @@ std::vector<Eigen::MatrixXcd> section_grams_cached(
     put_matrices(out, g);
     return out;
   };
-  return *kept_or_made<Grams>(
-      k.str(), directory, build_key(directory, k.str()), "rail-section-gram", kSectionGramMagic,
-      "rail section gram", parse, payload,
-      [&] { return pipeline::section_grams(rail, points, table, grid, fluid, threads); });
+  return *kept_or_made<Grams>(k.str(), directory, build_key(directory, k.str()), file_prefix,
+                              kSectionGramMagic, "rail section gram", parse, payload, make);
+}
+
+}  // namespace
+
+std::vector<Eigen::MatrixXcd> basis_section_grams_cached(
+    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& x,
+    const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid, int threads) {
+  std::ostringstream what;
+  what << "the load basis at";
+  for (double p : x) what << " " << real_text(p);
+  return grams_cached(identity, what.str(), "rail-basis-section-gram", table, grid, fluid, [&] {
+    return pipeline::basis_section_grams(rail, x, table, grid, fluid, threads);
+  });
+}
+
+std::vector<Eigen::MatrixXcd> section_grams_cached(
+    const dynamics::RailModel& rail, const std::string& identity,
+    const std::vector<dynamics::RailLoadPoint>& points,
+    const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid, int threads) {
+  std::ostringstream what;
+  what << "loads";
+  for (const dynamics::RailLoadPoint& p : points)
+    what << " " << real_text(p.offset_y) << " " << real_text(p.contact_angle) << " "
+         << real_text(p.x);
+  return grams_cached(identity, what.str(), "rail-section-gram", table, grid, fluid, [&] {
+    return pipeline::section_grams(
+        rail, points, table, grid, fluid, threads, [&](const std::vector<double>& x) {
+          return basis_section_grams_cached(rail, identity, x, table, grid, fluid, threads);
+        });
+  });
 }
 
 std::shared_ptr<const pipeline::WheelRadiation> wheel_radiation_cached(

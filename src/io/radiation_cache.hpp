@@ -47,11 +47,22 @@ std::shared_ptr<const pipeline::SectionRadiationTable> section_radiation_table_c
     const acoustics::Fluid& fluid, int threads = 1);
 
 /// The section Gram matrices (R2) of loads at `points` on `grid` (pipeline::section_grams): from
-/// the cache under `identity` (rail_identity) and the table's air and ground, else computed and
-/// stored. Kept in this process too.
+/// the cache under `identity` (rail_identity), the points and the table's air and ground, else
+/// computed and stored, those of the rail's load basis from basis_section_grams_cached (a later
+/// run of the same case reads the points' own; another contact state at the same positions the
+/// basis'). Kept in this process too.
 std::vector<Eigen::MatrixXcd> section_grams_cached(
     const dynamics::RailModel& rail, const std::string& identity,
     const std::vector<dynamics::RailLoadPoint>& points,
+    const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
+    const acoustics::Fluid& fluid, int threads = 1);
+
+/// The section Gram matrices (R2) of the rail's load basis at positions `x` on `grid`
+/// (pipeline::basis_section_grams: the head's distributions, whatever the contacts' offsets and
+/// angles): from the cache under `identity` (rail_identity), the positions and the table's air
+/// and ground, else computed and stored. Kept in this process too.
+std::vector<Eigen::MatrixXcd> basis_section_grams_cached(
+    const dynamics::RailModel& rail, const std::string& identity, const std::vector<double>& x,
     const pipeline::SectionRadiationTable& table, const std::vector<double>& grid,
     const acoustics::Fluid& fluid, int threads = 1);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -172,21 +173,66 @@ Eigen::MatrixXcd section_gram(const dynamics::SurfaceSpectrum& spectrum,
   return total / (2 * kPi);
 }
 
+namespace {
+
+// (R2) of `spectra` on the grid; `spread`: the largest distance between the loads (m).
+std::vector<Eigen::MatrixXcd> grams_on_grid(const dynamics::SurfaceSpectra& spectra,
+                                            const SectionRadiationTable& table,
+                                            const std::vector<double>& grid, double spread,
+                                            const acoustics::Fluid& fluid, int threads) {
+  std::vector<Eigen::MatrixXcd> out(grid.size());
+  parallel_for(grid.size(), threads, [&](std::size_t i, int) {
+    out[i] = section_gram(spectra(grid[i]), table, grid[i], spread, fluid);
+  });
+  return out;
+}
+
+// The largest distance between the loads' positions (m).
+double spread(const std::vector<double>& x) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return x.empty() ? 0.0 : *hi - *lo;
+}
+
+}  // namespace
+
+std::vector<Eigen::MatrixXcd> basis_section_grams(const dynamics::RailModel& rail,
+                                                  const std::vector<double>& x,
+                                                  const SectionRadiationTable& table,
+                                                  const std::vector<double>& grid,
+                                                  const acoustics::Fluid& fluid, int threads) {
+  const dynamics::SurfaceSpectra spectra =
+      rail.basis_surface_spectra(x, table.pieces, table.patterns);
+  if (!spectra || x.empty()) return {};
+  return grams_on_grid(spectra, table, grid, spread(x), fluid, threads);
+}
+
+std::vector<Eigen::MatrixXcd> combined_grams(const std::vector<Eigen::MatrixXcd>& basis_grams,
+                                             const Eigen::MatrixXd& combination) {
+  const Eigen::MatrixXcd C = combination.cast<cdouble>();
+  std::vector<Eigen::MatrixXcd> out;
+  out.reserve(basis_grams.size());
+  for (const Eigen::MatrixXcd& G : basis_grams) out.push_back(C.adjoint() * G * C);
+  return out;
+}
+
 std::vector<Eigen::MatrixXcd> section_grams(const dynamics::RailModel& rail,
                                             const std::vector<dynamics::RailLoadPoint>& points,
                                             const SectionRadiationTable& table,
                                             const std::vector<double>& grid,
-                                            const acoustics::Fluid& fluid, int threads) {
+                                            const acoustics::Fluid& fluid, int threads,
+                                            const BasisGrams& basis_grams) {
+  if (points.empty()) return {};
+  if (const std::optional<dynamics::RailLoadBasis> basis = rail.load_basis(points))
+    return combined_grams(basis_grams
+                              ? basis_grams(basis->x)
+                              : basis_section_grams(rail, basis->x, table, grid, fluid, threads),
+                          basis->combination);
   const dynamics::SurfaceSpectra spectra =
       rail.surface_spectra(points, table.pieces, table.patterns);
-  if (!spectra || points.empty()) return {};
-  double lo = points.front().x, hi = lo;
-  for (const dynamics::RailLoadPoint& p : points) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
-  std::vector<Eigen::MatrixXcd> out(grid.size());
-  parallel_for(grid.size(), threads, [&](std::size_t i, int) {
-    out[i] = section_gram(spectra(grid[i]), table, grid[i], hi - lo, fluid);
-  });
-  return out;
+  if (!spectra) return {};
+  std::vector<double> x;
+  for (const dynamics::RailLoadPoint& p : points) x.push_back(p.x);
+  return grams_on_grid(spectra, table, grid, spread(x), fluid, threads);
 }
 
 }  // namespace rollnoise::pipeline

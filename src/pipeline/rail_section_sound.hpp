@@ -38,6 +38,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -74,12 +75,33 @@ Eigen::MatrixXcd section_gram(const dynamics::SurfaceSpectrum& spectrum,
                               const SectionRadiationTable& table, double frequency, double spread,
                               const acoustics::Fluid& fluid, double tolerance = 1e-3);
 
-/// (R2) of `rail` under loads at `points` at every frequency of `grid` (Hz), or empty where the
-/// rail has no section (RailModel::surface_spectra null: the beams).
+/// (R2) of the distributions of `rail`'s load basis at the positions `x` (m along the rail;
+/// RailModel::basis_surface_spectra, per_position columns a position) at every frequency of
+/// `grid` (Hz): G_D, shared by every set of contacts at those positions. Empty where the rail has
+/// no load basis.
+std::vector<Eigen::MatrixXcd> basis_section_grams(const dynamics::RailModel& rail,
+                                                  const std::vector<double>& x,
+                                                  const SectionRadiationTable& table,
+                                                  const std::vector<double>& grid,
+                                                  const acoustics::Fluid& fluid, int threads = 1);
+
+/// The Gram matrices of loads made of the basis' distributions, G = C^T G_D C (C real: the
+/// loads' combination, RailLoadBasis::combination, or some of its columns), per frequency.
+std::vector<Eigen::MatrixXcd> combined_grams(const std::vector<Eigen::MatrixXcd>& basis_grams,
+                                             const Eigen::MatrixXd& combination);
+
+/// basis_section_grams at the positions x, from a cache where the caller keeps one.
+using BasisGrams = std::function<std::vector<Eigen::MatrixXcd>(const std::vector<double>& x)>;
+
+/// (R2) of `rail` under loads at `points` at every frequency of `grid` (Hz): by the rail's load
+/// basis where it has one (combined_grams of `basis_grams`, or of basis_section_grams where that
+/// is null), else from the points' own spectra; empty where the rail has no section
+/// (RailModel::surface_spectra null: the beams).
 std::vector<Eigen::MatrixXcd> section_grams(const dynamics::RailModel& rail,
                                             const std::vector<dynamics::RailLoadPoint>& points,
                                             const SectionRadiationTable& table,
                                             const std::vector<double>& grid,
-                                            const acoustics::Fluid& fluid, int threads = 1);
+                                            const acoustics::Fluid& fluid, int threads = 1,
+                                            const BasisGrams& basis_grams = nullptr);
 
 }  // namespace rollnoise::pipeline

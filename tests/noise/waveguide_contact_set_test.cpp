@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <vector>
 
 #include "dynamics/rail_model.hpp"
@@ -68,8 +69,24 @@ const rd::DiscreteWaveguideRailModel& discrete_rail() {
   return rail;
 }
 
+// The eigenvalues of the dissipation -(A - A^H) / 2i of A scaled by its diagonal (as
+// relative_min_dissipation), ascending, over the largest's magnitude.
+Eigen::VectorXd relative_dissipations(const Eigen::MatrixXcd& A) {
+  Eigen::VectorXd d(A.rows());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    d(i) = std::abs(A(i, i)) > 0 ? 1.0 / std::sqrt(std::abs(A(i, i))) : 1.0;
+  const Eigen::MatrixXcd Ds = d.cast<std::complex<double>>().asDiagonal();
+  const Eigen::MatrixXcd D = Ds * (-(A - A.adjoint()) / std::complex<double>(0.0, 2.0)) * Ds;
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(D).eigenvalues();
+  return ev / ev.cwiseAbs().maxCoeff();
+}
+
+// `structural_zeros`: the rail's dissipation has that many zero eigenvalues (contacts at one x
+// loading the head through its six rigid motions: a tread and a flange patch give 8 columns on 6),
+// whose computed sign is round-off; they must be zero within 1e-9, every other one >= -1e-10.
 void expect_reciprocal_and_passive(const rd::RailModel& rail, double f,
-                                   const std::vector<rn::ContactPoint>& cs) {
+                                   const std::vector<rn::ContactPoint>& cs,
+                                   int structural_zeros = 0) {
   const rn::ContactSetReceptance r = rn::contact_set_receptance(wheel(), rail, cs, f);
   EXPECT_LE((r.rail - r.rail.transpose()).norm(), 1e-8 * r.rail.norm()) << f;
   EXPECT_LE((r.wheel - r.wheel.transpose()).norm(), 1e-8 * r.wheel.norm()) << f;
@@ -78,7 +95,12 @@ void expect_reciprocal_and_passive(const rd::RailModel& rail, double f,
     EXPECT_GT(r.rail.block(0, 16, 4, 4).norm(), 0.0) << f;
   }
   EXPECT_EQ(r.rail.block(0, 4, 4, 4).norm(), 0.0) << f;  // the two rails are uncoupled
-  EXPECT_GE(relative_min_dissipation(r.rail), -1e-10) << f;
+  const Eigen::VectorXd rail_dissipation = relative_dissipations(r.rail);
+  if (structural_zeros > 0)
+    std::printf("  %.0f Hz: rail dissipation's smallest %.2e, %.2e, next %.2e\n", f,
+                rail_dissipation(0), rail_dissipation(1), rail_dissipation(structural_zeros));
+  for (int i = 0; i < structural_zeros; ++i) EXPECT_LE(std::abs(rail_dissipation(i)), 1e-9) << f;
+  EXPECT_GE(rail_dissipation(structural_zeros), -1e-10) << f;
   EXPECT_GE(relative_min_dissipation(r.wheel + r.rail), -1e-10) << f;
 }
 
@@ -102,11 +124,13 @@ TEST(WaveguideBogie, AssembledReceptanceIsReciprocalAndPassive) {
 // The same on discrete supports (N = 10), the four wheels and the flange patch, 500 Hz and 1.5 kHz:
 // the section is loaded at each contact's own point
 // (DiscreteWaveguideRailModel::contact_transfers), so tread and flange patch are two points of the
-// head, not the crown's four degrees of freedom moved rigidly to both (which made the rail block
-// singular).
+// head, not the crown's four degrees of freedom moved rigidly to both. Through the head as a body
+// (the default) their 8 columns act on the head's 6 rigid motions: the rail's dissipation has two
+// zero eigenvalues (within 1e-9; measured +-1.7e-10 at 500 Hz, the next 5.4e-4), the rest
+// >= -1e-10.
 TEST(WaveguideBogie, AssembledReceptanceOnDiscreteSupportsIsReciprocalAndPassive) {
   for (double f : {500.0, 1500.0})
-    expect_reciprocal_and_passive(discrete_rail(), f, waveguide_bogie_contacts());
+    expect_reciprocal_and_passive(discrete_rail(), f, waveguide_bogie_contacts(), 2);
 }
 
 // With every cross term off, each contact's forces and velocities equal the single-contact loop's

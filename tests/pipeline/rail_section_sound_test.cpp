@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "acoustics/bem2d.hpp"
@@ -162,4 +163,52 @@ TEST(RailSectionSound, TableInterpolatesTheSectionsPowerMatrix) {
     std::printf("  k_r = %.1f rad/m: interpolation error %.2e\n", kr, error);
     EXPECT_LT(error, 1e-3);
   }
+}
+
+// The head's six distributions as the loads' basis (RailModel::load_basis): the spectrum of two
+// contacts made of the basis' spectra, U_D C, against Eq. (D4) of the contacts' own loads on the
+// same model (the head's Ritz basis), at 1 kHz and 40 wavenumbers in (-k, k): equal up to
+// round-off (1e-10 of the largest entry; linear in the loads). And the Gram matrices of another
+// contact state at the same positions from the same G_D: C'^T G_D C' against a direct (R2) of its
+// spectrum, within 1e-4 (the bar of AdaptiveQuadratureMeetsATighterTolerance: the two adaptive
+// quadratures refine different integrands, each within its tolerance of the integral).
+TEST(RailSectionSound, HeadDistributionsGiveEveryContactsSpectrumAndGram) {
+  const dynamics::WaveguideRailOptions options = coarse_waveguide();
+  const dynamics::DiscreteWaveguideRailModel rail(dynamics::uic60_ballasted(), options, 0.3);
+  const acoustics::Fluid fluid;
+  const double f = 1000.0, k = 2 * kPi * f / fluid.sound_speed;
+  const pipeline::SectionRadiationTable table =
+      pipeline::section_radiation_table(dynamics::uic60_outline(), false, k, fluid, 2);
+  const std::vector<dynamics::RailLoadPoint> points{{0.0, 0.0, 0.3}, {-0.03, 0.5, 2.8}};
+  const std::optional<dynamics::RailLoadBasis> basis = rail.load_basis(points);
+  ASSERT_TRUE(basis);
+  ASSERT_EQ(basis->x.size(), 2u);
+  // the contacts' own loads on the head's model
+  const Eigen::MatrixXd loads = dynamics::contact_point_loads(
+      rail.rail().free_rail(), dynamics::uic60_outline(), options, {{0.0, 0.0}, {-0.03, 0.5}});
+  const Eigen::MatrixXd response =
+      dynamics::outline_normal_distributions(rail.rail().free_rail().mesh(), table.pieces) *
+      table.patterns;
+  const dynamics::SurfaceSpectrum own = rail.rail().surface_spectrum(
+      2 * kPi * f, response, loads, {0.3, 0.3, 0.3, 0.3, 2.8, 2.8, 2.8, 2.8});
+  const dynamics::SurfaceSpectrum made =
+      rail.surface_spectra(points, table.pieces, table.patterns)(f);
+  std::vector<double> kappas;
+  for (int q = 0; q < 40; ++q) kappas.push_back(k * (-0.975 + 0.05 * q));
+  const Eigen::MatrixXcd a = own.at(kappas), b = made.at(kappas);
+  const double spectrum_error = (a - b).cwiseAbs().maxCoeff() / a.cwiseAbs().maxCoeff();
+  // another contact state at the same positions
+  const std::vector<dynamics::RailLoadPoint> other{{0.012, -0.05, 0.3}, {-0.02, 0.3, 2.8}};
+  const std::optional<dynamics::RailLoadBasis> other_basis = rail.load_basis(other);
+  ASSERT_TRUE(other_basis);
+  const std::vector<Eigen::MatrixXcd> G_D =
+      pipeline::basis_section_grams(rail, basis->x, table, {f}, fluid, 1);
+  const Eigen::MatrixXcd from_basis =
+      pipeline::combined_grams(G_D, other_basis->combination).front();
+  const Eigen::MatrixXcd direct = pipeline::section_gram(
+      rail.surface_spectra(other, table.pieces, table.patterns)(f), table, f, 2.5, fluid);
+  const double gram_error = (from_basis - direct).norm() / direct.norm();
+  std::printf("  spectrum: %.2e, Gram of another state: %.2e\n", spectrum_error, gram_error);
+  EXPECT_LT(spectrum_error, 1e-10);
+  EXPECT_LT(gram_error, 1e-4);
 }
