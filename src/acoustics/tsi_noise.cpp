@@ -11,9 +11,12 @@ namespace {
 
 // Regulation (EU) No 1304/2014, Annex, clause 4.2.3, Table 4: L_pAeq,Tp(80 km/h) (dB).
 const std::vector<std::pair<std::string, double>>& table4() {
-  static const std::vector<std::pair<std::string, double>> t = {
-      {"electric-locomotive", 84.0}, {"diesel-locomotive", 85.0}, {"emu", 80.0},
-      {"dmu", 81.0},                 {"coach", 79.0},             {"wagon", 83.0}};
+  static const std::vector<std::pair<std::string, double>> t = {{"electric-locomotive", 84.0},
+                                                                {"diesel-locomotive", 85.0},
+                                                                {"emu", 80.0},
+                                                                {"dmu", 81.0},
+                                                                {"coach", 79.0},
+                                                                {"wagon", 83.0}};
   return t;
 }
 

@@ -7,8 +7,8 @@
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
-//   rollnoise passby    CASE.toml [-o OUT.h5] [--set key=value]...   the train passing the receiver
-//   rollnoise cnossos   CASE.toml [-o OUT.json] [--set key=value]... [--flow Q]   CNOSSOS-EU transfer functions
+//   rollnoise passby    CASE.toml [-o OUT.h5] [--set key=value]...   a train passing by
+//   rollnoise cnossos   CASE.toml [-o OUT.json] [--set key=value]... [--flow Q]   CNOSSOS-EU
 //   rollnoise statespace CASE.toml [-o OUT.h5] [--set key=value]... [--csv PREFIX]
 //   rollnoise squeal    CASE.toml [-o OUT.h5] [--set key=value]... [--route 1|2|both]
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
@@ -38,7 +38,8 @@ namespace rollnoise::cli {
 
 std::string output_path(const CommonOptions& o, const std::string& case_name) {
   if (!o.output.empty()) return o.output;
-  return case_name + (o.command.empty() ? "" : "." + o.command) + (o.command == "cnossos" ? ".json" : ".h5");
+  return case_name + (o.command.empty() ? "" : "." + o.command) +
+         (o.command == "cnossos" ? ".json" : ".h5");
 }
 
 }  // namespace rollnoise::cli

@@ -23,7 +23,7 @@ struct CnossosOrigin {
 std::string cnossos_json(const pipeline::CnossosTransfer& t, const CnossosOrigin& origin);
 
 /// Write it to `path` (io::write_text_file; `option` names the path in errors) and commit.
-void write_cnossos(const std::string& path, const std::string& option, const pipeline::CnossosTransfer& t,
-                   const CnossosOrigin& origin);
+void write_cnossos(const std::string& path, const std::string& option,
+                   const pipeline::CnossosTransfer& t, const CnossosOrigin& origin);
 
 }  // namespace rollnoise::io

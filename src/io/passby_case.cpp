@@ -23,13 +23,16 @@ void check_vehicle(const CaseReader& r, const pipeline::Vehicle& v, const std::s
   };
   if (!(v.wheelbase < v.bogie_distance))
     r.fail(entry ? "train.vehicle" : "train.wheelbase",
-           at + "wheelbase = " + num(v.wheelbase) + " must be less than bogie_distance = " + num(v.bogie_distance));
+           at + "wheelbase = " + num(v.wheelbase) +
+               " must be less than bogie_distance = " + num(v.bogie_distance));
   if (!(v.bogie_distance < v.length))
     r.fail(entry ? "train.vehicle" : "train.bogie_distance",
-           at + "bogie_distance = " + num(v.bogie_distance) + " must be less than the vehicle's length = " + num(v.length));
+           at + "bogie_distance = " + num(v.bogie_distance) +
+               " must be less than the vehicle's length = " + num(v.length));
   if (v.bogie_distance + v.wheelbase > v.length)
     r.fail(entry ? "train.vehicle" : "train.bogie_distance",
-           at + "the outer axles (bogie_distance + wheelbase = " + num(v.bogie_distance + v.wheelbase) +
+           at + "the outer axles (bogie_distance + wheelbase = " +
+               num(v.bogie_distance + v.wheelbase) +
                ") lie beyond the vehicle's length = " + num(v.length));
 }
 
@@ -43,19 +46,22 @@ void read_entry(const CaseReader& r, const std::map<std::string, double>& e, std
   for (const auto& [name, value] : fields) {
     const auto it = e.find(name);
     if (it == e.end()) continue;
-    if (!(it->second > 0.0)) r.fail(key, at + name + " must be positive, got " + std::to_string(it->second));
+    if (!(it->second > 0.0))
+      r.fail(key, at + name + " must be positive, got " + std::to_string(it->second));
     *value = it->second;
   }
   double count = 1.0;
   if (const auto it = e.find("count"); it != e.end()) count = it->second;
   if (!(count >= 1.0 && count <= 1000.0 && std::floor(count) == count))
-    r.fail(key, at + "count must be a whole number between 1 and 1000, got " + std::to_string(count));
+    r.fail(key,
+           at + "count must be a whole number between 1 and 1000, got " + std::to_string(count));
   check_vehicle(r, v, at);
   train.insert(train.end(), static_cast<std::size_t>(count), v);
 }
 
 // The vehicles: [[train.vehicle]] entries, or train.vehicles alike ones.
-std::vector<pipeline::Vehicle> read_train(const CaseReader& r, const pipeline::NoiseCase& nc, InputProblems& p) {
+std::vector<pipeline::Vehicle> read_train(const CaseReader& r, const pipeline::NoiseCase& nc,
+                                          InputProblems& p) {
   pipeline::Vehicle base;
   long vehicles = 1;
   p.check([&] { base.length = r.real("train.vehicle_length"); });
@@ -67,15 +73,19 @@ std::vector<pipeline::Vehicle> read_train(const CaseReader& r, const pipeline::N
   p.check([&] { vehicles = r.integer("train.vehicles"); });
   std::vector<pipeline::Vehicle> train;
   std::vector<std::map<std::string, double>> entries;
-  p.check([&] { entries = r.table_list("train.vehicle", {"count", "length", "bogie_distance", "wheelbase"}); });
+  p.check([&] {
+    entries = r.table_list("train.vehicle", {"count", "length", "bogie_distance", "wheelbase"});
+  });
   if (entries.empty()) {
     p.check([&] { check_vehicle(r, base, ""); });
     return std::vector<pipeline::Vehicle>(static_cast<std::size_t>(vehicles), base);
   }
   p.check([&] {
-    if (r.has("train.vehicles")) r.fail("train.vehicles", "give train.vehicles or [[train.vehicle]] entries, not both");
+    if (r.has("train.vehicles"))
+      r.fail("train.vehicles", "give train.vehicles or [[train.vehicle]] entries, not both");
   });
-  for (std::size_t i = 0; i < entries.size(); ++i) p.check([&] { read_entry(r, entries[i], i, base, train); });
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    p.check([&] { read_entry(r, entries[i], i, base, train); });
   p.check([&] {
     if (train.size() > 1000) r.fail("train.vehicle", "more than 1000 vehicles");
   });

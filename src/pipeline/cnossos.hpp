@@ -34,15 +34,16 @@ using CnossosSpectrum = std::array<double, kCnossosBands>;
 const CnossosSpectrum& cnossos_centres();
 
 struct CnossosTransfer {
-  CnossosSpectrum track{}, vehicle{};  ///< L_H,TR,i and L_H,VEH,i (dB)
-  CnossosSpectrum roughness{};         ///< L_R,TOT,i (dB re 1 um)
+  CnossosSpectrum track{}, vehicle{};          ///< L_H,TR,i and L_H,VEH,i (dB)
+  CnossosSpectrum roughness{};                 ///< L_R,TOT,i (dB re 1 um)
   std::array<bool, kCnossosBands> computed{};  ///< false: filled from the nearest computed band
 };
 
 /// (C1) from the bogie's powers (`sound`, `wheels` the computed wheels as for run_passby) and the
 /// effective roughness `roughness` in the same bands (dB re 1 um). std::invalid_argument when no
 /// band of `sound` is one of the 24.
-CnossosTransfer cnossos_transfer(const SoundResult& sound, const std::vector<noise::WheelId>& wheels,
+CnossosTransfer cnossos_transfer(const SoundResult& sound,
+                                 const std::vector<noise::WheelId>& wheels,
                                  const std::vector<double>& roughness);
 
 struct CnossosLinePower {
@@ -52,6 +53,7 @@ struct CnossosLinePower {
 
 /// (2.3.8)-(2.3.10), (2.3.2) for `axles` N_a per vehicle, `flow` Q (vehicles per hour) and
 /// `speed` v (km/h).
-CnossosLinePower cnossos_line_power(const CnossosTransfer& t, double axles, double flow, double speed);
+CnossosLinePower cnossos_line_power(const CnossosTransfer& t, double axles, double flow,
+                                    double speed);
 
 }  // namespace rollnoise::pipeline

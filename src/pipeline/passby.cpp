@@ -36,7 +36,9 @@ std::size_t source_index(WheelId want, const std::vector<WheelId>& wheels) {
 }
 
 // 10^{L/10} pW in W; a NaN level (an empty column) is no power.
-double watts(double level) { return std::isfinite(level) ? 1e-12 * std::pow(10.0, 0.1 * level) : 0.0; }
+double watts(double level) {
+  return std::isfinite(level) ? 1e-12 * std::pow(10.0, 0.1 * level) : 0.0;
+}
 
 // The axial family's share of the wheel's power per band (empty without the families).
 std::vector<double> axial_share(const std::vector<std::array<double, 3>>& family) {
@@ -59,12 +61,15 @@ void add_wheel(TrainSources& s, double x0, double y, std::size_t k, const SoundR
                const PassbyCase& pc) {
   const SoundBands& p = sound.contact_power[k];
   const std::size_t nb = p.size();
-  const std::vector<double> share = k < sound.contact_family.size() ? axial_share(sound.contact_family[k])
-                                                                    : std::vector<double>{};
+  const std::vector<double> share = k < sound.contact_family.size()
+                                        ? axial_share(sound.contact_family[k])
+                                        : std::vector<double>{};
   MovingPointSource mono{{x0, y, pc.wheel_radius}, Directivity::kMonopole, {}};
   MovingPointSource dipole{{x0, y, pc.wheel_radius}, Directivity::kDipoleY, {}};
-  MovingLineSource rail{{x0, y, kRailCentreHeight}, Directivity::kMonopole, {}, sound.decay_vertical};
-  MovingLineSource sleepers{{x0, y, pc.geometry.ground_level}, Directivity::kMonopole, {}, sound.decay_vertical};
+  MovingLineSource rail{
+      {x0, y, kRailCentreHeight}, Directivity::kMonopole, {}, sound.decay_vertical};
+  MovingLineSource sleepers{
+      {x0, y, pc.geometry.ground_level}, Directivity::kMonopole, {}, sound.decay_vertical};
   for (std::size_t b = 0; b < nb; ++b) {
     const double w = watts(p[b][0]), a = share.size() == nb ? share[b] : 0.0;
     mono.power.push_back((1.0 - a) * w);
@@ -88,7 +93,7 @@ void add_levels(PassbyResult& r, const std::array<acoustics::PassbyHistory, 3>& 
   const std::vector<double> fast = acoustics::time_weighted(pa2, dt);
   for (double x : fast) r.level_a.push_back(acoustics::pressure_level(x));
   r.lmax_a = *std::max_element(r.level_a.begin(), r.level_a.end());
-  r.leq_a = acoustics::equivalent_level(r.time, pa2, 0.0, tp);                          // (E1)
+  r.leq_a = acoustics::equivalent_level(r.time, pa2, 0.0, tp);                               // (E1)
   r.tel = acoustics::equivalent_level(r.time, pa2, r.time.front(), r.time.back() + dt, tp);  // (E2)
   const auto column = [](const Eigen::MatrixXd& m, std::size_t b) {
     const Eigen::VectorXd c = m.col(static_cast<Eigen::Index>(b));
@@ -96,7 +101,8 @@ void add_levels(PassbyResult& r, const std::array<acoustics::PassbyHistory, 3>& 
   };
   for (std::size_t b = 0; b < r.centre.size(); ++b) {
     std::array<double, 4> row{};
-    for (std::size_t s = 0; s < 3; ++s) {  // a source without power (the table wheel): NaN, not -inf
+    for (std::size_t s = 0; s < 3;
+         ++s) {  // a source without power (the table wheel): NaN, not -inf
       const double l = acoustics::equivalent_level(r.time, column(h[s].mean_square, b), 0.0, tp);
       row[s] = std::isfinite(l) ? l : std::numeric_limits<double>::quiet_NaN();
     }
@@ -118,7 +124,8 @@ std::vector<Axle> train_axles(const std::vector<Vehicle>& train) {
   std::vector<Axle> axles;
   double start = 0.0;  // s_k
   for (const Vehicle& v : train) {
-    for (const double bogie : {start + 0.5 * (v.length - v.bogie_distance), start + 0.5 * (v.length + v.bogie_distance)}) {
+    for (const double bogie : {start + 0.5 * (v.length - v.bogie_distance),
+                               start + 0.5 * (v.length + v.bogie_distance)}) {
       axles.push_back({bogie - 0.5 * v.wheelbase, true});  // (A1)
       axles.push_back({bogie + 0.5 * v.wheelbase, false});
     }
@@ -133,8 +140,8 @@ double train_length(const std::vector<Vehicle>& train) {
   return l;
 }
 
-PassbyResult run_passby(const PassbyCase& pc, const SoundResult& sound, const std::vector<WheelId>& wheels,
-                        double speed) {
+PassbyResult run_passby(const PassbyCase& pc, const SoundResult& sound,
+                        const std::vector<WheelId>& wheels, double speed) {
   const Clock::time_point start = Clock::now();
   if (pc.train.empty()) throw std::invalid_argument("run_passby: a train needs a vehicle");
   if (wheels.empty() || sound.contact_power.size() < wheels.size())

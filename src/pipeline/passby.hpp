@@ -84,11 +84,12 @@ struct PassbyCase {
   double wheel_radius = 0.46;          ///< r0: the wheel centre's height above the rail (m)
   double time_step = 0.01;             ///< of the history (s), passby.time_step
   std::string category;                ///< passby.category; empty: none
-  int threads = 1;  ///< for the lines' bands (solver.threads resolved; the result does not depend on it)
+  int threads =
+      1;  ///< for the lines' bands (solver.threads resolved; the result does not depend on it)
 };
 
 /// The sources' places across the track and in height (m), named once.
-constexpr double kRailHalfDistance = 0.75;  ///< g: rail head centre from the track centre
+constexpr double kRailHalfDistance = 0.75;   ///< g: rail head centre from the track centre
 constexpr double kRailCentreHeight = -0.08;  ///< the rail's centre below its top
 
 struct PassbyResult {
@@ -96,10 +97,10 @@ struct PassbyResult {
   double passage_time = 0.0;  ///< T_p = l / V (s)
   double length = 0.0;        ///< l (m)
   std::vector<Axle> axles;
-  std::vector<double> time;     ///< s
-  std::vector<double> level_a;  ///< L_pAF(t), dB(A) re 20 uPa
+  std::vector<double> time;                     ///< s
+  std::vector<double> level_a;                  ///< L_pAF(t), dB(A) re 20 uPa
   double leq_a = 0.0, tel = 0.0, lmax_a = 0.0;  ///< dB(A) re 20 uPa
-  std::vector<double> centre;                    ///< band centres (Hz)
+  std::vector<double> centre;                   ///< band centres (Hz)
   /// L_eq over [0, T_p) per band: [wheel, rail, sleepers, total], dB re 20 uPa
   std::vector<std::array<double, 4>> spectrum;
   std::array<double, 4> spectrum_a{};  ///< the columns' A-weighted sums, dB(A)

@@ -17,14 +17,17 @@ using namespace rollnoise::cli_test;
 namespace {
 
 // The FE wheel's coarse mesh (its modes are read with the case).
-const std::string kCoarseWheel = " --set wheel.mesh_size=0.03 --set wheel.n_max=3 --set wheel.f_max=2500";
+const std::string kCoarseWheel =
+    " --set wheel.mesh_size=0.03 --set wheel.n_max=3 --set wheel.f_max=2500";
 const std::string kCoarse =
     kCoarseWheel +
     " --set noise.points_per_band=4 --set noise.band_refinement=0"
     " --set noise.band_min=500 --set noise.band_max=2000 --set noise.compare=\\\"none\\\""
     " --set train.vehicles=2 -q";
 
-std::string tangent() { return source_file("cases/passby_tangent.toml"); }
+std::string tangent() {
+  return source_file("cases/passby_tangent.toml");
+}
 
 }  // namespace
 
@@ -36,8 +39,9 @@ TEST(PassbyCommand, WritesEveryDatasetWithUnitsAndLeqIsTheSpectrumsATotal) {
   const Invocation r = run("passby " + tangent() + " -o " + out.string() + kCoarse);
   ASSERT_EQ(r.status, 0) << r.output;
   rollnoise::io::Hdf5Reader h(out.string());
-  for (const char* d : {"time", "level_a", "leq_a", "tel", "lmax_a", "band_centre", "spectrum", "leq_a_80",
-                        "limit_a", "passage_time", "speed", "receiver", "train/axle_position"}) {
+  for (const char* d :
+       {"time", "level_a", "leq_a", "tel", "lmax_a", "band_centre", "spectrum", "leq_a_80",
+        "limit_a", "passage_time", "speed", "receiver", "train/axle_position"}) {
     const std::string path = std::string("/passby/") + d;
     EXPECT_TRUE(h.numbers(path)) << path;
     const auto units = h.attribute(path, "units");
@@ -51,7 +55,8 @@ TEST(PassbyCommand, WritesEveryDatasetWithUnitsAndLeqIsTheSpectrumsATotal) {
   double sum = 0.0;
   for (std::size_t b = 0; b < fc.size(); ++b)
     sum += std::pow(10.0, 0.1 * (s[4 * b + 3] + rollnoise::acoustics::a_weighting(fc[b])));
-  const double leq = h.numbers("/passby/leq_a")->front(), lmax = h.numbers("/passby/lmax_a")->front();
+  const double leq = h.numbers("/passby/leq_a")->front(),
+               lmax = h.numbers("/passby/lmax_a")->front();
   EXPECT_NEAR(10.0 * std::log10(sum), leq, 0.2);
   EXPECT_GE(lmax, leq);
   EXPECT_EQ(h.numbers("/passby/limit_a")->front(), 79.0);
@@ -72,7 +77,9 @@ TEST(CnossosCommand, WritesTwentyFourBandsAndSaysWhichAreFilled) {
     const std::string values = json.substr(at, json.find(']', at) - at);
     EXPECT_EQ(std::count(values.begin(), values.end(), ','), 23) << entry;
   }
-  EXPECT_NE(json.find("\"filled\": \"50, 63, 80, 100, 125, 160, 200, 250, 315, 400, 2500"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"filled\": \"50, 63, 80, 100, 125, 160, 200, 250, 315, 400, 2500"),
+            std::string::npos)
+      << json;
   EXPECT_NE(r.output.find("bands outside"), std::string::npos) << r.output;
 }
 
@@ -84,7 +91,8 @@ TEST(PassbyCommand, BadTrainsAndCategoriesAreRefusedNamingTheKey) {
       {"--set train.vehicle_length=-3", "train.vehicle_length"},
       {"--set train.wheelbase=19.5", "train.wheelbase"},
       {"--set train.bogie_distance=30", "train.bogie_distance"},
-      {"--set 'train.vehicle=[{count = 2, wheelbase = 25.0}]' --set train.vehicles=1", "train.vehicle"},
+      {"--set 'train.vehicle=[{count = 2, wheelbase = 25.0}]' --set train.vehicles=1",
+       "train.vehicle"},
       {"--set passby.category=\\\"tram\\\"", "passby.category"},
       {"--set passby.height=-1", "passby.height"},
   };

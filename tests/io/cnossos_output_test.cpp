@@ -18,7 +18,8 @@ namespace pl = rollnoise::pipeline;
 namespace {
 
 // The numbers of the JSON array that follows `name` after `from` in `text`.
-std::vector<double> json_numbers(const std::string& text, const std::string& from, const std::string& name) {
+std::vector<double> json_numbers(const std::string& text, const std::string& from,
+                                 const std::string& name) {
   const std::size_t at = text.find("\"" + name + "\": [", text.find(from));
   std::vector<double> v;
   if (at == std::string::npos) return v;
@@ -41,7 +42,8 @@ std::vector<double> json_numbers(const std::string& text, const std::string& fro
 TEST(CnossosJson, MadeUpTransferThroughTheDirectiveByHand) {
   pl::CnossosTransfer t;
   for (std::size_t i = 0; i < pl::kCnossosBands; ++i)
-    t.track[i] = 90.0 + i, t.vehicle[i] = 100.0 - i, t.roughness[i] = 5.0 - 0.5 * i, t.computed[i] = i > 2;
+    t.track[i] = 90.0 + i, t.vehicle[i] = 100.0 - i, t.roughness[i] = 5.0 - 0.5 * i,
+    t.computed[i] = i > 2;
   const std::string json = rollnoise::io::cnossos_json(t, {"made_up", 100.0, 920.0});
   const std::vector<double> veh = json_numbers(json, "\"Transfer\"", "Spectre");
   const std::vector<double> tr = json_numbers(json, "\"TrackTransfer\"", "Spectre");
@@ -53,9 +55,11 @@ TEST(CnossosJson, MadeUpTransferThroughTheDirectiveByHand) {
   for (std::size_t i = 0; i < 24; ++i) {
     const double w_tr = lr[i] + tr[i] + 10.0 * std::log10(4.0);    // (2.3.8)
     const double w_veh = lr[i] + veh[i] + 10.0 * std::log10(4.0);  // (2.3.9)
-    const double w0 = 10.0 * std::log10(std::pow(10.0, w_tr / 10.0) + std::pow(10.0, w_veh / 10.0));  // (2.3.10)
-    const double line = w0 + 10.0 * std::log10(20.0 / (1000.0 * 100.0));                              // (2.3.2)
-    a += std::pow(10.0, (line + rollnoise::acoustics::a_weighting(pl::cnossos_centres()[i])) / 10.0);
+    const double w0 =
+        10.0 * std::log10(std::pow(10.0, w_tr / 10.0) + std::pow(10.0, w_veh / 10.0));  // (2.3.10)
+    const double line = w0 + 10.0 * std::log10(20.0 / (1000.0 * 100.0));                // (2.3.2)
+    a +=
+        std::pow(10.0, (line + rollnoise::acoustics::a_weighting(pl::cnossos_centres()[i])) / 10.0);
   }
   EXPECT_NEAR(10.0 * std::log10(a), pl::cnossos_line_power(t, 4.0, 20.0, 100.0).total_a, 1e-9);
   EXPECT_NE(json.find("\"filled\": \"50, 63, 80 Hz"), std::string::npos);

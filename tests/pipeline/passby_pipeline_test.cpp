@@ -1,8 +1,6 @@
 // The train's axles (pipeline/passby.hpp (A1)), the pass-by pipeline against the same sources
 // placed by hand through the acoustics core, its levels' consistency, the TSI normalisation and
 // the CNOSSOS-EU transfer functions of a made-up bogie.
-#include "pipeline/passby.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,7 @@
 #include "acoustics/a_weighting.hpp"
 #include "acoustics/tsi_noise.hpp"
 #include "pipeline/cnossos.hpp"
+#include "pipeline/passby.hpp"
 
 namespace pl = rollnoise::pipeline;
 namespace pac = rollnoise::acoustics;
@@ -33,7 +32,9 @@ pl::SoundResult made_up_sound() {
   return s;
 }
 
-double watts(double level) { return 1e-12 * std::pow(10.0, 0.1 * level); }
+double watts(double level) {
+  return 1e-12 * std::pow(10.0, 0.1 * level);
+}
 
 }  // namespace
 
@@ -69,8 +70,10 @@ TEST(PassbyPipeline, EqualsTheHandPlacedSourcesAndItsLevelsAgree) {
   for (const pl::Axle& a : pl::train_axles(pc.train))
     for (const double y : {0.75, -0.75}) {
       pac::MovingPointSource w{{-a.from_front, y, 0.46}, pac::Directivity::kMonopole, {}};
-      pac::MovingLineSource rl{{-a.from_front, y, -0.08}, pac::Directivity::kMonopole, {}, s.decay_vertical};
-      pac::MovingLineSource sl{{-a.from_front, y, -0.3}, pac::Directivity::kMonopole, {}, s.decay_vertical};
+      pac::MovingLineSource rl{
+          {-a.from_front, y, -0.08}, pac::Directivity::kMonopole, {}, s.decay_vertical};
+      pac::MovingLineSource sl{
+          {-a.from_front, y, -0.3}, pac::Directivity::kMonopole, {}, s.decay_vertical};
       for (const auto& row : s.contact_power[0]) {
         w.power.push_back(watts(row[0]));
         rl.power.push_back(watts(row[1]));
@@ -93,7 +96,8 @@ TEST(PassbyPipeline, EqualsTheHandPlacedSourcesAndItsLevelsAgree) {
   double energy = 0.0;
   int n = 0;
   for (std::size_t k = 0; k < r.time.size(); ++k)
-    if (r.time[k] >= 0.0 && r.time[k] < r.passage_time) energy += std::pow(10.0, 0.1 * r.level_a[k]), ++n;
+    if (r.time[k] >= 0.0 && r.time[k] < r.passage_time)
+      energy += std::pow(10.0, 0.1 * r.level_a[k]), ++n;
   EXPECT_NEAR(10.0 * std::log10(energy / n), r.leq_a, 0.5);
   EXPECT_GE(r.tel, r.leq_a);  // the whole event's energy over T_p
   for (const WheelId w : r.source_wheel) EXPECT_EQ(w, WheelId::leading_outer);
@@ -121,11 +125,12 @@ TEST(CnossosTransfer, MadeUpBogiePerAxleMinusTheRoughness) {
   const std::size_t i1000 = 13;  // 1 kHz is the 14th of the 24 bands
   ASSERT_EQ(pl::cnossos_centres()[i1000], 1000.0);
   EXPECT_NEAR(t.vehicle[i1000], 10.0 * std::log10(2.0 * std::pow(10.0, 10.0)) + 2.0, 1e-9);
-  EXPECT_NEAR(t.track[i1000], 10.0 * std::log10(2.0 * (std::pow(10.0, 10.2) + std::pow(10.0, 8.5))) + 2.0, 1e-9);
+  EXPECT_NEAR(t.track[i1000],
+              10.0 * std::log10(2.0 * (std::pow(10.0, 10.2) + std::pow(10.0, 8.5))) + 2.0, 1e-9);
   EXPECT_TRUE(t.computed[i1000]);
   EXPECT_FALSE(t.computed[0]);
-  EXPECT_EQ(t.vehicle[0], t.vehicle[10]);   // 50 Hz filled from 500 Hz
-  EXPECT_EQ(t.track[23], t.track[16]);      // 10 kHz filled from 2 kHz
+  EXPECT_EQ(t.vehicle[0], t.vehicle[10]);  // 50 Hz filled from 500 Hz
+  EXPECT_EQ(t.track[23], t.track[16]);     // 10 kHz filled from 2 kHz
 }
 
 // The Directive's equations by hand (Directive (EU) 2015/996 Annex II 2.3.2, 2.3.8-2.3.10) for
@@ -135,7 +140,8 @@ TEST(CnossosLinePower, DirectiveEquationsByHand) {
   pl::CnossosTransfer t;
   t.track.fill(100.0), t.vehicle.fill(95.0), t.roughness.fill(-3.0), t.computed.fill(true);
   const pl::CnossosLinePower p = pl::cnossos_line_power(t, 4.0, 10.0, 80.0);
-  const double tr = -3.0 + 100.0 + 10.0 * std::log10(4.0), veh = -3.0 + 95.0 + 10.0 * std::log10(4.0);
+  const double tr = -3.0 + 100.0 + 10.0 * std::log10(4.0),
+               veh = -3.0 + 95.0 + 10.0 * std::log10(4.0);
   const double line = 10.0 * std::log10(std::pow(10.0, tr / 10.0) + std::pow(10.0, veh / 10.0)) +
                       10.0 * std::log10(10.0 / (1000.0 * 80.0));
   double a = 0.0;
