@@ -13,6 +13,7 @@
 #include "acoustics/a_weighting.hpp"
 #include "core/constants.hpp"
 #include "core/errors.hpp"
+#include "core/task_pool.hpp"
 
 namespace rollnoise::acoustics {
 
@@ -63,10 +64,8 @@ double line_spreading(double X, const Eigen::Vector3d& at, Directivity d, double
   gsl_function F{&line_integrand, &args};
   // the scale: a monopole at the receiver's distance
   const double epsabs = 1e-10 * fluid.impedance() / (4.0 * kPi * g.distance * g.distance);
-  double result = 0.0, error = 0.0;
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
+  double result = 0.0, error = 0.0;  // GSL's error handler is off (passby_history)
   const int status = gsl_integration_qagiu(&F, 0.0, epsabs, 1e-7, limit, ws, &result, &error);
-  gsl_set_error_handler(old);
   if (status != GSL_SUCCESS && !(error <= 1e-5 * std::abs(result) + 10.0 * epsabs))
     throw NumericalError(std::string("passby: the line source's integral failed (") +
                          gsl_strerror(status) + ")");
@@ -94,10 +93,11 @@ void check_sources(const std::vector<MovingPointSource>& points,
 }
 
 // Adds the lines of one shape (lines[i] for i in `members`) to `out`: g_b tabulated at the
-// spacing h over the places the members pass through, read by linear interpolation.
+// spacing h over the places the members pass through, read by linear interpolation. The bands on
+// `threads` threads (each band its own table and column of `out`: the same result for any number).
 void add_lines(const std::vector<MovingLineSource>& lines, const std::vector<std::size_t>& members,
                const PassbyGeometry& g, double speed, double t0, double dt, int steps,
-               const Fluid& fluid, Eigen::MatrixXd& out) {
+               const Fluid& fluid, int threads, Eigen::MatrixXd& out) {
   // linear interpolation's error |g''| h^2 / 8 ~ h^2 / (4 d^2) |g|: 3e-4 at d = 7 m
   constexpr double h = 0.25;  // m
   const MovingLineSource& shape = lines[members.front()];
@@ -109,9 +109,9 @@ void add_lines(const std::vector<MovingLineSource>& lines, const std::vector<std
   }
   const int n = static_cast<int>(std::ceil((hi - lo) / h)) + 2;
   constexpr std::size_t kLimit = 1000;
-  const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
-      gsl_integration_workspace_alloc(kLimit), &gsl_integration_workspace_free);
-  for (std::size_t b = 0; b < shape.decay.size(); ++b) {
+  parallel_for(shape.decay.size(), threads, [&](std::size_t b, int) {
+    const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
+        gsl_integration_workspace_alloc(kLimit), &gsl_integration_workspace_free);
     const double beta = shape.decay[b] / (20.0 * std::log10(std::exp(1.0)));
     std::vector<double> table(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
@@ -127,7 +127,7 @@ void add_lines(const std::vector<MovingLineSource>& lines, const std::vector<std
                                     table[static_cast<std::size_t>(i)]);
         out(k, static_cast<Eigen::Index>(b)) += lines[m].power[b] * v;
       }
-  }
+  });
 }
 
 }  // namespace
@@ -146,7 +146,7 @@ double directivity(Directivity d, const Eigen::Vector3d& u) {
 PassbyHistory passby_history(const std::vector<MovingPointSource>& points,
                              const std::vector<MovingLineSource>& lines,
                              const PassbyGeometry& geometry, double speed, double t0, double dt,
-                             int steps, const Fluid& fluid) {
+                             int steps, const Fluid& fluid, int threads) {
   if (!(speed > 0.0) || !(dt > 0.0) || steps < 1 || !std::isfinite(t0))
     throw std::invalid_argument("passby_history: needs a speed > 0, a step > 0 and steps >= 1");
   if (!(geometry.distance > 0.0) || !(geometry.height > geometry.ground_level))
@@ -165,14 +165,23 @@ PassbyHistory passby_history(const std::vector<MovingPointSource>& points,
       out.mean_square.row(k) += spreading(at, p.directivity, geometry, fluid) * W;
     }
   }
+  // GSL's error handler off for the lines' integrals (their status is checked), once: the
+  // threads of add_lines do not touch the global handler
+  gsl_error_handler_t* old = gsl_set_error_handler_off();
   std::vector<bool> done(lines.size(), false);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (done[i]) continue;
     std::vector<std::size_t> members;
     for (std::size_t j = i; j < lines.size(); ++j)
       if (!done[j] && same_shape(lines[i], lines[j])) members.push_back(j), done[j] = true;
-    add_lines(lines, members, geometry, speed, t0, dt, steps, fluid, out.mean_square);
+    try {
+      add_lines(lines, members, geometry, speed, t0, dt, steps, fluid, threads, out.mean_square);
+    } catch (...) {
+      gsl_set_error_handler(old);
+      throw;
+    }
   }
+  gsl_set_error_handler(old);
   return out;
 }
 

@@ -91,11 +91,12 @@ struct PassbyHistory {
 };
 
 /// (P2) of each point source and (L1)'s integral of each line source at the receiver, summed,
-/// at the times t_0 + k dt, k = 0 .. steps - 1, for the train's speed V (m/s).
+/// at the times t_0 + k dt, k = 0 .. steps - 1, for the train's speed V (m/s). The lines' bands
+/// on `threads` threads (the same result for any number).
 PassbyHistory passby_history(const std::vector<MovingPointSource>& points,
                              const std::vector<MovingLineSource>& lines,
                              const PassbyGeometry& geometry, double speed, double t0, double dt,
-                             int steps, const Fluid& fluid = Fluid{});
+                             int steps, const Fluid& fluid = Fluid{}, int threads = 1);
 
 /// p_A^2(t) (Pa^2): the bands of `history` A-weighted at their centres (Hz) and summed.
 std::vector<double> a_weighted_mean_square(const PassbyHistory& history,

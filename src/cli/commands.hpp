@@ -45,6 +45,11 @@ int run_response(const CommonOptions& o);
 int run_validate(const CommonOptions& o);
 int run_noise(const CommonOptions& o);
 int run_receptance(const CommonOptions& o);
+/// rollnoise passby (passby_command.cpp): the noise run, then its train passing the receiver.
+int run_passby(const CommonOptions& o);
+/// rollnoise cnossos (cnossos_command.cpp): CNOSSOS-EU transfer functions as JSON (-o), the power
+/// per metre for `flow` vehicles per hour.
+int run_cnossos(const CommonOptions& o, double flow);
 /// rollnoise modes (modes_command.cpp): the FE wheel's modes; `csv` may be empty.
 int run_modes(const CommonOptions& o, const std::string& csv);
 /// rollnoise statespace (statespace_command.cpp); `csv_prefix` may be empty.

@@ -7,6 +7,8 @@
 //   rollnoise validate  CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise noise     CASE.toml [-o OUT.h5] [--set key=value]...
 //   rollnoise receptance CASE.toml [-o OUT.h5] [--set key=value]...
+//   rollnoise passby    CASE.toml [-o OUT.h5] [--set key=value]...   a train passing by
+//   rollnoise cnossos   CASE.toml [-o OUT.json] [--set key=value]... [--flow Q]   CNOSSOS-EU
 //   rollnoise statespace CASE.toml [-o OUT.h5] [--set key=value]... [--csv PREFIX]
 //   rollnoise squeal    CASE.toml [-o OUT.h5] [--set key=value]... [--route 1|2|both]
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
@@ -36,7 +38,8 @@ namespace rollnoise::cli {
 
 std::string output_path(const CommonOptions& o, const std::string& case_name) {
   if (!o.output.empty()) return o.output;
-  return case_name + (o.command.empty() ? "" : "." + o.command) + ".h5";
+  return case_name + (o.command.empty() ? "" : "." + o.command) +
+         (o.command == "cnossos" ? ".json" : ".h5");
 }
 
 }  // namespace rollnoise::cli
@@ -64,8 +67,9 @@ struct CommandLine {
   std::vector<int> bench_grids = {10, 14, 20, 28, 40, 56};
   std::vector<int> sweep_cost_grids;
   bool contact_input_steady = false;
+  double flow = 10.0;  ///< cnossos --flow
   CLI::App *steady = nullptr, *transient = nullptr, *creep = nullptr, *response = nullptr,
-           *validate = nullptr, *noise = nullptr, *receptance = nullptr, *modes = nullptr,
+           *validate = nullptr, *noise = nullptr, *receptance = nullptr, *passby = nullptr, *cnossos = nullptr, *modes = nullptr,
            *squeal = nullptr, *bench = nullptr, *statespace = nullptr, *contact_input = nullptr,
            *keys = nullptr, *study = nullptr, *collect = nullptr;
 };
@@ -110,6 +114,11 @@ void add_noise_commands(CLI::App& app, CommandLine& cl) {
   add_common(cl.noise, cl.common);
   cl.receptance = app.add_subcommand("receptance", "wheel, rail and contact receptances alone");
   add_common(cl.receptance, cl.common);
+  cl.passby = app.add_subcommand("passby", "the noise run's bogie in a train passing the EN ISO 3095 receiver");
+  add_common(cl.passby, cl.common);
+  cl.cnossos = app.add_subcommand("cnossos", "CNOSSOS-EU transfer functions (NoiseModelling's JSON) and power per metre");
+  add_common(cl.cnossos, cl.common);
+  cl.cnossos->add_option("--flow", cl.flow, "vehicles per hour for the power per metre (default 10)");
   cl.modes = app.add_subcommand("modes", "the wheel's axisymmetric FE modes and shapes along the tread");
   add_common(cl.modes, cl.common);
   cl.modes->add_option("--csv", cl.modes_csv, "also write the tread shapes as CSV (the wheel.shapes import format)");
@@ -178,7 +187,7 @@ int dispatch(CommandLine& cl) {
     cl.common.contact_reference = cl.reference[1];
   }
   for (const CLI::App* sub : {cl.steady, cl.transient, cl.creep, cl.response, cl.validate, cl.noise,
-                              cl.receptance, cl.modes, cl.squeal, cl.bench, cl.statespace})
+                              cl.receptance, cl.passby, cl.cnossos, cl.modes, cl.squeal, cl.bench, cl.statespace})
     if (sub->parsed()) cl.common.command = sub->get_name();
   const cli::CommonOptions& common = cl.common;
   // -q: warnings and errors only (stderr); study --list still prints its commands, which are its result
@@ -200,6 +209,8 @@ int dispatch(CommandLine& cl) {
   if (cl.validate->parsed()) return cli::run_validate(common);
   if (cl.noise->parsed()) return cli::run_noise(common);
   if (cl.receptance->parsed()) return cli::run_receptance(common);
+  if (cl.passby->parsed()) return cli::run_passby(common);
+  if (cl.cnossos->parsed()) return cli::run_cnossos(common, cl.flow);
   if (cl.modes->parsed()) return cli::run_modes(common, cl.modes_csv);
   if (cl.bench->parsed() && !cl.sweep_cost_grids.empty()) return cli::run_sweep_cost(common, cl.sweep_cost_grids);
   if (cl.squeal->parsed()) return cli::run_squeal(common, cl.squeal_route);

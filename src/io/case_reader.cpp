@@ -282,6 +282,32 @@ std::vector<std::string> CaseReader::string_list(const std::string& key) const {
   return out;
 }
 
+std::vector<std::map<std::string, double>> CaseReader::table_list(const std::string& key,
+                                                                  const std::vector<std::string>& fields) const {
+  std::vector<std::map<std::string, double>> out;
+  const toml::node* n = node_at(doc_->table, key);
+  if (!n) return out;
+  const auto* arr = n->as_array();
+  if (!arr) fail(key, "expected [[" + key + "]] entries (an array of tables), got " + describe(*n));
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const std::string at = key + "[" + std::to_string(i) + "]";
+    const auto* t = (*arr)[i].as_table();
+    if (!t) fail(key, at + " is not a table");
+    std::map<std::string, double> entry;
+    for (const auto& [k, v] : *t) {
+      const std::string field(k.str());
+      if (std::find(fields.begin(), fields.end(), field) == fields.end())
+        fail(key, at + "." + field + ": unknown key (see 'rollnoise keys')");
+      const auto x = v.value<double>();
+      if (!x || !v.is_number() || !std::isfinite(*x))
+        fail(key, at + "." + field + ": expected a finite number, got " + describe(v));
+      entry[field] = *x;
+    }
+    out.push_back(entry);
+  }
+  return out;
+}
+
 std::array<double, 3> CaseReader::real3(const std::string& key) const {
   const auto v = real_list(key);
   if (v.size() != 3)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ class CaseReader {
   std::vector<double> real_list(const std::string& key) const;
   /// An array of strings, each one of the key's allowed values (when it has any).
   std::vector<std::string> string_list(const std::string& key) const;
+
+  /// An array of tables ([[key]] entries, or key = [{...}, ...]): each entry's numbers by field.
+  /// Fails naming key[i].field for a field not in `fields` or a value that is not a finite number;
+  /// empty when the key is absent.
+  std::vector<std::map<std::string, double>> table_list(const std::string& key,
+                                                        const std::vector<std::string>& fields) const;
 
   /// Throw InputError for `key` with the file name in front of `message`.
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "acoustics/tsi_noise.hpp"
 #include "pipeline/limits.hpp"
 
 namespace rollnoise::io {
@@ -29,6 +30,13 @@ const PhysicalRange kPhysicalRanges[] = {
     {"curve.conicity", 0.0, 0.5, "equivalent conicities of worn and new profiles lie below about 0.5"},
     {"curve.wheel_radius", 0.2, 0.65, "railway wheels have rolling radii of about 0.3-0.6 m"},
 };
+
+// passby.category: "none" and the TSI's categories (acoustics/tsi_noise.hpp).
+std::vector<std::string> passby_categories() {
+  std::vector<std::string> c = {"none"};
+  for (const std::string& n : acoustics::tsi_categories()) c.push_back(n);
+  return c;
+}
 
 std::vector<KeySpec> with_physical_ranges(std::vector<KeySpec> schema) {
   for (const PhysicalRange& r : kPhysicalRanges)
@@ -365,6 +373,34 @@ const std::vector<KeySpec>& case_schema() {
       {"sound.sleeper_length", T::PositiveReal, "1.3", "m",
        "the radiating length of the sleeper per rail (half a 2.6 m monobloc sleeper)"},
       {"sound.sleeper_width", T::PositiveReal, "0.25", "m", "the sleeper's radiating width"},
+      // the train and the pass-by (passby; docs/sound.md Sec. 6, pipeline/passby.hpp)
+      {"train.vehicles", T::Integer, "1", "-",
+       "passby: the number of vehicles, each train.vehicle_length long with two two-axle bogies "
+       "(without [[train.vehicle]] entries)",
+       {}, 1, "", 1000},
+      {"train.vehicle_length", T::PositiveReal, "26.4", "m", "passby: a vehicle's length over buffers"},
+      {"train.bogie_distance", T::PositiveReal, "19.0", "m",
+       "passby: the distance between a vehicle's bogie centres (wheelbase < bogie_distance < vehicle_length)"},
+      {"train.wheelbase", T::PositiveReal, "", "m", "passby: the bogies' wheelbase", {}, 0,
+       "optional (default: curve.wheelbase, the bogie the noise run computes)"},
+      {"train.vehicle", T::TableList, "", "-",
+       "passby: a train of different vehicles, front to rear: [[train.vehicle]] entries, each with count "
+       "(vehicles alike, default 1), length, bogie_distance and wheelbase (m; default the [train] values)",
+       {}, 0, "optional: without it train.vehicles alike vehicles"},
+      {"passby.distance", T::PositiveReal, "7.5", "m",
+       "passby: the receiver's distance from the track centre (EN ISO 3095:2013: 7.5 m)"},
+      {"passby.height", T::Real, "1.2", "m",
+       "passby: the receiver's height above the top of the rail (EN ISO 3095:2013: 1.2 m)"},
+      {"passby.ground", T::String, "\"reflecting\"", "-",
+       "passby: the ground plane 0.3 m below the rail top: its image source added in energy (reflecting, "
+       "Q = 1) or not (absorbing, Q = 0); the sleepers radiate into the half space either way",
+       {"reflecting", "absorbing"}},
+      {"passby.time_step", T::PositiveReal, "0.01", "s",
+       "passby: the step of the level history (the F time weighting's tau is 0.125 s)"},
+      {"passby.category", T::String, "\"none\"", "-",
+       "passby: the vehicle category whose TSI Noise limit of L_pAeq,Tp(80 km/h) is printed beside the "
+       "level (Regulation (EU) No 1304/2014 Annex 4.2.3 Table 4, amended by (EU) 2019/774)",
+       passby_categories()},
       // limits (pipeline/limits.hpp; docs/conventions.md, Limits)
       {"limits.memory", T::PositiveReal, memory_default, "B",
        "memory a run may use, estimated before allocating (default: half the physical memory of this machine)"},

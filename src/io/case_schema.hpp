@@ -18,6 +18,7 @@ enum class KeyType {
   Real3,         ///< array of three finite reals
   RealList,      ///< array of finite reals
   StringList,    ///< array of strings
+  TableList,     ///< array of tables ([[key]] entries; CaseReader::table_list)
 };
 
 struct KeySpec {

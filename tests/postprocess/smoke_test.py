@@ -85,6 +85,11 @@ def main():
     rollnoise(binary, work, "noise", os.path.join(CASES, "curve_300m_table.toml"), "-o", "noise_wheels.h5",
               "--set", "grid.nx=12", "--set", "grid.ny=10", "--set", "noise.points_per_band=4",
               "--set", "track.support=\"continuous\"", "--set", "noise.band_max=800")
+    # the pass-by of two coaches on a coarse sampling (~2 s)
+    rollnoise(binary, work, "passby", os.path.join(CASES, "passby_tangent.toml"), "-o", "passby.h5",
+              "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2500",
+              "--set", "noise.points_per_band=4", "--set", "noise.band_refinement=0", "--set", "noise.band_min=500",
+              "--set", "noise.band_max=2000", "--set", "train.vehicles=2")
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
@@ -122,6 +127,7 @@ def main():
         ("plot_roughness.py", [os.path.join(ROOT, "models", "roughness", "wheel_cast_iron_block.csv"),
                                os.path.join(ROOT, "models", "roughness", "wheel_disc_braked.csv"), "--label", "cast iron",
                                "--label", "disc", "-o", j("roughness.png")], ["roughness.png"]),
+        ("plot_passby.py", [j("passby.h5"), "-o", j("passby.png")], ["passby.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
         ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
@@ -161,7 +167,7 @@ def main():
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
                                 "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_receptance.py", "plot_bench.py", "plot_study.py",
-                                "plot_modes.py", "plot_roughness.py"]
+                                "plot_modes.py", "plot_roughness.py", "plot_passby.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
         status, err = plot(script, bad, *EXTRA_ARGS.get(script, []))
