@@ -395,6 +395,10 @@ const std::vector<KeySpec>& case_schema() {
        "passby: the ground plane 0.3 m below the rail top: its image source added in energy (reflecting, "
        "Q = 1) or not (absorbing, Q = 0); the sleepers radiate into the half space either way",
        {"reflecting", "absorbing"}},
+      {"passby.rail_directivity", T::String, "\"monopole\"", "-",
+       "passby: the rails' line sources: a monopole (their vertical and lateral radiation together) "
+       "or a dipole along the vertical or the lateral (one motion alone; docs/sound.md Sec. 6)",
+       {"monopole", "vertical-dipole", "lateral-dipole"}},
       {"passby.time_step", T::PositiveReal, "0.01", "s",
        "passby: the step of the level history (the F time weighting's tau is 0.125 s)"},
       {"passby.category", T::String, "\"none\"", "-",

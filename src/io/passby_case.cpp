@@ -108,6 +108,12 @@ pipeline::PassbyCase read_passby_case(const CaseReader& r, const pipeline::Noise
                                   std::to_string(pc.geometry.height) + " m");
   });
   p.check([&] { pc.geometry.reflection = r.string("passby.ground") == "reflecting" ? 1.0 : 0.0; });
+  p.check([&] {
+    const std::string d = r.string("passby.rail_directivity");
+    pc.rail_directivity = d == "vertical-dipole"  ? acoustics::Directivity::kDipoleZ
+                          : d == "lateral-dipole" ? acoustics::Directivity::kDipoleY
+                                                  : acoustics::Directivity::kMonopole;
+  });
   p.check([&] { pc.time_step = r.real("passby.time_step"); });
   p.check([&] { pc.threads = resolved_threads(static_cast<int>(r.integer("solver.threads"))); });
   p.check([&] {

@@ -66,8 +66,7 @@ void add_wheel(TrainSources& s, double x0, double y, std::size_t k, const SoundR
                                         : std::vector<double>{};
   MovingPointSource mono{{x0, y, pc.wheel_radius}, Directivity::kMonopole, {}};
   MovingPointSource dipole{{x0, y, pc.wheel_radius}, Directivity::kDipoleY, {}};
-  MovingLineSource rail{
-      {x0, y, kRailCentreHeight}, Directivity::kMonopole, {}, sound.decay_vertical};
+  MovingLineSource rail{{x0, y, kRailCentreHeight}, pc.rail_directivity, {}, sound.decay_vertical};
   MovingLineSource sleepers{
       {x0, y, pc.geometry.ground_level}, Directivity::kMonopole, {}, sound.decay_vertical};
   for (std::size_t b = 0; b < nb; ++b) {

@@ -83,6 +83,9 @@ struct PassbyCase {
   acoustics::PassbyGeometry geometry;  ///< passby.distance, passby.height, passby.ground
   double wheel_radius = 0.46;          ///< r0: the wheel centre's height above the rail (m)
   double time_step = 0.01;             ///< of the history (s), passby.time_step
+  /// the rails' line sources (passby.rail_directivity): the monopole of the header, or a dipole
+  /// along z or y (the rail's vertical or lateral motion alone)
+  acoustics::Directivity rail_directivity = acoustics::Directivity::kMonopole;
   std::string category;                ///< passby.category; empty: none
   int threads =
       1;  ///< for the lines' bands (solver.threads resolved; the result does not depend on it)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -102,6 +103,30 @@ TEST(PassbyPipeline, EqualsTheHandPlacedSourcesAndItsLevelsAgree) {
   EXPECT_GE(r.tel, r.leq_a);  // the whole event's energy over T_p
   for (const WheelId w : r.source_wheel) EXPECT_EQ(w, WheelId::leading_outer);
   EXPECT_TRUE(std::isnan(r.limit_a));
+}
+
+// passby.rail_directivity: the receiver (7.5 m out, 1.2 m up: the rails' centre lines 9-10 deg
+// below it) hears the rails' vertical dipole below their monopole, and the lateral dipole above it
+// by at most 10 lg 3 = 4.8 dB (the dipole's on-axis gain); the wheels' and sleepers' columns do
+// not move (1e-12 dB).
+TEST(PassbyPipeline, RailDirectivityOrdersTheRailsLevel) {
+  const pl::SoundResult s = made_up_sound();
+  pl::PassbyCase pc;
+  pc.train.assign(2, pl::Vehicle{26.4, 19.0, 2.5});
+  const double V = 80.0 / 3.6;
+  std::vector<pl::PassbyResult> r;
+  for (const pac::Directivity d :
+       {pac::Directivity::kMonopole, pac::Directivity::kDipoleZ, pac::Directivity::kDipoleY}) {
+    pc.rail_directivity = d;
+    r.push_back(pl::run_passby(pc, s, {WheelId::leading_outer}, V));
+  }
+  std::printf("  rail L_eq,A: monopole %.2f, vertical dipole %.2f, lateral dipole %.2f dB(A)\n",
+              r[0].spectrum_a[1], r[1].spectrum_a[1], r[2].spectrum_a[1]);
+  EXPECT_LT(r[1].spectrum_a[1], r[0].spectrum_a[1] - 6.0);
+  EXPECT_GT(r[2].spectrum_a[1], r[0].spectrum_a[1]);
+  EXPECT_LT(r[2].spectrum_a[1], r[0].spectrum_a[1] + 10 * std::log10(3.0));
+  for (const std::size_t c : {0u, 2u})
+    for (std::size_t k = 1; k < 3; ++k) EXPECT_NEAR(r[k].spectrum_a[c], r[0].spectrum_a[c], 1e-12);
 }
 
 // TSI Noise (Regulation (EU) No 1304/2014 Annex 6.2.2.3): at 80 km/h the normalised level is the
