@@ -311,7 +311,8 @@ const std::vector<KeySpec>& case_schema() {
        "f_n +- n Omega / 2 pi, Omega = V / r0 (Thompson 2009 Ch. 5; docs/models.md Sec. 3.4); \"none\": the wheel at rest",
        {"split", "none"}},
       {"roughness.rail", T::String, "\"iso3095\"", "-",
-       "rail roughness: \"iso3095\" (EN ISO 3095:2013 limit) or a CSV file (wavelength m, level dB re 1 um)"},
+       "rail roughness: \"iso3095\" (EN ISO 3095:2013 limit), \"cnossos-average\" (CNOSSOS-EU average "
+       "network) or a CSV file (wavelength m, level dB re 1 um)"},
       {"roughness.wheel", T::String, "\"cast-iron\"", "-",
        "wheel roughness: \"cast-iron\", \"disc-braked\" or a CSV file"},
       {"roughness.filter", T::String, "\"isotropic\"", "-", "contact filter",

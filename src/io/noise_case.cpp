@@ -30,6 +30,7 @@ namespace {
 noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) {
   const std::string v = r.string(key);
   if (v == "iso3095") return noise::iso3095_2013_rail_limit();
+  if (v == "cnossos-average") return noise::rail_roughness_cnossos_average();
   if (v == "cast-iron") return noise::wheel_roughness_cast_iron_block();
   if (v == "disc-braked") return noise::wheel_roughness_disc_braked();
   return read_roughness_csv(resolve_model_file(r, key));

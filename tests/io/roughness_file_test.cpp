@@ -25,7 +25,8 @@ TEST(RoughnessSpectra, CsvFilesEqualBuiltInTables) {
   const std::pair<const char*, rn::RoughnessSpectrum> files[] = {
       {"iso3095_2013_limit.csv", rn::iso3095_2013_rail_limit()},
       {"wheel_cast_iron_block.csv", rn::wheel_roughness_cast_iron_block()},
-      {"wheel_disc_braked.csv", rn::wheel_roughness_disc_braked()}};
+      {"wheel_disc_braked.csv", rn::wheel_roughness_disc_braked()},
+      {"rail_cnossos_average_network.csv", rn::rail_roughness_cnossos_average()}};
   for (const auto& [name, builtin] : files) {
     const rn::RoughnessSpectrum s = rollnoise::io::read_roughness_csv(model_path(name));
     ASSERT_EQ(s.wavelength.size(), builtin.wavelength.size()) << name;
@@ -37,6 +38,11 @@ TEST(RoughnessSpectra, CsvFilesEqualBuiltInTables) {
   // Block-braked treads are rougher than disc-braked ones at 2-10 cm (what makes them noisier).
   const auto ci = rn::wheel_roughness_cast_iron_block(), disc = rn::wheel_roughness_disc_braked();
   for (double l : {0.05, 0.0315, 0.02}) EXPECT_GT(ci.level_at(l), disc.level_at(l) + 5.0) << l;
+  // An average network's rail against the EN ISO 3095 limit (a test track's): rougher by more
+  // than 5 dB at 1-2 m, and rougher at 2.5-4 cm, the wavelengths of 550-900 Hz at 80 km/h.
+  const auto avg = rn::rail_roughness_cnossos_average(), iso = rn::iso3095_2013_rail_limit();
+  for (double l : {2.0, 1.25, 1.0}) EXPECT_GT(avg.level_at(l), iso.level_at(l) + 5.0) << l;
+  for (double l : {0.04, 0.0315, 0.025}) EXPECT_GT(avg.level_at(l), iso.level_at(l)) << l;
 }
 
 TEST(RoughnessSpectra, BadCsvNamesFileLineAndField) {
