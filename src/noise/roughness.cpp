@@ -72,8 +72,8 @@ RoughnessSpectrum iso3095_2013_rail_limit() {
 
 RoughnessSpectrum rail_roughness_cnossos_average() {
   static constexpr double kLevels[35] = {
-      35.0,  31.0,  28.0,  25.0,  23.0,  20.0,  17.0,  13.5,  10.5,  9.0,   6.5,   5.5,
-      5.0,   3.5,   2.0,   0.1,   -0.2,  -0.3,  -0.8,  -3.0,  -5.0,  -7.0,  -8.0,  -9.0,
+      35.0,  31.0,  28.0,  25.0,  23.0,  20.0,  17.0,  13.5,  10.5,  9.0,   6.5,  5.5,
+      5.0,   3.5,   2.0,   0.1,   -0.2,  -0.3,  -0.8,  -3.0,  -5.0,  -7.0,  -8.0, -9.0,
       -10.0, -12.0, -13.0, -14.0, -15.0, -16.0, -17.0, -18.0, -19.0, -19.0, -19.0};
   return table("rail roughness, CNOSSOS-EU average network", kLevels);
 }

@@ -45,9 +45,10 @@ struct RoughnessSpectrum {
 RoughnessSpectrum iso3095_2013_rail_limit();
 
 /// The rail roughness of an average network ("normally maintained smooth"; CNOSSOS-EU, Directive
-/// (EU) 2015/996 Annex II, Appendix G, Table G-1); models/roughness/rail_cnossos_average_network.csv.
-/// Against the EN ISO 3095 limit: 8-18 dB above it at 1-2 m, up to 4.5 dB below at 0.1-0.4 m, up
-/// to 4.2 dB above at 2.5-4 cm (the bands 80 km/h puts at 550-900 Hz).
+/// (EU) 2015/996 Annex II, Appendix G, Table G-1);
+/// models/roughness/rail_cnossos_average_network.csv. Against the EN ISO 3095 limit: 8-18 dB above
+/// it at 1-2 m, up to 4.5 dB below at 0.1-0.4 m, up to 4.2 dB above at 2.5-4 cm (the bands 80 km/h
+/// puts at 550-900 Hz).
 RoughnessSpectrum rail_roughness_cnossos_average();
 
 /// Typical tread roughness of cast-iron block-braked wheels (CNOSSOS-EU Table G-2, "cast iron
