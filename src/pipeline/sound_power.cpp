@@ -244,8 +244,12 @@ RailLineGram rail_line_gram(const dynamics::RailModel& rail, const std::vector<d
       pairs.push_back({dynamics::RailContact{x, 0.0, 0.0}, dynamics::RailContact{xb, 0.0, 0.0}});
   const std::size_t nf = grid.size();
   g.z.resize(nf), g.y.resize(nf), g.sleepers.resize(nf);
-  if (rail.samples_grid()) {  // the waveguide samples the whole grid: one call
-    const auto transfers = rail.contact_transfers(grid, pairs, true);
+  if (rail.samples_grid()) {
+    // The waveguide: the whole grid in one call (its evaluations run on threads), each frequency
+    // directly: on the ~630 positions' pairs the adaptive sampling's interpolation checks cost
+    // more than the evaluations they save (curve_300m: 25.0 -> 14.1 s on a loaded machine, the
+    // sleepers' band powers within 0.002 dB; docs/record/performance_waveguide.md Sec. 12).
+    const auto transfers = rail.contact_transfers(grid, pairs, false);
     for (std::size_t k = 0; k < nf; ++k)
       add_line_gram(pts, p, transfers[k], g.z[k], g.y[k], g.sleepers[k]);
     return g;
