@@ -153,6 +153,22 @@ SurfaceSpectrum combined(SurfaceSpectrum basis, Eigen::MatrixXd combination) {
   return out;
 }
 
+SurfaceSpectra combined(SurfaceSpectra basis, Eigen::MatrixXd combination) {
+  return [basis = std::move(basis), C = std::move(combination)](double frequency) {
+    return combined(basis(frequency), C);
+  };
+}
+
+PlacedLoads placed_at(const Eigen::MatrixXd& distributions, const std::vector<double>& x) {
+  const Eigen::Index c = distributions.cols();
+  PlacedLoads out{Eigen::MatrixXd(distributions.rows(), c * Eigen::Index(x.size())), {}};
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    out.load.middleCols(c * Eigen::Index(i), c) = distributions;
+    out.x.insert(out.x.end(), static_cast<std::size_t>(c), x[i]);
+  }
+  return out;
+}
+
 SurfaceSpectrum surface_spectrum(const RailWaveguide& rail, double omega,
                                  const Eigen::MatrixXd& response, const Eigen::MatrixXd& load,
                                  const std::vector<double>& load_x) {

@@ -109,6 +109,17 @@ SurfaceSpectrum spectrum_of(SpectrumTerms terms);
 /// kappa (U linear in the loads), C = `combination` (basis.columns rows).
 SurfaceSpectrum combined(SurfaceSpectrum basis, Eigen::MatrixXd combination);
 
+/// The same per frequency: spectra of loads made of `basis`'s columns.
+SurfaceSpectra combined(SurfaceSpectra basis, Eigen::MatrixXd combination);
+
+/// Load columns `distributions` (dofs x c) placed at each of `x` (m along the rail), side by
+/// side, with each column's position: the loads of a load basis (RailLoadBasis).
+struct PlacedLoads {
+  Eigen::MatrixXd load;   ///< dofs x (c x.size())
+  std::vector<double> x;  ///< per column (m)
+};
+PlacedLoads placed_at(const Eigen::MatrixXd& distributions, const std::vector<double>& x);
+
 /// Eq. (W7) on the free or continuously supported `rail` at angular frequency omega: the
 /// spectrum of `response` (dofs() x pieces) per loads `load` (dofs() x c) at `load_x` (per column).
 SurfaceSpectrum surface_spectrum(const RailWaveguide& rail, double omega,

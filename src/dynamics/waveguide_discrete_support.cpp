@@ -690,29 +690,20 @@ SurfaceSpectra DiscreteWaveguideRailModel::basis_surface_spectra(
   if (!options_.head_load) return nullptr;
   const Parts& parts = parts_.get();
   const std::shared_ptr<const HeadStation> head = parts.head;
-  const Eigen::Index c = head->loads.cols();
   auto response = std::make_shared<const Eigen::MatrixXd>(
       outline_normal_distributions(parts.section.mesh(), pieces) * patterns);
-  auto load = std::make_shared<Eigen::MatrixXd>(head->loads.rows(), c * Eigen::Index(x.size()));
-  std::vector<double> load_x;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    load->middleCols(c * Eigen::Index(i), c) = head->loads;
-    load_x.insert(load_x.end(), static_cast<std::size_t>(c), x[i]);
-  }
-  return [head, response, load, load_x](double frequency) {
-    return head->rail.surface_spectrum(angular(frequency), *response, *load, load_x);
+  auto placed = std::make_shared<const PlacedLoads>(placed_at(head->loads, x));
+  return [head, response, placed](double frequency) {
+    return head->rail.surface_spectrum(angular(frequency), *response, placed->load, placed->x);
   };
 }
 
 SurfaceSpectra DiscreteWaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
                                                            const std::vector<OutlinePiece>& pieces,
                                                            const Eigen::MatrixXd& patterns) const {
-  if (std::optional<RailLoadBasis> basis = load_basis(points)) {
-    SurfaceSpectra spectra = basis_surface_spectra(basis->x, pieces, patterns);
-    return [spectra, C = std::move(basis->combination)](double frequency) {
-      return combined(spectra(frequency), C);
-    };
-  }
+  if (std::optional<RailLoadBasis> basis = load_basis(points))
+    return combined(basis_surface_spectra(basis->x, pieces, patterns),
+                    std::move(basis->combination));
   const LoadPointColumns at = load_point_columns(points);
   const std::shared_ptr<const Station> st = station(at.distinct);
   auto response = std::make_shared<const Eigen::MatrixXd>(

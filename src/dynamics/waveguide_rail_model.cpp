@@ -622,26 +622,18 @@ SurfaceSpectra WaveguideRailModel::basis_surface_spectra(const std::vector<doubl
       s.full.reduced(options_.contact_reduction, head, s.modes));
   auto response = std::make_shared<const Eigen::MatrixXd>(
       outline_normal_distributions(model->mesh(), pieces) * patterns);
-  auto load = std::make_shared<Eigen::MatrixXd>(head.rows(), head.cols() * Eigen::Index(x.size()));
-  std::vector<double> load_x;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    load->middleCols(head.cols() * Eigen::Index(i), head.cols()) = head;
-    load_x.insert(load_x.end(), static_cast<std::size_t>(head.cols()), x[i]);
-  }
-  return [model, response, load, load_x](double frequency) {
-    return surface_spectrum(*model, angular(frequency), *response, *load, load_x);
+  auto placed = std::make_shared<const PlacedLoads>(placed_at(head, x));
+  return [model, response, placed](double frequency) {
+    return surface_spectrum(*model, angular(frequency), *response, placed->load, placed->x);
   };
 }
 
 SurfaceSpectra WaveguideRailModel::surface_spectra(const std::vector<RailLoadPoint>& points,
                                                    const std::vector<OutlinePiece>& pieces,
                                                    const Eigen::MatrixXd& patterns) const {
-  if (std::optional<RailLoadBasis> basis = load_basis(points)) {
-    SurfaceSpectra spectra = basis_surface_spectra(basis->x, pieces, patterns);
-    return [spectra, C = std::move(basis->combination)](double frequency) {
-      return combined(spectra(frequency), C);
-    };
-  }
+  if (std::optional<RailLoadBasis> basis = load_basis(points))
+    return combined(basis_surface_spectra(basis->x, pieces, patterns),
+                    std::move(basis->combination));
   const LoadPointColumns at = load_point_columns(points);
   const std::shared_ptr<const Station> st = station(at.distinct);
   auto response = std::make_shared<const Eigen::MatrixXd>(
