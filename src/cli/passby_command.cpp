@@ -21,16 +21,14 @@ namespace {
 void print_passby(const pipeline::PassbyResult& p, const pipeline::PassbyCase& pc,
                   double noise_seconds) {
   std::printf(
-      "  train: %zu vehicles, %.1f m, %zu axles; V = %.2f m/s (%.1f km/h), T_p = %.2f s; receiver "
-      "%.2f m from "
-      "the track centre, %.2f m above the rail, %s ground\n",
+      "  train: %zu vehicles, %.1f m, %zu axles; V = %.2f m/s (%.1f km/h), T_p = %.2f s; "
+      "receiver %.2f m from the track centre, %.2f m above the rail, %s ground\n",
       pc.train.size(), p.length, p.axles.size(), p.speed, 3.6 * p.speed, p.passage_time,
       pc.geometry.distance, pc.geometry.height,
       pc.geometry.reflection > 0.0 ? "reflecting" : "absorbing");
   std::printf(
       "  L_pAeq,Tp %.1f dB(A), L_pAFmax %.1f dB(A), TEL %.1f dB(A) (re 20 uPa); by source "
-      "(A-weighted L_eq over "
-      "T_p): wheel %.1f, rail %.1f, sleepers %.1f dB(A)\n",
+      "(A-weighted L_eq over T_p): wheel %.1f, rail %.1f, sleepers %.1f dB(A)\n",
       p.leq_a, p.lmax_a, p.tel, p.spectrum_a[0], p.spectrum_a[1], p.spectrum_a[2]);
   std::printf(
       "  TSI Noise (Regulation (EU) No 1304/2014): L_pAeq,Tp normalised to 80 km/h %.1f dB(A)",
