@@ -38,7 +38,7 @@ RailPoints rail_points(double x_min, double x_max, double spacing, int gauss) {
   RailPoints p;
   p.first_span = static_cast<int>(std::floor(x_min / spacing)) - kWindowSpans;
   p.last_span = static_cast<int>(std::floor(x_max / spacing)) + kWindowSpans;
-  const linalg::GaussRule rule = linalg::gauss_legendre_01(gauss);
+  const linalg::GaussRule rule = gauss > 0 ? linalg::gauss_legendre_01(gauss) : linalg::GaussRule{};
   for (int j = p.first_span; j <= p.last_span; ++j) {
     for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
       p.x.push_back((j + rule.nodes[i]) * spacing);
@@ -316,12 +316,16 @@ struct SoundSetup {
 
 // (S2), (S3): the Gram matrices of both rails, from the cache where io gives one. Gauss points a
 // span from the bending wavelength at the top of the grid (12 a span up to 5 kHz: 2.4 wavelengths
-// of |u|^2 in a 0.6 m span).
+// of |u|^2 in a 0.6 m span); none where the section deforms: that rail radiates by (R2)
+// (add_rail_radiation), the line is its sleepers' alone (1/13 of the points).
 std::vector<RailGram> rail_grams(const dynamics::RailModel& rail,
                                  const std::vector<noise::ContactPoint>& contacts,
                                  const std::vector<double>& grid, const SoundCase& sound,
                                  int threads) {
-  const int gauss = std::max(12, static_cast<int>(std::ceil(12 * std::sqrt(grid.back() / 5000.0))));
+  const int gauss =
+      rail.section_deforms()
+          ? 0
+          : std::max(12, static_cast<int>(std::ceil(12 * std::sqrt(grid.back() / 5000.0))));
   std::vector<double> positions;
   for (const noise::ContactPoint& c : contacts)
     if (std::none_of(positions.begin(), positions.end(),

@@ -65,7 +65,9 @@ namespace rollnoise::pipeline {
 /// the loads at each of `positions` (6 per position: x, y, z, rot x, rot y, rot z),
 ///   G_z = Int a_z^H a_z dx,  G_y = Int a_y^H a_y dx,  G_s = sum_j a_z(x_j)^H a_z(x_j)  (sleepers
 ///   x_j = j L);
-/// m^2/N^2 m and m^2/N^2 (6 p x 6 p). `gauss`: Gauss-Legendre points a sleeper span. The same for
+/// m^2/N^2 m and m^2/N^2 (6 p x 6 p). `gauss`: Gauss-Legendre points a sleeper span; 0: the
+/// sleepers alone (G_z = G_y = 0), for a rail whose own radiation comes from its section's loads
+/// (Eq. R2, RailModel::section_deforms) and which needs the line for its sleepers only. The same for
 /// both rails (one track model); it depends on the track, the positions and the grid alone, so
 /// io keeps it in the cache (io/radiation_cache.hpp).
 struct RailLineGram {
