@@ -13,7 +13,7 @@
 #include "core/constants.hpp"
 #include "core/task_pool.hpp"
 #include "dynamics/rail_model.hpp"
-#include "linalg/gauss_legendre.hpp"
+#include "linalg/gauss_kronrod.hpp"
 #include "pipeline/sound_radiation.hpp"
 
 namespace rollnoise::pipeline {
@@ -21,38 +21,37 @@ namespace rollnoise::pipeline {
 namespace {
 
 using cdouble = std::complex<double>;
-constexpr int kPanelPoints = 10;  // Gauss-Legendre points a panel
-constexpr int kMaxDepth = 24;     // halvings of a starting panel
+constexpr int kMaxDepth = 24;  // halvings of a starting panel
 
-// A panel of theta and its 10-point value of (R2)'s integrand.
-struct Panel {
-  double a = 0.0, b = 0.0;
-  Eigen::MatrixXcd value;
-  int depth = 0;
+// (R2)'s integrand k U^H P_2D(k cos theta) U over a panel [a, b] by the 21-point Kronrod rule, and
+// the same by its 10 Gauss nodes alone (the error estimate of the Gauss value, which the Kronrod
+// value far undercuts).
+struct PanelValue {
+  Eigen::MatrixXcd kronrod, gauss;
 };
 
-// (R2)'s integrand k U^H P_2D(k cos theta) U integrated over the panels [a_i, b_i] by the
-// 10-point rule, one spectrum call for all of them.
-std::vector<Eigen::MatrixXcd> panel_values(const dynamics::SurfaceSpectrum& spectrum,
-                                           const SectionRadiationTable& table, double k,
-                                           const std::vector<std::pair<double, double>>& panels) {
-  static const linalg::GaussRule rule = linalg::gauss_legendre_01(kPanelPoints);
+// PanelValues of the panels [a_i, b_i], one spectrum call for all of them.
+std::vector<PanelValue> panel_values(const dynamics::SurfaceSpectrum& spectrum,
+                                     const SectionRadiationTable& table, double k,
+                                     const std::vector<std::pair<double, double>>& panels) {
+  static const linalg::GaussKronrod21 rule = linalg::gauss_kronrod_21_01();
   std::vector<double> kappas;
   for (const auto& [a, b] : panels)
     for (double t : rule.nodes) kappas.push_back(k * std::sin(a + t * (b - a)));
   const Eigen::MatrixXcd U = spectrum.at(kappas);
   const Eigen::Index c = spectrum.columns;
-  std::vector<Eigen::MatrixXcd> out;
+  std::vector<PanelValue> out;
   Eigen::Index q = 0;
   for (const auto& [a, b] : panels) {
-    Eigen::MatrixXcd sum = Eigen::MatrixXcd::Zero(c, c);
+    PanelValue v{Eigen::MatrixXcd::Zero(c, c), Eigen::MatrixXcd::Zero(c, c)};
     for (std::size_t i = 0; i < rule.nodes.size(); ++i, ++q) {
       const double theta = a + rule.nodes[i] * (b - a);
       const auto Uq = U.middleCols(c * q, c);
-      sum.noalias() +=
-          (rule.weights[i] * (b - a) * k) * (Uq.adjoint() * (table.at(k * std::cos(theta)) * Uq));
+      const Eigen::MatrixXcd f = ((b - a) * k) * (Uq.adjoint() * (table.at(k * std::cos(theta)) * Uq));
+      v.kronrod += rule.kronrod[i] * f;
+      if (rule.gauss[i] != 0.0) v.gauss += rule.gauss[i] * f;
     }
-    out.push_back(std::move(sum));
+    out.push_back(std::move(v));
   }
   return out;
 }
@@ -146,29 +145,29 @@ Eigen::MatrixXcd section_gram(const dynamics::SurfaceSpectrum& spectrum,
   // a period of e^{i kappa dx} in theta near theta = 0, 2 pi / (k dx): 10 Gauss points integrate
   // it to ~1e-9
   const double widest = std::min(kPi / 8.0, 2 * kPi / std::max(k * spread, 1.0));
-  std::vector<std::pair<double, double>> start = starting_panels(spectrum.wavenumbers, k, widest);
-  const std::vector<Eigen::MatrixXcd> first = panel_values(spectrum, table, k, start);
+  // each panel by Gauss-Kronrod: accepted where its Gauss and Kronrod values agree within
+  // `tolerance` times the integral's norm times its share of the interval, else halved
+  std::vector<std::pair<double, double>> todo = starting_panels(spectrum.wavenumbers, k, widest);
+  std::vector<PanelValue> values = panel_values(spectrum, table, k, todo);
   Eigen::MatrixXcd coarse_total = Eigen::MatrixXcd::Zero(spectrum.columns, spectrum.columns);
-  std::vector<Panel> todo;
-  for (std::size_t i = 0; i < start.size(); ++i) {
-    coarse_total += first[i];
-    todo.push_back({start[i].first, start[i].second, first[i], 0});
-  }
+  for (const PanelValue& v : values) coarse_total += v.kronrod;
   const double scale = std::max(coarse_total.norm(), 1e-300);
   Eigen::MatrixXcd total = Eigen::MatrixXcd::Zero(spectrum.columns, spectrum.columns);
-  while (!todo.empty()) {
-    Panel p = std::move(todo.back());
-    todo.pop_back();
-    const double mid = 0.5 * (p.a + p.b);
-    const std::vector<Eigen::MatrixXcd> halves =
-        panel_values(spectrum, table, k, {{p.a, mid}, {mid, p.b}});
-    const Eigen::MatrixXcd fine = halves[0] + halves[1];
-    if ((fine - p.value).norm() <= tolerance * scale * (p.b - p.a) / kPi || p.depth >= kMaxDepth) {
-      total += fine;
-      continue;
+  for (int depth = 0; !todo.empty(); ++depth) {
+    std::vector<std::pair<double, double>> halves;
+    for (std::size_t i = 0; i < todo.size(); ++i) {
+      const auto [a, b] = todo[i];
+      if ((values[i].kronrod - values[i].gauss).norm() <= tolerance * scale * (b - a) / kPi ||
+          depth >= kMaxDepth) {
+        total += values[i].kronrod;
+        continue;
+      }
+      const double mid = 0.5 * (a + b);
+      halves.emplace_back(a, mid);
+      halves.emplace_back(mid, b);
     }
-    todo.push_back({mid, p.b, halves[1], p.depth + 1});
-    todo.push_back({p.a, mid, halves[0], p.depth + 1});
+    todo = std::move(halves);
+    values = todo.empty() ? std::vector<PanelValue>{} : panel_values(spectrum, table, k, todo);
   }
   return total / (2 * kPi);
 }
