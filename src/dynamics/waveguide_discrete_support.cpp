@@ -677,6 +677,13 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
       .front();
 }
 
+std::optional<SpanningPoints> DiscreteWaveguideRailModel::spanning_points(
+    const Points& points) const {
+  return head_spanning_points(head_.get(),
+                              options_.outline.empty() ? uic60_outline() : options_.outline,
+                              options_, points);
+}
+
 std::optional<RailLoadBasis> DiscreteWaveguideRailModel::load_basis(
     const std::vector<RailLoadPoint>& points) const {
   const std::vector<Eigen::Vector2d> outline =

@@ -210,6 +210,7 @@ class DiscreteWaveguideRailModel : public GridSamplingRail {
   // GridSamplingRail's: at the contacts themselves (header comment), one Ritz basis per set of
   // coupled points (rail_point_sets), each pair at its own positions between the sleepers.
   const FrequencySampling& sampling() const override { return options_.sampling; }
+  std::optional<SpanningPoints> spanning_points(const Points& points) const override;
   bool along_rail_invariant() const override { return false; }
   Evaluator evaluator(const Points& points, const SetPairs& pairs) const override;
   LaplaceTransfers direct_laplace_transfers(

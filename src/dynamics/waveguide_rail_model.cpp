@@ -1,5 +1,7 @@
 #include "dynamics/waveguide_rail_model.hpp"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -340,6 +342,68 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
     bool interpolate, const std::vector<double>* grid) const {
   for (double f : frequencies) checked_omega(f);
   if (frequencies.empty()) return {};
+  const std::vector<std::vector<Receptance4>> values =
+      frame_values(frequencies, pairs, interpolate, grid);
+  std::vector<std::vector<Receptance6>> out(frequencies.size(),
+                                            std::vector<Receptance6>(pairs.size()));
+  for (std::size_t k = 0; k < frequencies.size(); ++k)
+    for (std::size_t p = 0; p < pairs.size(); ++p)
+      out[k][p] = from_contact_frames(values[p][k], pairs[p].first.contact_angle,
+                                      pairs[p].second.contact_angle);
+  return out;
+}
+
+std::vector<std::vector<Receptance4>> GridSamplingRail::frame_values(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+    bool interpolate, const std::vector<double>* grid) const {
+  // The points of the query; the crown alone (the decay rates, the line) is sampled as it is.
+  Points points;
+  for (const auto& [a, b] : pairs)
+    for (const RailContact& c : {a, b}) {
+      const std::pair<double, double> at(c.offset_y, c.contact_angle);
+      if (std::find(points.begin(), points.end(), at) == points.end()) points.push_back(at);
+    }
+  const bool crown_only = points.size() == 1 && points.front() == std::pair(0.0, 0.0);
+  const std::optional<SpanningPoints> span =
+      interpolate && !crown_only ? spanning_points(points) : std::nullopt;
+  if (!span) return set_values(frequencies, pairs, interpolate, grid);
+  // the spanning points' four pairs (i, j) at each distinct pair of positions (x_a, x_b)
+  std::vector<RailContactPair> spanned;
+  std::map<std::pair<double, double>, std::size_t> first;
+  std::vector<std::size_t> at(pairs.size());
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const std::pair<double, double> x(pairs[p].first.x, pairs[p].second.x);
+    const auto [it, added] = first.emplace(x, spanned.size());
+    at[p] = it->second;
+    if (!added) continue;
+    for (const auto& [oa, ga] : span->points)
+      for (const auto& [ob, gb] : span->points)
+        spanned.push_back({RailContact{x.first, oa, ga}, RailContact{x.second, ob, gb}});
+  }
+  const std::vector<std::vector<Receptance4>> v =
+      set_values(frequencies, spanned, interpolate, grid);
+  auto alpha = [&](const RailContact& c) -> const Eigen::Matrix<double, 8, 4>& {
+    const auto it = std::find(points.begin(), points.end(), std::pair(c.offset_y, c.contact_angle));
+    return span->combination[static_cast<std::size_t>(it - points.begin())];
+  };
+  std::vector<std::vector<Receptance4>> out(pairs.size(),
+                                            std::vector<Receptance4>(frequencies.size()));
+  Eigen::Matrix<cdouble, 8, 8> V;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const Eigen::Matrix<cdouble, 8, 4> a = alpha(pairs[p].first).cast<cdouble>();
+    const Eigen::Matrix<cdouble, 8, 4> b = alpha(pairs[p].second).cast<cdouble>();
+    for (std::size_t k = 0; k < frequencies.size(); ++k) {
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) V.block<4, 4>(4 * i, 4 * j) = v[at[p] + 2 * i + j][k];
+      out[p][k] = a.transpose() * V * b;
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<Receptance4>> GridSamplingRail::set_values(
+    const std::vector<double>& frequencies, const std::vector<RailContactPair>& pairs,
+    bool interpolate, const std::vector<double>* grid) const {
   const RailPointSets sets = rail_point_sets(pairs);
   const bool invariant = along_rail_invariant();
   // the contact-frame 4x4 of each pair at every frequency, one basis per set of points
@@ -390,13 +454,7 @@ std::vector<std::vector<Receptance6>> GridSamplingRail::transfers(
                        sampling(), scales, *memo_, sets.points[s], code);
     for (std::size_t i = 0; i < which.size(); ++i) values[which[i]] = std::move(v[i]);
   }
-  std::vector<std::vector<Receptance6>> out(frequencies.size(),
-                                            std::vector<Receptance6>(pairs.size()));
-  for (std::size_t k = 0; k < frequencies.size(); ++k)
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      out[k][p] = from_contact_frames(values[p][k], pairs[p].first.contact_angle,
-                                      pairs[p].second.contact_angle);
-  return out;
+  return values;
 }
 
 GridSamplingRail::Evaluator WaveguideRailModel::evaluator(const Points& points,
@@ -603,6 +661,35 @@ std::optional<RailLoadBasis> head_load_basis(const HeadBody& head,
     const Eigen::Index at = std::find(out.x.begin(), out.x.end(), p.x) - out.x.begin();
     out.combination.block(out.per_position * at, 4 * Eigen::Index(i), out.per_position, 4) =
         head.at(point, normal);
+  }
+  return out;
+}
+
+std::optional<SpanningPoints> head_spanning_points(
+    const HeadBody& head, const std::vector<Eigen::Vector2d>& outline,
+    const WaveguideRailOptions& options, const std::vector<std::pair<double, double>>& points) {
+  if (!options.head_load) return std::nullopt;
+  SpanningPoints out;
+  // the crown, and a point 25 mm off it with its normal at 0.3 rad: the two points' lever arms
+  // and tangents differ, so their forces and moments span the head's six (HeadBody::at)
+  out.points = {{0.0, 0.0}, {0.025, 0.3}};
+  auto columns = [&](const std::pair<double, double>& p) {
+    const auto [point, normal] = contact_point_and_normal(outline, options, p.first, p.second);
+    return head.at(point, normal);
+  };
+  Eigen::Matrix<double, 6, 8> span;
+  span << columns(out.points[0]), columns(out.points[1]);
+  // rows equilibrated (forces, moments and the axial planes' slopes differ by 1e6)
+  const Eigen::Matrix<double, 6, 1> scale = span.rowwise().lpNorm<Eigen::Infinity>().cwiseInverse();
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, 6, 8>> cod(scale.asDiagonal() *
+                                                                               span);
+  if (cod.rank() < 6) return std::nullopt;
+  for (const auto& p : points) {
+    const Eigen::Matrix<double, 6, 4> C = scale.asDiagonal() * columns(p);
+    const Eigen::Matrix<double, 8, 4> alpha = cod.solve(C);
+    if ((scale.asDiagonal() * span * alpha - C).norm() > 1e-10 * C.norm())
+      return std::nullopt;
+    out.combination.push_back(alpha);
   }
   return out;
 }

@@ -38,6 +38,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -84,6 +85,23 @@ struct WaveguideRailOptions {
 /// the supports (continuous, or the seats of the discrete support). The models make them up front
 /// and build on first use.
 void check_waveguide_inputs(const TrackParameters& track, const WaveguideRailOptions& options);
+
+/// Two fixed contact points (offset, angle) whose eight load columns span every contact's four
+/// (the head as a body: the six distributions of RailWaveguide::head_body), and each queried
+/// point's columns as their combination (8 x 4: C_a = [C_0 C_1] alpha_a). A pair's 4x4 is then
+/// alpha_a^T V alpha_b, V the two points' 8x8 at the pair's positions, so the sampling of V at a
+/// set of positions serves every contact there (both rails, every contact state of a study).
+struct SpanningPoints {
+  std::vector<std::pair<double, double>> points;
+  std::vector<Eigen::Matrix<double, 8, 4>> combination;  ///< per point of the query
+};
+
+/// The spanning points of the head as a body on `outline`: the crown (0, 0) and the point whose
+/// normal is at 0.4 rad, each of `points` (offset, angle) solved for by least squares ([C_0 C_1]
+/// has rank 6; null where it has not, or without head loads).
+std::optional<SpanningPoints> head_spanning_points(
+    const HeadBody& head, const std::vector<Eigen::Vector2d>& outline,
+    const WaveguideRailOptions& options, const std::vector<std::pair<double, double>>& points);
 
 /// A rail model that samples the frequency grids it is given and keeps the samplings (the
 /// waveguide on the continuous and on the discrete support): contact_transfers computes each set
@@ -135,6 +153,11 @@ class GridSamplingRail : public RailModel {
   /// The contact transfers at complex s, computed at every call (RailModel::laplace_transfers).
   virtual LaplaceTransfers direct_laplace_transfers(
       const std::vector<RailContactPair>& pairs) const = 0;
+  /// The SpanningPoints of `points` (null: none; sampled per set of points).
+  virtual std::optional<SpanningPoints> spanning_points(const Points& points) const {
+    (void)points;
+    return std::nullopt;
+  }
 
  private:
   /// The samplings kept: per point set, its pairs (with the scales' points) and the grid; its
@@ -145,6 +168,16 @@ class GridSamplingRail : public RailModel {
                                                   const std::vector<RailContactPair>& pairs,
                                                   bool interpolate,
                                                   const std::vector<double>* grid) const;
+  /// The contact-frame 4x4 of each pair at every frequency (per pair, per frequency): sampled per
+  /// set of coupled points (set_values), or where interpolated, from the spanning points' samplings.
+  std::vector<std::vector<Receptance4>> frame_values(const std::vector<double>& frequencies,
+                                                     const std::vector<RailContactPair>& pairs,
+                                                     bool interpolate,
+                                                     const std::vector<double>* grid) const;
+  std::vector<std::vector<Receptance4>> set_values(const std::vector<double>& frequencies,
+                                                   const std::vector<RailContactPair>& pairs,
+                                                   bool interpolate,
+                                                   const std::vector<double>* grid) const;
 };
 
 class WaveguideRailModel : public GridSamplingRail {
