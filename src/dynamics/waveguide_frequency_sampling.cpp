@@ -380,9 +380,20 @@ std::vector<std::vector<Receptance4>> sampled_at(
     }
   }
   for (const auto& [j, places] : open) {
-    const std::optional<linalg::BarycentricRational> r = local_rational(
-        g, j, sampling.tolerance, scales,
-        g.checked[j - 1] == 2 ? std::numeric_limits<double>::infinity() : sampling.tolerance / 3.0);
+    const double agreement =
+        g.checked[j - 1] == 2 ? std::numeric_limits<double>::infinity() : sampling.tolerance / 3.0;
+    const std::tuple<std::size_t, double, double> key(j, sampling.tolerance, agreement);
+    std::optional<std::optional<linalg::BarycentricRational>> kept;
+    {
+      const std::lock_guard<std::mutex> lock(g.fits->mutex);
+      if (const auto it = g.fits->kept.find(key); it != g.fits->kept.end()) kept = it->second;
+    }
+    if (!kept) {
+      kept = local_rational(g, j, sampling.tolerance, scales, agreement);
+      const std::lock_guard<std::mutex> lock(g.fits->mutex);
+      g.fits->kept.emplace(key, *kept);
+    }
+    const std::optional<linalg::BarycentricRational>& r = *kept;
     for (std::size_t k : places) {
       if (!r) {
         computed.push_back(frequencies[k]);

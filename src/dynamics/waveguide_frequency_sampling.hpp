@@ -57,6 +57,7 @@
 #include <vector>
 
 #include "dynamics/rail_contact.hpp"
+#include "linalg/aaa_rational.hpp"
 #include "dynamics/receptance.hpp"
 
 namespace rollnoise::dynamics {
@@ -96,6 +97,16 @@ struct SampledGrid {
   /// with the cubic interpolation), 2 closed by Eq. (F2) (its rational checked), 0 holds no grid
   /// frequency (every one there was evaluated)
   std::vector<char> checked;
+  /// Eq. (F2)'s local rationals that sampled_at has fitted, by the interval's upper sample and
+  /// the fit's tolerances, kept for its later calls (the refinement asks a grid's sampling once
+  /// per loop variant and added line set): a fit depends on the samples and the sampling's scales
+  /// alone, which do not change once the grid is made. Shared by copies.
+  struct Fits {
+    std::mutex mutex;
+    std::map<std::tuple<std::size_t, double, double>, std::optional<linalg::BarycentricRational>>
+        kept;
+  };
+  std::shared_ptr<Fits> fits = std::make_shared<Fits>();
 };
 
 /// Per pair, the values at `frequencies` (Hz, any order) from a grid's sampling: a sampled
