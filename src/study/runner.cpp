@@ -133,20 +133,59 @@ void work(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase
     run_group(plan, cases, groups[g], reuse, shared, slot, after_case);
 }
 
-// A worker process in `slot`; it dies with the parent (a killed study leaves no orphans).
+// A worker process in `slot`: the queue's groups, or group `only` alone (>= 0); it dies with the
+// parent (a killed study leaves no orphans).
 pid_t start_worker(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
-                   const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot) {
+                   const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot,
+                   long only = -1) {
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) throw NumericalError("study: cannot start a worker process");
   if (pid == 0) {
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() == 1) ::_exit(1);  // the parent is already gone
-    work(plan, cases, groups, reuse, shared, slot, {});
+    if (only >= 0)
+      run_group(plan, cases, groups[std::size_t(only)], reuse, shared, slot, {});
+    else
+      work(plan, cases, groups, reuse, shared, slot, {});
     std::fflush(nullptr);
     ::_exit(0);
   }
   return pid;
+}
+
+// `workers` worker processes (group `only` alone in one of them where >= 0), until they are done;
+// one that dies inside a case fails that case and, while the queue has groups, is replaced.
+void run_workers(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
+                 const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int workers,
+                 long only, const std::function<void()>& report) {
+  std::map<pid_t, int> slot_of;
+  for (int k = 0; k < workers; ++k) slot_of[start_worker(plan, cases, groups, reuse, shared, k, only)] = k;
+  while (!slot_of.empty()) {
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+    if (pid > 0 && slot_of.count(pid)) {
+      const int slot = slot_of[pid];
+      slot_of.erase(pid);
+      const long index = shared.current[slot];
+      if (index >= 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
+        // the worker died inside a case (a crash, or killed): that case failed, the queue goes on
+        record_failure(plan, std::size_t(index),
+                       WIFSIGNALED(status) ? "failure: the worker process died of signal " +
+                                                 std::to_string(WTERMSIG(status)) + " while running this case"
+                                           : "failure: the worker process stopped while running this case");
+        ++shared.failed;
+        shared.current[slot] = -1;
+        if (only < 0 && shared.next_group < long(groups.size()))
+          slot_of[start_worker(plan, cases, groups, reuse, shared, slot)] = slot;
+      }
+    } else if (pid < 0) {
+      break;
+    } else {
+      report();
+      ::usleep(100000);
+    }
+  }
 }
 
 void add_counts(RunSummary& s, const Shared& shared) {
@@ -287,40 +326,19 @@ RunSummary run_study(const pipeline::StudyPlan& plan, const RunOptions& o) {
   const int workers = int(std::min<long>({long(std::max(1, o.workers)), long(groups.size()), long(kMaxWorkers)}));
 
   SharedCounters shared(workers > 1);
-  shared.get().one_thread_per_case = workers > 1;
   auto report = [&] {
     if (o.progress) o.progress(shared.get().done + shared.get().failed, total);
   };
   if (workers <= 1) {
     work(plan, cases, groups, o.reuse, shared.get(), 0, report);
   } else {
-    std::map<pid_t, int> slot_of;
-    for (int k = 0; k < workers; ++k) slot_of[start_worker(plan, cases, groups, o.reuse, shared.get(), k)] = k;
-    while (!slot_of.empty()) {
-      int status = 0;
-      const pid_t pid = ::waitpid(-1, &status, WNOHANG);
-      if (pid > 0 && slot_of.count(pid)) {
-        const int slot = slot_of[pid];
-        slot_of.erase(pid);
-        const long index = shared.get().current[slot];
-        if (index >= 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
-          // the worker died inside a case (a crash, or killed): that case failed, the queue goes on
-          record_failure(plan, std::size_t(index),
-                         WIFSIGNALED(status) ? "failure: the worker process died of signal " +
-                                                   std::to_string(WTERMSIG(status)) + " while running this case"
-                                             : "failure: the worker process stopped while running this case");
-          ++shared.get().failed;
-          shared.get().current[slot] = -1;
-          if (shared.get().next_group < long(groups.size()))
-            slot_of[start_worker(plan, cases, groups, o.reuse, shared.get(), slot)] = slot;
-        }
-      } else if (pid < 0) {
-        break;
-      } else {
-        report();
-        ::usleep(100000);
-      }
-    }
+    // The first group alone first, on every thread: it fills the cache folder with what the cases
+    // share (the wheel's modes and radiation, the rail's samplings and section grams), which
+    // workers started together would each compute; then the workers, one thread a case.
+    shared.get().next_group = 1;
+    run_workers(plan, cases, groups, o.reuse, shared.get(), 1, 0, report);
+    shared.get().one_thread_per_case = true;
+    run_workers(plan, cases, groups, o.reuse, shared.get(), workers, -1, report);
   }
   report();
   add_counts(s, shared.get());
