@@ -219,6 +219,7 @@ ModeRoot report(const LaplaceLoop& loop, const ModalForm& H, std::size_t mode, c
     const Eigen::VectorXcd q = svd.matrixV().col(M.cols() - 1);
     for (std::size_t j = 0; j < loop.modes.size(); ++j)
       r.wheel_share[loop.modes[j].wheel] += std::norm(q(j));
+    r.own_share = std::norm(q(static_cast<Eigen::Index>(mode))) / q.squaredNorm();
     const Eigen::MatrixXcd A = loop.matrix(s);
     const Eigen::VectorXd d = equilibration(A);
     const Eigen::JacobiSVD<Eigen::MatrixXcd> sa(d.cast<cdouble>().asDiagonal() * A *
@@ -341,7 +342,25 @@ std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions
   }
   std::sort(out.begin(), out.end(),
             [](const ModeRoot& a, const ModeRoot& b) { return a.mode < b.mode; });
-  return out;
+  return distinct_roots(std::move(out));
+}
+
+std::vector<ModeRoot> distinct_roots(std::vector<ModeRoot> roots) {
+  for (std::size_t i = 0; i < roots.size(); ++i)
+    for (std::size_t j = i + 1; j < roots.size(); ++j) {
+      ModeRoot &a = roots[i], &b = roots[j];
+      if (!a.converged || !b.converged || std::abs(a.s - b.s) > 1e-7 * std::abs(a.s)) continue;
+      // the root is the mode's with the larger share of its vector (else the nearer uncoupled
+      // root's); the other's continuation failed
+      const bool a_keeps = a.own_share != b.own_share
+                               ? a.own_share > b.own_share
+                               : std::abs(a.s0 - a.s) <= std::abs(b.s0 - b.s);
+      ModeRoot& lost = a_keeps ? b : a;
+      lost.same_root_as = static_cast<long>((a_keeps ? a : b).mode);
+      lost.converged = false;
+      lost.unstable = false;
+    }
+  return roots;
 }
 
 ModeRoot mode_root(const LaplaceLoop& loop, std::size_t k, const StabilityOptions& o) {

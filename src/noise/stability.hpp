@@ -193,7 +193,18 @@ struct ModeRoot {
   int wheel = 0;                    ///< the wheel of the mode it continues (LaplaceLoop::wheels)
   std::vector<double> wheel_share;  ///< per wheel, sum of |q_j|^2 over its modes / |q|^2
   int dominant_wheel = 0;           ///< the wheel with the largest share
+  double own_share = 0.0;  ///< |q_mode|^2 / |q|^2: the continued mode's share of the root's vector
+  /// -1, or the mode whose root this mode's continuation reached as well (distinct_roots): then
+  /// converged = false and unstable = false, this mode's own root not found.
+  long same_root_as = -1;
 };
+
+/// Each root once: where the continuations of two modes end on the same root (within 1e-7 of |s|),
+/// the root belongs to the mode with the larger share of its vector (own_share; the nearer
+/// uncoupled root s0 where the shares are equal); the other keeps its label
+/// with converged = false, unstable = false and same_root_as = that mode (its own root is not
+/// found, its stability not decided). Roots that are not converged are left as they are.
+std::vector<ModeRoot> distinct_roots(std::vector<ModeRoot> roots);
 
 /// Route 2 for every mode of the loop in the band, ordered by mode. A mode whose continuation
 /// fails is returned with converged = false (and its last root).

@@ -268,6 +268,9 @@ std::vector<noise::ModeRoot> match_route1(const Route1Result& r1, const std::vec
 RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std::vector<noise::ModeRoot>& b) {
   RouteAgreement g;
   for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    if (!a[k].converged) g.distinct = false;
+    if (!b[k].converged) continue;
+    ++g.compared;
     const double df = std::abs(a[k].frequency - b[k].frequency) / std::abs(b[k].frequency);
     const double dz = std::abs(a[k].damping_ratio - b[k].damping_ratio);
     const double rz = dz / std::abs(b[k].damping_ratio);
@@ -276,7 +279,6 @@ RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std:
     g.damping_absolute = std::max(g.damping_absolute, dz);
     const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the squeal routes' acceptance: <= 1
     if (beyond > g.damping_beyond) g.damping_beyond = beyond, g.worst_damping_mode = k;
-    if (!a[k].converged) g.distinct = false;
   }
   return g;
 }
