@@ -37,6 +37,26 @@ void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
   }
 }
 
+// The routes' agreement and, beyond its tolerance, a warning naming the worst mode and the fit
+// that deviates more there (the likelier cause; docs/squeal.md Sec. 4.2).
+void print_route_agreement(const pipeline::RouteAgreement& agreement, const std::vector<noise::ModeRoot>& roots,
+                           const std::vector<noise::ModeRoot>& roots1, const pipeline::Route1Deviation& dev) {
+  std::printf("route agreement: frequency %.2e, damping ratio %.2e relative / %.2e absolute over %d modes%s\n",
+              agreement.frequency, agreement.damping_relative, agreement.damping_absolute, agreement.compared,
+              agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
+  if (agreement.within()) return;
+  const std::size_t k =
+      agreement.damping_beyond > 1.0 ? agreement.worst_damping_mode : agreement.worst_frequency_mode;
+  const bool known = k < dev.rail.size() && k < dev.contact.size();
+  const bool rail = known && dev.rail[k] >= dev.contact[k];
+  std::printf("warning: the routes disagree beyond their tolerance (f 0.1 %%, zeta 5 %% or 1e-5) at %s "
+              "(f %.3f / %.3f Hz, zeta %.3e / %.3e); likely cause: route 1's %s fit there (deviation %.1e, "
+              "the other's %.1e)\n",
+              roots[k].label.c_str(), roots1[k].frequency, roots[k].frequency, roots1[k].damping_ratio,
+              roots[k].damping_ratio, rail ? "rail" : "contact", known ? (rail ? dev.rail[k] : dev.contact[k]) : 0.0,
+              known ? (rail ? dev.contact[k] : dev.rail[k]) : 0.0);
+}
+
 }  // namespace
 
 int run_squeal(const CommonOptions& o, const std::string& route) {
@@ -99,26 +119,10 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
           if (static_cast<long>(y.mode) == x.same_root_as) owner = y.label;
         std::printf(" (continuation reached the root of %s: counted there)\n", owner.c_str());
       } else
-        std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "", x.converged ? "" : " (continuation failed)");
+        std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "",
+                    x.converged ? "" : " (continuation failed)");
     }
-    if (route1 && route2) {
-      std::printf("route agreement: frequency %.2e, damping ratio %.2e relative / %.2e absolute over %d modes%s\n",
-                  agreement.frequency, agreement.damping_relative, agreement.damping_absolute, agreement.compared,
-                  agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
-      if (!agreement.within()) {
-        // the likelier cause: the fit that deviates more at the worst mode (docs/squeal.md Sec. 4.2)
-        const std::size_t k = agreement.damping_beyond > 1.0 ? agreement.worst_damping_mode
-                                                             : agreement.worst_frequency_mode;
-        const bool rail = k < dev.rail.size() && k < dev.contact.size() && dev.rail[k] >= dev.contact[k];
-        std::printf("warning: the routes disagree beyond their tolerance (f 0.1 %%, zeta 5 %% or 1e-5) at %s "
-                    "(f %.3f / %.3f Hz, zeta %.3e / %.3e); likely cause: route 1's %s fit there (deviation %.1e, "
-                    "the other's %.1e)\n",
-                    r.roots[k].label.c_str(), roots1[k].frequency, r.roots[k].frequency, roots1[k].damping_ratio,
-                    r.roots[k].damping_ratio, rail ? "rail" : "contact",
-                    k < dev.rail.size() ? (rail ? dev.rail[k] : dev.contact[k]) : 0.0,
-                    k < dev.rail.size() ? (rail ? dev.contact[k] : dev.rail[k]) : 0.0);
-      }
-    }
+    if (route1 && route2) print_route_agreement(agreement, r.roots, roots1, dev);
     print_wheelsets(wheelsets);
     std::printf("wrote %s\n", out.c_str());
     // A root whose continuation failed (converged = false) has no decided stability: counted

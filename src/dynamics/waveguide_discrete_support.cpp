@@ -679,9 +679,8 @@ Receptance4 DiscreteWaveguideRailModel::contact_transfer(double frequency, doubl
 
 std::optional<SpanningPoints> DiscreteWaveguideRailModel::spanning_points(
     const Points& points) const {
-  return head_spanning_points(head_.get(),
-                              options_.outline.empty() ? uic60_outline() : options_.outline,
-                              options_, points);
+  return head_spanning_points(
+      head_.get(), options_.outline.empty() ? uic60_outline() : options_.outline, options_, points);
 }
 
 std::optional<RailLoadBasis> DiscreteWaveguideRailModel::load_basis(

@@ -57,8 +57,8 @@
 #include <vector>
 
 #include "dynamics/rail_contact.hpp"
-#include "linalg/aaa_rational.hpp"
 #include "dynamics/receptance.hpp"
+#include "linalg/aaa_rational.hpp"
 
 namespace rollnoise::dynamics {
 

@@ -1,7 +1,6 @@
 #include "dynamics/waveguide_rail_model.hpp"
 
 #include <Eigen/QR>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -682,13 +681,12 @@ std::optional<SpanningPoints> head_spanning_points(
   // rows equilibrated (forces, moments and the axial planes' slopes differ by 1e6)
   const Eigen::Matrix<double, 6, 1> scale = span.rowwise().lpNorm<Eigen::Infinity>().cwiseInverse();
   const Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, 6, 8>> cod(scale.asDiagonal() *
-                                                                               span);
+                                                                                span);
   if (cod.rank() < 6) return std::nullopt;
   for (const auto& p : points) {
     const Eigen::Matrix<double, 6, 4> C = scale.asDiagonal() * columns(p);
     const Eigen::Matrix<double, 8, 4> alpha = cod.solve(C);
-    if ((scale.asDiagonal() * span * alpha - C).norm() > 1e-10 * C.norm())
-      return std::nullopt;
+    if ((scale.asDiagonal() * span * alpha - C).norm() > 1e-10 * C.norm()) return std::nullopt;
     out.combination.push_back(alpha);
   }
   return out;

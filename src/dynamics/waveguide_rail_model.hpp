@@ -169,7 +169,8 @@ class GridSamplingRail : public RailModel {
                                                   bool interpolate,
                                                   const std::vector<double>* grid) const;
   /// The contact-frame 4x4 of each pair at every frequency (per pair, per frequency): sampled per
-  /// set of coupled points (set_values), or where interpolated, from the spanning points' samplings.
+  /// set of coupled points (set_values), or where interpolated, from the spanning points'
+  /// samplings.
   std::vector<std::vector<Receptance4>> frame_values(const std::vector<double>& frequencies,
                                                      const std::vector<RailContactPair>& pairs,
                                                      bool interpolate,

@@ -41,10 +41,11 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.write("/squeal/singular_ratio", singular, {n}, "- (sigma_min / sigma_max of the equilibrated loop matrix at s)");
   w.write("/squeal/iterations", iterations, {n}, "- (Newton iterations over all continuation steps)");
   w.write("/squeal/converged", converged, {n}, "- (1: the continuation reached lambda = 1)");
-  w.write("/squeal/same_root_as", same_root_as, {n},
-          "- (-1, or the wheel mode (index among the case's modes, the rows' order) whose root this "
-          "mode's continuation reached too: counted once, there; this mode's own root not found, "
-          "converged = 0)");
+  w.write(
+      "/squeal/same_root_as", same_root_as, {n},
+      "- (-1, or the wheel mode (index among the case's modes, the rows' order) whose root this "
+      "mode's continuation reached too: counted once, there; this mode's own root not found, "
+      "converged = 0)");
   w.write("/squeal/min_growth_rate", r.min_sigma, "1/s (the contact's Markov series converge for Re s above this)");
   w.write("/squeal/contact_spectral_radius", r.contact_spectral_radius,
           "- (of M0^-1 M1, the contact alone: < 1 stable; -1: not computed, the Markov parameters decayed)");
@@ -84,10 +85,12 @@ void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const 
   if (agreement) {
     const std::vector<double> a{agreement->frequency, agreement->damping_relative, agreement->damping_absolute};
     w.write("/squeal/route_agreement", a, {3},
-            "- (max over the modes of |f1 - f2|/f2, |zeta1 - zeta2|/|zeta2|, |zeta1 - zeta2|; route 1 against route 2, "
+            "- (max over the modes of |f1 - f2|/f2, |zeta1 - zeta2|/|zeta2|, |zeta1 - zeta2|; "
+            "route 1 against route 2, "
             "route 2's converged roots)");
     w.write("/squeal/route_agreement_within", agreement->within() ? 1.0 : 0.0,
-            "- (1: f within 0.1 % and zeta within 5 % or 1e-5 at every compared mode, docs/squeal.md Sec. 4.2)");
+            "- (1: f within 0.1 % and zeta within 5 % or 1e-5 at every compared mode, "
+            "docs/squeal.md Sec. 4.2)");
   }
 }
 

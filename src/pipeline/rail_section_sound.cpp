@@ -47,7 +47,8 @@ std::vector<PanelValue> panel_values(const dynamics::SurfaceSpectrum& spectrum,
     for (std::size_t i = 0; i < rule.nodes.size(); ++i, ++q) {
       const double theta = a + rule.nodes[i] * (b - a);
       const auto Uq = U.middleCols(c * q, c);
-      const Eigen::MatrixXcd f = ((b - a) * k) * (Uq.adjoint() * (table.at(k * std::cos(theta)) * Uq));
+      const Eigen::MatrixXcd f =
+          ((b - a) * k) * (Uq.adjoint() * (table.at(k * std::cos(theta)) * Uq));
       v.kronrod += rule.kronrod[i] * f;
       if (rule.gauss[i] != 0.0) v.gauss += rule.gauss[i] * f;
     }

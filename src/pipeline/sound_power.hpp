@@ -67,8 +67,8 @@ namespace rollnoise::pipeline {
 ///   x_j = j L);
 /// m^2/N^2 m and m^2/N^2 (6 p x 6 p). `gauss`: Gauss-Legendre points a sleeper span; 0: the
 /// sleepers alone (G_z = G_y = 0), for a rail whose own radiation comes from its section's loads
-/// (Eq. R2, RailModel::section_deforms) and which needs the line for its sleepers only. The same for
-/// both rails (one track model); it depends on the track, the positions and the grid alone, so
+/// (Eq. R2, RailModel::section_deforms) and which needs the line for its sleepers only. The same
+/// for both rails (one track model); it depends on the track, the positions and the grid alone, so
 /// io keeps it in the cache (io/radiation_cache.hpp).
 struct RailLineGram {
   std::vector<double> positions;                 ///< m along the rail, from a sleeper

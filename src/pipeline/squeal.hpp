@@ -139,7 +139,8 @@ struct RouteAgreement {
   std::size_t worst_frequency_mode = 0, worst_damping_mode = 0;
   bool distinct = true;                 ///< every route-2 root got a route-1 eigenvalue (match_route1)
   int compared = 0;                     ///< modes compared: route 2's converged roots
-  /// docs/squeal.md Sec. 4.2's target: f within 0.1 %, zeta within 5 % or 1e-5 (damping_beyond <= 1)
+  /// docs/squeal.md Sec. 4.2's target: f within 0.1 %, zeta within 5 % or 1e-5 (damping_beyond <=
+  /// 1)
   bool within() const { return frequency <= 1e-3 && damping_beyond <= 1.0; }
 };
 /// Route 1 against route 2, mode by mode, over route 2's converged roots (a mode whose continuation

@@ -136,8 +136,8 @@ void work(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase
 // A worker process in `slot`: the queue's groups, or group `only` alone (>= 0); it dies with the
 // parent (a killed study leaves no orphans).
 pid_t start_worker(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
-                   const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int slot,
-                   long only = -1) {
+                   const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared,
+                   int slot, long only = -1) {
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) throw NumericalError("study: cannot start a worker process");
@@ -157,10 +157,11 @@ pid_t start_worker(const pipeline::StudyPlan& plan, const std::vector<pipeline::
 // `workers` worker processes (group `only` alone in one of them where >= 0), until they are done;
 // one that dies inside a case fails that case and, while the queue has groups, is replaced.
 void run_workers(const pipeline::StudyPlan& plan, const std::vector<pipeline::StudyCase>& cases,
-                 const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared, int workers,
-                 long only, const std::function<void()>& report) {
+                 const std::vector<std::vector<std::size_t>>& groups, bool reuse, Shared& shared,
+                 int workers, long only, const std::function<void()>& report) {
   std::map<pid_t, int> slot_of;
-  for (int k = 0; k < workers; ++k) slot_of[start_worker(plan, cases, groups, reuse, shared, k, only)] = k;
+  for (int k = 0; k < workers; ++k)
+    slot_of[start_worker(plan, cases, groups, reuse, shared, k, only)] = k;
   while (!slot_of.empty()) {
     int status = 0;
     const pid_t pid = ::waitpid(-1, &status, WNOHANG);
@@ -171,9 +172,10 @@ void run_workers(const pipeline::StudyPlan& plan, const std::vector<pipeline::St
       if (index >= 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
         // the worker died inside a case (a crash, or killed): that case failed, the queue goes on
         record_failure(plan, std::size_t(index),
-                       WIFSIGNALED(status) ? "failure: the worker process died of signal " +
-                                                 std::to_string(WTERMSIG(status)) + " while running this case"
-                                           : "failure: the worker process stopped while running this case");
+                       WIFSIGNALED(status)
+                           ? "failure: the worker process died of signal " +
+                                 std::to_string(WTERMSIG(status)) + " while running this case"
+                           : "failure: the worker process stopped while running this case");
         ++shared.failed;
         shared.current[slot] = -1;
         if (only < 0 && shared.next_group < long(groups.size()))

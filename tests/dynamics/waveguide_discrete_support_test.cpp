@@ -481,8 +481,8 @@ TEST(DiscreteWaveguide, EveryContactOnTheSamePositionsSharesOneSampling) {
         for (int j = 0; j < 6; ++j) {
           const double scale = std::sqrt(std::abs(a(i, i)) * std::abs(b(j, j)));
           if (scale > 0.0)
-            worst_here = std::max(worst_here,
-                                  std::abs(sampled[k][p](i, j) - direct[k][p](i, j)) / scale);
+            worst_here =
+                std::max(worst_here, std::abs(sampled[k][p](i, j) - direct[k][p](i, j)) / scale);
         }
     }
     worst = std::max(worst, worst_here);

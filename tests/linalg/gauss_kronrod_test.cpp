@@ -9,8 +9,8 @@
 
 // The Kronrod weights integrate t^n, t = 2x - 1, over [0, 1] (1 / (n + 1) for even n, 0 for odd)
 // for n <= 31 (its degree), the Gauss weights for n <= 19, both within 1e-15, and neither beyond
-// (t^32, t^20: errors above 1e-13 and 1e-6); the Gauss nodes and weights are GSL's 10-point rule's within
-// 1e-15.
+// (t^32, t^20: errors above 1e-13 and 1e-6); the Gauss nodes and weights are GSL's 10-point rule's
+// within 1e-15.
 TEST(GaussKronrod, IntegratesPolynomialsToItsDegreeAndHoldsGslsGaussRule) {
   const rollnoise::linalg::GaussKronrod21 r = rollnoise::linalg::gauss_kronrod_21_01();
   auto moment = [&](const auto& w, int n) {

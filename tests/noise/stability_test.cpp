@@ -253,8 +253,9 @@ TEST(Stability, Route1OnARationalSystemEqualsItsExactEigenvalues) {
     EXPECT_LT(d, 1e-8) << r.label << " " << r.s;
   }
   EXPECT_LE(reached_another, 1);
-  std::printf("route 1 vs route 2: %zu roots (%d reached another mode's), worst relative difference %.1e\n",
-              roots.size(), reached_another, worst);
+  std::printf(
+      "route 1 vs route 2: %zu roots (%d reached another mode's), worst relative difference %.1e\n",
+      roots.size(), reached_another, worst);
 }
 
 // The contact at complex s: a geometric Markov sequence h_j = H rho^j sums to -H / (1 - rho z);
@@ -316,11 +317,11 @@ TEST(Stability, DistinctRootsCountARootReachedByTwoModesOnce) {
     return r;
   };
   const cdouble s(2.7682, 2 * M_PI * 4442.166);
-  const std::vector<noise::ModeRoot> out = noise::distinct_roots(
-      {root(3, cdouble(-5.0, 2 * M_PI * 4440.0), s, true, 0.2),
-       root(7, cdouble(-5.0, 2 * M_PI * 4430.0), s * (1.0 + 1e-9), true, 0.7),
-       root(9, cdouble(-5.0, 2 * M_PI * 4445.0), s * (1.0 + 1e-6), true, 0.9),
-       root(11, cdouble(-5.0, 2 * M_PI * 4441.0), s, false, 0.9)});
+  const std::vector<noise::ModeRoot> out =
+      noise::distinct_roots({root(3, cdouble(-5.0, 2 * M_PI * 4440.0), s, true, 0.2),
+                             root(7, cdouble(-5.0, 2 * M_PI * 4430.0), s * (1.0 + 1e-9), true, 0.7),
+                             root(9, cdouble(-5.0, 2 * M_PI * 4445.0), s * (1.0 + 1e-6), true, 0.9),
+                             root(11, cdouble(-5.0, 2 * M_PI * 4441.0), s, false, 0.9)});
   EXPECT_FALSE(out[0].converged);
   EXPECT_FALSE(out[0].unstable);
   EXPECT_EQ(out[0].same_root_as, 7);
