@@ -24,6 +24,7 @@
 #include "dynamics/track.hpp"
 #include "dynamics/waveguide_rail_model.hpp"
 #include "fem/mesh.hpp"
+#include "support/memory_archive.hpp"
 #include "support/test_helpers.hpp"
 
 namespace rd = rollnoise::dynamics;
@@ -411,35 +412,6 @@ TEST(DiscreteWaveguide, AtTheContactSampledWithinTheToleranceAndTheSameBitsOnAny
   }
 }
 
-namespace {
-
-// An archive in memory that counts what is written to it.
-class CountingArchive : public rd::SamplingArchive {
- public:
-  std::optional<rd::KeptSampling> read(const std::string& key) const override {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = kept_.find(key);
-    if (it == kept_.end()) return std::nullopt;
-    ++reads;
-    return it->second;
-  }
-  void write(const std::string& key, const rd::KeptSampling& kept) const override {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    kept_[key] = kept;
-    ++writes;
-  }
-  std::optional<rd::KeptLaplace> read_laplace(const std::string&) const override {
-    return std::nullopt;
-  }
-  void write_laplace(const std::string&, const rd::KeptLaplace&) const override {}
-  mutable int reads = 0, writes = 0;
-
- private:
-  mutable std::mutex mutex_;
-  mutable std::map<std::string, rd::KeptSampling> kept_;
-};
-
-}  // namespace
 
 // Every contact loads the head as a body, so a grid's sampling is made of two fixed points' 8x8
 // at the pairs' positions (GridSamplingRail::SpanningPoints) and serves every set of contacts at
@@ -450,7 +422,7 @@ class CountingArchive : public rd::SamplingArchive {
 // frequencies the sampling computed they are the direct ones to 1e-10 of the scale (the same
 // 6 x 6 of the head combined, in another order).
 TEST(DiscreteWaveguide, EveryContactOnTheSamePositionsSharesOneSampling) {
-  auto archive = std::make_shared<CountingArchive>();
+  auto archive = std::make_shared<rollnoise_test::MemoryArchive>();
   rd::WaveguideRailOptions options = coarse();
   options.archive = archive;
   options.archive_identity = "test";

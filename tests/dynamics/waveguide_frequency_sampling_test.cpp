@@ -3,6 +3,7 @@
 // resonance (smooth in ln f) and a wave's cut-on (the 1/sqrt(f - f_c) onset of a waveguide's
 // point receptance, smoothed by a loss factor), on the noise case's kind of grid (1/3-octave bands
 // 100 Hz - 5 kHz, 48 samples per band: 864 frequencies).
+#include "support/memory_archive.hpp"
 #include "dynamics/waveguide_frequency_sampling.hpp"
 
 #include <gtest/gtest.h>
@@ -289,34 +290,7 @@ TEST(WaveguideFrequencySampling, ThreadsGiveTheSerialSamplingToTheBit) {
   }
 }
 
-namespace {
-
-// An archive in memory (the role io::RailSamplingCache plays with files), counting its writes.
-class MemoryArchive : public rd::SamplingArchive {
- public:
-  std::optional<rd::KeptSampling> read(const std::string& key) const override {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = kept_.find(key);
-    if (it == kept_.end()) return std::nullopt;
-    return it->second;
-  }
-  void write(const std::string& key, const rd::KeptSampling& kept) const override {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    kept_[key] = kept;
-    ++writes;
-  }
-  std::optional<rd::KeptLaplace> read_laplace(const std::string&) const override {
-    return std::nullopt;
-  }
-  void write_laplace(const std::string&, const rd::KeptLaplace&) const override {}
-  mutable int writes = 0;
-  mutable std::map<std::string, rd::KeptSampling> kept_;
-
- private:
-  mutable std::mutex mutex_;
-};
-
-}  // namespace
+using rollnoise_test::MemoryArchive;
 
 // Samplings kept beyond the run (SamplingMemo with an archive; track.sampling_cache): a second
 // memo on the same archive and identity (a later run) computes nothing, neither the grid's sampling
