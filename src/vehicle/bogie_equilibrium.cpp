@@ -94,6 +94,17 @@ Matrix suspension_jacobian(const Bogie& b) {
   return J;
 }
 
+// The iterate kept within the wheelset's physical range: |y| <= 10 mm (the flange is at 6 to 9
+// mm for the usual profiles; beyond it the rigid contact would climb the flange and the forces
+// of a wheel on its flange tip make spurious balances), |psi| <= 30 mrad, |eps| <= 1e-2, the
+// frame within 50 mm and 50 mrad.
+Vector inside(Vector q) {
+  const double bound[3] = {10e-3, 30e-3, 1e-2};
+  for (int k = 0; k < kFrame; ++k) q(k) = std::clamp(q(k), -bound[k % 3], bound[k % 3]);
+  for (int k = kFrame; k < 8; ++k) q(k) = std::clamp(q(k), -0.05, 0.05);
+  return q;
+}
+
 // One evaluation of (B2): the residual and the axles' contact forces there.
 struct Evaluation {
   Vector r;
@@ -134,28 +145,45 @@ class Solver {
     return J;
   }
 
-  // Damped Newton from q at t: true when max |r| <= tol; q and e hold the last iterate.
+  // Damped Newton from q at t: true when max |r| <= tol; q and e hold the last iterate. The
+  // Jacobian is differenced when none is held or the last one served badly (a step it gave had
+  // to be cut below a half, or lowered the residual by less than half); in between it follows
+  // Broyden's rank-one update (Broyden, Math. Comp. 19 (1965) 577-593; Dennis & Schnabel,
+  // Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 1983, Sec. 8.1), and
+  // it is carried over from one continuation step to the next.
   bool newton(Vector& q, double t, double tol, Evaluation& e, int* iterations) {
     e = evaluate(q, t);
+    bool fresh = false;
     for (int it = 0; it < in_.max_newton; ++it) {
       if (e.r.cwiseAbs().maxCoeff() <= tol) return true;
-      if (std::getenv("RN_EQ_DEBUG")) {
-        std::fprintf(stderr, "t %.4f it %d q", t, it);
-        for (int k = 0; k < 8; ++k) std::fprintf(stderr, " %.4e", q(k));
-        std::fprintf(stderr, " | r");
-        for (int k = 0; k < 8; ++k) std::fprintf(stderr, " %.3e", e.r(k));
-        std::fprintf(stderr, "\n");
+      if (!have_jacobian_) {
+        J_ = jacobian(q, t, e);
+        have_jacobian_ = fresh = true;
       }
-      Vector dq = jacobian(q, t, e).fullPivLu().solve(-e.r);
+      Vector dq = J_.fullPivLu().solve(-e.r);
       if (!dq.allFinite()) return false;
-      // at most 1 mm, 2 mrad and 1e-3 per step
-      const double limit[3] = {1e-3, 2e-3, 1e-3};
+      // at most 2 mm, 4 mrad and 1e-3 per step
+      const double limit[3] = {2e-3, 4e-3, 1e-3};
       double scale = 1.0;
       for (int k = 0; k < 8; ++k)
         scale = std::min(scale, limit[k < kFrame ? k % 3 : k - kFrame] / std::max(std::abs(dq(k)), 1e-300));
       dq *= scale;
       ++*iterations;
-      if (!line_search(q, dq, t, e)) return e.r.cwiseAbs().maxCoeff() <= tol;
+      const Vector r_old = e.r;
+      const double alpha = line_search(q, dq, t, e);
+      if (alpha == 0.0) {  // no descent along this step: a fresh Jacobian, or give up
+        if (fresh) return false;
+        have_jacobian_ = false;
+        continue;
+      }
+      const Vector step = alpha * dq, change = e.r - r_old;
+      J_ += (change - J_ * step) * step.transpose() / step.squaredNorm();
+      fresh = false;
+      // a limited step's slow descent is the limit's, not the Jacobian's
+      if (alpha < 0.5 || (scale == 1.0 && e.r.norm() > 0.5 * r_old.norm())) have_jacobian_ = false;
+      if (std::getenv("RN_EQ_DEBUG"))
+        std::fprintf(stderr, "t %.4f it %d alpha %.3f scale %.3f |r| %.3e -> %.3e fresh %d y1 %.3e\n", t, it, alpha,
+                     scale, r_old.norm(), e.r.norm(), int(fresh), q(0));
     }
     return e.r.cwiseAbs().maxCoeff() <= tol;
   }
@@ -164,20 +192,20 @@ class Solver {
   const Bogie& bogie() const { return b_; }
 
  private:
-  // Backtracking on the residual norm (Armijo's condition with 1e-4); false when no step down to
-  // 1/64 of dq lowers it.
-  bool line_search(Vector& q, const Vector& dq, double t, Evaluation& e) {
+  // Backtracking on the residual norm (Armijo's condition with 1e-4): the step's fraction taken,
+  // 0 when no step down to 1/64 of dq lowers it.
+  double line_search(Vector& q, const Vector& dq, double t, Evaluation& e) {
     const double norm = e.r.norm();
     for (double alpha = 1.0; alpha >= 1.0 / 64.0; alpha *= 0.5) {
-      const Vector trial = q + alpha * dq;
+      const Vector trial = inside(q + alpha * dq);
       Evaluation et = evaluate(trial, t);
       if (et.r.allFinite() && et.r.norm() < (1.0 - 1e-4 * alpha) * norm) {
         q = trial;
         e = std::move(et);
-        return true;
+        return alpha;
       }
     }
-    return false;
+    return 0.0;
   }
 
   AxleContactForces axle(int i, const Eigen::Vector3d& p, double t) {
@@ -189,6 +217,8 @@ class Solver {
   const AxleForceFunction& forces_;
   Bogie b_;
   Matrix Js_;
+  Matrix J_;  // the Jacobian held (differenced, then Broyden's updates)
+  bool have_jacobian_ = false;
   int evaluations_ = 0;
 };
 
@@ -290,7 +320,7 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
     while (t < 1.0) {
       const double t_next = std::min(1.0, t + dt);
       Vector trial = q;
-      if (t > 0.0) trial += (q - q_prev) * ((t_next - t) / (t - t_prev));
+      if (t > 0.0) trial = inside(q + (q - q_prev) * ((t_next - t) / (t - t_prev)));
       const double step_tol = t_next < 1.0 ? std::max(tol, 1e-2 * Q) : tol;
       if (solver.newton(trial, t_next, step_tol, e, &iterations)) {
         q_prev = q, t_prev = t;

@@ -22,8 +22,8 @@ Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeom
 }
 
 // The state of the bogie in equilibrium (bogie_equilibrium.hpp): the leading axle's position, the
-// leading outer wheel's contact state at the solution (the solver's own, not recomputed), its
-// Kalker coefficients for the static load.
+// leading outer wheel's contact state at the solution (the solver's own, not recomputed); no
+// Kalker coefficients (f11, f22 stay 0: the estimate's).
 CurveContactState equilibrium_state(const CurveStateInput& in) {
   BogieEquilibriumInput b;
   b.curve = in;
@@ -38,8 +38,6 @@ CurveContactState equilibrium_state(const CurveStateInput& in) {
   s.position_iterations = e->iterations;
   s.wheel = e->wheels.front();
   s.contact = s.wheel.contact;
-  const Eigen::Vector2d f = kalker_at(in, s.contact, in.wheel_load);
-  s.f11 = f(0), s.f22 = f(1);
   s.inner_rolling_radius = s.wheel.other_rolling_radius;
   s.creepage = s.wheel.creepage;
   s.loaded = s.wheel.loaded;

@@ -105,7 +105,8 @@ struct CurveContactState {
   double lateral = 0.0, yaw = 0.0;    ///< u (m), psi (rad) of the wheelset
   geometry::ContactGeometry contact;  ///< tread contact of the outer wheel
   double inner_rolling_radius = 0.0;  ///< r_i (m)
-  double f11 = 0.0, f22 = 0.0;        ///< Kalker's coefficients at the contact for the load Q (N)
+  /// Kalker's coefficients at the contact for the load Q (N); 0 for the equilibrium (not used)
+  double f11 = 0.0, f22 = 0.0;
   double wheel_load = 0.0;            ///< Q (N)
   double load_transfer = 0.0;         ///< dQ (N)
   double tread_load = 0.0;            ///< Q_o (N): the vertical load the patch carries
