@@ -273,9 +273,9 @@ void write_curving(Hdf5Writer& w, const pipeline::CurveSetup& curve) {
           "rail)");
   w.write("/curving/bogie_lateral", e.bogie_lateral, "m (frame centre, towards the outer rail)");
   w.write("/curving/bogie_yaw", e.bogie_yaw, "rad (frame, to the track tangent at its centre)");
-  w.write("/curving/residual", std::vector<double>(e.residual.begin(), e.residual.end()), {6},
-          "N, N m, N, N m, N, N m (equilibrium equations: leading wheelset lateral, yaw; trailing wheelset lateral, "
-          "yaw; frame lateral, yaw)");
+  w.write("/curving/residual", std::vector<double>(e.residual.begin(), e.residual.end()), {e.residual.size()},
+          "N, N m, N m, N, N m, N m, N, N m (equilibrium equations: leading wheelset lateral, yaw, spin (torque about "
+          "the axle); trailing wheelset lateral, yaw, spin; frame lateral, yaw)");
   w.write("/curving/iterations", std::vector<int>{e.iterations}, {}, "- (Newton iterations over all continuation "
           "steps)");
   w.write("/curving/continuation_steps", std::vector<int>{e.continuation_steps}, {}, "-");

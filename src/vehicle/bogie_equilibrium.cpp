@@ -3,8 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include "core/assert.hpp"
@@ -181,9 +179,6 @@ class Solver {
       fresh = false;
       // a limited step's slow descent is the limit's, not the Jacobian's
       if (alpha < 0.5 || (scale == 1.0 && e.r.norm() > 0.5 * r_old.norm())) have_jacobian_ = false;
-      if (std::getenv("RN_EQ_DEBUG"))
-        std::fprintf(stderr, "t %.4f it %d alpha %.3f scale %.3f |r| %.3e -> %.3e fresh %d y1 %.3e\n", t, it, alpha,
-                     scale, r_old.norm(), e.r.norm(), int(fresh), q(0));
     }
     return e.r.cwiseAbs().maxCoeff() <= tol;
   }

@@ -30,7 +30,7 @@ rn::VehicleParameters passenger_bogie() {
   return v;
 }
 
-rn::CurveStateInput curve_input(double radius, double cant_deficiency) {
+rn::CurveStateInput bogie_curve_input(double radius, double cant_deficiency) {
   rn::CurveStateInput in;
   in.pair = pair();
   in.material = material();
@@ -61,7 +61,7 @@ struct ModelContact {
 
 rn::BogieEquilibriumInput model_input(double radius, double cant_deficiency) {
   rn::BogieEquilibriumInput in;
-  in.curve = curve_input(radius, cant_deficiency);
+  in.curve = bogie_curve_input(radius, cant_deficiency);
   in.vehicle = passenger_bogie();
   return in;
 }
@@ -123,7 +123,7 @@ TEST(BogieEquilibrium, SoftPrimaryYawGivesRadialAxles) {
 // equation of (B2) within 1e-6 Q; the leading axle towards the outer rail and turned outwards.
 TEST(BogieEquilibrium, ExactContactsBalanceAt300m) {
   rn::BogieEquilibriumInput in;
-  in.curve = curve_input(300.0, 0.08);
+  in.curve = bogie_curve_input(300.0, 0.08);
   in.vehicle = passenger_bogie();
   const auto t0 = std::chrono::steady_clock::now();
   const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(in);
@@ -148,7 +148,7 @@ TEST(BogieEquilibrium, ExactContactsBalanceAt300m) {
 // Probe (not run by default): the leading axle's contact forces against small steps in y and psi,
 // and the cost of one axle evaluation.
 TEST(BogieEquilibrium, DISABLED_ProbeContactSmoothness) {
-  const rn::CurveStateInput in = curve_input(300.0, 0.08);
+  const rn::CurveStateInput in = bogie_curve_input(300.0, 0.08);
   for (double y0 : {2e-3, 5e-3, 6e-3}) {
     const auto t0 = std::chrono::steady_clock::now();
     const rn::AxleContactForces f0 = rn::contact_forces(in, 0.0, 0, y0, 4e-3, 0.0, 1.0);
@@ -165,7 +165,7 @@ TEST(BogieEquilibrium, DISABLED_ProbeContactSmoothness) {
 }
 
 TEST(BogieEquilibrium, DISABLED_ProbeJump) {
-  const rn::CurveStateInput in = curve_input(300.0, 0.08);
+  const rn::CurveStateInput in = bogie_curve_input(300.0, 0.08);
   for (double y = 4.6e-3; y < 5.2e-3; y += 0.05e-3) {
     const rn::AxleContactForces f = rn::contact_forces(in, 0.0, 0, y, 0.5e-3, 0.0, 0.22, true);
     const rn::WheelContact& w = f.wheels[0];
