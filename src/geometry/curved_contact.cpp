@@ -119,9 +119,9 @@ contact::Grid curved_grid(const WheelRailPair& pair, const ContactGeometry& c, c
                           const GridOptions& options) {
   contact::Grid g = choose_grid(pair, c, normal_force, in.material, options);
   const contact::HertzContact hz = hertz_estimate(c, normal_force, in.material, options);
-  const auto [lo, hi] = small_gap_range(pair, c, arc, options.scale * hz.b,
-                                        options.gap_factor * hz.approach,
-                                        std::min(hz.a, hz.b) / 20.0, in.gap_regions);
+  const auto [lo, hi] =
+      small_gap_range(pair, c, arc, options.scale * hz.b, options.gap_factor * hz.approach,
+                      std::min(hz.a, hz.b) / 20.0, in.gap_regions);
   cover_rows(g, lo, hi, std::min(g.dx, 2.0 * hz.b / std::max(1, options.min_elements_across)),
              options.max_elements);
   return g;

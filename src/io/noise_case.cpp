@@ -37,11 +37,15 @@ noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) 
 }
 
 const std::vector<std::string>& vehicle_keys() {
-  static const std::vector<std::string> keys = {
-      "vehicle.carbody_mass", "vehicle.frame_mass", "vehicle.wheelset_mass",
-      "vehicle.primary_longitudinal_stiffness", "vehicle.primary_lateral_stiffness",
-      "vehicle.axlebox_semi_spacing", "vehicle.secondary_yaw_stiffness",
-      "vehicle.bogie_centre_distance", "vehicle.bogie"};
+  static const std::vector<std::string> keys = {"vehicle.carbody_mass",
+                                                "vehicle.frame_mass",
+                                                "vehicle.wheelset_mass",
+                                                "vehicle.primary_longitudinal_stiffness",
+                                                "vehicle.primary_lateral_stiffness",
+                                                "vehicle.axlebox_semi_spacing",
+                                                "vehicle.secondary_yaw_stiffness",
+                                                "vehicle.bogie_centre_distance",
+                                                "vehicle.bogie"};
   return keys;
 }
 
@@ -54,11 +58,12 @@ noise::VehicleParameters read_vehicle(const CaseReader& r) {
   v.wheelset_mass = r.real("vehicle.wheelset_mass");
   v.carbody_mass = r.real("vehicle.carbody_mass");
   if (v.carbody_mass == 0.0 && r.has("contact.normal_force")) {
-    v.carbody_mass =
-        8.0 * r.real("contact.normal_force") / noise::kGravity - 2.0 * v.frame_mass - 4.0 * v.wheelset_mass;
+    v.carbody_mass = 8.0 * r.real("contact.normal_force") / noise::kGravity - 2.0 * v.frame_mass -
+                     4.0 * v.wheelset_mass;
     if (!(v.carbody_mass > 0.0))
-      r.fail("vehicle.carbody_mass", "the frames and wheelsets weigh more than the static load "
-                                     "8 contact.normal_force / g: give the car body's mass");
+      r.fail("vehicle.carbody_mass",
+             "the frames and wheelsets weigh more than the static load "
+             "8 contact.normal_force / g: give the car body's mass");
   }
   v.primary_longitudinal_stiffness = r.real("vehicle.primary_longitudinal_stiffness");
   v.primary_lateral_stiffness = r.real("vehicle.primary_lateral_stiffness");
@@ -77,7 +82,8 @@ void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
   c.estimate_creepage = mode == "estimate" || c.equilibrium;
   c.multibody = mode == "multibody";
   for (const std::string& key : vehicle_keys())
-    if (r.has(key) && !c.equilibrium) r.fail(key, "only used with curve.creepage = \"equilibrium\"");
+    if (r.has(key) && !c.equilibrium)
+      r.fail(key, "only used with curve.creepage = \"equilibrium\"");
   if (c.multibody && r.string("contact.geometry") != "profiles")
     r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
   for (const char* key :
@@ -90,7 +96,8 @@ void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
   if (r.has("curve.wheels")) {
     if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
       r.fail("curve.wheels",
-             "needs contact.geometry = \"profiles\" and curve.creepage = \"equilibrium\", \"estimate\" or "
+             "needs contact.geometry = \"profiles\" and curve.creepage = \"equilibrium\", "
+             "\"estimate\" or "
              "\"multibody\"");
     c.wheels = r.string_list("curve.wheels");
     if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");

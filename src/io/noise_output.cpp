@@ -269,14 +269,18 @@ void write_curving(Hdf5Writer& w, const pipeline::CurveSetup& curve) {
   w.write("/curving/wheelset_lateral", std::vector<double>{e.lateral[0], e.lateral[1]}, {2},
           "m (leading, trailing wheelset; towards the outer rail, from the track centre line)");
   w.write("/curving/wheelset_yaw", std::vector<double>{e.yaw[0], e.yaw[1]}, {2},
-          "rad (leading, trailing wheelset; angle of attack to the local radial, positive turning towards the outer "
+          "rad (leading, trailing wheelset; angle of attack to the local radial, positive turning "
+          "towards the outer "
           "rail)");
   w.write("/curving/bogie_lateral", e.bogie_lateral, "m (frame centre, towards the outer rail)");
   w.write("/curving/bogie_yaw", e.bogie_yaw, "rad (frame, to the track tangent at its centre)");
-  w.write("/curving/residual", std::vector<double>(e.residual.begin(), e.residual.end()), {e.residual.size()},
-          "N, N m, N m, N, N m, N m, N, N m (equilibrium equations: leading wheelset lateral, yaw, spin (torque about "
+  w.write("/curving/residual", std::vector<double>(e.residual.begin(), e.residual.end()),
+          {e.residual.size()},
+          "N, N m, N m, N, N m, N m, N, N m (equilibrium equations: leading wheelset lateral, yaw, "
+          "spin (torque about "
           "the axle); trailing wheelset lateral, yaw, spin; frame lateral, yaw)");
-  w.write("/curving/iterations", std::vector<int>{e.iterations}, {}, "- (Newton iterations over all continuation "
+  w.write("/curving/iterations", std::vector<int>{e.iterations}, {},
+          "- (Newton iterations over all continuation "
           "steps)");
   w.write("/curving/continuation_steps", std::vector<int>{e.continuation_steps}, {}, "-");
   w.write("/curving/contact_evaluations", std::vector<int>{e.contact_evaluations}, {},

@@ -81,7 +81,8 @@ WheelContact wheel_contact(const WheelContactInput& in) {
                            : kinematic_creepage(w.contact, w.other_rolling_radius,
                                                 pair.wheelset().nominal_radius, kappa);
   const double r0 = pair.wheelset().nominal_radius;
-  if (!in.creepage && in.axle_spin) {  // the axle's own rolling speed (WheelContactInput::axle_spin)
+  if (!in.creepage &&
+      in.axle_spin) {  // the axle's own rolling speed (WheelContactInput::axle_spin)
     const double rate = (1.0 + *in.axle_spin) / r0, gamma = w.contact.contact_angle;
     w.creepage(0) = kappa * w.contact.y + 1.0 - rate * w.contact.rolling_radius;
     w.creepage(2) = -rate * std::sin(gamma) - kappa * std::cos(gamma);

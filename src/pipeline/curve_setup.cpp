@@ -42,7 +42,8 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.static_wheel_load = c.normal_force;
   }
   check_curve_state_input(in);
-  if (!in.multibody && !in.equilibrium) {  // the bogie estimate on the profiles: its table, Nadal's limit at its flange
+  if (!in.multibody && !in.equilibrium) {  // the bogie estimate on the profiles: its table, Nadal's
+                                           // limit at its flange
     in.table = curving_profile_table(in);
     noise::BogieCurvingInput b;
     b.friction = in.friction;

@@ -31,7 +31,7 @@ struct Bogie {
   double K_s = 0.0;       // secondary yaw stiffness (N m/rad)
   double body_yaw = 0.0;  // s L kappa: the car body's yaw relative to the bogie's tangent (rad)
   double m_w = 0.0, m_frame = 0.0;  // wheelset mass, frame + half the car body (kg)
-  double a_u = 0.0;       // unbalanced lateral acceleration (m/s^2)
+  double a_u = 0.0;                 // unbalanced lateral acceleration (m/s^2)
   double x(int i) const { return i == 0 ? a : -a; }
 };
 
@@ -45,9 +45,10 @@ Bogie bogie_constants(const BogieEquilibriumInput& in) {
   b.K_s = v.secondary_yaw_stiffness;
   b.body_yaw = (v.rear_bogie ? -1.0 : 1.0) * 0.5 * v.bogie_centre_distance * b.kappa;
   b.m_w = v.wheelset_mass;
-  const double body = v.carbody_mass > 0.0 ? v.carbody_mass
-                                           : std::max(0.0, 8.0 * in.curve.wheel_load / kGravity -
-                                                               2.0 * v.frame_mass - 4.0 * v.wheelset_mass);
+  const double body = v.carbody_mass > 0.0
+                          ? v.carbody_mass
+                          : std::max(0.0, 8.0 * in.curve.wheel_load / kGravity -
+                                              2.0 * v.frame_mass - 4.0 * v.wheelset_mass);
   b.m_frame = v.frame_mass + 0.5 * body;
   // a_u = g h_d / s: the cant deficiency's unbalanced acceleration (EN 13803, vehicle/cant.hpp)
   b.a_u = kGravity * in.curve.cant_deficiency / kRailHeadDistance;
@@ -164,7 +165,8 @@ class Solver {
       const double limit[3] = {2e-3, 4e-3, 1e-3};
       double scale = 1.0;
       for (int k = 0; k < 8; ++k)
-        scale = std::min(scale, limit[k < kFrame ? k % 3 : k - kFrame] / std::max(std::abs(dq(k)), 1e-300));
+        scale = std::min(
+            scale, limit[k < kFrame ? k % 3 : k - kFrame] / std::max(std::abs(dq(k)), 1e-300));
       dq *= scale;
       ++*iterations;
       const Vector r_old = e.r;
@@ -269,8 +271,8 @@ AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer
     const WheelContact& c = f.wheels[w];
     const std::array<double, 3> ft = c.force_track();  // towards the outer rail
     const double y_w = w == 0 ? c.contact.y : -c.contact.y;
-    const double mz = (w == 0 ? 1.0 : -1.0) * c.loaded->creep_force[2] *
-                      std::cos(c.contact.contact_angle);
+    const double mz =
+        (w == 0 ? 1.0 : -1.0) * c.loaded->creep_force[2] * std::cos(c.contact.contact_angle);
     // (B3)
     f.lateral += ft[1];
     f.yaw += c.contact.x * ft[1] - y_w * ft[0] + mz;
@@ -281,21 +283,23 @@ AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer
 
 BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
                                          const AxleForceFunction& forces) {
-  ROLLNOISE_ASSERT(in.vehicle.valid(), "vehicle parameters outside the model (pipeline checks [vehicle])");
+  ROLLNOISE_ASSERT(in.vehicle.valid(),
+                   "vehicle parameters outside the model (pipeline checks [vehicle])");
   const double Q = in.curve.wheel_load;
-  const double dQ =
-      std::isinf(in.curve.radius)
-          ? 0.0
-          : cant_deficiency_load_transfer(Q, in.curve.cant_deficiency, in.curve.cg_height,
-                                          2.0 * geometry::find_contact(*in.curve.pair, {0.0, 0.0}).y);
+  const double dQ = std::isinf(in.curve.radius)
+                        ? 0.0
+                        : cant_deficiency_load_transfer(
+                              Q, in.curve.cant_deficiency, in.curve.cg_height,
+                              2.0 * geometry::find_contact(*in.curve.pair, {0.0, 0.0}).y);
   const bool tangent = std::isinf(in.curve.radius) && in.curve.cant_deficiency == 0.0;
   // On tangent track the contacts are not solved for: the noise's own contact (one region, its
   // lowering tolerance).
   const AxleForceFunction contacts =
       forces ? forces
-             : AxleForceFunction([&in, dQ, tangent](int axle, double y, double psi, double eps, double t) {
-                 return contact_forces(in.curve, dQ, axle, y, psi, eps, t, !tangent);
-               });
+             : AxleForceFunction(
+                   [&in, dQ, tangent](int axle, double y, double psi, double eps, double t) {
+                     return contact_forces(in.curve, dQ, axle, y, psi, eps, t, !tangent);
+                   });
   Solver solver(in, contacts);
   const Bogie& b = solver.bogie();
   Vector q = Vector::Zero();

@@ -49,32 +49,35 @@
 // suspension are not solved.
 //
 // Solution: Newton's method on (B2), with a continuation from tangent track (t = 0, q = 0: the
-// symmetric wheelset has no lateral force and no yaw moment) to the curve (t = 1) in the
+// symmetric wheelset has no lateral force, yaw moment or torque) to the curve (t = 1) in the
 // curvature kappa = t / R, the cant deficiency t h_d and the load transfer t dQ. Jacobian: the
 // suspension's part analytic, the contacts' 3 x 3 blocks d(F_i, M_i, T_i) / d(y_i, psi_i, eps_i)
-// by forward differences (three more contact pairs per axle). Steps: damped (backtracking line search on the
-// residual norm, the step limited to 1 mm and 2 mrad); a continuation step whose Newton iteration
-// fails is halved (down to 1/64). This is how a flange contact that comes or goes along the path
-// is passed: the contact point jumps across the profile where the gap has two minima, the forces
-// change steeply there, and the smaller steps and the line search keep the iterate on the branch.
-// Converged when every equation of (B2) is within tolerance x Q (N, N m).
+// by forward differences (three more contact pairs per axle), then Broyden's rank-one updates
+// until a step serves badly. Steps: damped (at most 2 mm, 4 mrad and 1e-3, a backtracking line
+// search on the residual norm, every iterate within |y| <= 10 mm); a continuation step whose
+// Newton iteration fails is halved (down to 1/64). How a flange contact that comes or goes along
+// the path is passed: the contacts are taken as two-point contacts where the gap has two minima
+// (VerticalLoadInput::gap_regions) and with the axle's own rolling speed (axle_spin), so their
+// forces stay continuous where the contact point jumps across the profile; where they turn
+// steeply (the flange root) the line search and the smaller continuation steps keep the iterate
+// on the branch. Converged when every equation of (B2) is within tolerance x Q (N, N m).
 #pragma once
 
 #include <array>
 #include <functional>
 #include <vector>
 
+#include "noise/wheel_contact.hpp"
 #include "vehicle/curve_state.hpp"
 #include "vehicle/vehicle_parameters.hpp"
-#include "noise/wheel_contact.hpp"
 
 namespace rollnoise::noise {
 
 /// The forces of the contacts on one wheelset, (B3), with its two wheels' contact states.
 struct AxleContactForces {
-  double lateral = 0.0;  ///< F_i (N), towards the outer rail
-  double yaw = 0.0;      ///< M_i (N m), turning towards the outer rail
-  double torque = 0.0;   ///< T_i (N m) about the axle
+  double lateral = 0.0;                ///< F_i (N), towards the outer rail
+  double yaw = 0.0;                    ///< M_i (N m), turning towards the outer rail
+  double torque = 0.0;                 ///< T_i (N m) about the axle
   std::array<WheelContact, 2> wheels;  ///< outer, inner
 };
 
@@ -87,8 +90,8 @@ using AxleForceFunction =
 struct BogieEquilibriumInput {
   CurveStateInput curve;  ///< the profiles, material, grid, curve, friction, wheel load Q, h_cg
   VehicleParameters vehicle;
-  double tolerance = 1e-6;  ///< on every equation of (B2), x Q (N, N m)
-  int max_newton = 40;      ///< iterations per continuation step
+  double tolerance = 1e-6;     ///< on every equation of (B2), x Q (N, N m)
+  int max_newton = 40;         ///< iterations per continuation step
   double lateral_step = 1e-7;  ///< forward-difference step in y (m)
   double yaw_step = 1e-7;      ///< forward-difference step in psi (rad)
   double spin_step = 1e-8;     ///< forward-difference step in eps (-)
@@ -103,9 +106,9 @@ struct BogieEquilibrium {
   /// (B2) at the solution, in the order: leading lateral (N), yaw (N m), spin (N m); trailing
   /// lateral, yaw, spin; frame lateral (N), yaw (N m).
   std::array<double, 8> residual{};
-  int iterations = 0;            ///< Newton iterations, all continuation steps
-  int continuation_steps = 0;    ///< accepted steps in t
-  int contact_evaluations = 0;   ///< axle contact-force evaluations (two wheels each)
+  int iterations = 0;                    ///< Newton iterations, all continuation steps
+  int continuation_steps = 0;            ///< accepted steps in t
+  int contact_evaluations = 0;           ///< axle contact-force evaluations (two wheels each)
   double unbalanced_acceleration = 0.0;  ///< a_u (m/s^2)
   double load_transfer = 0.0;            ///< dQ (N)
   /// The four wheels' contact states at the solution, in the order of kAllWheels.

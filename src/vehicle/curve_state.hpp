@@ -44,10 +44,10 @@
 #include "contact/patch.hpp"
 #include "geometry/loaded_contact.hpp"
 #include "geometry/wheel_rail.hpp"
-#include "vehicle/curving.hpp"
-#include "vehicle/vehicle_parameters.hpp"
 #include "noise/loop.hpp"
 #include "noise/wheel_contact.hpp"
+#include "vehicle/curving.hpp"
+#include "vehicle/vehicle_parameters.hpp"
 
 namespace rollnoise::noise {
 

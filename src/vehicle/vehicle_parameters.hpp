@@ -11,11 +11,12 @@ struct VehicleParameters {
   /// m_c (kg) of the whole car body, half of it on the bogie; 0: the rest of the static load,
   /// 8 Q / g - 2 m_f - 4 m_w
   double carbody_mass = 0.0;
-  double frame_mass = 2600.0;                   ///< m_f (kg) of one bogie frame
-  double wheelset_mass = 1500.0;                ///< m_w (kg) of one wheelset
-  double primary_longitudinal_stiffness = 12e6; ///< k_x (N/m) per axlebox
-  double primary_lateral_stiffness = 4.5e6;     ///< k_y (N/m) per axlebox
-  double axlebox_semi_spacing = 1.0;  ///< b (m): lateral distance of an axlebox from the axle centre
+  double frame_mass = 2600.0;                    ///< m_f (kg) of one bogie frame
+  double wheelset_mass = 1500.0;                 ///< m_w (kg) of one wheelset
+  double primary_longitudinal_stiffness = 12e6;  ///< k_x (N/m) per axlebox
+  double primary_lateral_stiffness = 4.5e6;      ///< k_y (N/m) per axlebox
+  double axlebox_semi_spacing =
+      1.0;  ///< b (m): lateral distance of an axlebox from the axle centre
   double secondary_yaw_stiffness = 3e5;  ///< K_s (N m/rad) between frame and body, per bogie
   double bogie_centre_distance = 19.0;   ///< 2L (m)
   bool rear_bogie = false;               ///< the rear bogie of the car (s = -1 in (B2))

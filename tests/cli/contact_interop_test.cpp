@@ -238,7 +238,8 @@ TEST(ContactInterop, CurveCaseWritesEachWheelsStateOfTheCurve) {
   const std::string curve = source_file("cases/curve_300m.toml");
   const auto dir = fresh_dir("contact_input_curve");
   // the estimate's state (the equilibrium's is the same path, slower)
-  const Invocation r = run("contact-input " + curve + " --set 'curve.creepage=\"estimate\"' -o " + dir.string());
+  const Invocation r =
+      run("contact-input " + curve + " --set 'curve.creepage=\"estimate\"' -o " + dir.string());
   ASSERT_EQ(r.status, 0) << r.output;
   for (const char* w : {"leading_outer", "leading_inner", "trailing_outer", "trailing_inner"})
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string("curve_300m_") + w + ".inp"))) << w;

@@ -70,7 +70,8 @@ rn::BogieEquilibriumInput model_input(double radius, double cant_deficiency) {
 
 // On the model contact every equation of (B2) holds to 1e-6 Q after the continuation.
 TEST(BogieEquilibrium, ModelContactBalances) {
-  const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(model_input(300.0, 0.08), ModelContact{});
+  const rn::BogieEquilibrium e =
+      rn::solve_bogie_equilibrium(model_input(300.0, 0.08), ModelContact{});
   EXPECT_LE(e.max_residual(), 1e-6 * kQ);
   EXPECT_GT(e.iterations, 0);
   EXPECT_GT(e.yaw[0], 0.0);  // the leading axle turned towards the outer rail
@@ -128,20 +129,24 @@ TEST(BogieEquilibrium, ExactContactsBalanceAt300m) {
   const auto t0 = std::chrono::steady_clock::now();
   const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(in);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("300 m: y %.3f %.3f mm, psi %.3f %.3f mrad, frame %.3f mm %.3f mrad, residual %.2e N, "
-              "%d iterations, %d steps, %d axle evaluations, %.1f s\n",
-              e.lateral[0] * 1e3, e.lateral[1] * 1e3, e.yaw[0] * 1e3, e.yaw[1] * 1e3,
-              e.bogie_lateral * 1e3, e.bogie_yaw * 1e3, e.max_residual(), e.iterations,
-              e.continuation_steps, e.contact_evaluations, s);
+  std::printf(
+      "300 m: y %.3f %.3f mm, psi %.3f %.3f mrad, frame %.3f mm %.3f mrad, residual %.2e N, "
+      "%d iterations, %d steps, %d axle evaluations, %.1f s\n",
+      e.lateral[0] * 1e3, e.lateral[1] * 1e3, e.yaw[0] * 1e3, e.yaw[1] * 1e3, e.bogie_lateral * 1e3,
+      e.bogie_yaw * 1e3, e.max_residual(), e.iterations, e.continuation_steps,
+      e.contact_evaluations, s);
   EXPECT_LE(e.max_residual(), 1e-6 * kQ);
   EXPECT_GT(e.lateral[0], 0.0);
   EXPECT_GT(e.yaw[0], 0.0);
   ASSERT_EQ(e.wheels.size(), 4u);
   for (const rn::WheelContact& w : e.wheels) {
     const auto f = w.force_track();
-    std::printf("  %-14s u %.2f mm psi %.2f mrad angle %.3f xi (%.2e %.2e %.3f) Q %.1f kN F (%.1f %.1f %.1f) kN\n",
-                rn::wheel_name(w.wheel), w.lateral * 1e3, w.yaw * 1e3, w.contact.contact_angle, w.creepage(0),
-                w.creepage(1), w.creepage(2), w.vertical_load * 1e-3, f[0] * 1e-3, f[1] * 1e-3, f[2] * 1e-3);
+    std::printf(
+        "  %-14s u %.2f mm psi %.2f mrad angle %.3f xi (%.2e %.2e %.3f) Q %.1f kN F (%.1f %.1f "
+        "%.1f) kN\n",
+        rn::wheel_name(w.wheel), w.lateral * 1e3, w.yaw * 1e3, w.contact.contact_angle,
+        w.creepage(0), w.creepage(1), w.creepage(2), w.vertical_load * 1e-3, f[0] * 1e-3,
+        f[1] * 1e-3, f[2] * 1e-3);
   }
 }
 
@@ -169,8 +174,9 @@ TEST(BogieEquilibrium, DISABLED_ProbeJump) {
   for (double y = 4.6e-3; y < 5.2e-3; y += 0.05e-3) {
     const rn::AxleContactForces f = rn::contact_forces(in, 0.0, 0, y, 0.5e-3, 0.0, 0.22, true);
     const rn::WheelContact& w = f.wheels[0];
-    std::printf("y %.3f mm: F %.1f M %.1f T %.1f | outer angle %.3f range %.3f..%.3f rows %d s %.2f mm\n", y * 1e3,
-                f.lateral, f.yaw, f.torque, w.contact.contact_angle, w.loaded->angle_min, w.loaded->angle_max,
-                w.loaded->patch->grid.ny, w.contact.wheel_s * 1e3);
+    std::printf(
+        "y %.3f mm: F %.1f M %.1f T %.1f | outer angle %.3f range %.3f..%.3f rows %d s %.2f mm\n",
+        y * 1e3, f.lateral, f.yaw, f.torque, w.contact.contact_angle, w.loaded->angle_min,
+        w.loaded->angle_max, w.loaded->patch->grid.ny, w.contact.wheel_s * 1e3);
   }
 }

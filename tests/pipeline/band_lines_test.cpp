@@ -20,7 +20,9 @@ using namespace rollnoise;
 pipeline::NoiseResult run(const std::vector<std::string>& overrides) {
   // The leading wheelset of the 300 m curve (the outer wheel in full slip, the inner in partial
   // adhesion) on a coarse grid, its FE wheel on a coarse mesh (modes to 3 kHz; bands to 2 kHz).
-  std::vector<std::string> o = {"curve.creepage=\"estimate\"", "noise.band_max=2000.0", "grid.nx=24",
+  std::vector<std::string> o = {"curve.creepage=\"estimate\"",
+                                "noise.band_max=2000.0",
+                                "grid.nx=24",
                                 "wheel.mesh_size=0.02",
                                 "wheel.f_max=3000",
                                 "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
