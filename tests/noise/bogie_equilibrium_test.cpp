@@ -43,10 +43,10 @@ rn::CurveStateInput bogie_curve_input(double radius, double cant_deficiency) {
   return in;
 }
 
-// A model contact (no flange): a conical wheelset (conicity lambda, contact half distance l0, radius r0) with
-// Kalker's linear creep law (f11, f22 per wheel, no saturation) and the gravitational stiffness
-// k_g: F = -k_g y + 2 f22 psi, M = 2 l0 f11 (l0 kappa - lambda y / r0) (curving.hpp (K2), (K3)),
-// T = 2 r0 f11 eps.
+// A model contact (no flange): a conical wheelset (conicity lambda, contact half distance l0,
+// radius r0) with Kalker's linear creep law (f11, f22 per wheel, no saturation) and the
+// gravitational stiffness k_g: F = -k_g y + 2 f22 psi, M = 2 l0 f11 (l0 kappa - lambda y / r0)
+// (curving.hpp (K2), (K3)), T = 2 r0 f11 eps.
 struct ModelContact {
   double lambda = 0.4, l0 = 0.75, r0 = 0.46, f11 = 8e6, f22 = 7e6, k_g = 1e6, radius = 300.0;
   rn::AxleContactForces operator()(int, double y, double psi, double eps, double t) const {
