@@ -42,8 +42,9 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.static_wheel_load = c.normal_force;
   }
   check_curve_state_input(in);
-  if (!in.multibody && !in.equilibrium) {  // the bogie estimate on the profiles: its table, Nadal's
-                                           // limit at its flange
+  // the bogie estimate on the profiles: its table; estimate and equilibrium: Nadal's limit at the
+  // flange (a flange friction beyond it climbs the flange: outside both models)
+  if (!in.multibody) {
     in.table = curving_profile_table(in);
     noise::BogieCurvingInput b;
     b.friction = in.friction;
