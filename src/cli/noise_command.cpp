@@ -39,14 +39,12 @@ void print_contact_state(const pipeline::CurveSetup& curve) {
     const noise::BogieEquilibrium& e = *st.equilibrium;
     std::printf(
         "  bogie equilibrium: leading u %.2f mm psi %.2f mrad, trailing u %.2f mm psi %.2f mrad, "
-        "frame "
-        "%.2f mm %.2f mrad; largest residual %.2e N (%.1e of Q), %d Newton iterations in %d "
-        "continuation "
-        "steps, %d axle contact evaluations\n",
+        "frame %.2f mm %.2f mrad; largest residual %.2e N (%.1e of Q%s), %d Newton iterations in "
+        "%d continuation steps, %d axle contact evaluations\n",
         1e3 * e.lateral[0], 1e3 * e.yaw[0], 1e3 * e.lateral[1], 1e3 * e.yaw[1],
         1e3 * e.bogie_lateral, 1e3 * e.bogie_yaw, e.max_residual(),
-        e.max_residual() / st.wheel_load, e.iterations, e.continuation_steps,
-        e.contact_evaluations);
+        e.max_residual() / st.wheel_load, e.converged ? "" : "; NOT converged to 1e-6: stalled",
+        e.iterations, e.continuation_steps, e.contact_evaluations);
   }
   if (st.loaded)
     std::printf("  wheel lowered under %.1f kN on the curved surface: force on the wheel (%.1f, %.1f, %.1f) kN "

@@ -106,6 +106,9 @@ struct BogieEquilibrium {
   /// (B2) at the solution, in the order: leading lateral (N), yaw (N m), spin (N m); trailing
   /// lateral, yaw, spin; frame lateral (N), yaw (N m).
   std::array<double, 8> residual{};
+  /// Every equation within the tolerance; false: the last Newton iteration stalled within 1e-3 Q
+  /// (residual above says how far), kept rather than failing the run.
+  bool converged = true;
   int iterations = 0;                    ///< Newton iterations, all continuation steps
   int continuation_steps = 0;            ///< accepted steps in t
   int contact_evaluations = 0;           ///< axle contact-force evaluations (two wheels each)
@@ -126,8 +129,8 @@ AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer
 /// Solves (B2) for the input (the curve, the vehicle, Q); `forces` replaces the contacts (tests).
 /// On tangent track (1/R = 0 and no cant deficiency) the result is q = 0 with 0 iterations (the
 /// contacts at the noise's own lowering tolerance).
-/// NumericalError when the continuation step falls below 1/64 or a step's Newton iteration does
-/// not reach the tolerance.
+/// NumericalError when the continuation step falls below 1/64 (a Newton iteration at the curve
+/// that stalls within 1e-3 Q is kept, BogieEquilibrium::converged false).
 BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
                                          const AxleForceFunction& forces = {});
 
