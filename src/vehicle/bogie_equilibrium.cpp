@@ -3,7 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/assert.hpp"
 #include "core/errors.hpp"
@@ -315,27 +317,33 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
     const double tol = in.tolerance * Q;
     double t = 0.0, dt = 0.25, t_prev = 0.0;
     Vector q_prev = q;
+    std::optional<std::pair<Vector, Evaluation>> best;  // the best stalled iterate at t = 1
     int iterations = 0, steps = 0;
     while (t < 1.0) {
       const double t_next = std::min(1.0, t + dt);
       Vector trial = q;
       if (t > 0.0) trial = inside(q + (q - q_prev) * ((t_next - t) / (t - t_prev)));
       const double step_tol = t_next < 1.0 ? std::max(tol, 1e-2 * Q) : tol;
-      const bool converged = solver.newton(trial, t_next, step_tol, e, &iterations);
-      // At the curve itself a stalled iteration within 1e-3 Q is kept, reported by its residual
-      // (out.converged false, the summary says so): the contacts' discretisation can change across
-      // a step of the last iterations (a grid row more or less), which no step can balance to
-      // 1e-6 Q.
-      const bool kept = !converged && t_next == 1.0 && e.r.cwiseAbs().maxCoeff() <= 1e-3 * Q;
-      if (converged || kept) {
-        out.converged = converged;
+      if (solver.newton(trial, t_next, step_tol, e, &iterations)) {
         q_prev = q, t_prev = t;
         q = trial, t = t_next;
         ++steps;
         dt *= 1.5;
         continue;
       }
+      // At the curve itself the best stalled iterate within 1e-3 Q is remembered: the contacts'
+      // discretisation can change across a step of the last iterations (a grid row more or less),
+      // which no step balances to 1e-6 Q. It is kept when the continuation runs out of steps,
+      // reported by its residual (out.converged false, the summary says so).
+      const double stalled = e.r.cwiseAbs().maxCoeff();
+      if (t_next == 1.0 && stalled <= 1e-3 * Q && (!best || stalled < best->second.r.cwiseAbs().maxCoeff()))
+        best.emplace(trial, e);
       dt *= 0.5;
+      if (dt < 1.0 / 64.0 && best) {
+        q = best->first, e = best->second, t = 1.0;
+        out.converged = false;
+        break;
+      }
       if (dt < 1.0 / 64.0) {
         std::ostringstream m;
         m << "bogie equilibrium: no solution along the continuation at t = " << t_next

@@ -129,8 +129,8 @@ AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer
 /// Solves (B2) for the input (the curve, the vehicle, Q); `forces` replaces the contacts (tests).
 /// On tangent track (1/R = 0 and no cant deficiency) the result is q = 0 with 0 iterations (the
 /// contacts at the noise's own lowering tolerance).
-/// NumericalError when the continuation step falls below 1/64 (a Newton iteration at the curve
-/// that stalls within 1e-3 Q is kept, BogieEquilibrium::converged false).
+/// NumericalError when the continuation step falls below 1/64 (then the best Newton iterate at the
+/// curve that stalled within 1e-3 Q is kept instead, BogieEquilibrium::converged false).
 BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
                                          const AxleForceFunction& forces = {});
 
