@@ -336,7 +336,8 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
       // which no step balances to 1e-6 Q. It is kept when the continuation runs out of steps,
       // reported by its residual (out.converged false, the summary says so).
       const double stalled = e.r.cwiseAbs().maxCoeff();
-      if (t_next == 1.0 && stalled <= 1e-3 * Q && (!best || stalled < best->second.r.cwiseAbs().maxCoeff()))
+      if (t_next == 1.0 && stalled <= 1e-3 * Q &&
+          (!best || stalled < best->second.r.cwiseAbs().maxCoeff()))
         best.emplace(trial, e);
       dt *= 0.5;
       if (dt < 1.0 / 64.0 && best) {
