@@ -11,6 +11,7 @@
 #include "io/rail_waves_output.hpp"
 #include "nss/linear_model.hpp"
 #include "pipeline/noise_pipeline.hpp"
+#include "vehicle/bogie_equilibrium.hpp"
 
 namespace rollnoise::cli {
 namespace {
@@ -19,15 +20,32 @@ namespace {
 void print_contact_state(const pipeline::CurveSetup& curve) {
   if (!curve.state) return;
   const noise::CurveContactState& st = *curve.state;
-  std::printf("  contact (%s): u = %.2f mm, psi = %.2f mrad; on the wheel at s = %.1f mm, on the rail at %.1f mm, "
-              "r = %.4f m; Q = %.1f kN + dQ %.1f kN, patch %.1f kN (N = %.1f kN); %s",
-              st.estimated ? "bogie estimate" : "multibody", 1e3 * st.lateral, 1e3 * st.yaw, 1e3 * st.contact.wheel_s,
-              1e3 * st.contact.rail_y, st.contact.rolling_radius, 1e-3 * st.wheel_load, 1e-3 * st.load_transfer,
-              1e-3 * st.tread_load, 1e-3 * st.normal_force, st.two_point ? "two-point: flange " : "one-point\n");
+  std::printf(
+      "  contact (%s): u = %.2f mm, psi = %.2f mrad; on the wheel at s = %.1f mm, on the rail at "
+      "%.1f mm, "
+      "r = %.4f m; Q = %.1f kN + dQ %.1f kN, patch %.1f kN (N = %.1f kN); %s",
+      st.equilibrium ? "bogie equilibrium"
+      : st.estimated ? "bogie estimate"
+                     : "multibody",
+      1e3 * st.lateral, 1e3 * st.yaw, 1e3 * st.contact.wheel_s, 1e3 * st.contact.rail_y,
+      st.contact.rolling_radius, 1e-3 * st.wheel_load, 1e-3 * st.load_transfer,
+      1e-3 * st.tread_load, 1e-3 * st.normal_force,
+      st.two_point ? "two-point: flange " : "one-point\n");
   if (st.two_point)
     std::printf("%.1f kN vertical in the estimate (N_f %.1f kN at %.3f rad; not added: the patch carries the wheel "
                 "load)\n",
                 1e-3 * st.flange_vertical_load, 1e-3 * st.flange_normal_force, st.flange_angle);
+  if (st.equilibrium) {
+    const noise::BogieEquilibrium& e = *st.equilibrium;
+    std::printf(
+        "  bogie equilibrium: leading u %.2f mm psi %.2f mrad, trailing u %.2f mm psi %.2f mrad, "
+        "frame %.2f mm %.2f mrad; largest residual %.2e N (%.1e of Q%s), %d Newton iterations in "
+        "%d continuation steps, %d axle contact evaluations\n",
+        1e3 * e.lateral[0], 1e3 * e.yaw[0], 1e3 * e.lateral[1], 1e3 * e.yaw[1],
+        1e3 * e.bogie_lateral, 1e3 * e.bogie_yaw, e.max_residual(),
+        e.max_residual() / st.wheel_load, e.converged ? "" : "; NOT converged to 1e-6: stalled",
+        e.iterations, e.continuation_steps, e.contact_evaluations);
+  }
   if (st.loaded)
     std::printf("  wheel lowered under %.1f kN on the curved surface: force on the wheel (%.1f, %.1f, %.1f) kN "
                 "(longitudinal, lateral towards the outer rail, up), contact angles %.3f..%.3f rad\n",

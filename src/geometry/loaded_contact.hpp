@@ -34,6 +34,17 @@ struct VerticalLoadInput {
   /// offset of the steady rolling problem.
   contact::SteadyRollingInput rolling;
   double tolerance = 1e-10;  ///< on the relative change of N per iteration
+  /// On the curved surface: the fixed point is settled when the vertical force is within
+  /// max(tolerance, settle) Q, the lowering changes by less than 10 s of itself and the
+  /// pressure-weighted mean cos(delta) by less than s, s = max(settle, 1e-7) (curved_contact.hpp).
+  /// The default keeps the forces to about 1e-5; the bogie's equilibrium, which differentiates
+  /// them, asks for 1e-9.
+  double settle = 1e-5;
+  /// On the curved surface: the grid covers every region of the rail profile within 30 mm of the
+  /// contact point where the gap is small, not only the one around it, so that the wheel lowered
+  /// near a contact jump touches in both (a two-point contact whose load shares follow from the
+  /// common vertical lowering, (C2)); false: the region around the contact point.
+  bool gap_regions = false;
   int max_iterations = 30;
   /// true: the patch on a curved reference surface (the rail profile; curved_contact.hpp), with
   /// the vertical lowering projected on each row's normal and the creepages of each row; false:
@@ -44,6 +55,9 @@ struct VerticalLoadInput {
   /// side, i.e. for the outer wheel).
   double yaw = 0.0;
   double inverse_radius = 0.0;
+  /// The wheel's angular velocity over the speed, omega / V (1/m), for the rows' creepages (C4);
+  /// 0: 1 / r_c (the contact point's circle rolls at V).
+  double rolling_rate = 0.0;
 };
 
 /// The contact of one wheel under its vertical load. Forces are those on the WHEEL.

@@ -195,11 +195,13 @@ const std::vector<KeySpec>& case_schema() {
        "the track's cant D, the height difference of the rail heads; with it the cant deficiency follows from "
        "the speed: I = s V^2 / (g R) - D, s = 1.5 m (EN 13803), so that another rolling.speed gives another I",
        {}, 0, "optional (curve.radius > 0): instead of curve.cant_deficiency (both are refused)"},
-      {"curve.creepage", T::String, "\"estimate\"", "-",
-       "mean creepages and contact position: the rigid bogie's quasi-static estimate (with "
-       "contact.geometry = \"profiles\" each wheel's contact state on the profiles), "
-       "creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw (profiles), or "
-       "the wheelset's position from a multibody run ([wheelset])", {"estimate", "case", "multibody"}},
+      {"curve.creepage", T::String, "\"equilibrium\"", "-",
+       "mean creepages and contact position: the bogie in quasi-static equilibrium on the exact contacts "
+       "with its suspension ([vehicle]; contact.geometry = \"profiles\"; a Hertzian case gets the estimate), "
+       "the rigid bogie's quasi-static estimate (with contact.geometry = \"profiles\" each wheel's contact "
+       "state on the profiles), creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw "
+       "(profiles), or the wheelset's position from a multibody run ([wheelset])",
+       {"equilibrium", "estimate", "case", "multibody"}},
       {"curve.cg_height", T::NonNegReal, "1.5", "m",
        "centre-of-gravity height above the rails for the load transfer by the cant deficiency, "
        "dQ/Q = 2 h_d h_cg / s^2 (profiles; 0: none)"},
@@ -237,7 +239,7 @@ const std::vector<KeySpec>& case_schema() {
        "curve.creepage = \"multibody\": creepages (xi_x, xi_y, phi) of the trailing inner wheel, in its own "
        "(mirrored) contact frame", {}, 0, "optional (default: kinematic (K2') from the wheelset's position)"},
       {"curve.wheels", T::StringList, "", "-",
-       "profiles with curve.creepage = \"estimate\" or \"multibody\": the wheels whose contact state is "
+       "profiles with curve.creepage = \"equilibrium\", \"estimate\" or \"multibody\": the wheels whose contact state is "
        "computed and written (/noise/wheels/<wheel>), each a contact of the case's one loop (coupled "
        "through wheelsets and rails with noise.contact_coupling = \"bogie\", the default)",
        {"leading_outer", "leading_inner", "trailing_outer", "trailing_inner"}, 0,
@@ -247,6 +249,27 @@ const std::vector<KeySpec>& case_schema() {
       {"curve.conicity", T::PositiveReal, "0.15", "-", "equivalent conicity of the conical tread"},
       {"curve.flange_clearance", T::PositiveReal, "0.005", "m", "lateral play to flange contact"},
       {"contact.angle", T::Real, "0.0", "rad", "contact angle (curve.creepage = \"case\")"},
+      // the bogie in equilibrium (curve.creepage = "equilibrium"; defaults: a representative passenger bogie of 2.5 m
+      // wheelbase, docs/noise_loop.md Sec. 7.4)
+      {"vehicle.carbody_mass", T::NonNegReal, "0.0", "kg",
+       "curve.creepage = \"equilibrium\": mass of the whole car body, half of it on the bogie (0: the rest of "
+       "the static load, 8 contact.normal_force / g - 2 frame - 4 wheelsets)"},
+      {"vehicle.frame_mass", T::NonNegReal, "2600.0", "kg", "curve.creepage = \"equilibrium\": one bogie frame"},
+      {"vehicle.wheelset_mass", T::NonNegReal, "1500.0", "kg", "curve.creepage = \"equilibrium\": one wheelset"},
+      {"vehicle.primary_longitudinal_stiffness", T::NonNegReal, "12.0e6", "N/m",
+       "curve.creepage = \"equilibrium\": primary suspension, longitudinal, per axlebox (the wheelset's yaw "
+       "stiffness to the frame is 2 k_x b^2)"},
+      {"vehicle.primary_lateral_stiffness", T::PositiveReal, "4.5e6", "N/m",
+       "curve.creepage = \"equilibrium\": primary suspension, lateral, per axlebox"},
+      {"vehicle.axlebox_semi_spacing", T::PositiveReal, "1.0", "m",
+       "curve.creepage = \"equilibrium\": lateral distance b of the primary springs from the axle centre"},
+      {"vehicle.secondary_yaw_stiffness", T::NonNegReal, "3.0e5", "N m/rad",
+       "curve.creepage = \"equilibrium\": secondary suspension, yaw of the frame against the car body, per bogie"},
+      {"vehicle.bogie_centre_distance", T::NonNegReal, "19.0", "m",
+       "curve.creepage = \"equilibrium\": distance 2L of the bogie centres (the car body, on the chord, is "
+       "turned by L/R against each bogie's tangent)"},
+      {"vehicle.bogie", T::String, "\"front\"", "-",
+       "curve.creepage = \"equilibrium\": which bogie of the car", {"front", "rear"}},
       // structures and roughness (noise, receptance)
       {"track.file", T::String, "\"models/track/uic60_ballasted.toml\"", "-",
        "track parameter file (relative to the case file, its parent folder or the source tree)"},

@@ -36,11 +36,54 @@ noise::RoughnessSpectrum roughness(const CaseReader& r, const std::string& key) 
   return read_roughness_csv(resolve_model_file(r, key));
 }
 
+const std::vector<std::string>& vehicle_keys() {
+  static const std::vector<std::string> keys = {"vehicle.carbody_mass",
+                                                "vehicle.frame_mass",
+                                                "vehicle.wheelset_mass",
+                                                "vehicle.primary_longitudinal_stiffness",
+                                                "vehicle.primary_lateral_stiffness",
+                                                "vehicle.axlebox_semi_spacing",
+                                                "vehicle.secondary_yaw_stiffness",
+                                                "vehicle.bogie_centre_distance",
+                                                "vehicle.bogie"};
+  return keys;
+}
+
+// [vehicle] (curve.creepage = "equilibrium"): the bogie's masses, suspension and geometry; a car
+// body mass of 0 is the rest of the static load, 8 Q / g - 2 m_f - 4 m_w (InputError naming
+// vehicle.carbody_mass when the frames and wheelsets alone weigh more).
+noise::VehicleParameters read_vehicle(const CaseReader& r) {
+  noise::VehicleParameters v;
+  v.frame_mass = r.real("vehicle.frame_mass");
+  v.wheelset_mass = r.real("vehicle.wheelset_mass");
+  v.carbody_mass = r.real("vehicle.carbody_mass");
+  if (v.carbody_mass == 0.0 && r.has("contact.normal_force")) {
+    v.carbody_mass = 8.0 * r.real("contact.normal_force") / noise::kGravity - 2.0 * v.frame_mass -
+                     4.0 * v.wheelset_mass;
+    if (!(v.carbody_mass > 0.0))
+      r.fail("vehicle.carbody_mass",
+             "the frames and wheelsets weigh more than the static load "
+             "8 contact.normal_force / g: give the car body's mass");
+  }
+  v.primary_longitudinal_stiffness = r.real("vehicle.primary_longitudinal_stiffness");
+  v.primary_lateral_stiffness = r.real("vehicle.primary_lateral_stiffness");
+  v.axlebox_semi_spacing = r.real("vehicle.axlebox_semi_spacing");
+  v.secondary_yaw_stiffness = r.real("vehicle.secondary_yaw_stiffness");
+  v.bogie_centre_distance = r.real("vehicle.bogie_centre_distance");
+  v.rear_bogie = r.string("vehicle.bogie") == "rear";
+  return v;
+}
+
 // curve.creepage and the keys it admits or excludes: [wheelset], [trailing_wheelset] with
 // "multibody", curve.wheels with the profiles, the case's own contact state with "case".
 void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
-  c.estimate_creepage = r.string("curve.creepage") == "estimate";
-  c.multibody = r.string("curve.creepage") == "multibody";
+  const std::string mode = r.string("curve.creepage");
+  c.equilibrium = mode == "equilibrium";
+  c.estimate_creepage = mode == "estimate" || c.equilibrium;
+  c.multibody = mode == "multibody";
+  for (const std::string& key : vehicle_keys())
+    if (r.has(key) && !c.equilibrium)
+      r.fail(key, "only used with curve.creepage = \"equilibrium\"");
   if (c.multibody && r.string("contact.geometry") != "profiles")
     r.fail("curve.creepage", "\"multibody\" needs contact.geometry = \"profiles\"");
   for (const char* key :
@@ -53,7 +96,8 @@ void read_curve_creepage_mode(const CaseReader& r, NoiseCase& c) {
   if (r.has("curve.wheels")) {
     if (r.string("contact.geometry") != "profiles" || r.string("curve.creepage") == "case")
       r.fail("curve.wheels",
-             "needs contact.geometry = \"profiles\" and curve.creepage = \"estimate\" or "
+             "needs contact.geometry = \"profiles\" and curve.creepage = \"equilibrium\", "
+             "\"estimate\" or "
              "\"multibody\"");
     c.wheels = r.string_list("curve.wheels");
     if (c.wheels.empty()) r.fail("curve.wheels", "names no wheel");
@@ -121,6 +165,7 @@ void read_curve(const CaseReader& r, InputProblems& problems, NoiseCase& c) {
   problems.check([&] {
     read_curve_creepage_mode(r, c);
     if (c.multibody) read_multibody_wheelsets(r, c);
+    if (c.equilibrium) c.vehicle = read_vehicle(r);
   });
   problems.check([&] { c.wheelbase = r.real("curve.wheelbase"); });
   problems.check([&] { c.wheel_radius = r.real("curve.wheel_radius"); });

@@ -5,6 +5,7 @@
 #include "io/contact_output.hpp"
 #include "io/sound_output.hpp"
 #include "nss/linear_model.hpp"
+#include "vehicle/bogie_equilibrium.hpp"
 
 namespace rollnoise::io {
 namespace {
@@ -258,6 +259,37 @@ std::string loop_description(const pipeline::NoiseResult& r) {
              "top-level /noise is " + std::string(noise::wheel_name(r.reported_wheel().wheel)) + "'s answer in it";
 }
 
+namespace {
+
+// /curving: the bogie in equilibrium (curve.creepage = "equilibrium" with the profiles; on tangent
+// track every value 0), vehicle/bogie_equilibrium.hpp.
+void write_curving(Hdf5Writer& w, const pipeline::CurveSetup& curve) {
+  if (!curve.state || !curve.state->equilibrium) return;
+  const noise::BogieEquilibrium& e = *curve.state->equilibrium;
+  w.write("/curving/wheelset_lateral", std::vector<double>{e.lateral[0], e.lateral[1]}, {2},
+          "m (leading, trailing wheelset; towards the outer rail, from the track centre line)");
+  w.write("/curving/wheelset_yaw", std::vector<double>{e.yaw[0], e.yaw[1]}, {2},
+          "rad (leading, trailing wheelset; angle of attack to the local radial, positive turning "
+          "towards the outer "
+          "rail)");
+  w.write("/curving/bogie_lateral", e.bogie_lateral, "m (frame centre, towards the outer rail)");
+  w.write("/curving/bogie_yaw", e.bogie_yaw, "rad (frame, to the track tangent at its centre)");
+  w.write("/curving/residual", std::vector<double>(e.residual.begin(), e.residual.end()),
+          {e.residual.size()},
+          "N, N m, N m, N, N m, N m, N, N m (equilibrium equations: leading wheelset lateral, yaw, "
+          "spin (torque about "
+          "the axle); trailing wheelset lateral, yaw, spin; frame lateral, yaw)");
+  w.write("/curving/iterations", std::vector<int>{e.iterations}, {},
+          "- (Newton iterations over all continuation "
+          "steps)");
+  w.write("/curving/continuation_steps", std::vector<int>{e.continuation_steps}, {}, "-");
+  w.write("/curving/contact_evaluations", std::vector<int>{e.contact_evaluations}, {},
+          "- (axle contact-force evaluations, two wheel contacts each)");
+  w.write("/curving/load_transfer", e.load_transfer, "N (dQ: outer wheels Q + dQ, inner Q - dQ)");
+}
+
+}  // namespace
+
 CaseReader case_as_run(const CaseReader& r, const pipeline::ContactCase& c, const pipeline::CurveSetup& curve) {
   if (!curve.creepage_from_curve()) return r;
   std::ostringstream v;
@@ -301,6 +333,7 @@ void write_noise(Hdf5Writer& w, const CaseReader& reader, const pipeline::NoiseC
   write_contact_state(w, "/noise/contact", nc, r.mean.contact(), r.mean.curve(), r.mean.normal_stiffness());
   write_wheels(w, r);
   write_sound(w, r);
+  write_curving(w, r.mean.curve());
   if (r.mean.curve().estimated) {
     w.write("/noise/curving/radius", nc.curve_radius, "m");
     w.write("/noise/curving/attack_angle", r.mean.curve().curving.leading.attack_angle, "rad");

@@ -49,6 +49,9 @@ geometry::VerticalLoadInput vertical_load_input(const WheelContactInput& in,
   v.material = in.material;
   v.grid = in.grid;
   v.grid.nx = std::min(v.grid.nx, in.lowering_nx);
+  v.settle = in.lowering_settle;
+  v.gap_regions = in.gap_regions;
+  v.max_iterations = in.lowering_settle < 1e-5 ? 100 : v.max_iterations;
   v.rolling = contact::SteadyRollingInput(in.friction, in.speed,
                                           {creepage(0), creepage(1), creepage(2)}, in.spin_offset);
   return v;
@@ -77,6 +80,13 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   w.creepage = in.creepage ? *in.creepage
                            : kinematic_creepage(w.contact, w.other_rolling_radius,
                                                 pair.wheelset().nominal_radius, kappa);
+  const double r0 = pair.wheelset().nominal_radius;
+  if (!in.creepage &&
+      in.axle_spin) {  // the axle's own rolling speed (WheelContactInput::axle_spin)
+    const double rate = (1.0 + *in.axle_spin) / r0, gamma = w.contact.contact_angle;
+    w.creepage(0) = kappa * w.contact.y + 1.0 - rate * w.contact.rolling_radius;
+    w.creepage(2) = -rate * std::sin(gamma) - kappa * std::cos(gamma);
+  }
   w.vertical_load = in.vertical_load;
   // Lowered vertically under Q_w on the curved surface (curved_contact.hpp), in this side's frame:
   // its yaw c.local_pose.yaw and curvature kappa.
@@ -84,6 +94,7 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   v.curved = true;
   v.yaw = w.contact.local_pose.yaw;
   v.inverse_radius = kappa;
+  if (!in.creepage && in.axle_spin) v.rolling_rate = (1.0 + *in.axle_spin) / r0;
   w.loaded = std::make_shared<const geometry::LoadedContact>(
       geometry::lower_under_vertical_load(pair, w.contact, v));
   return w;

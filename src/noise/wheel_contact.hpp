@@ -58,6 +58,10 @@ struct WheelContactInput {
   contact::Material material;
   geometry::GridOptions grid;   ///< of the patch
   int lowering_nx = 24;         ///< elements in x (at most) of the lowering (curve_state.hpp)
+  /// The lowering's fixed-point tolerance (VerticalLoadInput::settle).
+  double lowering_settle = 1e-5;
+  /// Every small-gap region in the patch (VerticalLoadInput::gap_regions).
+  bool gap_regions = false;
   double inverse_radius = 0.0;  ///< 1/R (1/m), 0 on tangent track
   double speed = 0.0;           ///< V (m/s)
   double friction = 0.3;        ///< mu
@@ -66,6 +70,14 @@ struct WheelContactInput {
   double lateral = 0.0;        ///< u (m) of the wheel's axle, towards the outer rail
   double yaw = 0.0;            ///< psi (rad) of the wheel's axle, turning towards the outer rail
   double vertical_load = 0.0;  ///< the wheel's vertical load (N), > 0
+  /// epsilon: the axle turns at (1 + epsilon) V / r0 (a free-rolling axle's rolling speed, an
+  /// unknown of the bogie's equilibrium, vehicle/bogie_equilibrium.hpp). Then the wheel's
+  /// creepages refer to that speed, not to the mean rolling radius of (K2'):
+  ///   xi_x = kappa y_c + 1 - (1 + epsilon) r_c / r0,
+  ///   phi = -(1 + epsilon) sin(gamma) / r0 - kappa cos(gamma)
+  /// and the rows of the curved patch roll at omega / V = (1 + epsilon) / r0 (C4), so that the
+  /// creepage field does not jump with the contact point across a contact jump. Empty: (K2').
+  std::optional<double> axle_spin;
   /// (xi_x, xi_y, phi) in the wheel's own contact frame (multibody input); empty: (K2').
   std::optional<Eigen::Vector3d> creepage;
 };

@@ -28,6 +28,8 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
   in.friction = c.mu;
   in.spin_offset = c.spin_offset;
   in.multibody = nc.multibody;
+  in.equilibrium = nc.equilibrium;
+  in.vehicle = nc.vehicle;
   if (nc.multibody) {
     in.lateral = nc.wheelset_lateral;
     in.yaw = nc.wheelset_yaw;
@@ -40,7 +42,9 @@ noise::CurveStateInput curve_state_input(const ContactCase& c, const NoiseCase& 
     in.static_wheel_load = c.normal_force;
   }
   check_curve_state_input(in);
-  if (!in.multibody) {  // the bogie estimate on the profiles: its table, Nadal's limit at its flange
+  // the bogie estimate on the profiles: its table; estimate and equilibrium: Nadal's limit at the
+  // flange (a flange friction beyond it climbs the flange: outside both models)
+  if (!in.multibody) {
     in.table = curving_profile_table(in);
     noise::BogieCurvingInput b;
     b.friction = in.friction;

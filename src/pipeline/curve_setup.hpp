@@ -1,10 +1,12 @@
 // The curve stage of the noise pipeline: the mean contact state of the leading outer wheel.
 //
-//   profiles with curve.creepage = "estimate" or "multibody": the curve contact state
-//     (vehicle/curve_state.hpp: bogie estimate or the given wheelset position, contact point,
-//     load transfer and flange share, creepages);
-//   Hertzian case in a curve with curve.creepage = "estimate": the quasi-static bogie estimate on
-//     the conical tread (vehicle/curving.hpp), Kalker's f11, f22 from the case's semi-axes;
+//   profiles with curve.creepage = "equilibrium", "estimate" or "multibody": the curve contact
+//     state (vehicle/curve_state.hpp: the bogie in equilibrium on the exact contacts
+//     (vehicle/bogie_equilibrium.hpp), the bogie estimate or the given wheelset position, contact
+//     point, load transfer and flange share, creepages);
+//   Hertzian case in a curve with curve.creepage = "equilibrium" or "estimate": the quasi-static
+//     bogie estimate on the conical tread (vehicle/curving.hpp), Kalker's f11, f22 from the case's
+//     semi-axes (the equilibrium needs the profiles' contacts);
 //   otherwise the case's creepage.mean and contact point (or contact.angle).
 // The stage returns the case placed at the state's contact point with its normal force and
 // creepages (pipeline/contact_case.hpp): geometry only, nothing is solved; the mean-contact stage

@@ -16,14 +16,20 @@
 #include "noise/roughness.hpp"
 #include "noise/roughness_filter.hpp"
 #include "pipeline/sound_power.hpp"
+#include "vehicle/bogie_equilibrium.hpp"
 
 namespace rollnoise::pipeline {
 
 struct NoiseCase {
   double curve_radius = 0.0;  ///< m, 0: tangent track
   double cant_deficiency = 0.0;
+  /// curve.creepage = "equilibrium" or "estimate": the creepages from the curve (a Hertzian case
+  /// gets the estimate for both).
   bool estimate_creepage = true;
-  bool multibody = false;  ///< curve.creepage = "multibody"
+  bool equilibrium = true;  ///< curve.creepage = "equilibrium" (the bogie in equilibrium, profiles)
+  bool multibody = false;   ///< curve.creepage = "multibody"
+  /// [vehicle]: the bogie's masses, suspension and geometry of the equilibrium.
+  noise::VehicleParameters vehicle;
   double cg_height = 1.5;
   double wheelbase = 2.5, wheel_radius = 0.46, conicity = 0.15, flange_clearance = 0.005;
   double contact_angle = 0.0;  ///< when the case gives the creepages

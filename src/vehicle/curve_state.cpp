@@ -7,6 +7,7 @@
 #include "core/assert.hpp"
 #include "core/errors.hpp"
 #include "noise/kalker_linear.hpp"
+#include "vehicle/bogie_equilibrium.hpp"
 
 namespace rollnoise::noise {
 namespace {
@@ -18,6 +19,32 @@ Eigen::Vector2d kalker_at(const CurveStateInput& in, const geometry::ContactGeom
   const Eigen::Matrix3d f =
       kalker_creep_matrix(hz.a, hz.b, in.material);
   return {f(0, 0), f(1, 1)};
+}
+
+// The state of the bogie in equilibrium (bogie_equilibrium.hpp): the leading axle's position, the
+// leading outer wheel's contact state at the solution (the solver's own, not recomputed); no
+// Kalker coefficients (f11, f22 stay 0: the estimate's).
+CurveContactState equilibrium_state(const CurveStateInput& in) {
+  BogieEquilibriumInput b;
+  b.curve = in;
+  b.vehicle = in.vehicle;
+  auto e = std::make_shared<const BogieEquilibrium>(solve_bogie_equilibrium(b));
+  CurveContactState s;
+  s.equilibrium = e;
+  s.wheel_load = in.wheel_load;
+  s.lateral = e->lateral[0];
+  s.yaw = e->yaw[0];
+  s.load_transfer = e->load_transfer;
+  s.position_iterations = e->iterations;
+  s.wheel = e->wheels.front();
+  s.contact = s.wheel.contact;
+  s.inner_rolling_radius = s.wheel.other_rolling_radius;
+  s.creepage = s.wheel.creepage;
+  s.loaded = s.wheel.loaded;
+  s.tread_load = s.wheel.vertical_load;
+  s.lateral_creep_force = s.loaded->creep_force[1];
+  s.normal_force = s.loaded->normal_force;
+  return s;
 }
 
 }  // namespace
@@ -81,6 +108,7 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
 
   CurveContactState s;
   s.wheel_load = Q;
+  if (in.equilibrium) return equilibrium_state(in);
   if (in.multibody) {
     s.lateral = in.lateral;
     s.yaw = in.yaw;
@@ -153,6 +181,10 @@ std::vector<WheelContact> bogie_wheel_contacts(const CurveStateInput& in,
                                                const std::vector<WheelId>& wheels) {
   std::vector<WheelContact> out;
   for (WheelId id : wheels) {
+    if (s.equilibrium) {  // the solver's own contact states at the solution
+      out.push_back(s.equilibrium->wheels[static_cast<std::size_t>(id)]);
+      continue;
+    }
     if (id == WheelId::leading_outer) {
       out.push_back(s.wheel);
       continue;

@@ -44,9 +44,10 @@
 #include "contact/patch.hpp"
 #include "geometry/loaded_contact.hpp"
 #include "geometry/wheel_rail.hpp"
-#include "vehicle/curving.hpp"
 #include "noise/loop.hpp"
 #include "noise/wheel_contact.hpp"
+#include "vehicle/curving.hpp"
+#include "vehicle/vehicle_parameters.hpp"
 
 namespace rollnoise::noise {
 
@@ -65,6 +66,10 @@ struct CurveStateInput {
   /// Elements in x (at most) of the grid on which the wheel is lowered under its load (the
   /// resultant changes by < 0.5 % from 16 to 24 elements in flange-root contact).
   int lowering_nx = 24;
+  /// The bogie in equilibrium on the exact contacts (bogie_equilibrium.hpp) instead of the
+  /// estimate, with the vehicle's data.
+  bool equilibrium = false;
+  VehicleParameters vehicle;
   // Multibody input: the wheelset's position (and optionally the creepages) given.
   bool multibody = false;
   double lateral = 0.0;                     ///< u (m)
@@ -87,14 +92,21 @@ struct CurveStateInput {
   bool valid() const;
 };
 
+/// The solution of the bogie's equilibrium (bogie_equilibrium.hpp).
+struct BogieEquilibrium;
+
 struct CurveContactState {
   bool estimated = false;             ///< true: from the bogie estimate; false: multibody input
   CurvingEstimate estimate;           ///< when estimated
+  /// The bogie in equilibrium (CurveStateInput::equilibrium): positions, residual, every wheel's
+  /// contact state at the solution.
+  std::shared_ptr<const BogieEquilibrium> equilibrium;
   int position_iterations = 0;        ///< contact -> f -> estimate iterations
   double lateral = 0.0, yaw = 0.0;    ///< u (m), psi (rad) of the wheelset
   geometry::ContactGeometry contact;  ///< tread contact of the outer wheel
   double inner_rolling_radius = 0.0;  ///< r_i (m)
-  double f11 = 0.0, f22 = 0.0;        ///< Kalker's coefficients at the contact for the load Q (N)
+  /// Kalker's coefficients at the contact for the load Q (N); 0 for the equilibrium (not used)
+  double f11 = 0.0, f22 = 0.0;
   double wheel_load = 0.0;            ///< Q (N)
   double load_transfer = 0.0;         ///< dQ (N)
   double tread_load = 0.0;            ///< Q_o (N): the vertical load the patch carries

@@ -21,7 +21,8 @@ using namespace rollnoise::cli_test;
 // 2.5 kHz, four lines per band up to 500 Hz (~0.2 s a run).
 std::string coarse_curve(const std::string& out, const std::string& more = "") {
   return source_file("cases/curve_300m.toml") + " -o " + out +
-         " -q --set 'curve.wheels=[\"leading_outer\"]' --set noise.band_max=500 --set "
+         " -q --set 'curve.creepage=\"estimate\"' --set 'curve.wheels=[\"leading_outer\"]' --set "
+         "noise.band_max=500 --set "
          "noise.points_per_band=4 --set noise.band_refinement=0 --set wheel.mesh_size=0.03 --set "
          "wheel.n_max=3 --set wheel.f_max=2500.0 " +
          more;
@@ -84,7 +85,8 @@ TEST(ModeCache, OffInTheCaseOrTheEnvironmentStoresNothing) {
   // the key belongs to the FE wheel: with another wheel model it is refused, naming it
   const Invocation c =
       run("noise " + source_file("cases/curve_300m.toml") + " -o " + (dir / "c.h5").string() +
-          " -q --set wheel.model=\\\"table\\\" --set wheel.mode_cache=\\\"user\\\"");
+          " -q --set curve.creepage=\\\"estimate\\\" --set wheel.model=\\\"table\\\" --set "
+          "wheel.mode_cache=\\\"user\\\"");
   EXPECT_NE(c.status, 0);
   EXPECT_NE(c.output.find("wheel.mode_cache"), std::string::npos) << c.output;
 }

@@ -15,7 +15,8 @@ const std::string kCoarseGrid = " --set grid.nx=20 --set grid.ny=15";
 // The shipped curve case, its leading outer wheel alone and coarse (as the mode cache's tests).
 std::string coarse_noise_case() {
   return source_file("cases/curve_300m.toml") +
-         " --set 'curve.wheels=[\"leading_outer\"]' --set noise.band_max=500 --set "
+         " --set 'curve.creepage=\"estimate\"' --set 'curve.wheels=[\"leading_outer\"]' --set "
+         "noise.band_max=500 --set "
          "noise.points_per_band=4 --set noise.band_refinement=0 --set wheel.mesh_size=0.03 --set "
          "wheel.n_max=3 --set wheel.f_max=2500.0";
 }

@@ -88,8 +88,9 @@ TEST(RailSamplingCache, OffInTheCaseOrTheEnvironmentStoresNothing) {
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_FALSE(std::filesystem::exists(cache));
   // the key belongs to the waveguide rail: with the beams it is refused, naming it
-  const Invocation c = run("noise " + source_file("cases/curve_300m.toml") + " -o " +
-                           (dir / "c.h5").string() + " -q --set track.sampling_cache=\\\"user\\\"");
+  const Invocation c =
+      run("noise " + source_file("cases/curve_300m.toml") + " -o " + (dir / "c.h5").string() +
+          " -q --set curve.creepage=\\\"estimate\\\" --set track.sampling_cache=\\\"user\\\"");
   EXPECT_NE(c.status, 0);
   EXPECT_NE(c.output.find("track.sampling_cache"), std::string::npos) << c.output;
 }

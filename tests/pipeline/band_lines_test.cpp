@@ -20,7 +20,10 @@ using namespace rollnoise;
 pipeline::NoiseResult run(const std::vector<std::string>& overrides) {
   // The leading wheelset of the 300 m curve (the outer wheel in full slip, the inner in partial
   // adhesion) on a coarse grid, its FE wheel on a coarse mesh (modes to 3 kHz; bands to 2 kHz).
-  std::vector<std::string> o = {"noise.band_max=2000.0", "grid.nx=24", "wheel.mesh_size=0.02",
+  std::vector<std::string> o = {"curve.creepage=\"estimate\"",
+                                "noise.band_max=2000.0",
+                                "grid.nx=24",
+                                "wheel.mesh_size=0.02",
                                 "wheel.f_max=3000",
                                 "curve.wheels=[\"leading_outer\", \"leading_inner\"]"};
   o.insert(o.end(), overrides.begin(), overrides.end());
@@ -72,7 +75,8 @@ TEST(BandLines, RefinedBandLevelsMatchAFineUniformGridAndLeaveTheNarrowBandAlone
 // refined lines and every band level are the same bits (with slices per thread they moved by up
 // to 0.06 dB on curve_300m_waveguide). A level adds more than 64 lines, the old slicing's step.
 TEST(BandLines, WaveguideRailGivesTheSameBandLevelsOnOneAndTwoThreads) {
-  const std::vector<std::string> o = {"noise.band_min=500.0",
+  const std::vector<std::string> o = {"curve.creepage=\"estimate\"",
+                                      "noise.band_min=500.0",
                                       "noise.band_max=1000.0",
                                       "noise.points_per_band=12",
                                       "grid.nx=24",

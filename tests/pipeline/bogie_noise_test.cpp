@@ -38,10 +38,10 @@ double difference_relative_to_first(const noise::Vector4c& a, const noise::Vecto
 // at its own contact on the tread) on a coarse mesh (20 mm, modes to 3 kHz: the bands end at 1
 // kHz).
 TEST(BogieNoise, WithoutCouplingEachWheelIsItsSingleContactLoop) {
-  const io::NoiseInputs in =
-      read_case("curve_300m.toml",
-                {"track.support=\"continuous\"", "grid.nx=24", "noise.contact_coupling=\"none\"",
-                 "wheel.mesh_size=0.02", "wheel.f_max=3000", "noise.band_refinement=0"});
+  const io::NoiseInputs in = read_case(
+      "curve_300m.toml", {"curve.creepage=\"estimate\"", "track.support=\"continuous\"",
+                          "grid.nx=24", "noise.contact_coupling=\"none\"", "wheel.mesh_size=0.02",
+                          "wheel.f_max=3000", "noise.band_refinement=0"});
   const pipeline::NoiseResult r = pipeline::run_noise(in.contact, in.noise);
   ASSERT_EQ(r.wheels.size(), 4u);
   ASSERT_FALSE(r.coupled_contacts);

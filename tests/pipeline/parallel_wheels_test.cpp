@@ -25,6 +25,7 @@ using namespace rollnoise;
 // the FE wheel on a coarse mesh (20 mm, modes to 2 kHz).
 pipeline::NoiseResult run_curve(int threads, const std::string& coupling) {
   const std::vector<std::string> o = {"grid.nx=16",
+                                      "curve.creepage=\"estimate\"",
                                       "noise.points_per_band=4",
                                       "noise.band_max=800.0",
                                       "noise.compare=\"none\"",

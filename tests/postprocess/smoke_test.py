@@ -91,6 +91,7 @@ def main():
               "--set", "noise.points_per_band=4", "--set", "noise.band_refinement=0", "--set", "noise.band_min=500",
               "--set", "noise.band_max=2000", "--set", "train.vehicles=2")
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
+              "--set", 'curve.creepage="estimate"',
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
     rollnoise(binary, work, "receptance", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "rail_waves.h5",
