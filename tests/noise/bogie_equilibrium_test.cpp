@@ -155,36 +155,3 @@ TEST(BogieEquilibrium, ExactContactsBalanceAt300m) {
   }
 }
 
-// Probe (not run by default): the leading axle's contact forces against small steps in y and psi,
-// and the cost of one axle evaluation.
-TEST(BogieEquilibrium, DISABLED_ProbeContactSmoothness) {
-  const rn::CurveStateInput in = bogie_curve_input(300.0, 0.08);
-  for (double y0 : {2e-3, 5e-3, 6e-3}) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const rn::AxleContactForces f0 = rn::contact_forces(in, 0.0, 0, y0, 4e-3, 0.0, 1.0);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("y0 %.1f mm: F %.6f M %.6f (%.3f s)\n", y0 * 1e3, f0.lateral, f0.yaw, s);
-    for (double h : {1e-9, 1e-8, 1e-7, 1e-6, 1e-5}) {
-      const rn::AxleContactForces f = rn::contact_forces(in, 0.0, 0, y0 + h, 4e-3, 0.0, 1.0);
-      const rn::AxleContactForces g = rn::contact_forces(in, 0.0, 0, y0, 4e-3 + h, 0.0, 1.0);
-      std::printf("  h %.0e: dF/dy %.6e dM/dy %.6e dF/dpsi %.6e dM/dpsi %.6e\n", h,
-                  (f.lateral - f0.lateral) / h, (f.yaw - f0.yaw) / h, (g.lateral - f0.lateral) / h,
-                  (g.yaw - f0.yaw) / h);
-    }
-  }
-}
-
-// Probe (not run by default): the leading axle's contact forces across the S1002/UIC60 contact
-// jump at u = 4.83 mm as the solver takes them (docs/noise_loop.md Sec. 7.4: continuous with both
-// small-gap regions in the patch and the axle's own rolling speed).
-TEST(BogieEquilibrium, DISABLED_ProbeJump) {
-  const rn::CurveStateInput in = bogie_curve_input(300.0, 0.08);
-  for (double y = 4.6e-3; y < 5.2e-3; y += 0.05e-3) {
-    const rn::AxleContactForces f = rn::contact_forces(in, 0.0, 0, y, 0.5e-3, 0.0, 0.22, true);
-    const rn::WheelContact& w = f.wheels[0];
-    std::printf(
-        "y %.3f mm: F %.1f M %.1f T %.1f | outer angle %.3f range %.3f..%.3f rows %d s %.2f mm\n",
-        y * 1e3, f.lateral, f.yaw, f.torque, w.contact.contact_angle, w.loaded->angle_min,
-        w.loaded->angle_max, w.loaded->patch->grid.ny, w.contact.wheel_s * 1e3);
-  }
-}
