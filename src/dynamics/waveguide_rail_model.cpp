@@ -641,6 +641,19 @@ HeadBody section_head_body(const WaveguideRailOptions& options) {
   return head_body(fem::mesh_polygon(outline, options.mesh_size), options.head_bottom);
 }
 
+namespace {
+
+// A contact's four columns on the head's six distributions (HeadBody::at at its point and normal).
+Eigen::Matrix<double, 6, 4> head_columns(const HeadBody& head,
+                                         const std::vector<Eigen::Vector2d>& outline,
+                                         const WaveguideRailOptions& options, double offset_y,
+                                         double angle) {
+  const auto [point, normal] = contact_point_and_normal(outline, options, offset_y, angle);
+  return head.at(point, normal);
+}
+
+}  // namespace
+
 std::optional<RailLoadBasis> head_load_basis(const HeadBody& head,
                                              const std::vector<Eigen::Vector2d>& outline,
                                              const WaveguideRailOptions& options,
@@ -655,11 +668,9 @@ std::optional<RailLoadBasis> head_load_basis(const HeadBody& head,
                                           4 * Eigen::Index(points.size()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const RailLoadPoint& p = points[i];
-    const auto [point, normal] =
-        contact_point_and_normal(outline, options, p.offset_y, p.contact_angle);
     const Eigen::Index at = std::find(out.x.begin(), out.x.end(), p.x) - out.x.begin();
     out.combination.block(out.per_position * at, 4 * Eigen::Index(i), out.per_position, 4) =
-        head.at(point, normal);
+        head_columns(head, outline, options, p.offset_y, p.contact_angle);
   }
   return out;
 }
@@ -673,8 +684,7 @@ std::optional<SpanningPoints> head_spanning_points(
   // and tangents differ, so their forces and moments span the head's six (HeadBody::at)
   out.points = {{0.0, 0.0}, {0.025, 0.3}};
   auto columns = [&](const std::pair<double, double>& p) {
-    const auto [point, normal] = contact_point_and_normal(outline, options, p.first, p.second);
-    return head.at(point, normal);
+    return head_columns(head, outline, options, p.first, p.second);
   };
   Eigen::Matrix<double, 6, 8> span;
   span << columns(out.points[0]), columns(out.points[1]);

@@ -31,16 +31,7 @@ rn::VehicleParameters passenger_bogie() {
 }
 
 rn::CurveStateInput bogie_curve_input(double radius, double cant_deficiency) {
-  rn::CurveStateInput in;
-  in.pair = pair();
-  in.material = material();
-  in.grid.nx = 16;
-  in.radius = radius;
-  in.speed = kV;
-  in.cant_deficiency = cant_deficiency;
-  in.wheel_load = kQ;
-  in.friction = 0.3;
-  return in;
+  return curve_input(radius, cant_deficiency);
 }
 
 // A model contact (no flange): a conical wheelset (conicity lambda, contact half distance l0,

@@ -6,6 +6,7 @@
 
 #include "geometry/wheel_rail.hpp"
 #include "io/profile_file.hpp"
+#include "vehicle/curve_state.hpp"
 #include "vehicle/curving.hpp"
 #include "noise_fixture.hpp"
 
@@ -35,6 +36,21 @@ inline const std::shared_ptr<const rollnoise::geometry::WheelRailPair>& pair() {
 }
 inline const std::shared_ptr<const rn::ProfileCurvingTable>& table() {
   return s1002_uic60_table();
+}
+
+/// The curve state's input on the fixture's profiles (no curving table): 16 elements in x, the
+/// fixture's speed and wheel load, friction mu.
+inline rn::CurveStateInput curve_input(double radius, double cant_deficiency, double mu = 0.3) {
+  rn::CurveStateInput in;
+  in.pair = pair();
+  in.material = material();
+  in.grid.nx = 16;
+  in.radius = radius;
+  in.speed = kV;
+  in.cant_deficiency = cant_deficiency;
+  in.wheel_load = kQ;
+  in.friction = mu;
+  return in;
 }
 
 }  // namespace noise_test

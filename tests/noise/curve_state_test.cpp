@@ -23,16 +23,8 @@ namespace rg = rollnoise::geometry;
 namespace {
 
 rn::CurveStateInput input(double radius, double cant_deficiency, double mu = 0.3) {
-  rn::CurveStateInput in;
-  in.pair = pair();
+  rn::CurveStateInput in = curve_input(radius, cant_deficiency, mu);
   in.table = table();
-  in.material = material();
-  in.grid.nx = 16;
-  in.radius = radius;
-  in.speed = kV;
-  in.cant_deficiency = cant_deficiency;
-  in.wheel_load = kQ;
-  in.friction = mu;
   return in;
 }
 

@@ -38,17 +38,11 @@ rn::WheelContactInput wheel_input(WheelId id, double u, double psi, double inv_R
   return in;
 }
 
-rn::CurveStateInput curve_input(double radius, double cant_deficiency) {
-  rn::CurveStateInput in;
-  in.pair = pair();
+// the fixture's curve input with the curving table, the wheel lowered on 16 elements too
+rn::CurveStateInput table_curve_input(double radius, double cant_deficiency) {
+  rn::CurveStateInput in = curve_input(radius, cant_deficiency);
   in.table = table();
-  in.material = material();
-  in.grid.nx = 16;
   in.lowering_nx = 16;
-  in.radius = radius;
-  in.speed = kV;
-  in.cant_deficiency = cant_deficiency;
-  in.wheel_load = kQ;
   return in;
 }
 
@@ -94,7 +88,7 @@ TEST(WheelContact, TangentTrackInnerWheelMirrorsTheOuterWheel) {
 // points outwards) and the leading outer wheel's resultant is towards the track centre (the flank
 // carries the guidance).
 TEST(WheelContact, FourWheelsSignConventionsAndLoadsIn300mCurve) {
-  const rn::CurveStateInput in = curve_input(300.0, 0.08);
+  const rn::CurveStateInput in = table_curve_input(300.0, 0.08);
   const rn::CurveContactState s = rn::curve_contact_state(in);
   const std::vector<rn::WheelContact> w = rn::bogie_wheel_contacts(in, s, kFour);
   ASSERT_EQ(w.size(), 4u);
@@ -139,7 +133,7 @@ TEST(WheelContact, FourWheelsSignConventionsAndLoadsIn300mCurve) {
 // creepages as given (each patch carries its given load); the others default to the static load
 // and (K2'); bad values name their key.
 TEST(WheelContact, MultibodyInputForBothWheelsets) {
-  rn::CurveStateInput in = curve_input(500.0, 0.0);
+  rn::CurveStateInput in = table_curve_input(500.0, 0.0);
   in.multibody = true;
   in.lateral = 3e-3;
   in.yaw = 2e-3;
