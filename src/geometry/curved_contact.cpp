@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "contact/halfspace_operator.hpp"
 #include "core/errors.hpp"
@@ -32,6 +34,13 @@ class RailArc {
       s_[i - 1] = s_[i] - std::hypot(y_[i] - y_[i - 1], z[i] - z[i - 1]);
   }
   bool contains(double s) const { return s >= s_.front() && s <= s_.back(); }
+  /// The arc length of the rail point at track y (within the table).
+  double s(double y) const {
+    const auto j = std::clamp<std::ptrdiff_t>(
+        std::upper_bound(y_.begin(), y_.end(), y) - y_.begin(), 1, y_.size() - 1);
+    const double t = (y - y_[j - 1]) / (y_[j] - y_[j - 1]);
+    return s_[j - 1] + t * (s_[j] - s_[j - 1]);
+  }
   double y(double s) const {
     const auto j = std::clamp<std::ptrdiff_t>(
         std::upper_bound(s_.begin(), s_.end(), s) - s_.begin(), 1, s_.size() - 1);
@@ -163,11 +172,11 @@ struct CurvedPatch {
   contact::GridField h;
 };
 
-CurvedPatch curved_patch(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc,
-                         double normal_force, const VerticalLoadInput& in,
-                         const GridOptions& options) {
+// The rows of the grid `g` (x and s from the contact point) and their undeformed distance (C1).
+CurvedPatch curved_patch_on(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc,
+                            const contact::Grid& g) {
   CurvedPatch p;
-  p.grid = curved_grid(pair, c, arc, normal_force, in, options);
+  p.grid = g;
   p.h.assign(p.grid.size(), far_distance);
   for (int iy = 0; iy < p.grid.ny; ++iy) {
     p.rows.push_back(row_at(pair, c, arc, p.grid.y(iy)));
@@ -179,6 +188,56 @@ CurvedPatch curved_patch(const WheelRailPair& pair, const ContactGeometry& c, co
     }
   }
   return p;
+}
+
+CurvedPatch curved_patch(const WheelRailPair& pair, const ContactGeometry& c, const RailArc& arc,
+                         double normal_force, const VerticalLoadInput& in,
+                         const GridOptions& options) {
+  return curved_patch_on(pair, c, arc, curved_grid(pair, c, arc, normal_force, in, options));
+}
+
+// The grid of a nearby solved state kept where it lies on the rail: its rows at the same rail
+// points and its columns at the same distances along the track (x and s are counted from the
+// contact point, which can move across a conformal patch quickly, or jump, when the wheel moves).
+contact::Grid kept_grid(const LoadedContact& near, const ContactGeometry& c, const RailArc& arc) {
+  contact::Grid g = near.patch->grid;
+  g.x_min += near.geometry.x - c.x;
+  g.y_min += arc.s(near.geometry.y);
+  return g;
+}
+
+// N from (C3): secant steps on r(N) = up(N) - Q after a first step with d(up)/dN = mean cos d
+// (and instead of a wild secant step).
+double next_normal_force(double N, double r, double N_prev, double r_prev, double mean_cos,
+                         bool first) {
+  double next = N - r / mean_cos;
+  if (!first && r != r_prev) next = N - r * (N - N_prev) / (r - r_prev);
+  if (!(next > 0.5 * N && next < 2.0 * N)) next = N - r / mean_cos;
+  return next;
+}
+
+// cos and sin of each row's contact angle (the contact point's for a row not found).
+std::pair<std::vector<double>, std::vector<double>> row_orientations(const CurvedPatch& cp,
+                                                                     const ContactGeometry& c) {
+  std::vector<double> cosd(cp.grid.ny), sind(cp.grid.ny);
+  for (int iy = 0; iy < cp.grid.ny; ++iy) {
+    const double d = cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle;
+    cosd[iy] = std::cos(d), sind[iy] = std::sin(d);
+  }
+  return {cosd, sind};
+}
+
+// The pressure-weighted mean cos(delta) of a solved state (the fixed point's c0).
+double mean_cos(const LoadedContact& s) {
+  const contact::Grid& g = s.patch->grid;
+  double pc = 0.0, psum = 0.0;
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) {
+      const double pn = s.patch->normal.pn[g.index(ix, iy)];
+      pc += pn * std::cos(s.row_angle[iy]);
+      psum += pn;
+    }
+  return psum > 0.0 ? pc / psum : std::cos(s.geometry.contact_angle);
 }
 
 // The sums over the patch of (C3) and the forces on the wheel, each row with its own orientation
@@ -233,17 +292,17 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
                                       const VerticalLoadInput& in) {
   const RailArc arc(pair, c.y);
   const double Q = in.vertical_load;
-  double N = Q / std::cos(c.contact_angle);
+  // A start from a nearby state (VerticalLoadInput::start): its grid and fixed point.
+  const LoadedContact* near = in.start && in.start->curved ? in.start.get() : nullptr;
+  double N = near ? near->normal_force : Q / std::cos(c.contact_angle);
   // The grid, enlarged while the area reaches its border (as solve_wheel_rail_patch).
   GridOptions options = in.grid;
   for (int attempt = 0;; ++attempt) {
-    const CurvedPatch cp = curved_patch(pair, c, arc, N, in, options);
+    if (attempt > 0) near = nullptr;  // an enlarged grid: the near state's fields do not fit
+    const CurvedPatch cp = near ? curved_patch_on(pair, c, arc, kept_grid(*near, c, arc))
+                                : curved_patch(pair, c, arc, N, in, options);
     const contact::Grid& g = cp.grid;
-    std::vector<double> cosd(g.ny), sind(g.ny);
-    for (int iy = 0; iy < g.ny; ++iy) {
-      const double d = cp.rows[iy].found ? cp.rows[iy].angle : c.contact_angle;
-      cosd[iy] = std::cos(d), sind[iy] = std::sin(d);
-    }
+    const auto [cosd, sind] = row_orientations(cp, c);
     auto patch = std::make_shared<contact::ContactPatch>(g, in.material);
     const contact::HalfSpaceOperator op(patch->influence, contact::Problem::Normal, 0,
                                         contact::Backend::Auto);
@@ -252,15 +311,21 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     LoadedContact out;
     // One Newton solver for the iterations: its LU factors serve again while the area stays.
     contact::SteadyRollingSolver steady(patch->influence);
-    double dz = 0.0, c0 = std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
+    double dz = near ? near->vertical_approach : 0.0;
+    double c0 = near ? mean_cos(*near) : std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
     contact::GridField h = cp.h;
     for (out.iterations = 1;; ++out.iterations) {
       for (int iy = 0; iy < g.ny; ++iy)
         for (int ix = 0; ix < g.nx; ++ix)
           h[g.index(ix, iy)] = cp.h[g.index(ix, iy)] - dz * (cosd[iy] - c0);
-      const contact::GridField* start = out.iterations > 1 ? &patch->normal.pn : nullptr;
+      const bool first = out.iterations == 1;
+      const contact::GridField* start = !first ? &patch->normal.pn
+                                        : near ? &near->patch->normal.pn
+                                               : nullptr;
       patch->normal = contact::solve_normal(g, op, h, N, {}, start);
-      const contact::TangentialSolution* tstart = out.iterations > 1 ? &out.tangential : nullptr;
+      const contact::TangentialSolution* tstart = !first ? &out.tangential
+                                                  : near ? &near->tangential
+                                                         : nullptr;
       out.tangential = steady.solve(patch->normal.pn, rolling, {}, tstart);
       // (C3) and the forces on the wheel, each row with its own orientation.
       const RowSums rs = row_sums(g, patch->normal.pn, out.tangential, cosd, sind);
@@ -281,11 +346,8 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
       // linearly, slowly for a patch in two regions).
       dz = dz_next;
       c0 = mean_cos;
-      // N from (C3): secant steps on up(N) - Q after a first step with d(up)/dN = mean cos d.
-      const double r = up * a - Q;
-      double next = N - r / mean_cos;
-      if (out.iterations > 1 && r != r_prev) next = N - r * (N - N_prev) / (r - r_prev);
-      if (!(next > 0.5 * N && next < 2.0 * N)) next = N - r / mean_cos;  // a wild secant step
+      const double r = up * a - Q,
+                   next = next_normal_force(N, r, N_prev, r_prev, mean_cos, out.iterations == 1);
       N_prev = N, r_prev = r;
       N = next;
     }

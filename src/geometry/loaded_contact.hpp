@@ -26,6 +26,8 @@
 
 namespace rollnoise::geometry {
 
+struct LoadedContact;
+
 struct VerticalLoadInput {
   double vertical_load = 0.0;  ///< Q (N): the wheel's vertical load (FZ(TR) on the rail in CONTACT)
   contact::Material material;
@@ -58,6 +60,14 @@ struct VerticalLoadInput {
   /// The wheel's angular velocity over the speed, omega / V (1/m), for the rows' creepages (C4);
   /// 0: 1 / r_c (the contact point's circle rolls at V).
   double rolling_rate = 0.0;
+  /// On the curved surface: a solved state of the same wheel a small step away (a Newton
+  /// iteration's or a finite difference's neighbour) to start from. Its grid is kept where it lies
+  /// on the rail (the same element counts and sizes, the rows at the same rail points, the columns
+  /// at the same distances along the track: no row comes or goes, so the forces vary smoothly with
+  /// the state), its N, lowering and mean cos(delta) start the fixed point, its pressure and
+  /// tractions the solvers. Empty: the grid chosen for the load, the fixed point from the Hertz
+  /// estimate.
+  std::shared_ptr<const LoadedContact> start;
 };
 
 /// The contact of one wheel under its vertical load. Forces are those on the WHEEL.

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/parabola_fit.hpp"
+#include "linalg/nearest_root.hpp"
 
 namespace rollnoise::geometry {
 namespace {
@@ -300,6 +301,21 @@ WheelsetPose WheelRailPair::equilibrium(const WheelsetPosition& position) const 
     p0 = p1;
     f0 = f1;
     p1 = p2;
+    f1 = mismatch(p1);
+  }
+  if (!(std::abs(f1) <= 1e-10) || !std::isfinite(p1)) {
+    // The secant can cycle where a wheel's contact point jumps across its profile (the mismatch's
+    // slope jumps there). The mismatch falls monotonically with the roll: bracket the root from
+    // the secant's first step on, then Brent's method (linalg::brent_root).
+    double a = 0.0, fa = mismatch(a);
+    const double step = fa / (2.0 * wheel_offset());
+    double b = step, fb = mismatch(b);
+    for (int k = 0; k < 40 && fa != 0.0 && (fa > 0.0) == (fb > 0.0); ++k) {
+      a = b, fa = fb;
+      b = a + std::ldexp(step, k + 1);
+      fb = mismatch(b);
+    }
+    p1 = fa == 0.0 ? a : fb == 0.0 ? b : linalg::brent_root(mismatch, a, b);
     f1 = mismatch(p1);
   }
   if (!(std::abs(f1) <= 1e-10) || !std::isfinite(p1)) {

@@ -195,10 +195,9 @@ const std::vector<KeySpec>& case_schema() {
        "the track's cant D, the height difference of the rail heads; with it the cant deficiency follows from "
        "the speed: I = s V^2 / (g R) - D, s = 1.5 m (EN 13803), so that another rolling.speed gives another I",
        {}, 0, "optional (curve.radius > 0): instead of curve.cant_deficiency (both are refused)"},
-      {"curve.creepage", T::String, "\"estimate\"", "-",
+      {"curve.creepage", T::String, "\"equilibrium\"", "-",
        "mean creepages and contact position: the bogie in quasi-static equilibrium on the exact contacts "
-       "with its suspension ([vehicle]; contact.geometry = \"profiles\"; a Hertzian case gets the estimate; "
-       "about 100 s of contact work at 300 m against the estimate's 0.3 s, so not yet the default), "
+       "with its suspension ([vehicle]; contact.geometry = \"profiles\"; a Hertzian case gets the estimate), "
        "the rigid bogie's quasi-static estimate (with contact.geometry = \"profiles\" each wheel's contact "
        "state on the profiles), creepage.mean with contact.angle (hertz) or contact.lateral_displacement/yaw "
        "(profiles), or the wheelset's position from a multibody run ([wheelset])",

@@ -80,6 +80,9 @@ struct WheelContactInput {
   std::optional<double> axle_spin;
   /// (xi_x, xi_y, phi) in the wheel's own contact frame (multibody input); empty: (K2').
   std::optional<Eigen::Vector3d> creepage;
+  /// This wheel's lowered contact at a nearby state to start from, its grid kept
+  /// (VerticalLoadInput::start); empty: from the Hertz estimate.
+  std::shared_ptr<const geometry::LoadedContact> start;
 };
 
 struct WheelContact {

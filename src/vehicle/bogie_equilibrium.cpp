@@ -17,6 +17,14 @@ namespace {
 // The lowering's fixed point settled to 1e-9 (VerticalLoadInput::settle) while solving: the forces
 // are differenced over steps of 1e-7 m and balanced to 1e-6 Q.
 constexpr double kSettle = 1e-9;
+// On the way (AxleQuery::coarse): forces to about 1e-6 Q, differenced over 1e-6 m, balanced to
+// 1e-2 Q.
+constexpr double kSettleCoarse = 1e-6;
+constexpr double kCoarseStep = 10.0;
+// Newton iterations of a continuation step: one that has not led the way by then is halved.
+constexpr int kStepIterations = 6;
+// Newton iterations on the kept grids (the last digits): 2 to 7 where they serve.
+constexpr int kKeptIterations = 10;
 
 using Vector = Eigen::Matrix<double, 8, 1>;
 using Matrix = Eigen::Matrix<double, 8, 8>;
@@ -121,7 +129,7 @@ class Solver {
     Evaluation e;
     e.r = suspension_residual(b_, q, t);
     for (int i = 0; i < 2; ++i) {
-      e.axles[i] = axle(i, q.segment<3>(3 * i), t);
+      e.axles[i] = axle(i, q.segment<3>(3 * i), t, near_ ? &near_->axles[i] : nullptr);
       e.r(3 * i) += e.axles[i].lateral;
       e.r(3 * i + 1) += e.axles[i].yaw;
       e.r(3 * i + 2) += e.axles[i].torque;
@@ -132,12 +140,14 @@ class Solver {
   // The Jacobian at q: the suspension's, and the contacts' 3 x 3 blocks by forward differences.
   Matrix jacobian(const Vector& q, double t, const Evaluation& at) {
     Matrix J = Js_;
-    const double h[3] = {in_.lateral_step, in_.yaw_step, in_.spin_step};
+    // on the way (coarse contacts, settled to 1e-6) over steps ten times as long
+    const double f = keep_grids_ ? 1.0 : kCoarseStep;
+    const double h[3] = {f * in_.lateral_step, f * in_.yaw_step, f * in_.spin_step};
     for (int i = 0; i < 2; ++i)
       for (int k = 0; k < 3; ++k) {
         Eigen::Vector3d p = q.segment<3>(3 * i);
         p(k) += h[k];
-        const AxleContactForces f = axle(i, p, t);
+        const AxleContactForces f = axle(i, p, t, keep_grids_ ? &at.axles[i] : nullptr);
         const AxleContactForces& f0 = at.axles[i];
         J(3 * i, 3 * i + k) += (f.lateral - f0.lateral) / h[k];
         J(3 * i + 1, 3 * i + k) += (f.yaw - f0.yaw) / h[k];
@@ -151,11 +161,14 @@ class Solver {
   // to be cut below a half, or lowered the residual by less than half); in between it follows
   // Broyden's rank-one update (Broyden, Math. Comp. 19 (1965) 577-593; Dennis & Schnabel,
   // Numerical Methods for Unconstrained Optimization and Nonlinear Equations, 1983, Sec. 8.1), and
-  // it is carried over from one continuation step to the next.
-  bool newton(Vector& q, double t, double tol, Evaluation& e, int* iterations) {
+  // it is carried over from one continuation step to the next. A step along a Jacobian that is
+  // not fresh is cut down to 1/4 at most before a fresh one is differenced; a fresh one's down to
+  // 1/64 (line_search). At most `max_iterations`.
+  bool newton(Vector& q, double t, double tol, int max_iterations, Evaluation& e, int* iterations) {
     e = evaluate(q, t);
+    if (keep_grids_) near_ = e;
     bool fresh = false;
-    for (int it = 0; it < in_.max_newton; ++it) {
+    for (int it = 0; it < max_iterations; ++it) {
       if (e.r.cwiseAbs().maxCoeff() <= tol) return true;
       if (!have_jacobian_) {
         J_ = jacobian(q, t, e);
@@ -172,7 +185,8 @@ class Solver {
       dq *= scale;
       ++*iterations;
       const Vector r_old = e.r;
-      const double alpha = line_search(q, dq, t, e);
+      const double alpha = line_search(q, dq, t, fresh ? 1.0 / 64.0 : 0.25, e);
+      if (keep_grids_ && alpha > 0.0) near_ = e;
       if (alpha == 0.0) {  // no descent along this step: a fresh Jacobian, or give up
         if (fresh) return false;
         have_jacobian_ = false;
@@ -182,9 +196,21 @@ class Solver {
       J_ += (change - J_ * step) * step.transpose() / step.squaredNorm();
       fresh = false;
       // a limited step's slow descent is the limit's, not the Jacobian's
-      if (alpha < 0.5 || (scale == 1.0 && e.r.norm() > 0.5 * r_old.norm())) have_jacobian_ = false;
+      if (!keep_grids_ && (alpha < 0.5 || (scale == 1.0 && e.r.norm() > 0.5 * r_old.norm())))
+        have_jacobian_ = false;
     }
     return e.r.cwiseAbs().maxCoeff() <= tol;
+  }
+
+  /// From now on every contact starts from the last iterate's, its grid kept
+  /// (VerticalLoadInput::start): the residual then varies smoothly with q (no grid row comes or
+  /// goes between the iterates and their differences), which the last digits of Newton need.
+  /// The Jacobian held is the coarse contacts' (AxleQuery::coarse): the first one differenced
+  /// on the full grid.
+  void keep_grids(bool keep = true) {
+    keep_grids_ = keep;
+    near_.reset();
+    have_jacobian_ = false;
   }
 
   int evaluations() const { return evaluations_; }
@@ -192,10 +218,10 @@ class Solver {
 
  private:
   // Backtracking on the residual norm (Armijo's condition with 1e-4): the step's fraction taken,
-  // 0 when no step down to 1/64 of dq lowers it.
-  double line_search(Vector& q, const Vector& dq, double t, Evaluation& e) {
+  // 0 when no step down to `smallest` of dq lowers it.
+  double line_search(Vector& q, const Vector& dq, double t, double smallest, Evaluation& e) {
     const double norm = e.r.norm();
-    for (double alpha = 1.0; alpha >= 1.0 / 64.0; alpha *= 0.5) {
+    for (double alpha = 1.0; alpha >= smallest; alpha *= 0.5) {
       const Vector trial = inside(q + alpha * dq);
       Evaluation et = evaluate(trial, t);
       if (et.r.allFinite() && et.r.norm() < (1.0 - 1e-4 * alpha) * norm) {
@@ -207,9 +233,9 @@ class Solver {
     return 0.0;
   }
 
-  AxleContactForces axle(int i, const Eigen::Vector3d& p, double t) {
+  AxleContactForces axle(int i, const Eigen::Vector3d& p, double t, const AxleContactForces* near) {
     ++evaluations_;
-    return forces_(i, p(0), p(1), p(2), t);
+    return forces_({i, p(0), p(1), p(2), t, !keep_grids_, near});
   }
 
   const BogieEquilibriumInput& in_;
@@ -218,8 +244,50 @@ class Solver {
   Matrix Js_;
   Matrix J_;  // the Jacobian held (differenced, then Broyden's updates)
   bool have_jacobian_ = false;
+  bool keep_grids_ = false;
+  std::optional<Evaluation> near_;  // the last iterate, when the grids are kept
   int evaluations_ = 0;
 };
+
+// The continuation in t from tangent track (q = 0) to the curve (t = 1): steps of 1/4, halved on
+// failure (down to 1/64, then NumericalError), grown by 1.5 after a step that came easily; a
+// secant predictor from the last two solutions; every step to a loose tolerance (1e-2 Q on the
+// way, 1e-3 Q at the curve: they only lead the way, each contact on the coarse grid chosen for its
+// state). The last digits are the caller's.
+struct Continued {
+  Vector q = Vector::Zero();
+  Evaluation e;
+  int steps = 0;  // accepted steps in t
+};
+
+Continued continue_to_curve(Solver& solver, double Q, double tol, int* iterations) {
+  Continued c;
+  double t = 0.0, dt = 0.25, t_prev = 0.0;
+  Vector q_prev = c.q;
+  while (t < 1.0) {
+    const double t_next = std::min(1.0, t + dt);
+    Vector trial = c.q;
+    if (t > 0.0) trial = inside(c.q + (c.q - q_prev) * ((t_next - t) / (t - t_prev)));
+    const double step_tol = std::max(tol, (t_next < 1.0 ? 1e-2 : 1e-3) * Q);
+    const int before = *iterations;
+    if (solver.newton(trial, t_next, step_tol, kStepIterations, c.e, iterations)) {
+      q_prev = c.q, t_prev = t;
+      c.q = trial, t = t_next;
+      ++c.steps;
+      if (*iterations - before <= 3) dt *= 1.5;  // a step that came easily: a longer one
+      continue;
+    }
+    dt *= 0.5;
+    if (dt < 1.0 / 64.0) {
+      std::ostringstream m;
+      m << "bogie equilibrium: no solution along the continuation at t = " << t_next
+        << " of the curve (continuation step below 1/64; last residual "
+        << c.e.r.cwiseAbs().maxCoeff() << " N against " << step_tol << " N)";
+      throw NumericalError(m.str());
+    }
+  }
+  return c;
+}
 
 // The solution's fields from the last iterate.
 BogieEquilibrium result(const Vector& q, Evaluation& e) {
@@ -255,20 +323,24 @@ double BogieEquilibrium::max_residual() const {
   return m;
 }
 
-AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer, int axle,
-                                 double y, double psi, double eps, double t, bool solving) {
+AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer,
+                                 const AxleQuery& query) {
+  const auto [axle, y, psi, eps, t, coarse, near] = query;
   AxleContactForces f;
   const WheelId ids[2] = {axle == 0 ? WheelId::leading_outer : WheelId::trailing_outer,
                           axle == 0 ? WheelId::leading_inner : WheelId::trailing_inner};
   for (int w = 0; w < 2; ++w) {
     WheelContactInput wi = wheel_input(in, ids[w], y, psi);
     wi.inverse_radius *= t;
-    if (solving) {
-      wi.lowering_settle = kSettle;
-      wi.gap_regions = true;  // a contact jump is a two-point contact: the forces stay continuous
-      wi.axle_spin = eps;     // the axle's own rolling speed (WheelContactInput::axle_spin)
+    wi.lowering_settle = coarse ? kSettleCoarse : kSettle;
+    if (coarse) {  // a third of the elements each way
+      wi.lowering_nx = std::max(8, wi.lowering_nx / 3);
+      wi.grid.min_elements_across = std::max(4, wi.grid.min_elements_across / 3);
     }
+    wi.gap_regions = true;  // a contact jump is a two-point contact: the forces stay continuous
+    wi.axle_spin = eps;     // the axle's own rolling speed (WheelContactInput::axle_spin)
     wi.vertical_load = in.wheel_load + (w == 0 ? 1.0 : -1.0) * t * load_transfer;
+    if (near) wi.start = near->wheels[w].loaded;
     f.wheels[w] = wheel_contact(wi);
     const WheelContact& c = f.wheels[w];
     const std::array<double, 3> ft = c.force_track();  // towards the outer rail
@@ -294,70 +366,48 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
                               Q, in.curve.cant_deficiency, in.curve.cg_height,
                               2.0 * geometry::find_contact(*in.curve.pair, {0.0, 0.0}).y);
   const bool tangent = std::isinf(in.curve.radius) && in.curve.cant_deficiency == 0.0;
-  // On tangent track the contacts are not solved for: the noise's own contact (one region, its
-  // lowering tolerance).
   const AxleForceFunction contacts =
-      forces ? forces
-             : AxleForceFunction(
-                   [&in, dQ, tangent](int axle, double y, double psi, double eps, double t) {
-                     return contact_forces(in.curve, dQ, axle, y, psi, eps, t, !tangent);
-                   });
+      forces ? forces : AxleForceFunction([&in, dQ](const AxleQuery& query) {
+        return contact_forces(in.curve, dQ, query);
+      });
   Solver solver(in, contacts);
   const Bogie& b = solver.bogie();
   Vector q = Vector::Zero();
   Evaluation e;
   BogieEquilibrium out;
-  if (tangent) {  // q = 0 by symmetry
-    e = solver.evaluate(q, 0.0);
-    out = result(q, e);
-  } else {
-    // Continuation in t: steps of 1/4, halved on failure (down to 1/64), grown by 1.5 after a
-    // success; a secant predictor from the last two solutions; the intermediate steps to a
-    // looser tolerance (1e-2 Q: they only lead the way), the last to in.tolerance.
-    const double tol = in.tolerance * Q;
-    double t = 0.0, dt = 0.25, t_prev = 0.0;
-    Vector q_prev = q;
-    std::optional<std::pair<Vector, Evaluation>> best;  // the best stalled iterate at t = 1
-    int iterations = 0, steps = 0;
-    while (t < 1.0) {
-      const double t_next = std::min(1.0, t + dt);
-      Vector trial = q;
-      if (t > 0.0) trial = inside(q + (q - q_prev) * ((t_next - t) / (t - t_prev)));
-      const double step_tol = t_next < 1.0 ? std::max(tol, 1e-2 * Q) : tol;
-      if (solver.newton(trial, t_next, step_tol, e, &iterations)) {
-        q_prev = q, t_prev = t;
-        q = trial, t = t_next;
-        ++steps;
-        dt *= 1.5;
-        continue;
-      }
-      // At the curve itself the best stalled iterate within 1e-3 Q is remembered: the contacts'
-      // discretisation can change across a step of the last iterations (a grid row more or less),
-      // which no step balances to 1e-6 Q. It is kept when the continuation runs out of steps,
-      // reported by its residual (out.converged false, the summary says so).
-      const double stalled = e.r.cwiseAbs().maxCoeff();
-      if (t_next == 1.0 && stalled <= 1e-3 * Q &&
-          (!best || stalled < best->second.r.cwiseAbs().maxCoeff()))
-        best.emplace(trial, e);
-      dt *= 0.5;
-      if (dt < 1.0 / 64.0 && best) {
-        q = best->first, e = best->second, t = 1.0;
-        out.converged = false;
-        break;
-      }
-      if (dt < 1.0 / 64.0) {
-        std::ostringstream m;
-        m << "bogie equilibrium: no solution along the continuation at t = " << t_next
-          << " of the curve (continuation step below 1/64; last residual "
-          << e.r.cwiseAbs().maxCoeff() << " N against " << step_tol << " N)";
-        throw NumericalError(m.str());
-      }
-    }
-    const bool converged = out.converged;
+  if (tangent) {
+    // y, psi and the frame's q = 0 by symmetry; the axles' rolling speed is not: the patch of a
+    // profile pair is not symmetric about its centre line, so the spin creepage gives both wheels
+    // of an axle a longitudinal force of the same sign and a torque T_i at eps = 0. Newton from
+    // q = 0 on the full grid at t = 0 (the lateral and yaw equations stay balanced to round-off).
+    solver.keep_grids();
+    int iterations = 0;
+    const bool converged = solver.newton(q, 0.0, in.tolerance * Q, in.max_newton, e, &iterations);
     out = result(q, e);
     out.converged = converged;
     out.iterations = iterations;
-    out.continuation_steps = steps;
+  } else {
+    const double tol = in.tolerance * Q;
+    int iterations = 0;
+    Continued c = continue_to_curve(solver, Q, tol, &iterations);
+    q = c.q, e = std::move(c.e);
+    // The last digits: each wheel's grid kept from the loose solution (Solver::keep_grids), so
+    // that no grid row comes or goes between the iterates. Where that stalls (the forces of a
+    // wheel at the onset of a two-point contact have a kink: the load shared between the two
+    // regions turns with the contact stiffness, 1e9 N/m laterally against 1e7 N/m on one
+    // region), Newton goes on from its best iterate with each contact on the grid chosen for its
+    // state. A Newton iteration that stalls there too keeps its best iterate, reported by its
+    // residual (out.converged false, the summary says so).
+    solver.keep_grids();
+    bool converged = solver.newton(q, 1.0, tol, kKeptIterations, e, &iterations);
+    if (!converged) {
+      solver.keep_grids(false);
+      converged = solver.newton(q, 1.0, tol, in.max_newton, e, &iterations);
+    }
+    out = result(q, e);
+    out.converged = converged;
+    out.iterations = iterations;
+    out.continuation_steps = c.steps;
   }
   out.contact_evaluations = solver.evaluations();
   out.unbalanced_acceleration = b.a_u;

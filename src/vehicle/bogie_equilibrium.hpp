@@ -49,18 +49,24 @@
 // suspension are not solved.
 //
 // Solution: Newton's method on (B2), with a continuation from tangent track (t = 0, q = 0: the
-// symmetric wheelset has no lateral force, yaw moment or torque) to the curve (t = 1) in the
-// curvature kappa = t / R, the cant deficiency t h_d and the load transfer t dQ. Jacobian: the
-// suspension's part analytic, the contacts' 3 x 3 blocks d(F_i, M_i, T_i) / d(y_i, psi_i, eps_i)
-// by forward differences (three more contact pairs per axle), then Broyden's rank-one updates
-// until a step serves badly. Steps: damped (at most 2 mm, 4 mrad and 1e-3, a backtracking line
-// search on the residual norm, every iterate within |y| <= 10 mm); a continuation step whose
-// Newton iteration fails is halved (down to 1/64). How a flange contact that comes or goes along
-// the path is passed: the contacts are taken as two-point contacts where the gap has two minima
-// (VerticalLoadInput::gap_regions) and with the axle's own rolling speed (axle_spin), so their
-// forces stay continuous where the contact point jumps across the profile; where they turn
-// steeply (the flange root) the line search and the smaller continuation steps keep the iterate
-// on the branch. Converged when every equation of (B2) is within tolerance x Q (N, N m).
+// symmetric wheelset has no lateral force or yaw moment) to the curve (t = 1) in the curvature
+// kappa = t / R, the cant deficiency t h_d and the load transfer t dQ, in two stages. On the way
+// (AxleQuery::coarse) the contacts are solved on a third of the elements each way and settled to
+// 1e-6, each step to 1e-2 Q (1e-3 Q at t = 1). The last digits at t = 1 on the full grid, settled
+// to 1e-9, every contact started from the last iterate's with its grid kept where it lies on the
+// rail (VerticalLoadInput::start), so that the residual varies smoothly; where that stalls (the
+// onset of a two-point contact), on each contact's own grid. Jacobian: the suspension's part
+// analytic, the contacts' 3 x 3 blocks d(F_i, M_i, T_i) / d(y_i, psi_i, eps_i) by forward
+// differences (three more contact pairs per axle), then Broyden's rank-one updates. Steps: damped
+// (at most 2 mm, 4 mrad and 1e-3, a backtracking line search on the residual norm, every iterate
+// within |y| <= 10 mm); a continuation step whose Newton iteration fails is halved (down to 1/64).
+// How a flange contact that comes or goes along the path is passed: the contacts are taken as
+// two-point contacts where the gap has two minima (VerticalLoadInput::gap_regions) and with the
+// axle's own rolling speed (axle_spin), so their forces stay continuous where the contact point
+// jumps across the profile; where they turn steeply (the flange root) the line search and the
+// smaller continuation steps keep the iterate on the branch. Converged when every equation of (B2)
+// is within tolerance x Q (N, N m). docs/noise_loop.md Sec. 7.4 has the measurements behind each
+// choice.
 #pragma once
 
 #include <array>
@@ -81,11 +87,24 @@ struct AxleContactForces {
   std::array<WheelContact, 2> wheels;  ///< outer, inner
 };
 
-/// The contact forces of axle `axle` (0 leading, 1 trailing) at (y, psi, eps) at continuation t
-/// in [0, 1] (curvature t / R, load transfer t dQ). A function so that the solver can be checked
-/// on a model contact; bogie_equilibrium uses contact_forces below.
-using AxleForceFunction =
-    std::function<AxleContactForces(int axle, double y, double psi, double eps, double t)>;
+/// One evaluation of an axle's contact forces: which axle at which state of the continuation,
+/// and how its contacts are solved.
+struct AxleQuery {
+  int axle = 0;                          ///< 0 leading, 1 trailing
+  double y = 0.0, psi = 0.0, eps = 0.0;  ///< m, rad, -
+  double t = 1.0;  ///< continuation in [0, 1]: curvature t / R, load transfer t dQ
+  /// On the way (the continuation): the contacts on a grid of half the elements each way and
+  /// settled to 1e-7 (they only lead the way to the curve's state); false: the full grid,
+  /// settled to 1e-9.
+  bool coarse = false;
+  /// The same axle at a nearby state to start from, its wheels' grids kept
+  /// (VerticalLoadInput::start); null: each wheel's grid chosen for its state.
+  const AxleContactForces* near = nullptr;
+};
+
+/// The contact forces of an axle. A function so that the solver can be checked on a model
+/// contact; bogie_equilibrium uses contact_forces below.
+using AxleForceFunction = std::function<AxleContactForces(const AxleQuery&)>;
 
 struct BogieEquilibriumInput {
   CurveStateInput curve;  ///< the profiles, material, grid, curve, friction, wheel load Q, h_cg
@@ -106,8 +125,8 @@ struct BogieEquilibrium {
   /// (B2) at the solution, in the order: leading lateral (N), yaw (N m), spin (N m); trailing
   /// lateral, yaw, spin; frame lateral (N), yaw (N m).
   std::array<double, 8> residual{};
-  /// Every equation within the tolerance; false: the last Newton iteration stalled within 1e-3 Q
-  /// (residual above says how far), kept rather than failing the run.
+  /// Every equation within the tolerance; false: the last digits stalled (the residual above says
+  /// how far), their best iterate kept rather than failing the run.
   bool converged = true;
   int iterations = 0;                    ///< Newton iterations, all continuation steps
   int continuation_steps = 0;            ///< accepted steps in t
@@ -120,17 +139,18 @@ struct BogieEquilibrium {
 };
 
 /// The contact forces (B3) of one axle from the wheels' contacts (wheel_contact) at loads
-/// Q + t dQ (outer), Q - t dQ (inner), curvature t / R. `solving`: as the solver needs them, the
-/// lowering settled to 1e-9 and every small-gap region in the patch (a contact jump is a
-/// two-point contact, VerticalLoadInput::gap_regions); false: the noise's own contact.
-AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer, int axle,
-                                 double y, double psi, double eps, double t, bool solving = true);
+/// Q + t dQ (outer), Q - t dQ (inner), curvature t / R, as the solver needs them: every small-gap
+/// region in the patch (a contact jump is a two-point contact, VerticalLoadInput::gap_regions),
+/// the axle's own rolling speed (WheelContactInput::axle_spin), the grid and the lowering's
+/// settling as AxleQuery::coarse says, started from AxleQuery::near.
+AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer,
+                                 const AxleQuery& query);
 
 /// Solves (B2) for the input (the curve, the vehicle, Q); `forces` replaces the contacts (tests).
-/// On tangent track (1/R = 0 and no cant deficiency) the result is q = 0 with 0 iterations (the
-/// contacts at the noise's own lowering tolerance).
-/// NumericalError when the continuation step falls below 1/64 (then the best Newton iterate at the
-/// curve that stalled within 1e-3 Q is kept instead, BogieEquilibrium::converged false).
+/// On tangent track (1/R = 0 and no cant deficiency) y, psi and the frame's q are 0 by symmetry
+/// and only the axles' rolling speed is solved for (Newton from q = 0, no continuation).
+/// NumericalError when the continuation step falls below 1/64; where the last digits stall, their
+/// best iterate is kept (BogieEquilibrium::converged false, the residual says how far).
 BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
                                          const AxleForceFunction& forces = {});
 
