@@ -141,7 +141,7 @@ class Solver {
   Matrix jacobian(const Vector& q, double t, const Evaluation& at) {
     Matrix J = Js_;
     // on the way (coarse contacts, settled to 1e-6) over steps ten times as long
-    const double f = keep_grids_ ? 1.0 : kCoarseStep;
+    const double f = coarse_ ? kCoarseStep : 1.0;
     const double h[3] = {f * in_.lateral_step, f * in_.yaw_step, f * in_.spin_step};
     for (int i = 0; i < 2; ++i)
       for (int k = 0; k < 3; ++k) {
@@ -207,11 +207,23 @@ class Solver {
   /// goes between the iterates and their differences), which the last digits of Newton need.
   /// The Jacobian held is the coarse contacts' (AxleQuery::coarse): the first one differenced
   /// on the full grid.
-  void keep_grids(bool keep = true) {
+  /// The last digits: the full contacts from now on, each started from the last iterate's with
+  /// its grid kept (VerticalLoadInput::start) when `keep`, so that the residual varies smoothly
+  /// with q (no grid row comes or goes between the iterates and their differences); else each on
+  /// the grid chosen for its state. The Jacobian held is then differenced afresh.
+  void last_digits(bool keep) {
+    coarse_ = false;
     keep_grids_ = keep;
     near_.reset();
     have_jacobian_ = false;
   }
+
+  /// The way on the full contacts from now on (where the coarse ones cannot lead it).
+  void refine_the_way() {
+    coarse_ = false;
+    have_jacobian_ = false;
+  }
+  bool coarse() const { return coarse_; }
 
   int evaluations() const { return evaluations_; }
   const Bogie& bogie() const { return b_; }
@@ -235,7 +247,7 @@ class Solver {
 
   AxleContactForces axle(int i, const Eigen::Vector3d& p, double t, const AxleContactForces* near) {
     ++evaluations_;
-    return forces_({i, p(0), p(1), p(2), t, !keep_grids_, near});
+    return forces_({i, p(0), p(1), p(2), t, coarse_, near});
   }
 
   const BogieEquilibriumInput& in_;
@@ -245,6 +257,7 @@ class Solver {
   Matrix J_;  // the Jacobian held (differenced, then Broyden's updates)
   bool have_jacobian_ = false;
   bool keep_grids_ = false;
+  bool coarse_ = true;              // the contacts on the way (AxleQuery::coarse)
   std::optional<Evaluation> near_;  // the last iterate, when the grids are kept
   int evaluations_ = 0;
 };
@@ -278,6 +291,13 @@ Continued continue_to_curve(Solver& solver, double Q, double tol, int* iteration
       continue;
     }
     dt *= 0.5;
+    // Coarse contacts that cannot lead the way (at the flange their few elements across the
+    // narrow patch can make the forces jump by more than the way's tolerance): the full ones,
+    // from steps of 1/16 again.
+    if (dt < 1.0 / 64.0 && solver.coarse()) {
+      solver.refine_the_way();
+      dt = 1.0 / 16.0;
+    }
     if (dt < 1.0 / 64.0) {
       std::ostringstream m;
       m << "bogie equilibrium: no solution along the continuation at t = " << t_next
@@ -380,7 +400,7 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
     // profile pair is not symmetric about its centre line, so the spin creepage gives both wheels
     // of an axle a longitudinal force of the same sign and a torque T_i at eps = 0. Newton from
     // q = 0 on the full grid at t = 0 (the lateral and yaw equations stay balanced to round-off).
-    solver.keep_grids();
+    solver.last_digits(true);
     int iterations = 0;
     const bool converged = solver.newton(q, 0.0, in.tolerance * Q, in.max_newton, e, &iterations);
     out = result(q, e);
@@ -398,10 +418,10 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
     // region), Newton goes on from its best iterate with each contact on the grid chosen for its
     // state. A Newton iteration that stalls there too keeps its best iterate, reported by its
     // residual (out.converged false, the summary says so).
-    solver.keep_grids();
+    solver.last_digits(true);
     bool converged = solver.newton(q, 1.0, tol, kKeptIterations, e, &iterations);
     if (!converged) {
-      solver.keep_grids(false);
+      solver.last_digits(false);
       converged = solver.newton(q, 1.0, tol, in.max_newton, e, &iterations);
     }
     out = result(q, e);

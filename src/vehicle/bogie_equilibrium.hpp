@@ -52,7 +52,8 @@
 // symmetric wheelset has no lateral force or yaw moment) to the curve (t = 1) in the curvature
 // kappa = t / R, the cant deficiency t h_d and the load transfer t dQ, in two stages. On the way
 // (AxleQuery::coarse) the contacts are solved on a third of the elements each way and settled to
-// 1e-6, each step to 1e-2 Q (1e-3 Q at t = 1). The last digits at t = 1 on the full grid, settled
+// 1e-6, each step to 1e-2 Q (1e-3 Q at t = 1); where they cannot lead it (a step below 1/64), the
+// full contacts take over. The last digits at t = 1 on the full grid, settled
 // to 1e-9, every contact started from the last iterate's with its grid kept where it lies on the
 // rail (VerticalLoadInput::start), so that the residual varies smoothly; where that stalls (the
 // onset of a two-point contact), on each contact's own grid. Jacobian: the suspension's part

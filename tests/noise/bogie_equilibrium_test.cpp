@@ -71,6 +71,28 @@ TEST(BogieEquilibrium, ModelContactBalances) {
   EXPECT_GT(e.yaw[0], 0.0);  // the leading axle turned towards the outer rail
 }
 
+// Coarse contacts that cannot lead the way give way to the full ones: a model contact whose coarse
+// lateral force jumps by 0.06 Q every few tenths of a nanometre of y (as a coarse grid's flange
+// patch can, at a coarser scale) never reaches the way's 1e-2 Q; the continuation goes on with the
+// full contacts and every equation holds to 1e-6 Q, at the smooth contact's solution.
+TEST(BogieEquilibrium, CoarseContactsThatCannotLeadTheWayGiveWayToTheFullOnes) {
+  ModelContact m;
+  m.radius = 1000.0;
+  int coarse = 0, full = 0;
+  const auto jumpy = [&](const rn::AxleQuery& q) {
+    rn::AxleContactForces f = m(q);
+    (q.coarse ? coarse : full) += 1;
+    if (q.coarse) f.lateral += (std::sin(q.y * 1e10) > 0.0 ? 0.03 : -0.03) * kQ;
+    return f;
+  };
+  const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(model_input(1000.0, 0.08), jumpy);
+  EXPECT_LE(e.max_residual(), 1e-6 * kQ);
+  EXPECT_GT(coarse, 0);
+  EXPECT_GT(full, 20);  // more than the last digits alone
+  const rn::BogieEquilibrium smooth = rn::solve_bogie_equilibrium(model_input(1000.0, 0.08), m);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(e.yaw[i], smooth.yaw[i], 1e-9) << i;
+}
+
 // Tangent track: the wheelsets and the frame centred and square, to round-off, and no iteration.
 TEST(BogieEquilibrium, TangentTrackIsCentred) {
   const double inf = std::numeric_limits<double>::infinity();
