@@ -1,0 +1,70 @@
+#!/usr/bin/python3
+"""Corrugation growth against wavelength (`rollnoise corrugation`, docs/corrugation.md): the growth
+rate per passage of each rail (one bogie passage: the sum of its contacts with the wheelbase phase)
+and of each contact, against the rail wavelength (top axis: the frequency at the case's speed),
+with the peaks of the loop's forces and receptances marked; below, the magnitude and phase of the
+depth ratio (wear depth per passage / roughness amplitude) of each rail.
+
+  /usr/bin/python3 postprocess/plot_corrugation.py FILE.h5 [-o OUT.png]
+
+Several files (e.g. a speed sweep) may be given: each adds its rails' growth to the top panel, to
+see whether a peak keeps its wavelength (wavelength fixing) or its frequency.
+"""
+import argparse
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import rollnoise_h5 as rh  # noqa: E402
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("files", nargs="+")
+    ap.add_argument("-o", "--output", default=None, help="PNG file (default FILE_corrugation.png)")
+    args = ap.parse_args()
+    out = args.output or args.files[0].rsplit(".", 1)[0] + "_corrugation.png"
+    fig, axes = plt.subplots(3, 1, figsize=(9, 10), sharex=True)
+    for i, name in enumerate(args.files):
+        with rh.open_output(name, "/corrugation/wavelength", "/corrugation/frequency",
+                            command="rollnoise corrugation") as f:
+            lam = rh.values(f, "/corrugation/wavelength") * 1e3  # mm
+            speed = rh.case_value(f, "rolling", "speed")
+            tag = f" (V = {float(speed):.3g} m/s)" if len(args.files) > 1 and speed else ""
+            for rail, style in (("outer", "-"), ("inner", "--")):
+                path = f"/corrugation/{rail}/growth_rate"
+                if path not in f:
+                    continue
+                g = rh.values(f, path)
+                axes[0].semilogx(lam, g, style, color=rh.file_colour(i), label=f"{rail} rail, bogie{tag}")
+                d = rh.values(f, f"/corrugation/{rail}/depth_ratio")
+                axes[1].loglog(lam, np.abs(d), style, color=rh.file_colour(i), label=f"{rail} rail{tag}")
+                axes[2].semilogx(lam, np.degrees(np.angle(d)), style, color=rh.file_colour(i), label=f"{rail} rail{tag}")
+            if i == 0 and "/corrugation/contacts" in f:
+                for k, (wheel, grp) in enumerate(f["/corrugation/contacts"].items()):
+                    axes[0].semilogx(lam, rh.values(f, f"/corrugation/contacts/{wheel}/growth_rate"), ":",
+                                     lw=1, color=f"C{k + 2}", label=f"{wheel.replace('_', ' ')} ({rh.attribute(grp, 'rail')})")
+            if i == 0 and "/corrugation/peaks/frequency" in f and speed:
+                for fp in rh.values(f, "/corrugation/peaks/frequency"):
+                    axes[0].axvline(1e3 * float(speed) / fp, color="0.8", lw=0.6, zorder=0)
+            unit = rh.units(f, "/corrugation/outer/growth_rate" if "/corrugation/outer" in f
+                            else "/corrugation/inner/growth_rate").split(":")[0]
+    axes[0].axhline(0.0, color="k", lw=0.8)
+    axes[0].set_ylabel(f"growth rate [{unit}]")
+    axes[0].set_title("growth of rail roughness per passage (> 0 grows); grey: the loop's peaks")
+    axes[1].set_ylabel("|depth / roughness| per passage")
+    axes[2].set_ylabel("phase of depth / roughness [deg]")
+    axes[2].set_xlabel("rail wavelength [mm]")
+    for ax in axes:
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    print("wrote", out)
+
+
+if __name__ == "__main__":
+    rh.run(main)
