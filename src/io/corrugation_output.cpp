@@ -33,6 +33,9 @@ void write_contact(Hdf5Writer& w, const std::string& g, const pipeline::ContactC
           "xi_x (-), xi_y (-), phi (rad/m) per m, Fz (N/m): the contact's inputs per unit "
           "roughness of its rail");
   w.write(g + "/distance", c.distance, "m behind the leading axle");
+  w.write(g + "/roughness_filter", c.filter, {nf},
+          "-: the roughness the frozen patch sees per unit rail roughness uniform across the rail "
+          "(W6)");
   w.attribute(g, "rail", rail_name(c.side));
   w.write(g + "/impulse_steps", std::vector<int>{c.steps}, {},
           "time steps of the element fields' impulse response");

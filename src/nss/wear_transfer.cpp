@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/halfspace_operator.hpp"
+#include "contact/normal_solver.hpp"
 #include "core/constants.hpp"
 
 namespace rollnoise::nss {
@@ -67,6 +69,21 @@ std::vector<WearRow> WearTransfer::series_sum(const std::vector<Eigen::RowVector
     out.push_back(s);
   }
   return out;
+}
+
+std::vector<std::complex<double>> rail_roughness_filter(const contact::ContactPatch& patch,
+                                                        const std::vector<double>& wavenumbers) {
+  const contact::Grid& g = patch.grid;
+  const contact::HalfSpaceOperator op(patch.influence, contact::Problem::Normal);
+  const contact::NormalLoadSensitivity s = contact::normal_load_sensitivity(g, op, patch.normal);
+  std::vector<std::complex<double>> H(wavenumbers.size(), 0.0);
+  for (int e = 0; e < g.size(); ++e) {
+    if (s.dpn_dN[e] == 0.0) continue;
+    const double w = s.dpn_dN[e] * g.element_area(), x = g.x(e % g.nx);
+    for (std::size_t i = 0; i < wavenumbers.size(); ++i)
+      H[i] += w * std::polar(1.0, wavenumbers[i] * x);  // (W6)
+  }
+  return H;
 }
 
 std::vector<WearRow> WearTransfer::depth(const std::vector<double>& frequencies) const {

@@ -39,6 +39,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "contact/patch.hpp"
 #include "contact/tangential_solver.hpp"
 #include "nss/linear_model.hpp"
 
@@ -56,6 +57,17 @@ struct WearLaw {
 };
 
 using WearRow = Eigen::Matrix<std::complex<double>, 1, 4>;
+
+/// The roughness the frozen contact area of `patch` sees of a rail roughness r e^{ikX} uniform
+/// across the rail, per unit r, at the wavenumbers k (rad/m): on a frozen contact area the normal
+/// load changes by k_N times the roughness averaged with the unit-load pressure of a rigid punch of
+/// that area (Betti's reciprocal theorem, e.g. Johnson 1985, Contact Mechanics, Ch. 3: dN = k_N
+/// (d delta - sum_a (dpn/dN)_a dx dy r_a)), so
+///   H(k) = sum_a (dpn/dN)_a dx dy e^{ik x_a}                                               (W6)
+/// (contact::normal_load_sensitivity; H(0) = 1). For Hertz's ellipse dpn/dN is the flat punch's
+/// 1/sqrt(1 - x^2/a^2 - y^2/b^2), whose lateral integral is uniform in x: H = sin(ka)/(ka).
+std::vector<std::complex<double>> rail_roughness_filter(const contact::ContactPatch& patch,
+                                                        const std::vector<double>& wavenumbers);
 
 class WearTransfer {
  public:

@@ -60,6 +60,9 @@ void wear_transfers(CorrugationResult& r, const CorrugationCase& cc, int threads
     out.wheel = wheels[a].wheel;
     out.side = noise::is_outer(out.wheel) ? 1 : -1;
     out.transfer = T.depth(r.frequency);
+    std::vector<double> k;
+    for (double l : r.wavelength) k.push_back(2.0 * kPi / l);
+    out.filter = nss::rail_roughness_filter(m.patch(), k);
     out.steps = T.steps();
     out.seconds = seconds_since(t0);
   });
@@ -67,15 +70,17 @@ void wear_transfers(CorrugationResult& r, const CorrugationCase& cc, int threads
 }
 
 // Stage 4 at frequency k for the rail `side`: the loop's forces under the rail's roughness met
-// with the wheelbase phase, each contact's inputs u_a and its G_a (header).
+// with the wheelbase phase and seen through each patch (W6), each contact's inputs u_a and its
+// G_a (header).
 void rail_inputs(CorrugationResult& r, int side, std::size_t k) {
   const noise::ContactSetLoopResult& loop = r.noise.loops.main;
   const double wavenumber = 2.0 * kPi / r.wavelength[k];
   const std::size_t n = r.contacts.size();
   Eigen::VectorXcd rho =
-      Eigen::VectorXcd::Zero(loop.rho.rows());  // rho_b = e^{-ik d_b} on the rail
+      Eigen::VectorXcd::Zero(loop.rho.rows());  // rho_b = H_b(k) e^{-ik d_b} on the rail
   for (std::size_t b = 0; b < n; ++b)
-    if (r.contacts[b].side == side) rho(b) = std::polar(1.0, -wavenumber * r.contacts[b].distance);
+    if (r.contacts[b].side == side)
+      rho(b) = r.contacts[b].filter[k] * std::polar(1.0, -wavenumber * r.contacts[b].distance);
   const Eigen::VectorXcd sources = loop.rho.transpose().cast<std::complex<double>>() * rho;
   const Eigen::VectorXcd F = loop.force[k] * sources;
   for (std::size_t a = 0; a < n; ++a) {
@@ -142,7 +147,7 @@ std::vector<LoopPeak> loop_peaks(const CorrugationResult& r, const NoiseCase& nc
     wz.push_back(std::abs(w(0, 0)));
     wy.push_back(std::abs(w(2, 2)));
   }
-  add(rz, "rail normal receptance peak (pinned-pinned with discrete supports)");
+  add(rz, "rail normal receptance peak");
   add(ry, "rail lateral receptance peak");
   add(wz, "wheel normal receptance peak (wheel mode)");
   add(wy, "wheel lateral receptance peak (wheel mode)");

@@ -6,7 +6,8 @@
 //      contact's mean contact and linear model, the one loop of the contacts);
 //   3. per contact a, its wear transfer T_a (nss/wear_transfer.hpp), on its own thread;
 //   4. per rail R (outer +1, inner -1), a rail roughness r e^{ikX} met by contact b at distance
-//      d_b behind the leading axle with the phase e^{-ik d_b}: the sources of the loop combined
+//      d_b behind the leading axle with the phase e^{-ik d_b} and seen by its frozen patch as
+//      H_b(k) r (nss/wear_transfer.hpp W6): the sources of the loop combined
 //      coherently, the inputs u_a = (xi~_a, Fz_a) of each contact a from its forces,
 //      xi~ = -f^{-1} (F~t - g Fz) (noise/contact_receptance.hpp C3), and its wear per passage
 //      relative to the roughness, G_a = e^{ik d_a} T_a u_a (the depth deepens the depression r:
@@ -38,6 +39,8 @@ struct ContactCorrugation {
   double distance = 0.0;  ///< behind the leading axle (m)
   std::vector<nss::WearRow>
       transfer;  ///< T_a: depth per passage (m) per unit xi_x, xi_y, phi (rad/m), N~ (N)
+  /// H_a(k) of (W6): the roughness its frozen patch sees per unit rail roughness (-)
+  std::vector<std::complex<double>> filter;
   std::vector<Eigen::Vector4cd>
       input;  ///< u_a = (xi_x, xi_y, phi, Fz) per m of its rail's roughness
   std::vector<std::complex<double>> depth;  ///< G_a: depth per passage / roughness amplitude (-)

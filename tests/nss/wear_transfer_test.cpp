@@ -10,6 +10,7 @@
 //    191; Grassie & Kalousek 1993, Proc. IMechE F 207);
 //  - time domain: the unsteady solver over a small harmonic creepage gives the same harmonic of the
 //    wear along the rail (2 %, 2 degrees), in partial and in full slip;
+//  - the rail roughness filter (W6) of a Hertzian patch: the flat-punch average sin(ka)/(ka);
 //  - energy: at w -> 0 the frictional power variation of the whole patch equals the derivative of
 //    the steady solver's sum of -p . s dx dy (central differences in creepage and load).
 #include "nss/wear_transfer.hpp"
@@ -161,17 +162,19 @@ TEST(WearTransfer, ArchardsLawIsFrictionalWorkWithKOverMuH) {
 
 namespace {
 
-// The unsteady solver (contact/transient_rolling.hpp) rolling from the steady state under
-// xi(t_k) = mean + eps cos(w t_k) e_x (creepage taken at t_k, as the linear model's "contact"
-// sampling): the frictional power of every element at every step, gathered along the rail as
-// (W4) gathers the linear one, and its harmonic at k = w/V over the rail cells the start transient
-// no longer reaches, by least squares (constant, cos, sin). Returns the complex amplitude of
+// The unsteady solver (contact/transient_rolling.hpp) rolling from the steady state under input
+// `input` (0 xi_x, 1 xi_y, 2 phi, 3 the normal load N) = mean + eps cos(w t_k) (taken at t_k, as
+// the linear model's "contact" sampling; the load with its normal problem solved at every step):
+// the frictional power of every element at every step, gathered along the rail as (W4) gathers
+// the linear one, and its harmonic at k = w/V over the rail cells the start transient no longer
+// reaches, by least squares (constant, cos, sin). Returns the complex amplitude of
 // sum_{j + i_a = m} D_{j,a} (W/m^2) with the phase e^{ik (x_0 + m dx)}.
-std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepage& mean,
+std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepage& mean, int input,
                                              double eps, double f) {
   const TangentialSolution s0 = steady_solution(p, mean);
   TransientRolling tr(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
   tr.set_tractions(s0.px, s0.py);
+  if (input == 3) tr.set_normal_problem(p.undeformed_distance, p.normal.force);
   const Grid& g = p.grid;
   int ix_min = g.nx;
   for (int k = 0; k < g.size(); ++k)
@@ -181,8 +184,10 @@ std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepa
   std::vector<double> W(steps + g.nx, 0.0);
   for (int j = 0; j < steps; ++j) {
     Creepage c = mean;
-    c.xi_x += eps * std::cos(w * j * dt);
-    const TangentialSolution& s = tr.step(c);
+    double* component[] = {&c.xi_x, &c.xi_y, &c.phi};
+    const double variation = eps * std::cos(w * j * dt);
+    if (input < 3) *component[input] += variation;
+    const TangentialSolution& s = input < 3 ? tr.step(c) : tr.step(c, p.normal.force + variation);
     for (int k = 0; k < g.size(); ++k)
       W[j + k % g.nx - ix_min] -= s.px[k] * s.sx[k] + s.py[k] * s.sy[k];
   }
@@ -201,15 +206,18 @@ std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepa
 
 }  // namespace
 
-TEST(WearTransfer, LinearEqualsTheUnsteadySolverOverAHarmonicCreepageWithin2PercentAnd2Degrees) {
-  // Three wavelengths across the patch length (4a, 2a, a) in partial slip (xi_x = 0.001) and in
-  // full slip (xi_x = 0.01), amplitude 1e-3 of the mean creepage: what remains is the
-  // nonlinearity (the adhesion/slip boundary moving) and the solver's tolerance.
+TEST(WearTransfer, LinearEqualsTheUnsteadySolverOverAHarmonicInputWithin2PercentAnd2Degrees) {
+  // Three wavelengths across the patch length (4a, 2a, a) in partial slip (the paper's combined
+  // creepage (0.001, 0.001, -0.053 rad/m): the inputs xi_x, phi and N) and in full slip (xi_x =
+  // 0.01: xi_x); amplitudes 1e-3 of the mean creepage and spin, 1e-4 of the load: what remains is
+  // the nonlinearity (the adhesion/slip boundary moving) and the solvers' tolerances. (A variation
+  // perpendicular to the mean slip, e.g. phi or xi_y about pure xi_x, changes |s| only to second
+  // order: its linear wear vanishes by symmetry and no relative comparison is meaningful there.)
   const ContactPatch& p = paper_patch("coarse");
   const double a = 7.18e-3;
   double worst_amplitude = 0.0, worst_phase = 0.0;
-  for (const double xi : {0.001, 0.01}) {
-    const Creepage mean{xi, 0.0, 0.0};
+  for (const Creepage mean : {Creepage{0.001, 0.001, -0.053}, Creepage{0.01, 0.0, 0.0}}) {
+    const double xi = mean.xi_x;
     const TangentialSolution s = steady_solution(p, mean);
     const nss::LinearContactModel model(p, s, {kMu, kSpeed, 0.0, CreepageSampling::contact});
     nss::WearLaw law;
@@ -217,20 +225,49 @@ TEST(WearTransfer, LinearEqualsTheUnsteadySolverOverAHarmonicCreepageWithin2Perc
     const nss::WearTransfer T(model, s, kSpeed, kMu, law);
     // (W4) without K dx dy / (w_b V): the same gathering as transient_wear_harmonic
     const double scale = p.grid.element_area() / (T.band_width() * kSpeed);
-    for (const double lambda : {4 * a, 2 * a, a}) {
-      const double f = kSpeed / lambda, eps = 1e-3 * xi;
-      const std::complex<double> lin = eps * T.depth({f})[0](0) / scale;
-      const std::complex<double> nl = transient_wear_harmonic(p, mean, eps, f);
-      const double da = std::abs(nl / lin) - 1.0, dp = std::arg(nl / lin) * 180 / kPi;
-      std::printf(
-          "xi_x = %g, lambda = %.2f mm: linear %.5e at %7.2f deg, unsteady %.5e at %7.2f deg: "
-          "%+.2e, %+.3f deg\n",
-          xi, 1e3 * lambda, std::abs(lin), std::arg(lin) * 180 / kPi, std::abs(nl),
-          std::arg(nl) * 180 / kPi, da, dp);
-      worst_amplitude = std::max(worst_amplitude, std::abs(da));
-      worst_phase = std::max(worst_phase, std::abs(dp));
+    for (const int input : {0, 2, 3}) {
+      if (xi > 0.005 && input != 0) continue;
+      const double eps = input == 0   ? 1e-3 * xi
+                         : input == 2 ? 1e-3 * std::abs(mean.phi)
+                                      : 1e-4 * kN;
+      for (const double lambda : {4 * a, 2 * a, a}) {
+        const double f = kSpeed / lambda;
+        const std::complex<double> lin = eps * T.depth({f})[0](input) / scale;
+        const std::complex<double> nl = transient_wear_harmonic(p, mean, input, eps, f);
+        const double da = std::abs(nl / lin) - 1.0, dp = std::arg(nl / lin) * 180 / kPi;
+        std::printf(
+            "xi_x = %g, input %d, lambda = %.2f mm: linear %.5e at %7.2f deg, unsteady %.5e at "
+            "%7.2f deg: %+.2e, %+.3f deg\n",
+            xi, input, 1e3 * lambda, std::abs(lin), std::arg(lin) * 180 / kPi, std::abs(nl),
+            std::arg(nl) * 180 / kPi, da, dp);
+        worst_amplitude = std::max(worst_amplitude, std::abs(da));
+        worst_phase = std::max(worst_phase, std::abs(dp));
+      }
     }
   }
   EXPECT_LT(worst_amplitude, 0.02);
   EXPECT_LT(worst_phase, 2.0);
+}
+
+TEST(WearTransfer,
+     RailRoughnessFilterOfAHertzianPatchIsTheFlatPunchAverageSinKaOverKaWithin2Percent) {
+  // (W6) on the paper's fine grid: the unit-load pressure of the frozen ellipse is the flat
+  // punch's, whose lateral integral is uniform over |x| < a, so a roughness uniform across the rail
+  // is averaged over the patch length: H = sin(ka)/(ka). The discrete punch pressure (its edge
+  // singularity on 68 x 50 elements) sets the tolerance.
+  const ContactPatch& p = paper_patch("fine");
+  const double a = 7.18e-3;
+  std::vector<double> k;
+  for (double u = 0.0; u <= 9.0; u += 0.5) k.push_back(u / a);
+  const auto H = nss::rail_roughness_filter(p, k);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    const double u = k[i] * a, ref = u == 0.0 ? 1.0 : std::sin(u) / u;
+    worst = std::max(worst, std::abs(H[i] - ref));
+    std::printf("ka = %4.1f  H = %+.4f %+.4fi  sin(ka)/ka = %+.4f\n", u, H[i].real(), H[i].imag(),
+                ref);
+  }
+  std::printf("largest difference %.2e\n", worst);
+  EXPECT_NEAR(H[0].real(), 1.0, 1e-10);
+  EXPECT_LT(worst, 0.02);
 }

@@ -1,7 +1,7 @@
 // `rollnoise corrugation`'s pipeline (pipeline/corrugation.hpp, docs/corrugation.md Sec. 4): the
 // rail's growth is the sum of its contacts'; without the coupling of the contacts each contact's
-// growth is its own loop's (the wheelbase phase cancels: e^{ik d} T H e^{-ik d}); in pure rolling
-// nothing grows.
+// growth is its own loop's under its own filtered roughness (the wheelbase phase cancels:
+// e^{ik d} T H_loop H_filter e^{-ik d}); in pure rolling nothing grows.
 #include "pipeline/corrugation.hpp"
 
 #include <gtest/gtest.h>
@@ -54,7 +54,7 @@ TEST(Corrugation, EachRailIsTheSumOfItsContactsAndUncoupledContactsNeedNoWheelba
     const auto& c = r.contacts[a];
     const auto& fg = r.noise.wheels[a].coefficients;
     for (std::size_t k = 0; k < r.frequency.size(); ++k) {
-      const Eigen::VectorXcd F = loop.force[k].col(static_cast<Eigen::Index>(a));
+      const Eigen::VectorXcd F = loop.force[k].col(static_cast<Eigen::Index>(a)) * c.filter[k];
       Eigen::Vector3cd Ft = F.segment<3>(4 * a + 1);
       if (r.noise.coupled) Ft -= fg.load[k] * F(4 * a);
       Eigen::Vector4cd u;
