@@ -56,6 +56,8 @@ int run_modes(const CommonOptions& o, const std::string& csv);
 int run_statespace(const CommonOptions& o, const std::string& csv_prefix);
 /// rollnoise squeal (squeal_command.cpp); `route` is "1", "2" or "both".
 int run_squeal(const CommonOptions& o, const std::string& route);
+/// rollnoise corrugation (corrugation_command.cpp): the growth rate of rail roughness per passage.
+int run_corrugation(const CommonOptions& o);
 /// rollnoise contact-input (contact_input_command.cpp): -o is the folder of CASENAME.inp.
 int run_contact_input(const CommonOptions& o, bool steady_only);
 int run_bench(const CommonOptions& o, const std::vector<int>& grids, const std::string& csv);

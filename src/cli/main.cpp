@@ -11,6 +11,7 @@
 //   rollnoise cnossos   CASE.toml [-o OUT.json] [--set key=value]... [--flow Q]   CNOSSOS-EU
 //   rollnoise statespace CASE.toml [-o OUT.h5] [--set key=value]... [--csv PREFIX]
 //   rollnoise squeal    CASE.toml [-o OUT.h5] [--set key=value]... [--route 1|2|both]
+//   rollnoise corrugation CASE.toml [-o OUT.h5] [--set key=value]...   corrugation growth
 //   rollnoise bench     CASE.toml [-o OUT.h5] [--nx 10,14,20,...] [--csv FILE]
 //   rollnoise study     STUDY.toml [-j N] [--shard i/N] [--list] [--case K] [--no-reuse]
 //   rollnoise collect   STUDY.toml
@@ -69,9 +70,10 @@ struct CommandLine {
   bool contact_input_steady = false;
   double flow = 10.0;  ///< cnossos --flow
   CLI::App *steady = nullptr, *transient = nullptr, *creep = nullptr, *response = nullptr,
-           *validate = nullptr, *noise = nullptr, *receptance = nullptr, *passby = nullptr, *cnossos = nullptr, *modes = nullptr,
-           *squeal = nullptr, *bench = nullptr, *statespace = nullptr, *contact_input = nullptr,
-           *keys = nullptr, *study = nullptr, *collect = nullptr;
+           *validate = nullptr, *noise = nullptr, *receptance = nullptr, *passby = nullptr,
+           *cnossos = nullptr, *modes = nullptr, *squeal = nullptr, *corrugation = nullptr,
+           *bench = nullptr, *statespace = nullptr, *contact_input = nullptr, *keys = nullptr,
+           *study = nullptr, *collect = nullptr;
 };
 
 const char* const kQuietHelp = "only warnings and errors (stderr): no progress, no summary on stdout";
@@ -108,7 +110,7 @@ void add_contact_commands(CLI::App& app, CommandLine& cl) {
         ->expected(2);
 }
 
-// The noise commands: noise, receptance, modes, squeal.
+// The noise commands: noise, receptance, modes, squeal, corrugation.
 void add_noise_commands(CLI::App& app, CommandLine& cl) {
   cl.noise = app.add_subcommand("noise", "closed-loop contact-force spectra from roughness");
   add_common(cl.noise, cl.common);
@@ -126,6 +128,9 @@ void add_noise_commands(CLI::App& app, CommandLine& cl) {
   add_common(cl.squeal, cl.common);
   cl.squeal->add_option("--route", cl.squeal_route, "1 (rational fits, eigenvalues), 2 (continuation on the exact loop) or both")
       ->check(CLI::IsMember({"1", "2", "both"}));
+  cl.corrugation = app.add_subcommand(
+      "corrugation", "growth rate of rail roughness per passage against wavelength (wear)");
+  add_common(cl.corrugation, cl.common);
 }
 
 // The tools: bench, statespace, contact-input, keys.
@@ -186,8 +191,9 @@ int dispatch(CommandLine& cl) {
       throw InputError("--reference", "--reference " + cl.reference[0] + ": the known reference is 'contact DIR'");
     cl.common.contact_reference = cl.reference[1];
   }
-  for (const CLI::App* sub : {cl.steady, cl.transient, cl.creep, cl.response, cl.validate, cl.noise,
-                              cl.receptance, cl.passby, cl.cnossos, cl.modes, cl.squeal, cl.bench, cl.statespace})
+  for (const CLI::App* sub :
+       {cl.steady, cl.transient, cl.creep, cl.response, cl.validate, cl.noise, cl.receptance,
+        cl.passby, cl.cnossos, cl.modes, cl.squeal, cl.corrugation, cl.bench, cl.statespace})
     if (sub->parsed()) cl.common.command = sub->get_name();
   const cli::CommonOptions& common = cl.common;
   // -q: warnings and errors only (stderr); study --list still prints its commands, which are its result
@@ -214,6 +220,7 @@ int dispatch(CommandLine& cl) {
   if (cl.modes->parsed()) return cli::run_modes(common, cl.modes_csv);
   if (cl.bench->parsed() && !cl.sweep_cost_grids.empty()) return cli::run_sweep_cost(common, cl.sweep_cost_grids);
   if (cl.squeal->parsed()) return cli::run_squeal(common, cl.squeal_route);
+  if (cl.corrugation->parsed()) return cli::run_corrugation(common);
   if (cl.bench->parsed()) return cli::run_bench(common, cl.bench_grids, cl.bench_csv);
   if (cl.statespace->parsed()) return cli::run_statespace(common, cl.statespace_csv);
   return 0;

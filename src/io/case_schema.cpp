@@ -383,6 +383,21 @@ const std::vector<KeySpec>& case_schema() {
        "line's cell in three; the band levels use them, the narrow-band outputs stay on the "
        "case's lines (docs/noise_loop.md Sec. 6.1); 0: off",
        {}, 0, "", 8},
+      // corrugation (docs/corrugation.md; pipeline/corrugation.hpp)
+      {"corrugation.wavelength_min", T::PositiveReal, "0.01", "m",
+       "corrugation: the shortest rail wavelength (its frequency V / lambda within the grid's Nyquist limit)"},
+      {"corrugation.wavelength_max", T::PositiveReal, "0.5", "m", "corrugation: the longest rail wavelength"},
+      {"corrugation.points", T::Integer, "160", "-", "corrugation: wavelengths, log-spaced", {}, 2, "", 100000},
+      {"wear.law", T::String, "\"frictional_work\"", "-",
+       "corrugation: the wear law, depth rate = K x frictional power density; \"frictional_work\": K = "
+       "wear.coefficient (m^3/J); \"archard\": K = wear.coefficient / (friction.mu wear.hardness) "
+       "(docs/corrugation.md Sec. 3)",
+       {"frictional_work", "archard"}},
+      {"wear.coefficient", T::PositiveReal, "6.75e-13", "m^3/J or -",
+       "corrugation: frictional_work: volume worn per dissipated energy (6.75e-13 m^3/J: mild regime, "
+       "Braghin et al. 2006); archard: the dimensionless k (1e-4 mild .. 4e-3 severe, Jendel 2002; "
+       "default 1e-4 with law = \"archard\")"},
+      {"wear.hardness", T::PositiveReal, "2.8e9", "Pa", "corrugation: the rail's hardness H (archard)"},
       // the sound power (docs/sound.md; pipeline/sound_power.hpp)
       {"noise.sound", T::String, "\"on\"", "-",
        "the sound power of the wheels (axisymmetric BEM of the FE wheel's modes), the rails (2D BEM of "

@@ -145,6 +145,8 @@ void LinearContactModel::set_normal_load_input(const contact::ContactPatch& patc
       const double x = g.x(k % g.nx), y = g.y(k / g.nx);
       dN_ += area * Eigen::Vector3d(b[k], b[N + k], x * b[N + k] - y * b[k]);
     }
+    bN_.setZero(n);
+    for (int a = 0; a < m; ++a) bN_.segment<2>(2 * a) << b[el_[a]], b[N + el_[a]];
     contact::HalfSpaceOperator(A, contact::Problem::Tangential, 0).apply(b.data(), u0.data());
     A0_op_->apply(b.data(), u1.data());
     wN0_.resize(n);
@@ -166,6 +168,7 @@ void LinearContactModel::set_normal_load_input(const contact::ContactPatch& patc
     }
     block_ = 4;
   } else {
+    bN_.setZero(n);
     wN0_.setZero(n);
     wN1_.setZero(n);
     rN0_.setZero(r_);

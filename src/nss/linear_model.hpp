@@ -77,13 +77,14 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
-#include "contact/friction_law.hpp"
 #include "contact/creepage_history.hpp"
+#include "contact/friction_law.hpp"
 #include "contact/halfspace_operator.hpp"
 #include "contact/influence.hpp"
 #include "contact/patch.hpp"
@@ -288,6 +289,29 @@ class LinearContactModel {
   std::vector<Eigen::Vector3d> time_response(const std::vector<Eigen::Vector3d>& creepage_variation,
                                              const std::vector<double>& normal_load_variation) const;
 
+  /// The traction and slip variations of every contact element (element_fields.cpp): the impulse
+  /// response of the fields, step by step. Inputs at step 0: a unit creepage (columns xi_x, xi_y,
+  /// phi, taken at t_0 as with CONTACT's sampling) and a unit normal load N~_0 = 1 N (column 3);
+  /// for k = 0, 1, ... `visit(k, P, S)` receives P~_k (traction, Pa) and S~_k (slip velocity, m/s),
+  /// each 2 m x 4 (rows 2a, 2a + 1: x and y of elements()[a]):
+  ///   K0 pi_k = K1 pi_{k-1} + [-Pi' W, rN0] d_k0 + [0, rN1] d_k1,  P~_k = Pi pi_k + [0, bN] d_k0,
+  ///   S~_k = W xi_k + (A P~_k - A0 P~_{k-1}) / dt      (paper Eq. 11 in the time domain; G2).
+  /// The response at frequency w is sum_k z^k P~_k (z = e^{-i w dt}; the creepage columns times
+  /// creepage_sampling_factor for the model's sampling). Stops when |P~_k| stayed below
+  /// `tolerance` times its largest value for a whole contact length (at most max_contact_lengths
+  /// of steps); returns the number of steps visited. Constant friction only (std::domain_error on
+  /// the paper form: falling friction).
+  using FieldVisitor =
+      std::function<void(int k, const Eigen::MatrixXd& P, const Eigen::MatrixXd& S)>;
+  int element_impulse_response(const FieldVisitor& visit, double tolerance = 1e-12,
+                               int max_contact_lengths = 60) const;
+  /// The contact elements (grid indices) in the model's order: element a of the field rows.
+  const std::vector<int>& elements() const { return el_; }
+  /// Whether element a (model order) slips in the steady state the model linearises.
+  bool slip_element(int a) const { return slip_[a] != 0; }
+  /// The grid of the frozen patch.
+  const contact::Grid& grid() const { return table_.grid(); }
+
   /// Throw InputError (key "frequency") unless 0 <= f <= Nyquist.
   void check_frequency(double frequency) const;
 
@@ -430,6 +454,7 @@ class LinearContactModel {
   Eigen::VectorXd wN0_, wN1_;  ///< n: A bN/dt, A0 bN/dt (paper form, per N)
   Eigen::VectorXd rN0_, rN1_;  ///< r: -Pi' A bN/dt, +Pi' A0 bN/dt
   Eigen::Vector3d dN_ = Eigen::Vector3d::Zero();  ///< dx dy U' bN
+  Eigen::VectorXd bN_;  ///< n: bN of (G1) per element (model order), zero without slip elements
   std::unique_ptr<Built> built_;
 };
 

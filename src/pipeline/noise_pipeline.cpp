@@ -140,10 +140,12 @@ class FurtherWheels {
 using CurveHook =
     std::function<void(const ContactCase&, const CurveSetup&, const std::vector<double>&)>;
 
-// Stages 1-3 of the case's main contact (the leading outer wheel's placement, or the case's one
-// contact), calling `on_curve` with the placed case and the curve state as soon as they exist
-// (before the main contact's mean contact): the further wheels start from there.
-NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on_curve);
+// Stages 2-3 of the case's main contact (the leading outer wheel's placement, or the case's one
+// contact) on the frequencies of `axis`, calling `on_curve` with the placed case and the curve
+// state as soon as they exist (before the main contact's mean contact): the further wheels start
+// from there.
+NoiseResult main_contact(ContactCase c, const NoiseCase& nc, BandAxis axis,
+                         const CurveHook& on_curve);
 
 }  // namespace
 
@@ -165,6 +167,18 @@ std::size_t reported_wheel(const std::vector<WheelNoise>& wheels) {
 
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   const auto t0 = Clock::now();
+  BandAxis axis = band_axis(c, nc);  // 1, the sizes before any work
+  const int threads = resolved_threads(c.threads, nss::kMaxThreads);
+  NoiseResult r = run_noise_loop(std::move(c), nc, std::move(axis));
+  if (nc.band_refinement > 0)
+    r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
+  add_bands(r, nc, threads);
+  r.seconds_total = seconds_since(t0);
+  return r;
+}
+
+NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, BandAxis axis) {
+  const auto t0 = Clock::now();
   // solver.threads: the wheels share the threads, so each wheel's model (the main one's too) runs
   // on one while there are several (the model checks the key's range itself)
   const int threads = resolved_threads(c.threads, nss::kMaxThreads);
@@ -172,7 +186,7 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   if (parallel && c.threads >= 0 && c.threads <= nss::kMaxThreads) c.threads = 1;
   FurtherWheels further(nc, parallel ? threads : 1);
   NoiseResult r = main_contact(
-      std::move(c), nc,
+      std::move(c), nc, std::move(axis),
       [&](const ContactCase& base, const CurveSetup& curve, const std::vector<double>& frequency) {
         further.start(base, curve, frequency);
       });
@@ -184,19 +198,17 @@ NoiseResult run_noise(ContactCase c, const NoiseCase& nc) {
   r.loops = contact_loop(r.wheels, nc, r.axis.frequency, r.patches, threads);
   r.coupled_contacts = nc.contact_coupling == NoiseCase::ContactCoupling::kBogie;
   r.seconds_wheels = seconds_since(t1);
-  if (nc.band_refinement > 0)
-    r.refined = std::make_shared<const RefinedLoops>(refined_loops(r, nc, threads));
-  add_bands(r, nc, threads);
   r.seconds_total = seconds_since(t0);
   return r;
 }
 
 namespace {
 
-NoiseResult main_contact(ContactCase c, const NoiseCase& nc, const CurveHook& on_curve) {
+NoiseResult main_contact(ContactCase c, const NoiseCase& nc, BandAxis axis,
+                         const CurveHook& on_curve) {
   const auto t0 = Clock::now();
   NoiseResult r;
-  r.axis = band_axis(c, nc);  // 1, the sizes before any work
+  r.axis = std::move(axis);
   const std::vector<double>& freq = r.axis.frequency;
 
   // 2.-3. the mean contact (the model always: the quasi-steady baseline and the sweep's f(0), g(0))

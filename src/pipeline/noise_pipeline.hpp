@@ -100,8 +100,13 @@ struct NoiseResult {
   const noise::LoopVariants& band_loops() const;
 };
 
-/// The whole pipeline for a read noise case (stages 1-5).
+/// The whole pipeline for a read noise case (stages 1-5): run_noise_loop on the band axis, then
+/// the refined lines (noise.band_refinement) and add_bands.
 NoiseResult run_noise(ContactCase c, const NoiseCase& nc);
+/// Stages 2-4 on the frequencies of `axis` (its centres may be empty: no bands are made): the
+/// contacts and the one loop of them, without band levels or sound (`rollnoise corrugation` runs
+/// it on the frequencies of its wavelengths). seconds_total: of these stages.
+NoiseResult run_noise_loop(ContactCase c, const NoiseCase& nc, BandAxis axis);
 /// Stage 5: the effective roughness of each contact (the case's roughness spectra and contact
 /// filter) and the band levels of every contact and loop variant; then, with noise.sound = "on",
 /// the sound powers (noise_sound.hpp), which follow the roughness too. Cases that differ only in

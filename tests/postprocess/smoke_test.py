@@ -93,6 +93,8 @@ def main():
     rollnoise(binary, work, "modes", os.path.join(CASES, "curve_300m.toml"), "-o", "modes.h5",
               "--set", 'curve.creepage="estimate"',
               "--set", "wheel.mesh_size=0.03", "--set", "wheel.n_max=3", "--set", "wheel.f_max=2000")
+    rollnoise(binary, work, "corrugation", hertz, "-o", "corrugation.h5", *COARSE, "--set", "corrugation.points=20",
+              "--set", "corrugation.wavelength_min=0.02")
     rollnoise(binary, work, "bench", hertz, "--nx", "8,10,12", "--csv", os.path.join(work, "bench.csv"))
     rollnoise(binary, work, "receptance", os.path.join(CASES, "curve_300m_hertz.toml"), "-o", "rail_waves.h5",
               *COARSE, "--set", "frequency.count=4", "--set", "track.support=\"continuous\"",
@@ -129,6 +131,7 @@ def main():
                                os.path.join(ROOT, "models", "roughness", "wheel_disc_braked.csv"), "--label", "cast iron",
                                "--label", "disc", "-o", j("roughness.png")], ["roughness.png"]),
         ("plot_passby.py", [j("passby.h5"), "-o", j("passby.png")], ["passby.png"]),
+        ("plot_corrugation.py", [j("corrugation.h5"), "-o", j("corrugation.png")], ["corrugation.png"]),
         ("plot_modes.py", [j("modes.h5"), "--s", "-0.02", "--prefix", j("modes")],
          ["modes_sections.png", "modes_receptance.png"]),
         ("plot_rail_waves.py", [j("rail_waves.h5"), "-o", j("rail_waves.png")], ["rail_waves.png"]),
@@ -168,7 +171,7 @@ def main():
         f.write("not HDF5\n")
     wrong = [(s, bad) for s in ["plot_patch.py", "plot_sweep.py", "plot_transient.py", "plot_creep.py",
                                 "plot_rail_waves.py", "plot_statespace.py", "plot_validate.py", "plot_noise.py", "plot_receptance.py", "plot_bench.py", "plot_study.py",
-                                "plot_modes.py", "plot_roughness.py", "plot_passby.py"]
+                                "plot_modes.py", "plot_roughness.py", "plot_passby.py", "plot_corrugation.py"]
              for bad in [j("missing.h5"), j("not_hdf5.h5"), j(OTHER_OUTPUT.get(s, "creep.h5"))]]
     for script, bad in wrong:
         status, err = plot(script, bad, *EXTRA_ARGS.get(script, []))
