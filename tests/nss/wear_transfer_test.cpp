@@ -188,8 +188,11 @@ std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepa
     const double variation = eps * std::cos(w * j * dt);
     if (input < 3) *component[input] += variation;
     const TangentialSolution& s = input < 3 ? tr.step(c) : tr.step(c, p.normal.force + variation);
+    // (an element left of the mean area that the varying load brings into contact in the first
+    // steps falls before the rail's first cell: the start transient, outside the fit below)
     for (int k = 0; k < g.size(); ++k)
-      W[j + k % g.nx - ix_min] -= s.px[k] * s.sx[k] + s.py[k] * s.sy[k];
+      if (const int m = j + k % g.nx - ix_min; m >= 0)
+        W[m] -= s.px[k] * s.sx[k] + s.py[k] * s.sy[k];
   }
   // least squares on the rail cells m in [start, steps): every step that reaches them is >= start -
   // Lc
