@@ -227,19 +227,6 @@ std::pair<std::vector<double>, std::vector<double>> row_orientations(const Curve
   return {cosd, sind};
 }
 
-// The pressure-weighted mean cos(delta) of a solved state (the fixed point's c0).
-double mean_cos(const LoadedContact& s) {
-  const contact::Grid& g = s.patch->grid;
-  double pc = 0.0, psum = 0.0;
-  for (int iy = 0; iy < g.ny; ++iy)
-    for (int ix = 0; ix < g.nx; ++ix) {
-      const double pn = s.patch->normal.pn[g.index(ix, iy)];
-      pc += pn * std::cos(s.row_angle[iy]);
-      psum += pn;
-    }
-  return psum > 0.0 ? pc / psum : std::cos(s.geometry.contact_angle);
-}
-
 // The sums over the patch of (C3) and the forces on the wheel, each row with its own orientation
 // (cos and sin of its contact angle): up = sum pn cos + py sin, lat = sum py cos - pn sin,
 // lon = sum px, pc = sum pn cos, psum = sum pn (per element area).
@@ -312,7 +299,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     // One Newton solver for the iterations: its LU factors serve again while the area stays.
     contact::SteadyRollingSolver steady(patch->influence);
     double dz = near ? near->vertical_approach : 0.0;
-    double c0 = near ? mean_cos(*near) : std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
+    double c0 = near ? near->mean_cos : std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
     contact::GridField h = cp.h;
     for (out.iterations = 1;; ++out.iterations) {
       for (int iy = 0; iy < g.ny; ++iy)
@@ -363,6 +350,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     out.normal_force = N;
     out.creep_force = integrate_creep_force(g, out.tangential);
     out.vertical_approach = dz;
+    out.mean_cos = c0;
     out.curved = true;
     set_row_angles(cp, c, patch->normal.pn, out);
     out.patch = std::move(patch);

@@ -83,6 +83,9 @@ struct LoadedContact {
   /// side's field side, upwards) (N). F_up = Q by construction (V1).
   std::array<double, 3> force_track{};
   double vertical_approach = 0.0;  ///< dz (m): the vertical lowering under the load
+  /// On the curved surface: c0 of the fixed point's last iteration (the pressure-weighted mean
+  /// cos(delta), curved_contact.hpp), with which a start from this state continues it.
+  double mean_cos = 0.0;
   int iterations = 0;              ///< of the fixed point on N
   bool curved = false;             ///< on a curved reference surface (curved_contact.hpp)
   /// Contact angle of each grid row (rad; all δ for a planar patch), and its range over the rows

@@ -202,11 +202,6 @@ class Solver {
     return e.r.cwiseAbs().maxCoeff() <= tol;
   }
 
-  /// From now on every contact starts from the last iterate's, its grid kept
-  /// (VerticalLoadInput::start): the residual then varies smoothly with q (no grid row comes or
-  /// goes between the iterates and their differences), which the last digits of Newton need.
-  /// The Jacobian held is the coarse contacts' (AxleQuery::coarse): the first one differenced
-  /// on the full grid.
   /// The last digits: the full contacts from now on, each started from the last iterate's with
   /// its grid kept (VerticalLoadInput::start) when `keep`, so that the residual varies smoothly
   /// with q (no grid row comes or goes between the iterates and their differences); else each on
@@ -411,7 +406,7 @@ BogieEquilibrium solve_bogie_equilibrium(const BogieEquilibriumInput& in,
     int iterations = 0;
     Continued c = continue_to_curve(solver, Q, tol, &iterations);
     q = c.q, e = std::move(c.e);
-    // The last digits: each wheel's grid kept from the loose solution (Solver::keep_grids), so
+    // The last digits: each wheel's grid kept from the loose solution (Solver::last_digits), so
     // that no grid row comes or goes between the iterates. Where that stalls (the forces of a
     // wheel at the onset of a two-point contact have a kink: the load shared between the two
     // regions turns with the contact stiffness, 1e9 N/m laterally against 1e7 N/m on one
