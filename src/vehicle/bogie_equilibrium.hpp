@@ -48,21 +48,22 @@
 // The wheel loads are Q +- dQ (the load transfer (K4) of curving.hpp); roll and the vertical
 // suspension are not solved.
 //
-// Solution: Newton's method on (B2), with a continuation from tangent track (t = 0, q = 0: the
-// symmetric wheelset has no lateral force or yaw moment) to the curve (t = 1) in the curvature
-// kappa = t / R, the cant deficiency t h_d and the load transfer t dQ, in two stages. On the way
-// (AxleQuery::coarse) the contacts are solved on a third of the elements each way and settled to
-// 1e-6, each step to 1e-2 Q (1e-3 Q at t = 1); where they cannot lead it (a step below 1/64), the
-// full contacts take over. The last digits at t = 1 on the full grid, settled
-// to 1e-9, every contact started from the last iterate's with its grid kept where it lies on the
-// rail (VerticalLoadInput::start), so that the residual varies smoothly; where that stalls (the
-// onset of a two-point contact), on each contact's own grid. Jacobian: the suspension's part
-// analytic, the contacts' 3 x 3 blocks d(F_i, M_i, T_i) / d(y_i, psi_i, eps_i) by forward
-// differences (three more contact pairs per axle), then Broyden's rank-one updates. Steps: damped
-// (at most 2 mm, 4 mrad and 1e-3, a backtracking line search on the residual norm, every iterate
-// within |y| <= 10 mm); a continuation step whose Newton iteration fails is halved (down to 1/64).
-// How a flange contact that comes or goes along the path is passed: the contacts are taken as
-// two-point contacts where the gap has two minima (VerticalLoadInput::gap_regions) and with the
+// Solution: Newton's method on (B2) from a guess at the curve (BogieEquilibriumInput::guess: the
+// quasi-static estimate's state, estimated_guess) to 1e-2 Q; where that does not lead there, a
+// continuation from tangent track (t = 0, q = 0: the symmetric wheelset has no lateral force or yaw
+// moment) to the curve (t = 1) in the curvature kappa = t / R, the cant deficiency t h_d and the
+// load transfer t dQ. Both on the way (AxleQuery::coarse): the contacts solved on a third of the
+// elements each way and settled to 1e-6, each continuation step to 1e-2 Q (1e-3 Q at t = 1); where
+// they cannot lead it (a step below 1/64), the full contacts take over. The last digits at t = 1 on
+// the full grid, settled to 1e-9, every contact started from the last iterate's with its grid kept
+// where it lies on the rail (VerticalLoadInput::start), so that the residual varies smoothly; where
+// that stalls (the onset of a two-point contact), on each contact's own grid. Jacobian: the
+// suspension's part analytic, the contacts' 3 x 3 blocks d(F_i, M_i, T_i) / d(y_i, psi_i, eps_i) by
+// forward differences (three more contact pairs per axle), then Broyden's rank-one updates. Steps:
+// damped (at most 2 mm, 4 mrad and 1e-3, a backtracking line search on the residual norm, every
+// iterate within |y| <= 10 mm); a continuation step whose Newton iteration fails is halved (down to
+// 1/64). How a flange contact that comes or goes along the path is passed: the contacts are taken
+// as two-point contacts where the gap has two minima (VerticalLoadInput::gap_regions) and with the
 // axle's own rolling speed (axle_spin), so their forces stay continuous where the contact point
 // jumps across the profile; where they turn steeply (the flange root) the line search and the
 // smaller continuation steps keep the iterate on the branch. Converged when every equation of (B2)
@@ -72,6 +73,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "noise/wheel_contact.hpp"
@@ -107,9 +109,20 @@ struct AxleQuery {
 /// contact; bogie_equilibrium uses contact_forces below.
 using AxleForceFunction = std::function<AxleContactForces(const AxleQuery&)>;
 
+/// A guess of the bogie's state in the curve, e.g. the quasi-static estimate (curving.hpp).
+struct BogieGuess {
+  std::array<double, 2> lateral{};  ///< y1, y2 (m)
+  std::array<double, 2> yaw{};      ///< psi1, psi2 (rad)
+  double bogie_lateral = 0.0;       ///< yb (m)
+  double bogie_yaw = 0.0;           ///< psib (rad)
+};
+
 struct BogieEquilibriumInput {
   CurveStateInput curve;  ///< the profiles, material, grid, curve, friction, wheel load Q, h_cg
   VehicleParameters vehicle;
+  /// Where Newton starts at the curve itself; where it does not lead there (or none is given),
+  /// the continuation from tangent track.
+  std::optional<BogieGuess> guess;
   double tolerance = 1e-6;     ///< on every equation of (B2), x Q (N, N m)
   int max_newton = 40;         ///< iterations per continuation step
   double lateral_step = 1e-7;  ///< forward-difference step in y (m)
@@ -146,6 +159,11 @@ struct BogieEquilibrium {
 /// settling as AxleQuery::coarse says, started from AxleQuery::near.
 AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer,
                                  const AxleQuery& query);
+
+/// The quasi-static estimate's state (curving.hpp, a rigid bogie: the frame where the axles put
+/// it, no primary deflection) as a guess; none where the estimate has no answer (a profile pair
+/// outside it, the flange friction at Nadal's limit).
+std::optional<BogieGuess> estimated_guess(const CurveStateInput& in);
 
 /// Solves (B2) for the input (the curve, the vehicle, Q); `forces` replaces the contacts (tests).
 /// On tangent track (1/R = 0 and no cant deficiency) y, psi and the frame's q are 0 by symmetry

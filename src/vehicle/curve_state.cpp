@@ -28,6 +28,7 @@ CurveContactState equilibrium_state(const CurveStateInput& in) {
   BogieEquilibriumInput b;
   b.curve = in;
   b.vehicle = in.vehicle;
+  b.guess = estimated_guess(in);
   auto e = std::make_shared<const BogieEquilibrium>(solve_bogie_equilibrium(b));
   CurveContactState s;
   s.equilibrium = e;
@@ -99,11 +100,60 @@ double flange_vertical_load(double lateral_force, double flange_angle, double mu
          (std::sin(d) - mu * std::cos(d));
 }
 
-CurveContactState curve_contact_state(const CurveStateInput& in) {
-  ROLLNOISE_ASSERT(in.valid(), "curve contact state input outside the model (pipeline::check_curve_state_input)");
+CurveContactState estimated_curve_position(const CurveStateInput& in) {
   const geometry::WheelRailPair& pair = *in.pair;
   const double r0 = pair.wheelset().nominal_radius;
   const double l0 = geometry::find_contact(pair, {0.0, 0.0}).y;  // the centred contact point
+  const double Q = in.wheel_load;
+  CurveContactState s;
+  s.wheel_load = Q;
+  s.estimated = true;
+  BogieCurvingInput b;
+  b.radius = in.radius;
+  b.speed = in.speed;
+  b.cant_deficiency = in.cant_deficiency;
+  b.wheelbase = in.wheelbase;
+  b.wheel_radius = r0;
+  b.contact_half_distance = l0;
+  b.wheel_load = Q;
+  b.friction = in.friction;
+  b.load_transfer = cant_deficiency_load_transfer(Q, in.cant_deficiency, in.cg_height, 2.0 * l0);
+  b.profiles = in.table ? in.table
+                        : std::make_shared<const ProfileCurvingTable>(
+                              profile_curving_table(pair, 0.010, in.table_step));
+  // Fixed point: f at the contact -> estimate -> contact. The contact moves by table steps at
+  // most near a jump of the profile contact; a few iterations settle it.
+  s.contact = geometry::find_contact(pair, {0.0, 0.0});
+  for (s.position_iterations = 1; s.position_iterations <= 10; ++s.position_iterations) {
+    const Eigen::Vector2d f = kalker_at(in, s.contact, Q);
+    b.f11 = f(0), b.f22 = f(1);
+    s.estimate = estimate_bogie_curving(b);
+    const double du = std::abs(s.estimate.leading.lateral - s.lateral);
+    const double dpsi = std::abs(s.estimate.leading.attack_angle - s.yaw);
+    s.lateral = s.estimate.leading.lateral;
+    s.yaw = s.estimate.leading.attack_angle;
+    s.contact = geometry::find_contact(pair, {s.lateral, s.yaw});
+    if (du < 1e-9 && dpsi < 1e-9) break;
+  }
+  s.f11 = b.f11, s.f22 = b.f22;
+  const AxleCurving& lead = s.estimate.leading;
+  s.load_transfer = s.estimate.load_transfer;
+  s.tread_load = lead.tread_load_outer;
+  s.two_point = lead.flange == 1 && lead.flange_force != 0.0;
+  s.flange_angle = s.estimate.flange_angle;
+  if (s.two_point) {
+    s.flange_lateral_force = std::abs(lead.flange_force);
+    s.flange_normal_force = lead.flange_normal_force;
+    s.flange_vertical_load = lead.flange_vertical_load;
+  }
+  return s;
+}
+
+CurveContactState curve_contact_state(const CurveStateInput& in) {
+  ROLLNOISE_ASSERT(
+      in.valid(),
+      "curve contact state input outside the model (pipeline::check_curve_state_input)");
+  const geometry::WheelRailPair& pair = *in.pair;
   const double Q = in.wheel_load;
 
   CurveContactState s;
@@ -117,45 +167,7 @@ CurveContactState curve_contact_state(const CurveStateInput& in) {
     s.f11 = f(0), s.f22 = f(1);
     s.tread_load = Q;
   } else {
-    s.estimated = true;
-    BogieCurvingInput b;
-    b.radius = in.radius;
-    b.speed = in.speed;
-    b.cant_deficiency = in.cant_deficiency;
-    b.wheelbase = in.wheelbase;
-    b.wheel_radius = r0;
-    b.contact_half_distance = l0;
-    b.wheel_load = Q;
-    b.friction = in.friction;
-    b.load_transfer = cant_deficiency_load_transfer(Q, in.cant_deficiency, in.cg_height, 2.0 * l0);
-    b.profiles = in.table ? in.table
-                          : std::make_shared<const ProfileCurvingTable>(
-                                profile_curving_table(pair, 0.010, in.table_step));
-    // Fixed point: f at the contact -> estimate -> contact. The contact moves by table steps at
-    // most near a jump of the profile contact; a few iterations settle it.
-    s.contact = geometry::find_contact(pair, {0.0, 0.0});
-    for (s.position_iterations = 1; s.position_iterations <= 10; ++s.position_iterations) {
-      const Eigen::Vector2d f = kalker_at(in, s.contact, Q);
-      b.f11 = f(0), b.f22 = f(1);
-      s.estimate = estimate_bogie_curving(b);
-      const double du = std::abs(s.estimate.leading.lateral - s.lateral);
-      const double dpsi = std::abs(s.estimate.leading.attack_angle - s.yaw);
-      s.lateral = s.estimate.leading.lateral;
-      s.yaw = s.estimate.leading.attack_angle;
-      s.contact = geometry::find_contact(pair, {s.lateral, s.yaw});
-      if (du < 1e-9 && dpsi < 1e-9) break;
-    }
-    s.f11 = b.f11, s.f22 = b.f22;
-    const AxleCurving& lead = s.estimate.leading;
-    s.load_transfer = s.estimate.load_transfer;
-    s.tread_load = lead.tread_load_outer;
-    s.two_point = lead.flange == 1 && lead.flange_force != 0.0;
-    s.flange_angle = s.estimate.flange_angle;
-    if (s.two_point) {
-      s.flange_lateral_force = std::abs(lead.flange_force);
-      s.flange_normal_force = lead.flange_normal_force;
-      s.flange_vertical_load = lead.flange_vertical_load;
-    }
+    s = estimated_curve_position(in);
   }
   // (K2') with the actual contact and (K8) = (V1): the wheel lowered vertically under its whole
   // vertical load Q_o = Q + dQ on the curved reference surface of the rail profile

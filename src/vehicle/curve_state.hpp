@@ -148,6 +148,11 @@ WheelContactInput wheel_input(const CurveStateInput& in, WheelId id, double u, d
 /// Steps 1-4 above. `in` valid() (a contract); NumericalError from the estimate.
 CurveContactState curve_contact_state(const CurveStateInput& in);
 
+/// Steps 1-2 alone: the estimate's axle positions (CurveContactState::estimate) and the leading
+/// outer wheel's rigid contact, with Kalker's coefficients there; no wheel lowered. The errors
+/// of curve_contact_state.
+CurveContactState estimated_curve_position(const CurveStateInput& in);
+
 /// Every wheel's contact state, in the order of `wheels` (docs/noise_loop.md Sec. 7.2): each wheel
 /// on its own rail at its axle's (u, psi) (leading: the state's; trailing: the estimate's trailing
 /// axle, or the multibody input), lowered under its vertical load (estimate: Q +- dQ on the
