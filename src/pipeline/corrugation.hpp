@@ -80,6 +80,20 @@ struct CorrugationResult {
   double seconds_loop = 0.0, seconds_wear = 0.0, seconds_total = 0.0;
 };
 
+/// A contact's inputs and wear from its loop forces at one wavenumber (stage 4 of the header).
+struct ContactWear {
+  Eigen::Vector4cd input;          ///< u = (xi~x, xi~y, phi~, Fz) per m of roughness
+  std::complex<double> depth = 0;  ///< G = e^{ik d} T u (W5): depth per passage / roughness
+};
+
+/// u and G of a contact from its loop force F = (Fz, Fx, Fy, Mz) (noise/loop.hpp L1, per unit
+/// roughness), its creep coefficients f and, when not null, its normal-load coefficients g
+/// (xi~ = -f^{-1} (F~t - g Fz), noise/contact_receptance.hpp C3), its wear transfer T (W4) at the
+/// same frequency, the wavenumber k (rad/m) and its distance d behind the leading axle (m).
+ContactWear contact_wear(const Eigen::Vector4cd& force, const Eigen::Matrix3cd& creep,
+                         const Eigen::Vector3cd* load, const nss::WearRow& transfer,
+                         double wavenumber, double distance);
+
 /// The whole command. InputError naming noise.contact_model with the Kalker contact (no patch
 /// fields), corrugation.wavelength_min when the grid cannot resolve the shortest wavelength.
 CorrugationResult run_corrugation(ContactCase c, const NoiseCase& nc, const CorrugationCase& cc);
