@@ -17,15 +17,20 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "../contact/paper_case.hpp"
 #include "contact/hertz.hpp"
 #include "contact/patch.hpp"
+#include "contact/roughness_rolling.hpp"
 #include "contact/steady_rolling.hpp"
 #include "contact/transient_rolling.hpp"
 #include "core/constants.hpp"
+#include "noise/contact_receptance.hpp"
+#include "noise/loop.hpp"
+#include "pipeline/corrugation.hpp"
 
 using namespace rollnoise;
 using namespace rollnoise::contact;
@@ -162,12 +167,48 @@ TEST(WearTransfer, ArchardsLawIsFrictionalWorkWithKOverMuH) {
 
 namespace {
 
+// The frictional power of an unsteady run gathered along the rail as (W4) gathers the linear one:
+// the element in column i at step j is over the rail cell m = j + i - ix_min (x_0 = x(ix_min), the
+// first column of the mean contact area), W[m] = sum over its steps of -p . s (W/m^2).
+// A run of `lengths` contact lengths: steps = lengths Lc, Lc = the columns of the mean area.
+struct RailWear {
+  RailWear(const ContactPatch& p, int lengths) : g(p.grid), ix_min(g.nx) {
+    for (int k = 0; k < g.size(); ++k)
+      if (p.normal.pn[k] > 0.0) ix_min = std::min(ix_min, k % g.nx);
+    Lc = g.nx - 2 * ix_min;
+    steps = lengths * Lc;
+    W.assign(steps + g.nx, 0.0);
+  }
+  void add(long j, const TangentialSolution& s) {
+    // (an element left of the mean area that a varying load brings into contact in the first
+    // steps falls before the rail's first cell: the start transient, outside the fit below)
+    for (int k = 0; k < g.size(); ++k)
+      if (const long m = j + k % g.nx - ix_min; m >= 0)
+        W[m] -= s.px[k] * s.sx[k] + s.py[k] * s.sy[k];
+  }
+  // The harmonic at k = w/V on the rail cells m in [start, end) (every step that reaches them is
+  // >= start - Lc, past the start transient), by least squares (constant, cos, sin): the complex
+  // amplitude with the phase e^{ik (x_0 + m dx)}.
+  std::complex<double> harmonic(double w, int start, int end) const {
+    Eigen::MatrixXd M(end - start, 3);
+    Eigen::VectorXd y(end - start);
+    for (int m = start; m < end; ++m) {
+      const double phase = w / kSpeed * (g.x(ix_min) + m * g.dx);
+      M.row(m - start) << 1.0, std::cos(phase), std::sin(phase);
+      y(m - start) = W[m];
+    }
+    const Eigen::Vector3d c = M.colPivHouseholderQr().solve(y);
+    return {c(1), -c(2)};  // a cos + b sin = Re{(a - i b) e^{i phase}}
+  }
+  const Grid& g;
+  int ix_min, Lc = 0, steps = 0;
+  std::vector<double> W;
+};
+
 // The unsteady solver (contact/transient_rolling.hpp) rolling from the steady state under input
 // `input` (0 xi_x, 1 xi_y, 2 phi, 3 the normal load N) = mean + eps cos(w t_k) (taken at t_k, as
 // the linear model's "contact" sampling; the load with its normal problem solved at every step):
-// the frictional power of every element at every step, gathered along the rail as (W4) gathers
-// the linear one, and its harmonic at k = w/V over the rail cells the start transient no longer
-// reaches, by least squares (constant, cos, sin). Returns the complex amplitude of
+// the harmonic of its frictional power along the rail (RailWear), the complex amplitude of
 // sum_{j + i_a = m} D_{j,a} (W/m^2) with the phase e^{ik (x_0 + m dx)}.
 std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepage& mean, int input,
                                              double eps, double f) {
@@ -175,36 +216,16 @@ std::complex<double> transient_wear_harmonic(const ContactPatch& p, const Creepa
   TransientRolling tr(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
   tr.set_tractions(s0.px, s0.py);
   if (input == 3) tr.set_normal_problem(p.undeformed_distance, p.normal.force);
-  const Grid& g = p.grid;
-  int ix_min = g.nx;
-  for (int k = 0; k < g.size(); ++k)
-    if (p.normal.pn[k] > 0.0) ix_min = std::min(ix_min, k % g.nx);
-  const int Lc = g.nx - 2 * ix_min, steps = 40 * Lc, start = 12 * Lc;
-  const double dt = tr.time_step(), w = 2 * kPi * f, x0 = g.x(ix_min);
-  std::vector<double> W(steps + g.nx, 0.0);
-  for (int j = 0; j < steps; ++j) {
+  RailWear rail(p, 40);
+  const double dt = tr.time_step(), w = 2 * kPi * f;
+  for (int j = 0; j < rail.steps; ++j) {
     Creepage c = mean;
     double* component[] = {&c.xi_x, &c.xi_y, &c.phi};
     const double variation = eps * std::cos(w * j * dt);
     if (input < 3) *component[input] += variation;
-    const TangentialSolution& s = input < 3 ? tr.step(c) : tr.step(c, p.normal.force + variation);
-    // (an element left of the mean area that the varying load brings into contact in the first
-    // steps falls before the rail's first cell: the start transient, outside the fit below)
-    for (int k = 0; k < g.size(); ++k)
-      if (const int m = j + k % g.nx - ix_min; m >= 0)
-        W[m] -= s.px[k] * s.sx[k] + s.py[k] * s.sy[k];
+    rail.add(j, input < 3 ? tr.step(c) : tr.step(c, p.normal.force + variation));
   }
-  // least squares on the rail cells m in [start, steps): every step that reaches them is >= start -
-  // Lc
-  Eigen::MatrixXd M(steps - start, 3);
-  Eigen::VectorXd y(steps - start);
-  for (int m = start; m < steps; ++m) {
-    const double phase = w / kSpeed * (x0 + m * g.dx);
-    M.row(m - start) << 1.0, std::cos(phase), std::sin(phase);
-    y(m - start) = W[m];
-  }
-  const Eigen::Vector3d c = M.colPivHouseholderQr().solve(y);
-  return {c(1), -c(2)};  // a cos + b sin = Re{(a - i b) e^{i phase}}
+  return rail.harmonic(w, 12 * rail.Lc, rail.steps);
 }
 
 }  // namespace
@@ -246,6 +267,129 @@ TEST(WearTransfer, LinearEqualsTheUnsteadySolverOverAHarmonicInputWithin2Percent
         worst_amplitude = std::max(worst_amplitude, std::abs(da));
         worst_phase = std::max(worst_phase, std::abs(dp));
       }
+    }
+  }
+  EXPECT_LT(worst_amplitude, 0.02);
+  EXPECT_LT(worst_phase, 2.0);
+}
+
+namespace {
+
+// The corrugation command's linear chain (docs/corrugation.md Sec. 4) for one contact on the wheel
+// mass of roughness_rolling.hpp and a rigid rail: the roughness seen through the frozen patch
+// (W6), the loop (noise/loop.hpp L1) with the wheel's receptance 1/(-m w^2 + i w c) and the
+// contact's (k_N, f, g: C1-C3), the inputs u and the depth G = T u (W5, pipeline::contact_wear),
+// per unit rail roughness. The wheel and rail hold the tangential directions rigidly (their
+// tangential receptances zero), as the unsteady run holds the creepage: xi~ = 0 to round-off.
+pipeline::ContactWear linear_roughness_wear(const ContactPatch& p,
+                                            const nss::LinearContactModel& model,
+                                            const nss::WearTransfer& T, const WheelMass& wheel,
+                                            double lambda) {
+  const double k = 2 * kPi / lambda, f = kSpeed / lambda, w = 2 * kPi * f;
+  const double kN =
+      normal_load_sensitivity(p.grid, HalfSpaceOperator(p.influence, Problem::Normal), p.normal)
+          .stiffness();
+  const Eigen::Matrix3cd creep = model.creep_coefficients({f})[0];
+  const Eigen::Vector3cd load = model.normal_load_coefficients({f})[0];
+  noise::Receptance4 wheel_r = noise::Receptance4::Zero(), rail_r = noise::Receptance4::Zero();
+  wheel_r(0, 0) = 1.0 / std::complex<double>(-wheel.mass * w * w, w * wheel.damping);
+  noise::LoopOptions options;
+  options.roughness = nss::rail_roughness_filter(p, {k})[0];
+  options.velocities = false;
+  const noise::Vector4c F = noise::solve_contact_forces(
+      wheel_r, rail_r, noise::contact_receptance(f, kN, kSpeed, creep, load), options);
+  return pipeline::contact_wear(F, creep, &load, T.depth({f})[0], k, 0.0);
+}
+
+// The unsteady solver over the rail roughness r(X) = r^ cos(kX) with the wheel mass
+// (contact/roughness_rolling.hpp), from the steady state at the mean creepage (held): the harmonic
+// of its frictional power along the rail (RailWear), and that of its contact force in time.
+struct RoughnessRun {
+  std::complex<double> wear, load;
+  double seconds = 0.0, solves_per_step = 0.0;
+};
+
+RoughnessRun roughness_wear_harmonic(const ContactPatch& p, const Creepage& mean,
+                                     const WheelMass& wheel, double amplitude, double lambda) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const TangentialSolution s0 = steady_solution(p, mean);
+  TransientRolling tr(p.influence, p.normal.pn, kMu, kSpeed, 0.0);
+  tr.set_tractions(s0.px, s0.py);
+  tr.set_normal_problem(p.undeformed_distance, p.normal.force);
+  RailWear rail(p, 40);
+  const double k = 2 * kPi / lambda, dt = tr.time_step();
+  RoughnessRollingInput in;
+  in.creepage = mean;
+  in.roughness = [&](double X) { return amplitude * std::cos(k * X); };
+  in.wheel = wheel;
+  in.approach = p.normal.approach;
+  in.steps = rail.steps;
+  const int start = 12 * rail.Lc;
+  Eigen::MatrixXd M(rail.steps - start, 3);
+  Eigen::VectorXd N(rail.steps - start);
+  long solves = 0;
+  roll_over_roughness(
+      tr, p.grid, in, [&](long j, const RoughnessStep& r, const TangentialSolution& s) {
+        rail.add(j, s);
+        solves += r.normal_solves;
+        if (j < start) return;
+        M.row(j - start) << 1.0, std::cos(k * kSpeed * j * dt), std::sin(k * kSpeed * j * dt);
+        N(j - start) = r.normal_force;
+      });
+  const Eigen::Vector3d c = M.colPivHouseholderQr().solve(N);
+  RoughnessRun out;
+  out.wear = rail.harmonic(k * kSpeed, start, rail.steps);
+  out.load = {c(1), -c(2)};
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.solves_per_step = double(solves) / rail.steps;
+  return out;
+}
+
+}  // namespace
+
+TEST(WearTransfer,
+     UnsteadySolverOverARailRoughnessWithAWheelMassEqualsTheLinearChainWithin2PercentAnd2Degrees) {
+  const ContactPatch& p = paper_patch("coarse");
+  const double a = 7.18e-3;
+  const double kN =
+      normal_load_sensitivity(p.grid, HalfSpaceOperator(p.influence, Problem::Normal), p.normal)
+          .stiffness();
+  WheelMass wheel;
+  wheel.mass = 600.0;
+  wheel.damping = std::sqrt(kN * wheel.mass);  // damping ratio 1/2 of the contact resonance
+  wheel.static_load = p.normal.force;
+  const double amplitude = 1e-4 * p.normal.force / kN;
+  std::printf("k_N = %.4e N/m, contact resonance %.1f Hz, roughness %.3e m\n", kN,
+              std::sqrt(kN / wheel.mass) / (2 * kPi), amplitude);
+  double worst_amplitude = 0.0, worst_phase = 0.0;
+  for (const Creepage mean : {Creepage{0.001, 0.001, -0.053}, Creepage{0.01, 0.0, 0.0}}) {
+    const TangentialSolution s = steady_solution(p, mean);
+    const nss::LinearContactModel model(p, s, {kMu, kSpeed, 0.0, CreepageSampling::contact});
+    nss::WearLaw law;
+    law.coefficient = 1.0;
+    const nss::WearTransfer T(model, s, kSpeed, kMu, law);
+    const nss::RoughnessWearTransfer Tr(p, model, s, kSpeed, kMu, law);
+    const double scale = p.grid.element_area() / (T.band_width() * kSpeed);
+    for (const double lambda : {6 * a, 3 * a, 1.5 * a}) {
+      const pipeline::ContactWear lin = linear_roughness_wear(p, model, T, wheel, lambda);
+      const std::complex<double> tr = Tr.depth({2 * kPi / lambda})[0];
+      const RoughnessRun nl = roughness_wear_harmonic(p, mean, wheel, amplitude, lambda);
+      std::printf("  without W8: %.5e at %7.2f deg, ratio %.4f\n",
+                  std::abs(amplitude * lin.depth / scale), std::arg(lin.depth) * 180 / kPi,
+                  std::abs(nl.wear / (amplitude * lin.depth / scale)));
+      const std::complex<double> wl = amplitude * (lin.depth + tr) / scale,
+                                 Nl = amplitude * lin.input(3);
+      const double da = std::abs(nl.wear / wl) - 1.0, dp = std::arg(nl.wear / wl) * 180 / kPi;
+      std::printf(
+          "xi_x = %g, lambda = %.2f mm (%.0f Hz): N~ linear %.4e at %7.2f deg, unsteady %.4e at "
+          "%7.2f deg; wear linear %.5e at %7.2f deg, unsteady %.5e at %7.2f deg: %+.2e, %+.3f deg "
+          "(|xi~| %.1e; %.1f s, %.2f normal solves per step)\n",
+          mean.xi_x, 1e3 * lambda, kSpeed / lambda, std::abs(Nl), std::arg(Nl) * 180 / kPi,
+          std::abs(nl.load), std::arg(nl.load) * 180 / kPi, std::abs(wl), std::arg(wl) * 180 / kPi,
+          std::abs(nl.wear), std::arg(nl.wear) * 180 / kPi, da, dp, lin.input.head<3>().norm(),
+          nl.seconds, nl.solves_per_step);
+      worst_amplitude = std::max(worst_amplitude, std::abs(da));
+      worst_phase = std::max(worst_phase, std::abs(dp));
     }
   }
   EXPECT_LT(worst_amplitude, 0.02);
