@@ -357,12 +357,12 @@ RoughnessRun roughness_wear_harmonic(const ContactPatch& p, const Creepage& mean
 TEST(WearTransfer,
      UnsteadySolverOverARailRoughnessWithAWheelMassEqualsTheLinearChainWithin2PercentAnd2Degrees) {
   // The paper's Hertzian patch under a wheel of 600 kg (contact resonance ~250 Hz) with a dashpot
-  // of damping ratio 1/2, a rail roughness of amplitude 1e-4 N/k_N (the load varies by < 1e-4 N),
-  // wavelengths 6a, 3a, 1.5a (322, 645, 1290 Hz; H = 0.83, 0.41, -0.21: away from the zeros of
-  // sin(ka)/ka at 2a and a), in partial slip (the paper's combined creepage) and full slip
-  // (xi_x = 0.01). Compared: the contact force (the loop, W6 and the structure) and the frictional
-  // work along the rail against the chain with the roughness's own pressure (W8); the chain
-  // without it is printed to show what W8 carries.
+  // of damping ratio 1/2, a rail roughness of amplitude 1e-4 N/k_N (the load varies by 1.2e-4 N at
+  // most), wavelengths 6a, 3a, 1.5a (322, 645, 1290 Hz; H = 0.83, 0.41, -0.21: away from the zeros
+  // of sin(ka)/ka at 2a and a), in partial slip (the paper's combined creepage) and full slip (xi_x
+  // = 0.01). Compared: the contact force (the loop, W6 and the structure) and the frictional work
+  // along the rail against the chain with the roughness's own pressure (W8); the chain without it
+  // is printed to show what W8 carries.
   const ContactPatch& p = paper_patch("coarse");
   const double a = 7.18e-3;
   const double kN =
