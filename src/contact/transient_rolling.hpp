@@ -84,8 +84,9 @@ class TransientRolling {
   void set_normal_problem(const GridField& h, double normal_force,
                           const NormalSolverSettings& settings = {});
   /// Advance one step with the creepage and the total normal load N (N > 0) of the new time. The
-  /// same as step(c) if N is the load of the last step. InputError (key "grid") if the contact
-  /// area at N reaches the border of the grid.
+  /// same as step(c) if N is the load of the last step (after a step over a roughness too: the
+  /// pressure then stays the roughness's). InputError (key "grid") if the contact area at N
+  /// reaches the border of the grid.
   const TangentialSolution& step(const Creepage& c, double normal_force);
   /// Advance one step with the creepage and the normal load N of the new time on the undeformed
   /// distance h + r (R1): `roughness` r_k under each element at t_k (m, positive a depression, the
