@@ -132,25 +132,28 @@ NormalSolution solve_normal(const Grid& grid, const HalfSpaceOperator& op, const
   throw NumericalError(msg.str());
 }
 
-NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceOperator& op,
-                                              const NormalSolution& normal, double tolerance) {
-  // Conjugate gradients for A_CC x = 1 (A_zz is symmetric positive definite, so is its principal
+FrozenAreaSolution frozen_area_solve(const Grid& grid, const HalfSpaceOperator& op,
+                                     const NormalSolution& normal, const GridField& rhs,
+                                     double tolerance) {
+  // Conjugate gradients for A_CC x = b (A_zz is symmetric positive definite, so is its principal
   // submatrix on C); the products go through the full-grid operator with zeros outside C.
   const int n = grid.size();
   std::vector<char> in(n);
   for (int k = 0; k < n; ++k) in[k] = normal.pn[k] > 0.0;
-  std::vector<double> x(n, 0.0), r(n, 0.0), d(n, 0.0), q(n);
-  for (int k = 0; k < n; ++k) r[k] = d[k] = in[k] ? 1.0 : 0.0;
+  if (std::none_of(in.begin(), in.end(), [](char c) { return c != 0; }))
+    throw NumericalError("frozen area solve: no element in contact");
+  FrozenAreaSolution s;
+  s.x.assign(n, 0.0);
+  std::vector<double> r(n, 0.0), d(n, 0.0), q(n);
+  for (int k = 0; k < n; ++k) r[k] = d[k] = in[k] ? rhs[k] : 0.0;
   double rr = 0.0;
   for (int k = 0; k < n; ++k) rr += r[k] * r[k];
-  if (rr == 0.0) throw NumericalError("normal load sensitivity: no element in contact");
   const double rr0 = rr;
-  NormalLoadSensitivity s;
   const int max_iterations = 10 * n + 100;
   while (rr > tolerance * tolerance * rr0) {
     if (++s.iterations > max_iterations) {
       std::ostringstream m;
-      m << "normal load sensitivity: CG did not converge in " << max_iterations
+      m << "frozen area solve: CG did not converge in " << max_iterations
         << " iterations (relative residual " << std::sqrt(rr / rr0) << ")";
       throw NumericalError(m.str());
     }
@@ -162,7 +165,7 @@ NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceO
     double rr_new = 0.0;
     for (int k = 0; k < n; ++k) {
       if (!in[k]) continue;
-      x[k] += alpha * d[k];
+      s.x[k] += alpha * d[k];
       r[k] -= alpha * q[k];
       rr_new += r[k] * r[k];
     }
@@ -170,12 +173,22 @@ NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceO
     for (int k = 0; k < n; ++k) d[k] = in[k] ? r[k] + beta * d[k] : 0.0;
     rr = rr_new;
   }
+  return s;
+}
+
+NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceOperator& op,
+                                              const NormalSolution& normal, double tolerance) {
+  // (N1): A_CC x = 1
+  const FrozenAreaSolution x =
+      frozen_area_solve(grid, op, normal, GridField(grid.size(), 1.0), tolerance);
+  NormalLoadSensitivity s;
+  s.iterations = x.iterations;
   double sum = 0.0;
-  for (double v : x) sum += v;
+  for (double v : x.x) sum += v;
   const double stiffness = grid.element_area() * sum;  // dN/d(delta)
   s.approach_per_load = 1.0 / stiffness;
-  s.dpn_dN.resize(n);
-  for (int k = 0; k < n; ++k) s.dpn_dN[k] = x[k] / stiffness;
+  s.dpn_dN.resize(grid.size());
+  for (int k = 0; k < grid.size(); ++k) s.dpn_dN[k] = x.x[k] / stiffness;
   return s;
 }
 

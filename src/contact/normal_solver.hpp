@@ -67,6 +67,18 @@ struct NormalLoadSensitivity {
   int iterations = 0;
 };
 
+/// x with A_CC x = b on the contact area C of `normal` (pn > 0), 0 outside: the pressure change on
+/// the frozen area for the gap change b on it (e.g. (N1) with b = 1, or a roughness, R1 of
+/// transient_rolling.hpp). Conjugate gradients, products by `op` (the Normal operator of the
+/// grid). NumericalError when CG does not reach `tolerance` (relative residual).
+struct FrozenAreaSolution {
+  GridField x;
+  int iterations = 0;
+};
+FrozenAreaSolution frozen_area_solve(const Grid& grid, const HalfSpaceOperator& op,
+                                     const NormalSolution& normal, const GridField& b,
+                                     double tolerance = 1e-13);
+
 /// (N1) for a solved normal problem on `grid`; `op` the Normal operator of the grid.
 /// Throws NumericalError when CG does not converge to `tolerance` (relative residual).
 NormalLoadSensitivity normal_load_sensitivity(const Grid& grid, const HalfSpaceOperator& op,

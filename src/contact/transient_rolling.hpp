@@ -27,8 +27,18 @@
 //     slip is a velocity of material particles), whereas the normal contact condition is one on
 //     the gap, a position, e = h + A_zz pn - delta >= 0, which has no time derivative. Elastic
 //     inertia is neglected in both problems, as in Eq. 2: a Rayleigh wave (~2900 m/s in steel)
-//     crosses the 14 mm patch in ~5 us, against periods >= 200 us up to 5 kHz. h is fixed in the
-//     moving frame (no roughness in this solver), so the load history is force-controlled.
+//     crosses the 14 mm patch in ~5 us, against periods >= 200 us up to 5 kHz. Without a
+//     roughness h is fixed in the moving frame and the load history is force-controlled.
+//   - Rail roughness (step(c, N, r), normal_approach(N, r)): a rail roughness r(X), X = x + V t
+//     the rail coordinate under the element at x, passes through the patch. The caller gives the
+//     roughness under each element at t_k, r_k(x, y) = r(x + V t_k) (roughness_rolling.hpp), and
+//     the undeformed distance of the step is
+//       h_k(x, y) = h(x, y) + r_k(x, y)                                                    (R1)
+//     with r positive for a depression of the rail (docs/corrugation.md Sec. 4, noise/loop.hpp
+//     L1: a dip opens the gap). The normal problem is solved at every such step (the same solver
+//     as the load history, started from the last pressure), with the load prescribed; the approach
+//     delta_k it returns lets a structure close the loop (roughness_rolling.hpp: the load whose
+//     approach the wheel's displacement requires).
 //   - Elements entering or leaving contact: an element entering at step k had p_{k-1} = 0 (it was
 //     exterior), so it starts with zero traction, and A0 p_{k-1} is the displacement of the old
 //     tractions wherever they were; an element leaving has bound 0 and drops its traction
@@ -74,9 +84,22 @@ class TransientRolling {
   void set_normal_problem(const GridField& h, double normal_force,
                           const NormalSolverSettings& settings = {});
   /// Advance one step with the creepage and the total normal load N (N > 0) of the new time. The
-  /// same as step(c) if N is the load of the last step. InputError (key "grid") if the contact
-  /// area at N reaches the border of the grid.
+  /// same as step(c) if N is the load of the last step (after a step over a roughness too: the
+  /// pressure then stays the roughness's). InputError (key "grid") if the contact area at N
+  /// reaches the border of the grid.
   const TangentialSolution& step(const Creepage& c, double normal_force);
+  /// Advance one step with the creepage and the normal load N of the new time on the undeformed
+  /// distance h + r (R1): `roughness` r_k under each element at t_k (m, positive a depression, the
+  /// grid's size). The normal problem is solved whatever N (the roughness moves).
+  const TangentialSolution& step(const Creepage& c, double normal_force,
+                                 const GridField& roughness);
+  /// Solve the normal problem of the coming step for the load N on h + r (R1) without stepping
+  /// the tangential problem; returns its approach delta (m). The next step(c) takes this pressure
+  /// as its traction bound. Called repeatedly, the last call counts (roughness_rolling.hpp iterates
+  /// on N until delta matches the structure's displacement).
+  double normal_approach(double normal_force, const GridField& roughness);
+  /// The approach delta (m) of the last normal solve (0 before any).
+  double approach() const { return approach_; }
   /// The current pressure (Pa) and normal load (N).
   const GridField& pressure() const { return pn_; }
   double normal_force() const { return normal_force_; }
@@ -86,7 +109,7 @@ class TransientRolling {
   double normal_seconds() const { return normal_seconds_; }  ///< wall time in the normal solves
 
  private:
-  void solve_normal_load(double normal_force);
+  void solve_normal_load(double normal_force, const GridField* roughness = nullptr);
 
   const InfluenceTable& A_;
   GridField pn_;
@@ -104,6 +127,7 @@ class TransientRolling {
   double normal_force_previous_ = 0.0;
   NormalSolverSettings normal_settings_;
   double normal_force_ = 0.0;
+  double approach_ = 0.0;
   GridField ever_in_contact_;  // 1 at the elements in contact at any step so far, else 0
   std::vector<int> elements_;  // those elements in sweep order: the Newton unknowns
   int normal_solves_ = 0, normal_iterations_ = 0;

@@ -36,6 +36,9 @@ void write_contact(Hdf5Writer& w, const std::string& g, const pipeline::ContactC
   w.write(g + "/roughness_filter", c.filter, {nf},
           "-: the roughness the frozen patch sees per unit rail roughness uniform across the rail "
           "(W6)");
+  w.write(g + "/roughness_wear_transfer", c.roughness_transfer, {nf},
+          "m per passage per m of roughness: the wear of the pressure the roughness moves within "
+          "the frozen patch at a given load (nss/wear_transfer.hpp W8)");
   w.attribute(g, "rail", rail_name(c.side));
   w.write(g + "/impulse_steps", std::vector<int>{c.steps}, {},
           "time steps of the element fields' impulse response");

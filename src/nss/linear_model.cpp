@@ -135,37 +135,22 @@ void LinearContactModel::set_normal_load_input(const contact::ContactPatch& patc
     const contact::NormalLoadSensitivity sens =
         contact::normal_load_sensitivity(g, normal_op, patch.normal);
     const int N = g.size();
-    std::vector<double> b(2 * N, 0.0), u0(2 * N), u1(2 * N);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * N, 1);
     for (int a = 0; a < m; ++a) {
       if (!slip_[a]) continue;
       const int k = el_[a];
       const double s = std::hypot(mean.sx[k], mean.sy[k]);
-      b[k] = -mu_bar[a] * sens.dpn_dN[k] * mean.sx[k] / s;
-      b[N + k] = -mu_bar[a] * sens.dpn_dN[k] * mean.sy[k] / s;
+      B(k, 0) = -mu_bar[a] * sens.dpn_dN[k] * mean.sx[k] / s;
+      B(N + k, 0) = -mu_bar[a] * sens.dpn_dN[k] * mean.sy[k] / s;
       const double x = g.x(k % g.nx), y = g.y(k / g.nx);
-      dN_ += area * Eigen::Vector3d(b[k], b[N + k], x * b[N + k] - y * b[k]);
+      dN_ += area * Eigen::Vector3d(B(k, 0), B(N + k, 0), x * B(N + k, 0) - y * B(k, 0));
     }
-    bN_.setZero(n);
-    for (int a = 0; a < m; ++a) bN_.segment<2>(2 * a) << b[el_[a]], b[N + el_[a]];
-    contact::HalfSpaceOperator(A, contact::Problem::Tangential, 0).apply(b.data(), u0.data());
-    A0_op_->apply(b.data(), u1.data());
-    wN0_.resize(n);
-    wN1_.resize(n);
-    rN0_.setZero(r_);
-    rN1_.setZero(r_);
-    for (int a = 0; a < m; ++a) {
-      const int k = el_[a];
-      const Eigen::Vector2d v0(u0[k] / dt_, u0[N + k] / dt_), v1(u1[k] / dt_, u1[N + k] / dt_);
-      wN0_.segment<2>(2 * a) = v0;
-      wN1_.segment<2>(2 * a) = v1;
-      if (slip_[a]) {
-        rN0_(offset_[a]) = -t_[a].dot(v0);
-        rN1_(offset_[a]) = t_[a].dot(v1);
-      } else {
-        rN0_.segment<2>(offset_[a]) = -v0;
-        rN1_.segment<2>(offset_[a]) = v1;
-      }
-    }
+    const TractionInput in = traction_input(B);
+    bN_ = in.b.col(0);
+    wN0_ = in.w0.col(0);
+    wN1_ = in.w1.col(0);
+    rN0_ = in.r0.col(0);
+    rN1_ = in.r1.col(0);
     block_ = 4;
   } else {
     bN_.setZero(n);
@@ -174,6 +159,37 @@ void LinearContactModel::set_normal_load_input(const contact::ContactPatch& patc
     rN0_.setZero(r_);
     rN1_.setZero(r_);
   }
+}
+
+LinearContactModel::TractionInput LinearContactModel::traction_input(
+    const Eigen::MatrixXd& B) const {
+  // A b/dt and A0 b/dt on the grid (two FFT products per column) and their reduced forms (G2)
+  const int m = static_cast<int>(el_.size()), n = 2 * m, N = table_.grid().size();
+  const int c = static_cast<int>(B.cols());
+  const contact::HalfSpaceOperator A_op(table_, contact::Problem::Tangential, 0);
+  TractionInput in{Eigen::MatrixXd(n, c), Eigen::MatrixXd(n, c), Eigen::MatrixXd(n, c),
+                   Eigen::MatrixXd::Zero(r_, c), Eigen::MatrixXd::Zero(r_, c)};
+  std::vector<double> b(2 * N), u0(2 * N), u1(2 * N);
+  for (int j = 0; j < c; ++j) {
+    Eigen::Map<Eigen::VectorXd>(b.data(), 2 * N) = B.col(j);
+    A_op.apply(b.data(), u0.data());
+    A0_op_->apply(b.data(), u1.data());
+    for (int a = 0; a < m; ++a) {
+      const int k = el_[a];
+      const Eigen::Vector2d v0(u0[k] / dt_, u0[N + k] / dt_), v1(u1[k] / dt_, u1[N + k] / dt_);
+      in.b.block<2, 1>(2 * a, j) << b[k], b[N + k];
+      in.w0.block<2, 1>(2 * a, j) = v0;
+      in.w1.block<2, 1>(2 * a, j) = v1;
+      if (slip_[a]) {
+        in.r0(offset_[a], j) = -t_[a].dot(v0);
+        in.r1(offset_[a], j) = t_[a].dot(v1);
+      } else {
+        in.r0.block<2, 1>(offset_[a], j) = -v0;
+        in.r1.block<2, 1>(offset_[a], j) = v1;
+      }
+    }
+  }
+  return in;
 }
 
 LinearContactModel::~LinearContactModel() = default;

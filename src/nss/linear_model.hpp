@@ -305,6 +305,17 @@ class LinearContactModel {
       std::function<void(int k, const Eigen::MatrixXd& P, const Eigen::MatrixXd& S)>;
   int element_impulse_response(const FieldVisitor& visit, double tolerance = 1e-12,
                                int max_contact_lengths = 60) const;
+  /// The same for pressure changes on the frozen contact area at step 0: column c of the fields
+  /// answers the pressure change patterns[c] (Pa per unit input, on the grid; zero outside the
+  /// contact area), which enters as the normal load's dpn/dN N~ does (G1-G2: bN_e = -mu dpn_e
+  /// s_bar_e/|s_bar_e| on the slip elements, the pressure alone changes no adhesion element):
+  ///   K0 pi_k = K1 pi_{k-1} + r0 d_k0 + r1 d_k1,  P~_k = Pi pi_k + b d_k0,
+  ///   S~_k = (A P~_k - A0 P~_{k-1}) / dt.
+  /// E.g. the pressure a rail roughness makes within the patch at a given load (wear_transfer.hpp
+  /// W7). Constant friction only.
+  int element_pressure_response(const std::vector<contact::GridField>& patterns,
+                                const FieldVisitor& visit, double tolerance = 1e-12,
+                                int max_contact_lengths = 60) const;
   /// The contact elements (grid indices) in the model's order: element a of the field rows.
   const std::vector<int>& elements() const { return el_; }
   /// Whether element a (model order) slips in the steady state the model linearises.
@@ -361,6 +372,17 @@ class LinearContactModel {
   /// The normal-load input (G1-G2): bN, A bN/dt, A0 bN/dt and their reduced forms (needs A0_op_).
   void set_normal_load_input(const contact::ContactPatch& patch, const contact::TangentialSolution& mean,
                              const std::vector<double>& mu_bar);
+  /// The inputs of traction changes b on the slip elements (columns of B, grid layout 2N: x then
+  /// y): b in model order (n), A b/dt and A0 b/dt (n), and the reduced r0 = -Pi' A b/dt,
+  /// r1 = Pi' A0 b/dt (G2).
+  struct TractionInput {
+    Eigen::MatrixXd b, w0, w1, r0, r1;
+  };
+  TractionInput traction_input(const Eigen::MatrixXd& B) const;
+  /// The recursion of element_impulse_response with the step-0 inputs r0 and the step-1 inputs
+  /// r1 (r x c), the traction b added at step 0 and the slip w added at step 0 (n x c).
+  int impulse_response(const TractionInput& in, const Eigen::MatrixXd& w, const FieldVisitor& visit,
+                       double tolerance, int max_contact_lengths) const;
   /// B_e of a slip element: -t t' (constant friction) - kappa s^ s^' (falling friction).
   Eigen::Matrix2d slip_traction_matrix(int a) const;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "contact/halfspace_operator.hpp"
 #include "contact/normal_solver.hpp"
@@ -14,40 +15,81 @@ double WearLaw::depth_per_energy(double mu) const {
   return kind == Kind::frictional_work ? coefficient : coefficient / (mu * hardness);
 }
 
-WearTransfer::WearTransfer(const LinearContactModel& model,
-                           const contact::TangentialSolution& steady, double speed, double mu,
-                           const WearLaw& law)
-    : dt_(model.time_step()),
-      speed_(speed),
-      K_(law.depth_per_energy(mu)),
-      sampling_(model.sampling()) {
+namespace {
+
+// (W1) per element and (W4)'s gathering along the rail for the element fields of `run` (c input
+// columns): Y_m = sum_{j + i_a = m} D~_{j,a}, D_j = sum_a D~_{j,a} (W/m^2 per unit input), and the
+// geometry of (W3)-(W4).
+struct Gathered {
+  std::vector<Eigen::RowVectorXd> Y, D;
+  double x0 = 0.0, band_width = 0.0;
+};
+
+Gathered gather(const LinearContactModel& model, const contact::TangentialSolution& steady,
+                int columns,
+                const std::function<void(const LinearContactModel::FieldVisitor&)>& run) {
   const contact::Grid& g = model.grid();
   const std::vector<int>& el = model.elements();
-  area_ = g.element_area();
   int ix_min = g.nx, iy_min = g.ny, iy_max = -1;
   for (int k : el)
     ix_min = std::min(ix_min, k % g.nx), iy_min = std::min(iy_min, k / g.nx),
     iy_max = std::max(iy_max, k / g.nx);
-  x0_ = g.x(ix_min);
-  band_width_ = (iy_max - iy_min + 1) * g.dy;
+  Gathered out;
+  out.x0 = g.x(ix_min);
+  out.band_width = (iy_max - iy_min + 1) * g.dy;
   // The slip elements (the only ones that wear to first order, header), their column offset i_a.
   std::vector<int> slip, column;
   for (int a = 0; a < static_cast<int>(el.size()); ++a)
     if (model.slip_element(a)) slip.push_back(a), column.push_back(el[a] % g.nx - ix_min);
   const int width = g.nx - ix_min;
-  model.element_impulse_response([&](int j, const Eigen::MatrixXd& P, const Eigen::MatrixXd& S) {
-    if (static_cast<int>(Y_.size()) < j + width) Y_.resize(j + width, Eigen::RowVector4d::Zero());
-    Eigen::RowVector4d total = Eigen::RowVector4d::Zero();
+  const Eigen::RowVectorXd zero = Eigen::RowVectorXd::Zero(columns);
+  run([&](int j, const Eigen::MatrixXd& P, const Eigen::MatrixXd& S) {
+    if (static_cast<int>(out.Y.size()) < j + width) out.Y.resize(j + width, zero);
+    Eigen::RowVectorXd total = zero;
     for (std::size_t i = 0; i < slip.size(); ++i) {
       const int a = slip[i], k = el[a];
       // (W1): D~ = -(s_bar . p~ + p_bar . s~)
-      const Eigen::RowVector4d d = -(steady.sx[k] * P.row(2 * a) + steady.sy[k] * P.row(2 * a + 1) +
+      const Eigen::RowVectorXd d = -(steady.sx[k] * P.row(2 * a) + steady.sy[k] * P.row(2 * a + 1) +
                                      steady.px[k] * S.row(2 * a) + steady.py[k] * S.row(2 * a + 1));
-      Y_[j + column[i]] += d;
+      out.Y[j + column[i]] += d;
       total += d;
     }
-    D_.push_back(total);
+    out.D.push_back(total);
   });
+  return out;
+}
+
+// sum_m z^m y_m at z = e^{-i w dt} (Horner)
+Eigen::RowVectorXcd power_series(const std::vector<Eigen::RowVectorXd>& y, double w, double dt) {
+  const std::complex<double> z = std::polar(1.0, -w * dt);
+  Eigen::RowVectorXcd s = Eigen::RowVectorXcd::Zero(y.empty() ? 0 : y.front().size());
+  for (auto it = y.rbegin(); it != y.rend(); ++it) s = s * z + it->cast<std::complex<double>>();
+  return s;
+}
+
+std::vector<Eigen::RowVector4d> fixed4(const std::vector<Eigen::RowVectorXd>& y) {
+  std::vector<Eigen::RowVector4d> out(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) out[i] = y[i];
+  return out;
+}
+
+}  // namespace
+
+WearTransfer::WearTransfer(const LinearContactModel& model,
+                           const contact::TangentialSolution& steady, double speed, double mu,
+                           const WearLaw& law)
+    : dt_(model.time_step()),
+      speed_(speed),
+      area_(model.grid().element_area()),
+      K_(law.depth_per_energy(mu)),
+      sampling_(model.sampling()) {
+  const Gathered gathered =
+      gather(model, steady, 4,
+             [&](const LinearContactModel::FieldVisitor& v) { model.element_impulse_response(v); });
+  Y_ = fixed4(gathered.Y);
+  D_ = fixed4(gathered.D);
+  x0_ = gathered.x0;
+  band_width_ = gathered.band_width;
 }
 
 std::vector<WearRow> WearTransfer::series_sum(const std::vector<Eigen::RowVector4d>& y,
@@ -67,6 +109,56 @@ std::vector<WearRow> WearTransfer::series_sum(const std::vector<Eigen::RowVector
     s *= scale;
     if (rail_fixed) s *= std::polar(1.0, -w / speed_ * x0_);  // e^{-ik x_0} of (W4)
     out.push_back(s);
+  }
+  return out;
+}
+
+RoughnessWearTransfer::RoughnessWearTransfer(const contact::ContactPatch& patch,
+                                             const LinearContactModel& model,
+                                             const contact::TangentialSolution& steady,
+                                             double speed, double mu, const WearLaw& law)
+    : dt_(model.time_step()), speed_(speed) {
+  // v_i = A_CC^{-1} 1_(column i) on the frozen area (W7), one pattern per column of the patch
+  const contact::Grid& g = patch.grid;
+  const contact::HalfSpaceOperator op(patch.influence, contact::Problem::Normal);
+  std::vector<contact::GridField> v;
+  for (int ix = 0; ix < g.nx; ++ix) {
+    contact::GridField column(g.size(), 0.0);
+    bool any = false;
+    for (int iy = 0; iy < g.ny; ++iy)
+      if (patch.normal.pn[g.index(ix, iy)] > 0.0) column[g.index(ix, iy)] = 1.0, any = true;
+    if (!any) continue;
+    v.push_back(contact::frozen_area_solve(g, op, patch.normal, column).x);
+    x_.push_back(g.x(ix));
+    double sum = 0.0;
+    for (double p : v.back()) sum += p;
+    weight_.push_back(g.element_area() * sum);
+  }
+  const Gathered gathered = gather(
+      model, steady, static_cast<int>(v.size()),
+      [&](const LinearContactModel::FieldVisitor& f) { model.element_pressure_response(v, f); });
+  Y_ = gathered.Y;
+  x0_ = gathered.x0;
+  scale_ = law.depth_per_energy(mu) * g.element_area() / (gathered.band_width * speed);
+}
+
+std::vector<std::complex<double>> RoughnessWearTransfer::depth(
+    const std::vector<double>& wavenumbers) const {
+  std::vector<std::complex<double>> out;
+  out.reserve(wavenumbers.size());
+  double stiffness = 0.0;  // k_N = dx dy 1' A_CC^{-1} 1 = sum_i dx dy 1' v_i (N1)
+  for (double s : weight_) stiffness += s;
+  for (double k : wavenumbers) {
+    // (W6) by columns: H = sum_i dx dy 1' v_i e^{ik x_i} / k_N
+    std::complex<double> H = 0.0;
+    for (std::size_t i = 0; i < x_.size(); ++i) H += weight_[i] * std::polar(1.0, k * x_[i]);
+    H /= stiffness;
+    // (W8): T_r = sum_i (H - e^{ik x_i}) T_i, T_i the (W4) series of the pattern v_i
+    const Eigen::RowVectorXcd Ti =
+        power_series(Y_, k * speed_, dt_) * (scale_ * std::polar(1.0, -k * x0_));
+    std::complex<double> t = 0.0;
+    for (std::size_t i = 0; i < x_.size(); ++i) t += (H - std::polar(1.0, k * x_[i])) * Ti(i);
+    out.push_back(t);
   }
   return out;
 }

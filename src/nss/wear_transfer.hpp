@@ -94,4 +94,38 @@ class WearTransfer {
   contact::CreepageSampling sampling_ = contact::CreepageSampling::average;
 };
 
+/// The wear of the pressure a rail roughness makes within the frozen patch at a given load
+/// (docs/corrugation.md Sec. 4). On the frozen contact area C the gap h + r + A pn - delta stays
+/// zero, so a roughness r~ (under each element) and an approach change delta~ change the pressure
+/// by A_CC pn~ = delta~ 1 - r~. For r(X) = r^ e^{ikX} uniform across the rail, the column i of the
+/// patch (at x_i) sees r^ e^{ik x_i} when the contact point sees r^, and with
+/// v_i = A_CC^{-1} 1_(column i), k_N = dx dy 1' A_CC^{-1} 1 (N1) and H of (W6),
+/// pn~ = sum_i v_i (delta~ - e^{ik x_i} r^), N~ = k_N (delta~ - H r^), sum_i v_i = k_N dpn/dN:
+///   pn~ = (dpn/dN) N~ + r^ q(k),   q(k) = sum_i (H(k) - e^{ik x_i}) v_i                     (W7)
+/// (this project's labels W7-W8, docs/corrugation.md Sec. 4). The first term is the normal-load
+/// input of the linear model (G1), which T's column N~ carries; q is the pressure the roughness
+/// moves within the patch at a given load (zero total), which it does not. Its wear per passage per
+/// unit roughness, with T_i the (W4) series of the element fields for the pressure v_i
+/// (LinearContactModel::element_pressure_response), is
+///   T_r(k) = sum_i (H(k) - e^{ik x_i}) T_i(w),   w = k V,                                 (W8)
+/// so that the depth per passage of a contact with the inputs u at the roughness r^ is
+/// e^{ikX} (T u + T_r r^). One pattern per column of the patch (the fields run once for all k).
+class RoughnessWearTransfer {
+ public:
+  /// `model` linearises `steady` on `patch` (as for WearTransfer).
+  RoughnessWearTransfer(const contact::ContactPatch& patch, const LinearContactModel& model,
+                        const contact::TangentialSolution& steady, double speed, double mu,
+                        const WearLaw& law);
+  /// T_r of (W8) at the wavenumbers k (rad/m): depth per passage (m) per unit rail roughness (m).
+  std::vector<std::complex<double>> depth(const std::vector<double>& wavenumbers) const;
+  /// The columns i of the patch (its patterns v_i).
+  int columns() const { return static_cast<int>(x_.size()); }
+
+ private:
+  std::vector<Eigen::RowVectorXd> Y_;  ///< (W4) per column pattern, per unit K dx dy / (w_b V)
+  std::vector<double> x_;              ///< x_i of the columns (m)
+  std::vector<double> weight_;         ///< dx dy 1' v_i (N/m): k_N is their sum
+  double dt_ = 0.0, speed_ = 0.0, x0_ = 0.0, scale_ = 0.0;
+};
+
 }  // namespace rollnoise::nss

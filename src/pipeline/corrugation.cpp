@@ -63,6 +63,9 @@ void wear_transfers(CorrugationResult& r, const CorrugationCase& cc, int threads
     std::vector<double> k;
     for (double l : r.wavelength) k.push_back(2.0 * kPi / l);
     out.filter = nss::rail_roughness_filter(m.patch(), k);
+    out.roughness_transfer = nss::RoughnessWearTransfer(m.patch(), *m.model(), m.steady(),
+                                                        m.contact().speed, m.contact().mu, cc.law)
+                                 .depth(k);
     out.steps = T.steps();
     out.seconds = seconds_since(t0);
   });
@@ -87,14 +90,12 @@ void rail_inputs(CorrugationResult& r, int side, std::size_t k) {
     ContactCorrugation& c = r.contacts[a];
     if (c.side != side) continue;
     const noise::ContactCoefficients& fg = r.noise.wheels[a].coefficients;
-    const std::complex<double> Fz = F(4 * a);
-    Eigen::Vector3cd Ft = F.segment<3>(4 * a + 1);
-    if (r.noise.coupled && !fg.load.empty()) Ft -= fg.load[k] * Fz;
-    const Eigen::Vector3cd xi = -fg.creep[k].partialPivLu().solve(Ft);  // (C3): F~t = -f xi~ + g Fz
-    Eigen::Vector4cd u;
-    u << xi, Fz;
-    c.input[k] = u;
-    c.depth[k] = std::polar(1.0, wavenumber * c.distance) * (c.transfer[k] * u)(0);
+    const bool coupled = r.noise.coupled && !fg.load.empty();
+    const ContactWear w =
+        contact_wear(F.segment<4>(4 * a), fg.creep[k], coupled ? &fg.load[k] : nullptr,
+                     c.transfer[k], c.roughness_transfer[k], wavenumber, c.distance);
+    c.input[k] = w.input;
+    c.depth[k] = w.depth;
     c.growth[k] = c.depth[k].real();
   }
 }
@@ -157,6 +158,21 @@ std::vector<LoopPeak> loop_peaks(const CorrugationResult& r, const NoiseCase& nc
 }
 
 }  // namespace
+
+ContactWear contact_wear(const Eigen::Vector4cd& force, const Eigen::Matrix3cd& creep,
+                         const Eigen::Vector3cd* load, const nss::WearRow& transfer,
+                         std::complex<double> roughness_transfer, double wavenumber,
+                         double distance) {
+  const std::complex<double> Fz = force(0);
+  Eigen::Vector3cd Ft = force.tail<3>();
+  if (load) Ft -= *load * Fz;
+  const Eigen::Vector3cd xi = -creep.partialPivLu().solve(Ft);  // (C3): F~t = -f xi~ + g Fz
+  ContactWear out;
+  out.input << xi, Fz;
+  out.depth = std::polar(1.0, wavenumber * distance) * (transfer * out.input)(0) +
+              roughness_transfer;  // (W5)
+  return out;
+}
 
 std::vector<LoopPeak> local_peaks(const std::vector<double>& frequency,
                                   const std::vector<double>& values, const std::string& label) {

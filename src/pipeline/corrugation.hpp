@@ -41,6 +41,9 @@ struct ContactCorrugation {
       transfer;  ///< T_a: depth per passage (m) per unit xi_x, xi_y, phi (rad/m), N~ (N)
   /// H_a(k) of (W6): the roughness its frozen patch sees per unit rail roughness (-)
   std::vector<std::complex<double>> filter;
+  /// T_r,a(k) of (W8): depth per passage (m) per unit roughness from the roughness's own pressure
+  /// within its patch at a given load
+  std::vector<std::complex<double>> roughness_transfer;
   std::vector<Eigen::Vector4cd>
       input;  ///< u_a = (xi_x, xi_y, phi, Fz) per m of its rail's roughness
   std::vector<std::complex<double>> depth;  ///< G_a: depth per passage / roughness amplitude (-)
@@ -79,6 +82,23 @@ struct CorrugationResult {
   std::vector<GrowingBand> growing;
   double seconds_loop = 0.0, seconds_wear = 0.0, seconds_total = 0.0;
 };
+
+/// A contact's inputs and wear from its loop forces at one wavenumber (stage 4 of the header).
+struct ContactWear {
+  Eigen::Vector4cd input;          ///< u = (xi~x, xi~y, phi~, Fz) per m of roughness
+  std::complex<double> depth = 0;  ///< G = e^{ik d} T u (W5): depth per passage / roughness
+};
+
+/// u and G of a contact from its loop force F = (Fz, Fx, Fy, Mz) (noise/loop.hpp L1, per unit
+/// roughness), its creep coefficients f and, when not null, its normal-load coefficients g
+/// (xi~ = -f^{-1} (F~t - g Fz), noise/contact_receptance.hpp C3), its wear transfer T (W4) at the
+/// same frequency, the wear T_r of the roughness's own pressure in its patch (W8), the wavenumber
+/// k (rad/m) and its distance d behind the leading axle (m): the contact meets the roughness
+/// r^ e^{-ik d}, so G = e^{ik d} (T u + T_r e^{-ik d}) = e^{ik d} T u + T_r (W5).
+ContactWear contact_wear(const Eigen::Vector4cd& force, const Eigen::Matrix3cd& creep,
+                         const Eigen::Vector3cd* load, const nss::WearRow& transfer,
+                         std::complex<double> roughness_transfer, double wavenumber,
+                         double distance);
 
 /// The whole command. InputError naming noise.contact_model with the Kalker contact (no patch
 /// fields), corrugation.wavelength_min when the grid cannot resolve the shortest wavelength.
