@@ -6,6 +6,7 @@
 
 #include "contact/halfspace_operator.hpp"
 #include "contact/normal_solver.hpp"
+#include "core/assert.hpp"
 #include "core/constants.hpp"
 
 namespace rollnoise::nss {
@@ -113,12 +114,39 @@ std::vector<WearRow> WearTransfer::series_sum(const std::vector<Eigen::RowVector
   return out;
 }
 
+namespace {
+
+// U of the header: an orthonormal basis of the column weights' span for 0 <= k <= k_max, from the
+// vectors 1, cos(k_j x), sin(k_j x) at k_j = j k_max / J, J = 4 (k_max L / pi + 10) (several
+// samples per unit of the band's rank), to 1e-10 of the largest singular value.
+Eigen::MatrixXd weight_basis(const std::vector<double>& x, double k_max) {
+  const int c = static_cast<int>(x.size());
+  const double L = x.back() - x.front();
+  const int J = static_cast<int>(std::ceil(4.0 * (k_max * L / kPi + 10.0)));
+  Eigen::MatrixXd E(c, 2 * J + 1);
+  for (int i = 0; i < c; ++i) {
+    E(i, 0) = 1.0;
+    for (int j = 1; j <= J; ++j) {
+      const double kx = k_max * j / J * x[i];
+      E(i, 2 * j - 1) = std::cos(kx), E(i, 2 * j) = std::sin(kx);
+    }
+  }
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(E, Eigen::ComputeThinU);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  int rank = 0;
+  while (rank < sigma.size() && sigma(rank) > 1e-10 * sigma(0)) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
+}  // namespace
+
 RoughnessWearTransfer::RoughnessWearTransfer(const contact::ContactPatch& patch,
                                              const LinearContactModel& model,
                                              const contact::TangentialSolution& steady,
-                                             double speed, double mu, const WearLaw& law)
-    : dt_(model.time_step()), speed_(speed) {
-  // v_i = A_CC^{-1} 1_(column i) on the frozen area (W7), one pattern per column of the patch
+                                             double speed, double mu, const WearLaw& law,
+                                             double k_max)
+    : dt_(model.time_step()), speed_(speed), k_max_(k_max) {
+  // v_i = A_CC^{-1} 1_(column i) on the frozen area (W7), one per column of the patch
   const contact::Grid& g = patch.grid;
   const contact::HalfSpaceOperator op(patch.influence, contact::Problem::Normal);
   std::vector<contact::GridField> v;
@@ -134,9 +162,16 @@ RoughnessWearTransfer::RoughnessWearTransfer(const contact::ContactPatch& patch,
     for (double p : v.back()) sum += p;
     weight_.push_back(g.element_area() * sum);
   }
-  const Gathered gathered = gather(
-      model, steady, static_cast<int>(v.size()),
-      [&](const LinearContactModel::FieldVisitor& f) { model.element_pressure_response(v, f); });
+  // the patterns v~_l = sum_i U_il v_i (header)
+  basis_ = weight_basis(x_, k_max);
+  std::vector<contact::GridField> patterns(basis_.cols(), contact::GridField(g.size(), 0.0));
+  for (Eigen::Index l = 0; l < basis_.cols(); ++l)
+    for (std::size_t i = 0; i < v.size(); ++i)
+      for (int e = 0; e < g.size(); ++e) patterns[l][e] += basis_(i, l) * v[i][e];
+  const Gathered gathered = gather(model, steady, static_cast<int>(patterns.size()),
+                                   [&](const LinearContactModel::FieldVisitor& f) {
+                                     model.element_pressure_response(patterns, f);
+                                   });
   Y_ = gathered.Y;
   x0_ = gathered.x0;
   scale_ = law.depth_per_energy(mu) * g.element_area() / (gathered.band_width * speed);
@@ -148,17 +183,21 @@ std::vector<std::complex<double>> RoughnessWearTransfer::depth(
   out.reserve(wavenumbers.size());
   double stiffness = 0.0;  // k_N = dx dy 1' A_CC^{-1} 1 = sum_i dx dy 1' v_i (N1)
   for (double s : weight_) stiffness += s;
+  const Eigen::Index c = static_cast<Eigen::Index>(x_.size());
   for (double k : wavenumbers) {
+    ROLLNOISE_ASSERT(k >= 0.0 && k <= k_max_ * (1.0 + 1e-12),
+                     "RoughnessWearTransfer::depth: a wavenumber beyond the basis's k_max");
     // (W6) by columns: H = sum_i dx dy 1' v_i e^{ik x_i} / k_N
     std::complex<double> H = 0.0;
-    for (std::size_t i = 0; i < x_.size(); ++i) H += weight_[i] * std::polar(1.0, k * x_[i]);
+    for (Eigen::Index i = 0; i < c; ++i) H += weight_[i] * std::polar(1.0, k * x_[i]);
     H /= stiffness;
-    // (W8): T_r = sum_i (H - e^{ik x_i}) T_i, T_i the (W4) series of the pattern v_i
-    const Eigen::RowVectorXcd Ti =
+    // (W8) on the patterns: T_r = sum_l (U' w)_l T~_l, w_i = H - e^{ik x_i}
+    Eigen::VectorXcd w(c);
+    for (Eigen::Index i = 0; i < c; ++i) w(i) = H - std::polar(1.0, k * x_[i]);
+    const Eigen::VectorXcd a = basis_.transpose().cast<std::complex<double>>() * w;
+    const Eigen::RowVectorXcd Tl =
         power_series(Y_, k * speed_, dt_) * (scale_ * std::polar(1.0, -k * x0_));
-    std::complex<double> t = 0.0;
-    for (std::size_t i = 0; i < x_.size(); ++i) t += (H - std::polar(1.0, k * x_[i])) * Ti(i);
-    out.push_back(t);
+    out.push_back(Tl * a);
   }
   return out;
 }

@@ -109,23 +109,37 @@ class WearTransfer {
 /// (LinearContactModel::element_pressure_response), is
 ///   T_r(k) = sum_i (H(k) - e^{ik x_i}) T_i(w),   w = k V,                                 (W8)
 /// so that the depth per passage of a contact with the inputs u at the roughness r^ is
-/// e^{ikX} (T u + T_r r^). One pattern per column of the patch (the fields run once for all k).
+/// e^{ikX} (T u + T_r r^).
+///
+/// The fields run once for all k, not for every column's pattern: the weights w_i(k) = H(k) -
+/// e^{ik x_i} of the columns, for 0 <= k <= k_max, lie in the span of the vectors 1, cos(k x),
+/// sin(k x) over the columns x_i, whose numerical rank is about k_max L / pi + 10 for a patch of
+/// length L (the count of the prolate spheroidal functions of that band; Slepian 1978, Bell
+/// Syst. Tech. J. 57). Its orthonormal basis U (left singular vectors of those vectors sampled
+/// in k, to 1e-10 of the largest singular value) gives the patterns v~_l = sum_i U_il v_i, and
+/// T_r(k) = sum_l (U' w(k))_l T~_l(w), T~_l the (W4) series of v~_l: (k_max L / pi + 10)
+/// responses instead of one per column (64 columns at curve_300m's grid).
 class RoughnessWearTransfer {
  public:
-  /// `model` linearises `steady` on `patch` (as for WearTransfer).
+  /// `model` linearises `steady` on `patch` (as for WearTransfer); depth() then for 0 <= k <=
+  /// k_max (rad/m).
   RoughnessWearTransfer(const contact::ContactPatch& patch, const LinearContactModel& model,
                         const contact::TangentialSolution& steady, double speed, double mu,
-                        const WearLaw& law);
-  /// T_r of (W8) at the wavenumbers k (rad/m): depth per passage (m) per unit rail roughness (m).
+                        const WearLaw& law, double k_max);
+  /// T_r of (W8) at the wavenumbers k <= k_max (rad/m): depth per passage (m) per unit rail
+  /// roughness (m).
   std::vector<std::complex<double>> depth(const std::vector<double>& wavenumbers) const;
-  /// The columns i of the patch (its patterns v_i).
+  /// The columns i of the patch.
   int columns() const { return static_cast<int>(x_.size()); }
+  /// The patterns v~_l whose responses were computed (the rank of the columns' weights).
+  int patterns() const { return static_cast<int>(basis_.cols()); }
 
  private:
-  std::vector<Eigen::RowVectorXd> Y_;  ///< (W4) per column pattern, per unit K dx dy / (w_b V)
+  std::vector<Eigen::RowVectorXd> Y_;  ///< (W4) per pattern v~_l, per unit K dx dy / (w_b V)
   std::vector<double> x_;              ///< x_i of the columns (m)
   std::vector<double> weight_;         ///< dx dy 1' v_i (N/m): k_N is their sum
-  double dt_ = 0.0, speed_ = 0.0, x0_ = 0.0, scale_ = 0.0;
+  Eigen::MatrixXd basis_;              ///< U: columns x patterns, orthonormal
+  double dt_ = 0.0, speed_ = 0.0, x0_ = 0.0, scale_ = 0.0, k_max_ = 0.0;
 };
 
 }  // namespace rollnoise::nss

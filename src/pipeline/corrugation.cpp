@@ -63,9 +63,10 @@ void wear_transfers(CorrugationResult& r, const CorrugationCase& cc, int threads
     std::vector<double> k;
     for (double l : r.wavelength) k.push_back(2.0 * kPi / l);
     out.filter = nss::rail_roughness_filter(m.patch(), k);
-    out.roughness_transfer = nss::RoughnessWearTransfer(m.patch(), *m.model(), m.steady(),
-                                                        m.contact().speed, m.contact().mu, cc.law)
-                                 .depth(k);
+    out.roughness_transfer =
+        nss::RoughnessWearTransfer(m.patch(), *m.model(), m.steady(), m.contact().speed,
+                                   m.contact().mu, cc.law, *std::max_element(k.begin(), k.end()))
+            .depth(k);
     out.steps = T.steps();
     out.seconds = seconds_since(t0);
   });

@@ -382,7 +382,18 @@ TEST(WearTransfer,
     nss::WearLaw law;
     law.coefficient = 1.0;
     const nss::WearTransfer T(model, s, kSpeed, kMu, law);
-    const nss::RoughnessWearTransfer Tr(p, model, s, kSpeed, kMu, law);
+    const nss::RoughnessWearTransfer Tr(p, model, s, kSpeed, kMu, law, 2 * kPi / (1.5 * a));
+    // the columns' patterns reduced to the band's rank (RoughnessWearTransfer): a basis for twice
+    // the band, with more patterns, gives the same T_r within 1e-8 of it
+    const nss::RoughnessWearTransfer wider(p, model, s, kSpeed, kMu, law, 4 * kPi / (1.5 * a));
+    std::printf("W8: %d columns, %d patterns (%d for twice the band)\n", Tr.columns(),
+                Tr.patterns(), wider.patterns());
+    EXPECT_LT(Tr.patterns(), Tr.columns());
+    for (const double lambda : {6 * a, 3 * a, 1.5 * a}) {
+      const std::complex<double> t = Tr.depth({2 * kPi / lambda})[0],
+                                 w = wider.depth({2 * kPi / lambda})[0];
+      EXPECT_LE(std::abs(t - w), 1e-8 * std::abs(w)) << lambda;
+    }
     // (W4) without K dx dy / (w_b V): the same gathering as RailWear
     const double scale = p.grid.element_area() / (T.band_width() * kSpeed);
     for (const double lambda : {6 * a, 3 * a, 1.5 * a}) {
