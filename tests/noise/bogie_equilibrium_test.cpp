@@ -51,6 +51,18 @@ struct ModelContact {
   }
 };
 
+// The model contact whose coarse lateral force (AxleQuery::coarse) jumps by 0.06 Q every few
+// tenths of a nanometre of y (as a coarse grid's flange patch can, at a coarser scale); counts the
+// coarse and the full evaluations.
+rn::AxleForceFunction jumpy_when_coarse(const ModelContact& m, int& coarse, int& full) {
+  return [&m, &coarse, &full](const rn::AxleQuery& q) {
+    rn::AxleContactForces f = m(q);
+    (q.coarse ? coarse : full) += 1;
+    if (q.coarse) f.lateral += (std::sin(q.y * 1e10) > 0.0 ? 0.03 : -0.03) * kQ;
+    return f;
+  };
+}
+
 rn::BogieEquilibriumInput model_input(double radius, double cant_deficiency) {
   rn::BogieEquilibriumInput in;
   in.curve = bogie_curve_input(radius, cant_deficiency);
@@ -79,13 +91,8 @@ TEST(BogieEquilibrium, CoarseContactsThatCannotLeadTheWayGiveWayToTheFullOnes) {
   ModelContact m;
   m.radius = 1000.0;
   int coarse = 0, full = 0;
-  const auto jumpy = [&](const rn::AxleQuery& q) {
-    rn::AxleContactForces f = m(q);
-    (q.coarse ? coarse : full) += 1;
-    if (q.coarse) f.lateral += (std::sin(q.y * 1e10) > 0.0 ? 0.03 : -0.03) * kQ;
-    return f;
-  };
-  const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(model_input(1000.0, 0.08), jumpy);
+  const rn::BogieEquilibrium e =
+      rn::solve_bogie_equilibrium(model_input(1000.0, 0.08), jumpy_when_coarse(m, coarse, full));
   EXPECT_LE(e.max_residual(), 1e-6 * kQ);
   EXPECT_GT(coarse, 0);
   EXPECT_GT(full, 20);  // more than the last digits alone
@@ -121,14 +128,11 @@ TEST(BogieEquilibrium, AGuessAtTheCurveReachesTheContinuationsStateWithFewerEval
 TEST(BogieEquilibrium, AGuessThatCannotLeadGivesWayToTheContinuation) {
   ModelContact m;
   m.radius = 1000.0;
-  const auto jumpy = [&](const rn::AxleQuery& q) {
-    rn::AxleContactForces f = m(q);
-    if (q.coarse) f.lateral += (std::sin(q.y * 1e10) > 0.0 ? 0.03 : -0.03) * kQ;
-    return f;
-  };
+  int coarse = 0, full = 0;
   rn::BogieEquilibriumInput in = model_input(1000.0, 0.08);
   in.guess = rn::BogieGuess{};  // the centred bogie
-  const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(in, jumpy);
+  const rn::BogieEquilibrium e =
+      rn::solve_bogie_equilibrium(in, jumpy_when_coarse(m, coarse, full));
   EXPECT_LE(e.max_residual(), 1e-6 * kQ);
   EXPECT_GT(e.continuation_steps, 0);
   const rn::BogieEquilibrium smooth = rn::solve_bogie_equilibrium(model_input(1000.0, 0.08), m);
