@@ -85,7 +85,7 @@ void CoulombNewton::set_bounds(std::vector<int> elements, const GridField& bound
   if (elements != elements_) {
     elements_ = std::move(elements);
     S_elements_ = element_operator();
-    have_lu_ = false;  // factors of another system size
+    factors_.reset();  // factors of another system
   }
   const int m = static_cast<int>(elements_.size());
   bound_.resize(m);
@@ -139,23 +139,33 @@ void CoulombNewton::factorise(const std::vector<ElementTraction>& local) {
       J(2 * a + 1, 2 * a + 1) += 1.0 + G[3] * d2_;
     }
   };
+  auto f = std::make_shared<NewtonFactors>();
+  f->elements = elements_;
+  f->double_precision = double_factors_;
   if (double_factors_) {
     Eigen::MatrixXd J;
     assemble(J);
-    lu_double_.compute(J);
+    f->lu_double.compute(J);
   } else {
     Eigen::MatrixXf J;
     assemble(J);
-    lu_float_.compute(J);
+    f->lu_float.compute(J);
   }
-  have_lu_ = true;
+  factors_ = std::move(f);
   ++factorisations_;
 }
 
+Eigen::VectorXd NewtonFactors::solve(const Eigen::VectorXd& v) const {
+  if (double_precision) return lu_double.solve(v);
+  return lu_float.solve(v.cast<float>()).cast<double>();
+}
+
+void CoulombNewton::precondition_with(std::shared_ptr<const NewtonFactors> factors) {
+  if (factors && factors->elements == elements_) factors_ = std::move(factors);
+}
+
 Eigen::VectorXd CoulombNewton::precondition(const Eigen::VectorXd& v) const {
-  if (!have_lu_) return v;
-  if (double_factors_) return lu_double_.solve(v);
-  return lu_float_.solve(v.cast<float>()).cast<double>();
+  return factors_ ? factors_->solve(v) : v;
 }
 
 // R(p) = p - Pi(p) and the per-element Coulomb solutions (with dPi/db).
@@ -208,7 +218,8 @@ Eigen::VectorXd CoulombNewton::newton_direction(const FixedPointResidual& r, dou
   // residual relative to |R|. With factors GMRES is cheap and 1e-2 |R| keeps Newton quadratic;
   // without, reaching 1e-13 costs more GMRES iterations than the extra Newton steps that the
   // floor 1e-3 (linear convergence by 1e-3 per step once the slip set is fixed) costs.
-  const double forcing = std::min(1e-2, std::max(have_lu_ ? 1e-13 : 1e-3, relative_residual * 1e-2));
+  const double forcing =
+      std::min(1e-2, std::max(factors_ ? 1e-13 : 1e-3, relative_residual * 1e-2));
   // GMRES(restart) from dp = 0 until converged or `budget` iterations are spent.
   auto gmres = [&](Eigen::VectorXd& dp, int restart, int budget) {
     dp.setZero(n);
@@ -223,7 +234,7 @@ Eigen::VectorXd CoulombNewton::newton_direction(const FixedPointResidual& r, dou
     return false;
   };
   Eigen::VectorXd dp;
-  bool solved = have_lu_ ? gmres(dp, 30, 30) : gmres(dp, 150, unpreconditioned_budget(n));
+  bool solved = factors_ ? gmres(dp, 30, 30) : gmres(dp, 150, unpreconditioned_budget(n));
   if (!solved) {  // new factors of the current J; double precision if float ones fail
     factorise(r.local);
     solved = gmres(dp, 30, 30);

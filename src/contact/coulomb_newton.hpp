@@ -41,6 +41,19 @@
 
 namespace rollnoise::contact {
 
+/// LU factors of the Newton system J (float, or double where float ones failed to precondition),
+/// made for the contact elements `elements`: GMRES's preconditioner between the solves of one
+/// solver, and the first one of another solver of the same elements (a nearby state on the same
+/// grid: CoulombNewton::precondition_with). The solution does not depend on them, only GMRES's
+/// iterations do.
+struct NewtonFactors {
+  std::vector<int> elements;
+  Eigen::PartialPivLU<Eigen::MatrixXf> lu_float;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_double;
+  bool double_precision = false;
+  Eigen::VectorXd solve(const Eigen::VectorXd& v) const;
+};
+
 class CoulombNewton {
  public:
   /// `elements`: flat grid indices of the contact elements; `bound`: mu pn on the grid.
@@ -67,6 +80,11 @@ class CoulombNewton {
   TangentialSolution solve(const GridField& rhs_x, const GridField& rhs_y, const GridField& px,
                            const GridField& py, const TangentialSolverSettings& settings,
                            const std::string& solver);
+
+  /// The factors held (null before the first factorisation).
+  std::shared_ptr<const NewtonFactors> factors() const { return factors_; }
+  /// Another solver's factors as the preconditioner, if they were made for these elements.
+  void precondition_with(std::shared_ptr<const NewtonFactors> factors);
 
   /// Work counters since construction (for benchmarks and tests).
   int factorisations() const { return factorisations_; }
@@ -99,9 +117,8 @@ class CoulombNewton {
   std::vector<double> bound_;
   FallingFriction falling_;
   double d1_ = 0.0, d2_ = 0.0;
-  Eigen::PartialPivLU<Eigen::MatrixXf> lu_float_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_double_;
-  bool have_lu_ = false, double_factors_ = false;
+  std::shared_ptr<const NewtonFactors> factors_;
+  bool double_factors_ = false;  // factorise in double precision from now on
   int factorisations_ = 0, linear_iterations_ = 0;
 };
 

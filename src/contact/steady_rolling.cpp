@@ -68,9 +68,14 @@ TangentialSolution SteadyRollingSolver::solve(const GridField& pn, const SteadyR
     if (newton_) earlier_factorisations_ += newton_->factorisations();
     newton_ = std::make_unique<CoulombNewton>(SlipOperator::steady(*A_, in.speed),
                                               sweep_order(g, pn), r.bound);
+    newton_->precondition_with(seed_);
     speed_ = in.speed;
   }
   return solve_with(*newton_, g, r, in, settings, start);
+}
+
+std::shared_ptr<const NewtonFactors> SteadyRollingSolver::factors() const {
+  return newton_ ? newton_->factors() : nullptr;
 }
 
 int SteadyRollingSolver::factorisations() const {

@@ -47,6 +47,7 @@ TangentialSolution solve_steady_rolling(const InfluenceTable& A, const GridField
                                         const TangentialSolution* start = nullptr);
 
 class CoulombNewton;
+struct NewtonFactors;
 
 /// Steady rolling solved again and again on one grid at one speed, with a pressure that changes
 /// between the calls (a wheel lowered under its load: geometry/curved_contact.cpp). solve() is
@@ -67,12 +68,20 @@ class SteadyRollingSolver {
                            const TangentialSolution* start = nullptr);
   /// LU factorisations made so far by the kept Newton solver(s).
   int factorisations() const;
+  /// The factors of the Newton system held (NewtonFactors; null before the first).
+  std::shared_ptr<const NewtonFactors> factors() const;
+  /// Another solver's factors (of a nearby state on the same grid) as the first preconditioner
+  /// (CoulombNewton::precondition_with: used if made for the same contact elements).
+  void precondition_with(std::shared_ptr<const NewtonFactors> factors) {
+    seed_ = std::move(factors);
+  }
 
  private:
   const InfluenceTable* A_;
   double speed_ = 0.0;
   std::unique_ptr<CoulombNewton> newton_;
   int earlier_factorisations_ = 0;  // of solvers replaced (another speed)
+  std::shared_ptr<const NewtonFactors> seed_;
 };
 
 }  // namespace rollnoise::contact

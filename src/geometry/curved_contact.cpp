@@ -298,6 +298,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     LoadedContact out;
     // One Newton solver for the iterations: its LU factors serve again while the area stays.
     contact::SteadyRollingSolver steady(patch->influence);
+    if (near) steady.precondition_with(near->tangential_factors);
     double dz = near ? near->vertical_approach : 0.0;
     double c0 = near ? near->mean_cos : std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
     contact::GridField h = cp.h;
@@ -353,6 +354,7 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     out.mean_cos = c0;
     out.curved = true;
     set_row_angles(cp, c, patch->normal.pn, out);
+    if (in.keep_factors) out.tangential_factors = steady.factors();
     out.patch = std::move(patch);
     return out;
   }

@@ -65,9 +65,13 @@ struct VerticalLoadInput {
   /// on the rail (the same element counts and sizes, the rows at the same rail points, the columns
   /// at the same distances along the track: no row comes or goes, so the forces vary smoothly with
   /// the state), its N, lowering and mean cos(delta) start the fixed point, its pressure and
-  /// tractions the solvers. Empty: the grid chosen for the load, the fixed point from the Hertz
+  /// tractions the solvers, and its tangential solver's factors (if kept) precondition the
+  /// first Newton steps. Empty: the grid chosen for the load, the fixed point from the Hertz
   /// estimate.
   std::shared_ptr<const LoadedContact> start;
+  /// Keep the tangential solver's factors with the result (LoadedContact::tangential_factors), for
+  /// states started from it: (2n)^2 floats for n contact elements.
+  bool keep_factors = false;
 };
 
 /// The contact of one wheel under its vertical load. Forces are those on the WHEEL.
@@ -92,6 +96,8 @@ struct LoadedContact {
   /// that carry pressure.
   std::vector<double> row_angle;
   double angle_min = 0.0, angle_max = 0.0;
+  /// The steady tangential solver's last factors (VerticalLoadInput::keep_factors; else null).
+  std::shared_ptr<const contact::NewtonFactors> tangential_factors;
 };
 
 /// (F_x, F_y, M_z) on the wheel (body 1) from the tractions of a tangential solution (N, N, N m).

@@ -96,6 +96,7 @@ WheelContact wheel_contact(const WheelContactInput& in) {
   v.inverse_radius = kappa;
   if (!in.creepage && in.axle_spin) v.rolling_rate = (1.0 + *in.axle_spin) / r0;
   v.start = in.start;
+  v.keep_factors = in.keep_factors;
   w.loaded = std::make_shared<const geometry::LoadedContact>(
       geometry::lower_under_vertical_load(pair, w.contact, v));
   return w;

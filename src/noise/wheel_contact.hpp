@@ -83,6 +83,9 @@ struct WheelContactInput {
   /// This wheel's lowered contact at a nearby state to start from, its grid kept
   /// (VerticalLoadInput::start); empty: from the Hertz estimate.
   std::shared_ptr<const geometry::LoadedContact> start;
+  /// Keep the tangential solver's factors for states started from this one
+  /// (VerticalLoadInput::keep_factors).
+  bool keep_factors = false;
 };
 
 struct WheelContact {

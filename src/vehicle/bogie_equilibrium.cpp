@@ -350,7 +350,14 @@ BogieEquilibrium result(const Vector& q, Evaluation& e) {
   for (int k = 0; k < 8; ++k) out.residual[k] = e.r(k);
   for (int i = 0; i < 2; ++i)
     for (WheelContact& w : e.axles[i].wheels)
-      if (w.loaded) out.wheels.push_back(std::move(w));
+      if (w.loaded) {
+        if (w.loaded->tangential_factors) {  // the solver's alone: not kept with the state
+          auto state = std::make_shared<geometry::LoadedContact>(*w.loaded);
+          state->tangential_factors.reset();
+          w.loaded = std::move(state);
+        }
+        out.wheels.push_back(std::move(w));
+      }
   return out;
 }
 
@@ -389,6 +396,7 @@ AxleContactForces contact_forces(const CurveStateInput& in, double load_transfer
     wi.axle_spin = eps;     // the axle's own rolling speed (WheelContactInput::axle_spin)
     wi.vertical_load = in.wheel_load + (w == 0 ? 1.0 : -1.0) * t * load_transfer;
     if (near) wi.start = near->wheels[w].loaded;
+    wi.keep_factors = !coarse;  // the full contacts' factors precondition the next ones
     f.wheels[w] = wheel_contact(wi);
     const WheelContact& c = f.wheels[w];
     const std::array<double, 3> ft = c.force_track();  // towards the outer rail

@@ -223,3 +223,42 @@ TEST(SteadyRollingSolver, KeepsItsFactorsAcrossPressuresAndGivesTheFreshSolution
   ASSERT_GT(fresh_factorisations, 0) << "the case must need factors for the check to mean anything";
   EXPECT_LT(kept.factorisations(), fresh_factorisations);
 }
+
+// Another solver started with a nearby state's factors (SteadyRollingSolver::precondition_with,
+// as the bogie equilibrium's kept-grid contacts are): on the same case, the first solver's factors
+// at pn, handed to a new solver for pn x 1.03 (the same contact elements), give the fresh solution
+// within 1e-10 of the largest traction with no factorisation of its own; factors made for other
+// elements (pn cut to zero on an edge element) are not used.
+TEST(SteadyRollingSolver, AnotherSolverPreconditionedByANearbyStatesFactorsNeedsNoneOfItsOwn) {
+  const ContactPatch& patch = coarse_patch();
+  const SteadyRollingInput in(kMu, kSpeed, {2e-3, 1e-3, 0.1});
+  SteadyRollingSolver first(patch.influence);
+  const TangentialSolution s0 = first.solve(patch.normal.pn, in);
+  ASSERT_GT(first.factorisations(), 0)
+      << "the case must need factors for the check to mean anything";
+  ASSERT_TRUE(first.factors());
+  GridField pn = patch.normal.pn;
+  for (double& p : pn) p *= 1.03;
+  SteadyRollingSolver seeded(patch.influence);
+  seeded.precondition_with(first.factors());
+  const TangentialSolution a = seeded.solve(pn, in, {}, &s0);
+  const TangentialSolution b = solve_steady_rolling(patch.influence, pn, in, {}, &s0);
+  double largest = 0.0, diff = 0.0;
+  for (std::size_t k = 0; k < pn.size(); ++k) {
+    largest = std::max({largest, std::abs(b.px[k]), std::abs(b.py[k])});
+    diff = std::max({diff, std::abs(a.px[k] - b.px[k]), std::abs(a.py[k] - b.py[k])});
+  }
+  EXPECT_LE(diff, 1e-10 * largest);
+  EXPECT_EQ(seeded.factorisations(), 0);
+  // other elements: one contact element less
+  GridField cut = pn;
+  for (double& p : cut)
+    if (p > 0.0) {
+      p = 0.0;
+      break;
+    }
+  SteadyRollingSolver other(patch.influence);
+  other.precondition_with(first.factors());
+  other.solve(cut, in, {}, &s0);
+  EXPECT_GT(other.factorisations(), 0);
+}
