@@ -37,24 +37,13 @@ void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
   }
 }
 
-// The routes' agreement and, beyond its tolerance, a warning naming the worst mode and the fit
-// that deviates more there (the likelier cause; docs/squeal.md Sec. 4.2).
-void print_route_agreement(const pipeline::RouteAgreement& agreement, const std::vector<noise::ModeRoot>& roots,
-                           const std::vector<noise::ModeRoot>& roots1, const pipeline::Route1Deviation& dev) {
+// The routes' agreement and, beyond its tolerance, a warning naming the worst mode and the likely
+// cause (pipeline::route_warning; docs/squeal.md Sec. 4.2).
+void print_route_agreement(const pipeline::RouteAgreement& agreement, const std::string& warning) {
   std::printf("route agreement: frequency %.2e, damping ratio %.2e relative / %.2e absolute over %d modes%s\n",
               agreement.frequency, agreement.damping_relative, agreement.damping_absolute, agreement.compared,
               agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
-  if (agreement.within()) return;
-  const std::size_t k =
-      agreement.damping_beyond > 1.0 ? agreement.worst_damping_mode : agreement.worst_frequency_mode;
-  const bool known = k < dev.rail.size() && k < dev.contact.size();
-  const bool rail = known && dev.rail[k] >= dev.contact[k];
-  std::printf("warning: the routes disagree beyond their tolerance (f 0.1 %%, zeta 5 %% or 1e-5) at %s "
-              "(f %.3f / %.3f Hz, zeta %.3e / %.3e); likely cause: route 1's %s fit there (deviation %.1e, "
-              "the other's %.1e)\n",
-              roots[k].label.c_str(), roots1[k].frequency, roots[k].frequency, roots1[k].damping_ratio,
-              roots[k].damping_ratio, rail ? "rail" : "contact", known ? (rail ? dev.rail[k] : dev.contact[k]) : 0.0,
-              known ? (rail ? dev.contact[k] : dev.rail[k]) : 0.0);
+  if (!warning.empty()) std::printf("warning: %s\n", warning.c_str());
 }
 
 }  // namespace
@@ -79,13 +68,15 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
     for (const auto& x : r.roots) s.push_back(x.s);
     dev = pipeline::route1_deviation(r1, r, nc, s);
   }
+  const std::string warning =
+      route1 && route2 ? pipeline::route_warning(agreement, r.roots, roots1, dev) : "";
   std::vector<pipeline::WheelsetSqueal> wheelsets;  // curve.wheels, per wheelset (route 2)
   if (route2) wheelsets = io::within_case(reader, [&] { return pipeline::squeal_wheelsets(r, nc); });
   if (!route2) r.roots = roots1, r.route = 1;
   const std::string out = output_path(o, reader.name());
   io::Hdf5Writer w(out);
   io::write_squeal(w, reader, nc, r);
-  if (route1) io::write_squeal_route1(w, r1, roots1, route2 ? &agreement : nullptr);
+  if (route1) io::write_squeal_route1(w, r1, roots1, route2 ? &agreement : nullptr, warning);
   io::write_squeal_wheels(w, wheelsets);
   w.commit();
 
@@ -122,7 +113,7 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
         std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "",
                     x.converged ? "" : " (continuation failed)");
     }
-    if (route1 && route2) print_route_agreement(agreement, r.roots, roots1, dev);
+    if (route1 && route2) print_route_agreement(agreement, warning);
     print_wheelsets(wheelsets);
     std::printf("wrote %s\n", out.c_str());
     // A root whose continuation failed (converged = false) has no decided stability: counted
@@ -133,6 +124,11 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
                  r.unstable_count() ? " (see /squeal/unstable)" : "");
     if (unconverged > 0)
       std::fprintf(stderr, "; %d not converged, their stability not decided (/squeal/converged)", unconverged);
+    // the routes disagree beyond their target: where and why in the table's warning
+    if (!warning.empty())
+      std::fprintf(
+          stderr,
+          "; warning: routes 1 and 2 disagree beyond their tolerance (/squeal route_warning)");
     std::fprintf(stderr, "\n");
   }
   return 0;

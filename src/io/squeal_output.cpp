@@ -58,8 +58,9 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.attribute("/squeal", "normal_coupling", r.coupled ? "on" : "off");
 }
 
-void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const std::vector<noise::ModeRoot>& roots,
-                         const pipeline::RouteAgreement* agreement) {
+void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1,
+                         const std::vector<noise::ModeRoot>& roots,
+                         const pipeline::RouteAgreement* agreement, const std::string& warning) {
   const std::size_t n = roots.size();
   std::vector<std::complex<double>> s;
   std::vector<double> freq, zeta;
@@ -91,6 +92,10 @@ void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const 
     w.write("/squeal/route_agreement_within", agreement->within() ? 1.0 : 0.0,
             "- (1: f within 0.1 % and zeta within 5 % or 1e-5 at every compared mode, "
             "docs/squeal.md Sec. 4.2)");
+    w.write(g + "within", agreement->mode_within, {agreement->mode_within.size()},
+            "- (per root: 1 within the routes' target, 0 beyond it, -1 not compared: route 2 not "
+            "converged)");
+    w.attribute("/squeal", "route_warning", warning.empty() ? "none" : warning);
   }
 }
 
