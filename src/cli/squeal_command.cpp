@@ -4,6 +4,7 @@
 // stderr (none with -q), the table on stdout. With both routes /squeal/* are route 2's and route 1's
 // go to /squeal/route1/*, with /squeal/route_agreement.
 #include <cstdio>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "io/noise_case.hpp"
@@ -44,6 +45,37 @@ void print_route_agreement(const pipeline::RouteAgreement& agreement, const std:
               agreement.frequency, agreement.damping_relative, agreement.damping_absolute, agreement.compared,
               agreement.distinct ? "" : " (two roots matched one route-1 eigenvalue)");
   if (!warning.empty()) std::printf("warning: %s\n", warning.c_str());
+}
+
+// The table's last column for a root: UNSTABLE, and how its continuation ended (docs/squeal.md
+// Sec. 4.2: each root once).
+std::string root_status(const noise::ModeRoot& x, const std::vector<noise::ModeRoot>& roots) {
+  if (x.same_root_as >= 0) {
+    std::string owner = "mode " + std::to_string(x.same_root_as);
+    for (const auto& y : roots)
+      if (static_cast<long>(y.mode) == x.same_root_as) owner = y.label;
+    return "(continuation reached the root of " + owner + ": counted there)";
+  }
+  return std::string(x.unstable ? "UNSTABLE" : "") + (x.converged ? "" : " (continuation failed)") +
+         (x.refined ? " (own root found again: the continuation had reached another's)" : "");
+}
+
+// The summary line on stderr. A root whose continuation failed (converged = false) has no decided
+// stability: counted apart, so that "0 unstable" is not read as a verdict on it; routes that
+// disagree beyond their target: where and why in the table's warning.
+void print_summary(const pipeline::SquealResult& r, const std::string& warning) {
+  int unconverged = 0;
+  for (const auto& x : r.roots) unconverged += x.converged ? 0 : 1;
+  std::fprintf(stderr, "squeal: %d unstable of %zu modes%s", r.unstable_count(), r.roots.size(),
+               r.unstable_count() ? " (see /squeal/unstable)" : "");
+  if (unconverged > 0)
+    std::fprintf(stderr, "; %d not converged, their stability not decided (/squeal/converged)",
+                 unconverged);
+  if (!warning.empty())
+    std::fprintf(
+        stderr,
+        "; warning: routes 1 and 2 disagree beyond their tolerance (/squeal route_warning)");
+  std::fprintf(stderr, "\n");
 }
 
 }  // namespace
@@ -104,32 +136,12 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
         std::printf(" %9s", "");
       if (route1 && route2)
         std::printf(" %10.3f %12.4e %8.1e %8.1e", roots1[k].frequency, roots1[k].damping_ratio, dev.rail[k], dev.contact[k]);
-      if (x.same_root_as >= 0) {
-        std::string owner = "mode " + std::to_string(x.same_root_as);
-        for (const auto& y : r.roots)
-          if (static_cast<long>(y.mode) == x.same_root_as) owner = y.label;
-        std::printf(" (continuation reached the root of %s: counted there)\n", owner.c_str());
-      } else
-        std::printf(" %s%s\n", x.unstable ? "UNSTABLE" : "",
-                    x.converged ? "" : " (continuation failed)");
+      std::printf(" %s\n", root_status(x, r.roots).c_str());
     }
     if (route1 && route2) print_route_agreement(agreement, warning);
     print_wheelsets(wheelsets);
     std::printf("wrote %s\n", out.c_str());
-    // A root whose continuation failed (converged = false) has no decided stability: counted
-    // apart, so that "0 unstable" is not read as a verdict on it.
-    int unconverged = 0;
-    for (const auto& x : r.roots) unconverged += x.converged ? 0 : 1;
-    std::fprintf(stderr, "squeal: %d unstable of %zu modes%s", r.unstable_count(), r.roots.size(),
-                 r.unstable_count() ? " (see /squeal/unstable)" : "");
-    if (unconverged > 0)
-      std::fprintf(stderr, "; %d not converged, their stability not decided (/squeal/converged)", unconverged);
-    // the routes disagree beyond their target: where and why in the table's warning
-    if (!warning.empty())
-      std::fprintf(
-          stderr,
-          "; warning: routes 1 and 2 disagree beyond their tolerance (/squeal route_warning)");
-    std::fprintf(stderr, "\n");
+    print_summary(r, warning);
   }
   return 0;
 }
