@@ -31,7 +31,7 @@ void print_wheelsets(const std::vector<pipeline::WheelsetSqueal>& s) {
     if (!ws.skipped.empty()) std::printf("    left out: %s\n", ws.skipped.c_str());
     for (const auto& x : ws.roots)
       if (x.root.unstable || !x.root.converged)
-        std::printf("    %-14s %-24s %10.3f Hz zeta %12.4e share %.2f%s%s\n",
+        std::printf("    %-14s %-32s %10.3f Hz zeta %12.4e share %.2f%s%s\n",
                     noise::wheel_name(x.wheel), x.root.label.c_str(), x.root.frequency,
                     x.root.damping_ratio, x.share, x.root.unstable ? " UNSTABLE" : "",
                     x.root.converged ? "" : " (continuation failed)");
@@ -122,14 +122,14 @@ int run_squeal(const CommonOptions& o, const std::string& route) {
                   r1.seconds_fit, r1.seconds_rail, r1.fit_min, r1.fit_max, r1.rail.poles.size(), r1.rail.error,
                   r1.rail.worst_frequency, r1.rail_error_at_modes, r1.contact.poles.size(), r1.contact.error,
                   r1.seconds_eigen);
-    std::printf("\n  %-24s %9s %10s %12s %12s %9s", "mode", "f_n (Hz)", "f (Hz)", "Re s (1/s)", "zeta",
-                route2 ? "residual" : "");
+    std::printf("\n  %-32s %9s %10s %12s %12s %9s", "mode", "f_n (Hz)", "f (Hz)", "Re s (1/s)",
+                "zeta", route2 ? "residual" : "");
     if (route1 && route2) std::printf(" %10s %12s %8s %8s", "f1 (Hz)", "zeta1", "dev rail", "dev cont");
     std::printf("\n");
     for (std::size_t k = 0; k < r.roots.size(); ++k) {
       const auto& x = r.roots[k];
-      std::printf("  %-24s %9.1f %10.3f %12.5g %12.4e", x.label.c_str(), x.natural_frequency, x.frequency, x.s.real(),
-                  x.damping_ratio);
+      std::printf("  %-32s %9.1f %10.3f %12.5g %12.4e", x.label.c_str(), x.natural_frequency,
+                  x.frequency, x.s.real(), x.damping_ratio);
       if (route2)
         std::printf(" %9.1e", x.residual);
       else
