@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "dynamics/wheel_mode_family.hpp"
 #include "io/case_reader.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/modes_output.hpp"
@@ -41,10 +42,15 @@ int run_modes(const CommonOptions& o, const std::string& csv) {
       reader.name().c_str(), modes->modes.size(), modes->mass, fe->options.n_max, fe->options.f_max,
       modes->mesh.triangles.size(), 1e3 * fe->options.mesh_size, 3 * modes->mesh.nodes.size(),
       modes->tread_s.size(), seconds);
-  std::map<std::pair<std::string, int>, std::string> rows;  // (family, circles) -> frequencies by n
-  for (const auto& m : modes->modes) {
-    char cell[40];
-    std::snprintf(cell, sizeof cell, " n=%d %.0f", m.n, m.frequency);
+  // (family, circles) -> frequencies by n; a label's " #k" (dynamics::mode_labels) where two
+  // modes share family, n and circles
+  std::map<std::pair<std::string, int>, std::string> rows;
+  const std::vector<std::string> labels = dynamics::mode_labels(modes->modes);
+  for (std::size_t k = 0; k < modes->modes.size(); ++k) {
+    const auto& m = modes->modes[k];
+    char cell[48];
+    std::snprintf(cell, sizeof cell, " n=%d%s %.0f", m.n,
+                  labels[k].substr(dynamics::mode_label(m).size()).c_str(), m.frequency);
     rows[{dynamics::family_name(m.family), m.nodal_circles}] += cell;
   }
   for (const auto& [key, text] : rows)

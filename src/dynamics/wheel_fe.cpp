@@ -9,6 +9,7 @@
 #include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "core/task_pool.hpp"
+#include "dynamics/wheel_mode_family.hpp"
 #include "fem/eigen_solve.hpp"
 
 namespace rollnoise::dynamics {
@@ -96,7 +97,9 @@ const char* family_name(ModeFamily f) {
 }
 
 ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape) {
-  // the direction with the largest mean square on the tread ("dominant at the rim")
+  // the direction with the largest mean square on the tread ("dominant at the rim"): for modes
+  // known on the tread only (imported); the FE modes are classified by the section
+  // (wheel_mode_family.hpp)
   const Eigen::Vector3d ms = tread_shape.colwise().squaredNorm().transpose();
   const int c = ms(0) >= ms(1) && ms(0) >= ms(2) ? 0 : (ms(2) >= ms(1) ? 2 : 1);
   return c == 0 ? ModeFamily::kRadial : (c == 2 ? ModeFamily::kAxial : ModeFamily::kCircumferential);
@@ -175,10 +178,9 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
   // one solver per thread for all n: the orders share the mesh's sparsity pattern (one symbolic
   // analysis per solver)
   const fem::AxisymmetricOrders orders(w.mesh, options.material);
-  {
-    const auto m0 = orders.matrices(0).mass;
-    w.mass = Eigen::VectorXd::Ones(m0.rows()).dot(m0 * Eigen::VectorXd::Ones(m0.rows())) / 3.0;
-  }
+  // M_n = c_n M_1 for every n (fem/axisymmetric.hpp): one mass matrix gives every order's shares
+  const Eigen::SparseMatrix<double> m0 = orders.matrices(0).mass;
+  w.mass = Eigen::VectorXd::Ones(m0.rows()).dot(m0 * Eigen::VectorXd::Ones(m0.rows())) / 3.0;
   const std::vector<fem::Modes> modes =
       order_modes(orders, fixed, 2 * kPi * options.f_max, options.n_max, options.threads);
   // each order's tread shapes, families and nodal circles (independent: in parallel too)
@@ -193,9 +195,11 @@ WheelFeModes wheel_fe_modes(const WheelSection& section, const WheelFeOptions& o
       for (std::size_t i = 0; i < w.tread_s.size(); ++i)
         m.tread_shape.row(i) =
             fem::displacement_at(w.mesh, on.shapes.col(j), tread_points[i]).transpose();
-      m.family = tread_family(m.tread_shape);
-      const int c = m.family == ModeFamily::kRadial ? 0 : (m.family == ModeFamily::kAxial ? 2 : 1);
-      m.nodal_circles = sign_changes(w.mesh, on.shapes.col(j), line, c);
+      // the family from the whole section's motion, the circles along its mid-line
+      // (wheel_mode_family.hpp)
+      m.family = section_family(fem::kinetic_energy_shares(m0, on.shapes.col(j)));
+      m.nodal_circles =
+          sign_changes(w.mesh, on.shapes.col(j), line, nodal_circle_component(m.family));
       m.dofs = on.shapes.col(j);
       per_order[n].push_back(std::move(m));
     }

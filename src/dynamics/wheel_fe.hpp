@@ -1,7 +1,8 @@
 // The wheel as an axisymmetric finite-element structure (fem/axisymmetric.hpp): its modes for
-// n = 0..n_max up to f_max with the bore clamped, each classified by family (the dominant
-// direction on the tread: axial, radial or circumferential) and nodal circles, and its shape
-// (U_r, U_theta, U_z) sampled along the tread and flange surface (docs/models.md Sec. 3.4).
+// n = 0..n_max up to f_max with the bore clamped, each classified by family (axial, radial or
+// circumferential, from the whole section's motion: wheel_mode_family.hpp) and nodal circles, and
+// its shape (U_r, U_theta, U_z) sampled along the tread and flange surface (docs/models.md
+// Sec. 3.4).
 //
 // The bore is clamped: a rigid axle seat transmits only the n = 0 and n = 1 resultants (force and
 // moment) of the bore tractions, so for n >= 2 the clamp is what the wheelset does; the n = 0, 1
@@ -41,8 +42,10 @@ struct WheelFeOptions {
 
 enum class ModeFamily { kAxial, kRadial, kCircumferential };
 const char* family_name(ModeFamily f);
-/// The family of a mode from its tread shape (rows (U_r, U_theta, U_z)): the direction with the
-/// largest mean square on the tread.
+/// The family of a mode known only on the tread (an imported mode; rows (U_r, U_theta, U_z)): the
+/// direction with the largest mean square on the tread. The FE modes are classified by the whole
+/// section (section_family, wheel_mode_family.hpp): the tread alone names the one-nodal-circle
+/// axial modes, whose rim rocks, radial.
 ModeFamily tread_family(const Eigen::MatrixX3d& tread_shape);
 
 /// One mode of order n, mass-normalised (phi^T M phi = 1 with M over the whole wheel): modal mass

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "dynamics/wheel_fe.hpp"
+#include "dynamics/wheel_mode_family.hpp"
 
 namespace rollnoise::dynamics {
 namespace {
@@ -97,14 +98,15 @@ std::vector<WheelMode> contact_mode_table(const WheelFeModes& w, double s,
                                           const WheelFeContactOptions& o) {
   check_spin(w, o);
   std::vector<WheelMode> table;
-  for (const auto& m : w.modes) {
+  const std::vector<std::string> labels = mode_labels(w.modes);  // no two modes alike
+  for (std::size_t k = 0; k < w.modes.size(); ++k) {
+    const WheelFeMode& m = w.modes[k];
     if (m.n < o.n_min) continue;
     const ContactShapes c = contact_shapes(w, m, {s, 0.0});
     WheelMode entry;
     entry.damping_ratio = o.damping.ratio(m);
     entry.modal_mass = 1.0;
-    const std::string label = std::string(family_name(m.family)) + " n=" + std::to_string(m.n) +
-                              " " + std::to_string(m.nodal_circles) + " circles";
+    const std::string& label = labels[k];
     const bool split = m.n >= 1 && o.spin_speed > 0.0;
     const double df = split ? m.n * o.spin_speed / kTwoPi : 0.0;
     const double scale = split ? std::sqrt(0.5) : 1.0;

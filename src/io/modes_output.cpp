@@ -1,5 +1,7 @@
 #include "io/modes_output.hpp"
 
+#include "dynamics/wheel_mode_family.hpp"
+
 namespace rollnoise::io {
 
 void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m,
@@ -22,6 +24,8 @@ void write_wheel_modes(Hdf5Writer& w, const dynamics::WheelFeModes& m,
   w.write("/modes/frequency", frequency, {count}, "Hz");
   w.write("/modes/n", n, {count}, "-");
   w.write("/modes/family", family, "-");
+  w.write("/modes/label", dynamics::mode_labels(m.modes),
+          "- (family n=N C circles, unique: ' #k' in ascending frequency where modes share it)");
   w.write("/modes/nodal_circles", circles, {count}, "-");
   w.write("/modes/modal_mass", modal_mass, {count}, "kg");
   w.write("/modes/damping", zeta, {count}, "-");

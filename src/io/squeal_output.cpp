@@ -14,10 +14,11 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   std::vector<std::complex<double>> s, s0;
   std::vector<double> freq, zeta, fn, residual, singular;
   std::vector<int> unstable, iterations, converged;
-  std::vector<int> same_root_as;
+  std::vector<int> same_root_as, found_again;
   std::vector<std::string> label;
   for (const auto& x : r.roots) {
     same_root_as.push_back(static_cast<int>(x.same_root_as));
+    found_again.push_back(x.refined ? 1 : 0);
     s.push_back(x.s);
     s0.push_back(x.s0);
     freq.push_back(x.frequency);
@@ -46,6 +47,11 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
       "- (-1, or the wheel mode (index among the case's modes, the rows' order) whose root this "
       "mode's continuation reached too: counted once, there; this mode's own root not found, "
       "converged = 0)");
+  w.write(
+      "/squeal/found_again", found_again, {n},
+      "- (1: the continuation reached another mode's root, and this mode's own root was found by "
+      "Newton from its uncoupled root on (S2) deflated by the roots already found; docs/squeal.md "
+      "Sec. 4.2)");
   w.write("/squeal/min_growth_rate", r.min_sigma, "1/s (the contact's Markov series converge for Re s above this)");
   w.write("/squeal/contact_spectral_radius", r.contact_spectral_radius,
           "- (of M0^-1 M1, the contact alone: < 1 stable; -1: not computed, the Markov parameters decayed)");
@@ -58,8 +64,9 @@ void write_squeal(Hdf5Writer& w, const CaseReader& reader, const pipeline::Noise
   w.attribute("/squeal", "normal_coupling", r.coupled ? "on" : "off");
 }
 
-void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const std::vector<noise::ModeRoot>& roots,
-                         const pipeline::RouteAgreement* agreement) {
+void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1,
+                         const std::vector<noise::ModeRoot>& roots,
+                         const pipeline::RouteAgreement* agreement, const std::string& warning) {
   const std::size_t n = roots.size();
   std::vector<std::complex<double>> s;
   std::vector<double> freq, zeta;
@@ -91,6 +98,10 @@ void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const 
     w.write("/squeal/route_agreement_within", agreement->within() ? 1.0 : 0.0,
             "- (1: f within 0.1 % and zeta within 5 % or 1e-5 at every compared mode, "
             "docs/squeal.md Sec. 4.2)");
+    w.write(g + "within", agreement->mode_within, {agreement->mode_within.size()},
+            "- (per root: 1 within the routes' target, 0 beyond it, -1 not compared: route 2 not "
+            "converged)");
+    w.attribute("/squeal", "route_warning", warning.empty() ? "none" : warning);
   }
 }
 

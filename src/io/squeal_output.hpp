@@ -13,8 +13,12 @@ void write_squeal(Hdf5Writer& w, const CaseReader& r, const pipeline::NoiseCase&
 
 /// /squeal/route1/{eigenvalue, frequency, damping_ratio, unstable} (one per root in `roots`),
 /// {fit_error_rail, fit_error_contact, fit_band, poles_rail, poles_contact, all_eigenvalues}, and
-/// /squeal/route_agreement when `agreement` is given (`--route both`).
-void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1, const std::vector<noise::ModeRoot>& roots,
-                         const pipeline::RouteAgreement* agreement);
+/// /squeal/route_agreement, /squeal/route_agreement_within, /squeal/route1/within and the attribute
+/// route_warning of /squeal (`warning`, pipeline::route_warning; "none" when the routes agree) when
+/// `agreement` is given (`--route both`).
+void write_squeal_route1(Hdf5Writer& w, const pipeline::Route1Result& r1,
+                         const std::vector<noise::ModeRoot>& roots,
+                         const pipeline::RouteAgreement* agreement,
+                         const std::string& warning = "");
 
 }  // namespace rollnoise::io

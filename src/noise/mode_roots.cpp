@@ -304,6 +304,42 @@ std::vector<int> contact_groups(const LaplaceLoop& loop, Eigen::Index n) {
   return g;
 }
 
+// A mode whose continuation reached another mode's root (distinct_roots): its own root searched
+// at lambda = 1 by Newton from its uncoupled root s0 on H deflated by the roots already found near
+// it (within 5 % of |s0|), H(s) / prod_j (s - s_j) (Aberth 1973, as newton() does for a cluster):
+// a root already found repels the iteration, so that it converges to another. Taken when it
+// converges (|delta s| <= tolerance |s| within 60 iterations) to a root that is not one of them
+// (within 1e-7 |s|); else the mode stays lost (same_root_as). The report's singular ratio shows
+// that it is a true zero of (S1).
+std::vector<ModeRoot> own_roots_again(const LaplaceLoop& loop, const StabilityOptions& o,
+                                      std::vector<ModeRoot> roots) {
+  const ModalForm H(loop);
+  StabilityOptions search = o;
+  search.max_iterations = 60;
+  for (ModeRoot& r : roots) {
+    if (r.same_root_as < 0) continue;
+    std::vector<cdouble> found;
+    for (const ModeRoot& x : roots)
+      if (x.converged && std::abs(x.s - r.s0) <= 0.05 * std::abs(r.s0)) found.push_back(x.s);
+    int count = 0;
+    std::optional<cdouble> found_s;
+    try {
+      found_s = newton(H, r.s0, 1.0, search, count, found);
+    } catch (const NumericalError&) {
+    }
+    if (!found_s) continue;
+    const cdouble s = *found_s;
+    if (std::any_of(roots.begin(), roots.end(), [&](const ModeRoot& x) {
+          return x.converged && std::abs(x.s - s) <= 1e-7 * std::abs(s);
+        }))
+      continue;  // a root already reported
+    ModeRoot again = report(loop, H, r.mode, r.s0, s, true);
+    again.iterations = r.iterations + count, again.steps = r.steps, again.refined = true;
+    r = again;
+  }
+  return roots;
+}
+
 }  // namespace
 
 std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions& o) {
@@ -342,7 +378,7 @@ std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions
   }
   std::sort(out.begin(), out.end(),
             [](const ModeRoot& a, const ModeRoot& b) { return a.mode < b.mode; });
-  return distinct_roots(std::move(out));
+  return own_roots_again(loop, o, distinct_roots(std::move(out)));
 }
 
 std::vector<ModeRoot> distinct_roots(std::vector<ModeRoot> roots) {

@@ -197,6 +197,9 @@ struct ModeRoot {
   /// -1, or the mode whose root this mode's continuation reached as well (distinct_roots): then
   /// converged = false and unstable = false, this mode's own root not found.
   long same_root_as = -1;
+  /// true: found by a second, finer continuation after the first reached another mode's root
+  /// (mode_roots)
+  bool refined = false;
 };
 
 /// Each root once: where the continuations of two modes end on the same root (within 1e-7 of |s|),
@@ -207,7 +210,10 @@ struct ModeRoot {
 std::vector<ModeRoot> distinct_roots(std::vector<ModeRoot> roots);
 
 /// Route 2 for every mode of the loop in the band, ordered by mode. A mode whose continuation
-/// fails is returned with converged = false (and its last root).
+/// fails is returned with converged = false (and its last root). Each root once (distinct_roots);
+/// a mode whose continuation reached another mode's root then has its own searched by Newton from
+/// its uncoupled root on (S2) deflated by the roots found near it (refined = true when found;
+/// docs/squeal.md Sec. 4.2).
 std::vector<ModeRoot> mode_roots(const LaplaceLoop& loop, const StabilityOptions& options = {});
 /// Route 2 for mode k alone (with its cluster).
 ModeRoot mode_root(const LaplaceLoop& loop, std::size_t k, const StabilityOptions& options = {});

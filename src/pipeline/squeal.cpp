@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include "core/errors.hpp"
 #include "core/stopwatch.hpp"
@@ -267,6 +269,7 @@ std::vector<noise::ModeRoot> match_route1(const Route1Result& r1, const std::vec
 
 RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std::vector<noise::ModeRoot>& b) {
   RouteAgreement g;
+  g.mode_within.assign(std::min(a.size(), b.size()), -1);
   for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
     if (!a[k].converged) g.distinct = false;
     if (!b[k].converged) continue;
@@ -279,8 +282,33 @@ RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& a, const std:
     g.damping_absolute = std::max(g.damping_absolute, dz);
     const double beyond = std::min(rz / 0.05, dz / 1e-5);  // the squeal routes' acceptance: <= 1
     if (beyond > g.damping_beyond) g.damping_beyond = beyond, g.worst_damping_mode = k;
+    g.mode_within[k] = df <= 1e-3 && beyond <= 1.0 ? 1 : 0;
   }
   return g;
+}
+
+std::string route_warning(const RouteAgreement& g, const std::vector<noise::ModeRoot>& r2,
+                          const std::vector<noise::ModeRoot>& r1, const Route1Deviation& dev) {
+  if (g.within()) return {};
+  const std::size_t k = g.damping_beyond > 1.0 ? g.worst_damping_mode : g.worst_frequency_mode;
+  const int beyond = static_cast<int>(std::count(g.mode_within.begin(), g.mode_within.end(), 0));
+  const bool known = k < dev.rail.size() && k < dev.contact.size();
+  const bool rail = known && dev.rail[k] >= dev.contact[k];
+  char text[640];
+  std::snprintf(
+      text, sizeof text,
+      "the routes disagree beyond their tolerance (f 0.1 %%, zeta 5 %% or 1e-5) at %d of %d "
+      "modes, worst %s (f %.3f / %.3f Hz, zeta %.3e / %.3e, route 1 / route 2); likely cause: "
+      "route 1's %s fit at that root (deviation %.1e, the %s's %.1e; docs/squeal.md Sec. 4.2)",
+      beyond, g.compared, r2[k].label.c_str(), r1[k].frequency, r2[k].frequency,
+      r1[k].damping_ratio, r2[k].damping_ratio, rail ? "rail" : "contact",
+      known ? (rail ? dev.rail[k] : dev.contact[k]) : std::nan(""), rail ? "contact" : "rail",
+      known ? (rail ? dev.contact[k] : dev.rail[k]) : std::nan(""));
+  std::string w = text;
+  if (std::abs(r2[k].damping_ratio) >= 1e-2)
+    w += "; a heavily damped root: off the axis the rail's continuation (hysteretic damping as a "
+         "constant) is not converged on a discrete track beyond zeta ~ eta_rail / 2";
+  return w;
 }
 
 }  // namespace rollnoise::pipeline

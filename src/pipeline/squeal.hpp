@@ -139,6 +139,8 @@ struct RouteAgreement {
   std::size_t worst_frequency_mode = 0, worst_damping_mode = 0;
   bool distinct = true;                 ///< every route-2 root got a route-1 eigenvalue (match_route1)
   int compared = 0;                     ///< modes compared: route 2's converged roots
+  /// per mode: 1 within the target below, 0 beyond it, -1 not compared (route 2 not converged)
+  std::vector<int> mode_within;
   /// docs/squeal.md Sec. 4.2's target: f within 0.1 %, zeta within 5 % or 1e-5 (damping_beyond <=
   /// 1)
   bool within() const { return frequency <= 1e-3 && damping_beyond <= 1.0; }
@@ -146,5 +148,15 @@ struct RouteAgreement {
 /// Route 1 against route 2, mode by mode, over route 2's converged roots (a mode whose continuation
 /// failed or reached another mode's root has no route-2 root of its own to compare).
 RouteAgreement route_agreement(const std::vector<noise::ModeRoot>& route1, const std::vector<noise::ModeRoot>& route2);
+
+/// Empty when the routes agree within their target; else one line for the summary and the output:
+/// the modes beyond it, the worst (route 1's and route 2's f and zeta) and its likely cause
+/// (docs/squeal.md Sec. 4.2): route 1's rail or contact fit, whichever deviates more from route 2's
+/// part at that root (route1_deviation), and for a heavily damped root (|zeta| >= 1e-2) the rail's
+/// continuation off the axis, which on a discrete track is not converged beyond zeta ~ eta_rail/2.
+std::string route_warning(const RouteAgreement& agreement,
+                          const std::vector<noise::ModeRoot>& route2,
+                          const std::vector<noise::ModeRoot>& route1,
+                          const Route1Deviation& deviation);
 
 }  // namespace rollnoise::pipeline

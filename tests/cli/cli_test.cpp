@@ -3,18 +3,19 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
-#include "cli_support.hpp"
-
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
-#include <sstream>
-#include <algorithm>
-#include <cmath>
+
+#include "cli_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace rollnoise::cli_test;
@@ -34,7 +35,52 @@ std::string read_units(hid_t file, const char* path) {
   return s.c_str();
 }
 
+// A fixed-width string dataset (io::Hdf5Writer's layout) as strings; empty when missing.
+std::vector<std::string> read_strings(const std::string& file, const char* path) {
+  std::vector<std::string> out;
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) return out;
+  const hid_t set = H5Dopen2(f, path, H5P_DEFAULT);
+  if (set >= 0) {
+    const hid_t type = H5Dget_type(set), space = H5Dget_space(set);
+    const std::size_t width = H5Tget_size(type);
+    const auto count = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+    std::vector<char> buf(width * count);
+    H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
+    for (std::size_t i = 0; i < count; ++i)
+      out.emplace_back(std::string(&buf[i * width], width).c_str());
+    H5Sclose(space);
+    H5Tclose(type);
+    H5Dclose(set);
+  }
+  H5Fclose(f);
+  return out;
+}
+
 }  // namespace
+
+// rollnoise modes on the shipped wheel (cases/squeal_300m.toml: the 920 mm section, 8 mm): one
+// label per mode in /modes/label, and the summary's cells (family, circles, n) are each one mode's
+// (issue 51: two modes were "radial n=2 0 circles" at 1887 and 2135 Hz).
+TEST(ModesCommand, EveryModeOfTheShippedWheelHasItsOwnLabel) {
+  const auto out = (temp_dir() / "modes_labels.h5").string();
+  const auto r = run("modes " + source_file("cases/squeal_300m.toml") + " -o " + out);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::vector<std::string> labels = read_strings(out, "/modes/label");
+  ASSERT_GT(labels.size(), 30u) << r.output;  // the 920 mm wheel's modes up to 6 kHz
+  EXPECT_EQ(std::set<std::string>(labels.begin(), labels.end()).size(), labels.size()) << r.output;
+  EXPECT_EQ(read_strings(out, "/modes/family").size(), labels.size());
+  std::set<std::string> cells;  // "family, C nodal circles (Hz): n=N F n=N F ..." per line
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);) {
+    const auto colon = line.find("(Hz):");
+    if (colon == std::string::npos) continue;
+    std::istringstream words(line.substr(colon + 5));
+    for (std::string n, f; words >> n >> f;)
+      EXPECT_TRUE(cells.insert(line.substr(0, colon) + n).second) << line;
+  }
+  EXPECT_EQ(cells.size(), labels.size()) << r.output;
+}
 
 // rollnoise --version: the build's version (git describe at build time, as every result file's
 // program_version attribute holds it) on one line, exit status 0, no command needed.

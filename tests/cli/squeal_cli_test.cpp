@@ -2,6 +2,8 @@
 // the message names the key, no file left behind, the case file unchanged).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -56,4 +58,38 @@ TEST(SquealCli, NoModeInTheBandOrAboveNyquistIsAnInputErrorWithoutAFile) {
     EXPECT_FALSE(std::filesystem::exists(out));
   }
   EXPECT_EQ(slurp(hertz_curve()), before);
+}
+
+// squeal_300m (issue 51: "5 unstable of 80 modes" was 4 distinct roots, one of them reported under
+// two modes): every root once. No two converged rows share a root (frequency and damping ratio
+// within 1e-7), the summary's count is the number of distinct unstable rows, and a row that is
+// not converged names another mode's root (same_root_as) or its continuation failed. Route 2 only,
+// the wheelsets off (their contacts are unstable alone as shipped).
+TEST(SquealCli, EveryRootOfSqueal300mIsReportedOnce) {
+  const auto out = temp_dir() / "squeal_300m_roots.h5";
+  const auto r = run("squeal " + source_file("cases/squeal_300m.toml") +
+                     " --route 2 --set 'noise.squeal_wheelsets=\"off\"' -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const rollnoise::io::Hdf5Reader h(out.string());
+  ASSERT_TRUE(h.ok());
+  const auto f = h.numbers("/squeal/frequency"), zeta = h.numbers("/squeal/damping_ratio");
+  const auto converged = h.numbers("/squeal/converged"), unstable = h.numbers("/squeal/unstable");
+  ASSERT_TRUE(f && zeta && converged && unstable);
+  int distinct_unstable = 0;
+  for (std::size_t i = 0; i < f->size(); ++i) {
+    if ((*converged)[i] == 0) continue;
+    distinct_unstable += (*unstable)[i] != 0 ? 1 : 0;
+    for (std::size_t j = i + 1; j < f->size(); ++j) {
+      if ((*converged)[j] == 0) continue;
+      EXPECT_FALSE(std::abs((*f)[i] - (*f)[j]) <= 1e-7 * (*f)[i] &&
+                   std::abs((*zeta)[i] - (*zeta)[j]) <= 1e-7)
+          << "rows " << i << " and " << j << " report one root at " << (*f)[i] << " Hz";
+    }
+  }
+  EXPECT_NE(r.output.find("squeal: " + std::to_string(distinct_unstable) + " unstable of " +
+                          std::to_string(f->size()) + " modes"),
+            std::string::npos)
+      << r.output;
+  std::printf("squeal_300m: %d distinct unstable roots of %zu modes\n", distinct_unstable,
+              f->size());
 }

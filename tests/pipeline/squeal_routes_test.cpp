@@ -60,3 +60,60 @@ TEST(SquealRoutes, Route1AndRoute2GiveTheSameEigenvaluesWithTheFeWheel) {
 }
 
 }  // namespace
+
+namespace {
+
+rollnoise::noise::ModeRoot root_at(const char* label, double f, double zeta,
+                                   bool converged = true) {
+  rollnoise::noise::ModeRoot r;
+  r.label = label;
+  r.frequency = f;
+  r.damping_ratio = zeta;
+  r.converged = converged;
+  return r;
+}
+
+}  // namespace
+
+// The routes' disagreement is reported (pipeline::route_warning, docs/squeal.md Sec. 4.2): within
+// the target (f 0.1 %, zeta 5 % or 1e-5) no warning; a root beyond it is named with both routes'
+// values and the fit that deviates more from route 2's part there, a heavily damped one (zeta >=
+// 1e-2) also with the rail's continuation; a root route 2 did not converge is not compared (the
+// duplicate root of issue 51 had made the ratio 1.33 with no warning).
+TEST(SquealRoutes, ADisagreementBeyondTheTargetIsAWarningNamingTheRootAndTheLikelyCause) {
+  using rollnoise::pipeline::route_agreement;
+  using rollnoise::pipeline::route_warning;
+  const std::vector<rollnoise::noise::ModeRoot> r2 = {
+      root_at("axial n=2 0 circles", 350.0, 4.3e-2),
+      root_at("axial n=4 2 circles forward", 4442.0, -9.9e-5, false),
+      root_at("axial n=7 0 circles backward", 4442.0, -9.9e-5)};
+  std::vector<rollnoise::noise::ModeRoot> r1 = {
+      root_at("", 350.01, 4.31e-2), root_at("", 4428.7, -2.3e-4), root_at("", 4442.0, -9.95e-5)};
+  rollnoise::pipeline::Route1Deviation dev{{1e-3, 1e-3, 1e-3}, {1e-6, 1e-6, 1e-6}};
+  const auto within = route_agreement(r1, r2);
+  EXPECT_TRUE(within.within());
+  EXPECT_EQ(within.compared, 2);
+  EXPECT_EQ(within.mode_within, (std::vector<int>{1, -1, 1}));
+  EXPECT_TRUE(route_warning(within, r2, r1, dev).empty());
+
+  r1[2].damping_ratio = -1.2e-4;  // 21 % and 2.1e-5 off: beyond
+  const auto beyond = route_agreement(r1, r2);
+  EXPECT_FALSE(beyond.within());
+  EXPECT_EQ(beyond.mode_within, (std::vector<int>{1, -1, 0}));
+  const std::string w = route_warning(beyond, r2, r1, dev);
+  std::printf("%s\n", w.c_str());
+  EXPECT_NE(w.find("1 of 2 modes"), std::string::npos) << w;
+  EXPECT_NE(w.find("axial n=7 0 circles backward"), std::string::npos) << w;
+  EXPECT_NE(w.find("route 1's rail fit"), std::string::npos) << w;
+  EXPECT_EQ(w.find("heavily damped"), std::string::npos) << w;
+
+  r1[0].damping_ratio = 4.8e-2,
+  r1[2].damping_ratio = r2[2].damping_ratio;  // the damped root is off
+  const auto damped = route_agreement(r1, r2);
+  const std::string d = route_warning(damped, r2, r1, dev);
+  EXPECT_NE(d.find("axial n=2 0 circles"), std::string::npos) << d;
+  EXPECT_NE(d.find("heavily damped"), std::string::npos) << d;
+  EXPECT_NE(d.find("route 1's rail fit"), std::string::npos) << d;
+  dev.contact[0] = 1e-2;  // now the contact's fit deviates more there
+  EXPECT_NE(route_warning(damped, r2, r1, dev).find("route 1's contact fit"), std::string::npos);
+}
