@@ -216,6 +216,17 @@ double next_normal_force(double N, double r, double N_prev, double r_prev, doubl
   return next;
 }
 
+// The undeformed distance after the vertical lowering dz, relative to the fixed point's c0:
+// h0 - dz (cos delta_row - c0) (the lowering's part of the gap, see lower_on_curved_surface).
+contact::GridField lowered_distance(const CurvedPatch& cp, const std::vector<double>& cosd,
+                                    double dz, double c0) {
+  const contact::Grid& g = cp.grid;
+  contact::GridField h = cp.h;
+  for (int iy = 0; iy < g.ny; ++iy)
+    for (int ix = 0; ix < g.nx; ++ix) h[g.index(ix, iy)] -= dz * (cosd[iy] - c0);
+  return h;
+}
+
 // cos and sin of each row's contact angle (the contact point's for a row not found).
 std::pair<std::vector<double>, std::vector<double>> row_orientations(const CurvedPatch& cp,
                                                                      const ContactGeometry& c) {
@@ -301,11 +312,9 @@ LoadedContact lower_on_curved_surface(const WheelRailPair& pair, const ContactGe
     if (near) steady.precondition_with(near->tangential_factors);
     double dz = near ? near->vertical_approach : 0.0;
     double c0 = near ? near->mean_cos : std::cos(c.contact_angle), N_prev = 0.0, r_prev = 0.0;
-    contact::GridField h = cp.h;
+    contact::GridField h;
     for (out.iterations = 1;; ++out.iterations) {
-      for (int iy = 0; iy < g.ny; ++iy)
-        for (int ix = 0; ix < g.nx; ++ix)
-          h[g.index(ix, iy)] = cp.h[g.index(ix, iy)] - dz * (cosd[iy] - c0);
+      h = lowered_distance(cp, cosd, dz, c0);
       const bool first = out.iterations == 1;
       const contact::GridField* start = !first ? &patch->normal.pn
                                         : near ? &near->patch->normal.pn

@@ -63,6 +63,20 @@ rn::AxleForceFunction jumpy_when_coarse(const ModelContact& m, int& coarse, int&
   };
 }
 
+// `guessed` (Newton from a guess) balances to 1e-6 Q, took no continuation step and fewer contact
+// evaluations than `way` (the continuation), and its axles sit where way's do within `tolerance`
+// (m, rad).
+void expect_the_same_state_sooner(const rn::BogieEquilibrium& guessed,
+                                  const rn::BogieEquilibrium& way, double tolerance) {
+  EXPECT_LE(guessed.max_residual(), 1e-6 * kQ);
+  EXPECT_EQ(guessed.continuation_steps, 0);
+  EXPECT_LT(guessed.contact_evaluations, way.contact_evaluations);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(guessed.lateral[i], way.lateral[i], tolerance) << i;
+    EXPECT_NEAR(guessed.yaw[i], way.yaw[i], tolerance) << i;
+  }
+}
+
 rn::BogieEquilibriumInput model_input(double radius, double cant_deficiency) {
   rn::BogieEquilibriumInput in;
   in.curve = bogie_curve_input(radius, cant_deficiency);
@@ -112,14 +126,7 @@ TEST(BogieEquilibrium, AGuessAtTheCurveReachesTheContinuationsStateWithFewerEval
   for (int i = 0; i < 2; ++i) g.lateral[i] = way.lateral[i] + 1e-3, g.yaw[i] = way.yaw[i] + 1e-3;
   g.bogie_lateral = way.bogie_lateral + 1e-3, g.bogie_yaw = way.bogie_yaw;
   in.guess = g;
-  const rn::BogieEquilibrium e = rn::solve_bogie_equilibrium(in, m);
-  EXPECT_LE(e.max_residual(), 1e-6 * kQ);
-  EXPECT_EQ(e.continuation_steps, 0);
-  EXPECT_LT(e.contact_evaluations, way.contact_evaluations);
-  for (int i = 0; i < 2; ++i) {
-    EXPECT_NEAR(e.lateral[i], way.lateral[i], 1e-9) << i;
-    EXPECT_NEAR(e.yaw[i], way.yaw[i], 1e-9) << i;
-  }
+  expect_the_same_state_sooner(rn::solve_bogie_equilibrium(in, m), way, 1e-9);
 }
 
 // A guess from which the coarse contacts cannot lead (the jumpy model contact above: its coarse
@@ -217,13 +224,7 @@ TEST(BogieEquilibrium, ExactContactsBalanceAt300m) {
       "evaluations\n",
       g.lateral[0] * 1e3, g.lateral[1] * 1e3, g.yaw[0] * 1e3, g.yaw[1] * 1e3, g.iterations,
       g.contact_evaluations);
-  EXPECT_LE(g.max_residual(), 1e-6 * kQ);
-  EXPECT_EQ(g.continuation_steps, 0);
-  EXPECT_LT(g.contact_evaluations, e.contact_evaluations);
-  for (int i = 0; i < 2; ++i) {
-    EXPECT_NEAR(g.lateral[i], e.lateral[i], 1e-5) << i;
-    EXPECT_NEAR(g.yaw[i], e.yaw[i], 1e-5) << i;
-  }
+  expect_the_same_state_sooner(g, e, 1e-5);
   ASSERT_EQ(e.wheels.size(), 4u);
   for (const rn::WheelContact& w : e.wheels) {
     const auto f = w.force_track();
