@@ -146,28 +146,31 @@ RoughnessWearTransfer::RoughnessWearTransfer(const contact::ContactPatch& patch,
                                              double speed, double mu, const WearLaw& law,
                                              double k_max)
     : dt_(model.time_step()), speed_(speed), k_max_(k_max) {
-  // v_i = A_CC^{-1} 1_(column i) on the frozen area (W7), one per column of the patch
+  // The columns i of the frozen area C, and their weights dx dy 1' v_i, v_i = A_CC^{-1} 1_(column
+  // i) (W7): A_CC is symmetric, so 1' v_i = 1_(column i)' A_CC^{-1} 1, one solve for all columns.
   const contact::Grid& g = patch.grid;
   const contact::HalfSpaceOperator op(patch.influence, contact::Problem::Normal);
-  std::vector<contact::GridField> v;
-  for (int ix = 0; ix < g.nx; ++ix) {
-    contact::GridField column(g.size(), 0.0);
-    bool any = false;
+  std::vector<int> column_of(g.nx, -1);
+  for (int ix = 0; ix < g.nx; ++ix)
     for (int iy = 0; iy < g.ny; ++iy)
-      if (patch.normal.pn[g.index(ix, iy)] > 0.0) column[g.index(ix, iy)] = 1.0, any = true;
-    if (!any) continue;
-    v.push_back(contact::frozen_area_solve(g, op, patch.normal, column).x);
-    x_.push_back(g.x(ix));
-    double sum = 0.0;
-    for (double p : v.back()) sum += p;
-    weight_.push_back(g.element_area() * sum);
-  }
-  // the patterns v~_l = sum_i U_il v_i (header)
+      if (patch.normal.pn[g.index(ix, iy)] > 0.0 && column_of[ix] < 0) {
+        column_of[ix] = static_cast<int>(x_.size());
+        x_.push_back(g.x(ix));
+      }
+  const contact::GridField ones(g.size(), 1.0);
+  const contact::GridField w = contact::frozen_area_solve(g, op, patch.normal, ones).x;
+  weight_.assign(x_.size(), 0.0);
+  for (int e = 0; e < g.size(); ++e)
+    if (patch.normal.pn[e] > 0.0) weight_[column_of[e % g.nx]] += g.element_area() * w[e];
+  // the patterns v~_l = sum_i U_il v_i = A_CC^{-1} sum_i U_il 1_(column i) (header): one solve each
   basis_ = weight_basis(x_, k_max);
-  std::vector<contact::GridField> patterns(basis_.cols(), contact::GridField(g.size(), 0.0));
-  for (Eigen::Index l = 0; l < basis_.cols(); ++l)
-    for (std::size_t i = 0; i < v.size(); ++i)
-      for (int e = 0; e < g.size(); ++e) patterns[l][e] += basis_(i, l) * v[i][e];
+  std::vector<contact::GridField> patterns;
+  for (Eigen::Index l = 0; l < basis_.cols(); ++l) {
+    contact::GridField load(g.size(), 0.0);
+    for (int e = 0; e < g.size(); ++e)
+      if (patch.normal.pn[e] > 0.0) load[e] = basis_(column_of[e % g.nx], l);
+    patterns.push_back(contact::frozen_area_solve(g, op, patch.normal, load).x);
+  }
   const Gathered gathered = gather(model, steady, static_cast<int>(patterns.size()),
                                    [&](const LinearContactModel::FieldVisitor& f) {
                                      model.element_pressure_response(patterns, f);
